@@ -1,0 +1,128 @@
+# frs: Forced Random Sampling toolchain.  GNU make.
+#
+#   make            build the programs into bin/
+#   make check      install missing packages, build with sanitizers, run
+#                   every test (last line: "N passed, N failed")
+#   make demo       install missing packages, build, run the pipeline,
+#                   pictures in results/
+#   make bench      benchmarks, built with -O3 -march=native
+#   make install    PREFIX=/usr/local DESTDIR= MANDIR=$(PREFIX)/share/man
+
+PREFIX ?= /usr/local
+BINDIR ?= $(PREFIX)/bin
+LIBDIR ?= $(PREFIX)/lib
+INCDIR ?= $(PREFIX)/include
+MANDIR ?= $(PREFIX)/share/man
+DESTDIR ?=
+
+CC ?= cc
+PKG_CONFIG ?= pkg-config
+OPT ?= -O2 -g
+WARN = -Wall -Wextra -Wshadow -Wconversion -Wno-sign-conversion
+CSTD = -std=c11
+
+# Recursive (=) so that a sub-make started after scripts/deps.sh sees the
+# packages it installed.
+PKG_CFLAGS = $(shell $(PKG_CONFIG) --cflags libpng OpenEXR OpenCL 2>/dev/null)
+PKG_LIBS = $(shell $(PKG_CONFIG) --libs libpng OpenCL 2>/dev/null) -lOpenEXRCore
+CMOCKA_LIBS = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
+
+PROGS = imap
+LIBSRC = $(wildcard src/lib/*.c)
+TESTSRC = $(wildcard test/test_*.c)
+
+# Variant: rel (bin/, portable), san (sanitizers, for make check),
+# bench (-O3 -march=native, for make bench).
+VARIANT ?= rel
+B = build/$(VARIANT)
+ifeq ($(VARIANT),san)
+VFLAGS = -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer \
+	-fno-sanitize-recover=undefined
+else ifeq ($(VARIANT),bench)
+VFLAGS = -O3 -march=native -g
+else
+VFLAGS = $(OPT)
+endif
+
+ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) $(CFLAGS) \
+	-MMD -MP
+ALL_LDFLAGS = $(VFLAGS) $(LDFLAGS)
+LIBS = $(PKG_LIBS) -lm -lpthread
+
+LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o)
+PROGBIN = $(PROGS:%=$(B)/bin/%)
+TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%)
+
+.PHONY: all progs tests check demo bench install uninstall clean deps \
+	lint-man
+.DELETE_ON_ERROR:
+
+all: progs
+ifeq ($(VARIANT),rel)
+	@mkdir -p bin
+	@for p in $(PROGS); do cp -f $(B)/bin/$$p bin/$$p.tmp && \
+	    mv -f bin/$$p.tmp bin/$$p; done
+endif
+
+progs: $(PROGBIN)
+tests: $(TESTBIN) $(PROGBIN)
+
+$(B)/libfrs.a: $(LIBOBJ)
+	@mkdir -p $(@D)
+	rm -f $@ && $(AR) rcs $@ $^
+
+$(B)/lib/%.o: src/lib/%.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(B)/obj/%.o: src/%.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(B)/bin/%: $(B)/obj/%.o $(B)/libfrs.a
+	@mkdir -p $(@D)
+	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
+
+$(B)/test/%.o: test/%.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Wno-conversion -c $< -o $@
+
+$(B)/test/%: $(B)/test/%.o $(B)/libfrs.a
+	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) $(CMOCKA_LIBS) -o $@
+
+-include $(LIBOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d)
+
+deps:
+	@sh scripts/deps.sh
+
+# The test build is a sub-make so that it sees packages deps just added.
+check: deps
+	@$(MAKE) --no-print-directory VARIANT=san tests
+	@sh test/run.sh build/san
+
+demo: deps
+	@$(MAKE) --no-print-directory all
+	@sh scripts/demo.sh
+
+bench: deps
+	@$(MAKE) --no-print-directory VARIANT=bench progs
+	@sh scripts/bench.sh build/bench/bin
+
+lint-man:
+	mandoc -Tlint -Wwarning man/man*/*.[0-9]
+
+install: all
+	mkdir -p $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR)/man1 \
+	    $(DESTDIR)$(MANDIR)/man5 $(DESTDIR)$(MANDIR)/man7
+	for p in $(PROGS); do install -m 755 bin/$$p $(DESTDIR)$(BINDIR)/; done
+	for s in 1 3 5 7; do for f in man/man$$s/*.$$s; do \
+	    [ -f "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(MANDIR)/man$$s/; \
+	    done; done; true
+
+uninstall:
+	for p in $(PROGS); do rm -f $(DESTDIR)$(BINDIR)/$$p; done
+	for s in 1 3 5 7; do for f in man/man$$s/*.$$s; do \
+	    rm -f $(DESTDIR)$(MANDIR)/man$$s/$${f##*/}; done; done
+
+clean:
+	rm -rf build bin

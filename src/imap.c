@@ -1,0 +1,222 @@
+/*
+ * imap: make, convert and describe importance maps.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <ctype.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "cli.h"
+#include "imap.h"
+#include "outfile.h"
+
+static const char usage[] =
+    "usage: imap gen [-q] [-s WxH] [--equirect] [--format png|exr] [-o FILE] SPEC\n"
+    "       imap info [-s WxH] [--srgb] [--strict] [--equirect] FILE|SPEC\n"
+    "       imap convert [-s WxH] [--srgb] [--strict] [--equirect]\n"
+    "                    [--format png|exr] IN OUT\n"
+    "\n"
+    "  -s, --size WxH     size (N for NxN); specs default to 128x128,\n"
+    "                     files keep their size unless -s resamples them\n"
+    "      --equirect     weight rows by sin(theta): an equirectangular\n"
+    "                     environment map becomes an importance over the\n"
+    "                     unit square proportional to solid angle\n"
+    "      --format FMT   png (16-bit grey, scaled to its maximum) or exr\n"
+    "                     (float Y); default from the output's extension\n"
+    "      --srgb         decode PNG values from sRGB to linear\n"
+    "      --strict       negative values are an error, not clamped\n"
+    "  -o, --output FILE  output file (default: standard output)\n"
+    "  -q, --quiet        no warnings\n"
+    "  -h, --help         this help;  --version  the version\n"
+    "\n"
+    "Procedural specs, NAME[:PARAM=VALUE,...] (the first parameter may\n"
+    "omit its name, e.g. const:0.5):\n";
+
+enum { OPT_EQUIRECT = OPT_FIRST_PRIVATE, OPT_FORMAT, OPT_SRGB, OPT_STRICT };
+
+static const struct option longopts[] = {
+	{ "size", required_argument, NULL, 's' },
+	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
+	{ "format", required_argument, NULL, OPT_FORMAT },
+	{ "srgb", no_argument, NULL, OPT_SRGB },
+	{ "strict", no_argument, NULL, OPT_STRICT },
+	CLI_COMMON_LONGOPTS,
+	{ NULL, 0, NULL, 0 }
+};
+
+enum fmt { FMT_NONE, FMT_PNG, FMT_EXR };
+
+static uint32_t opt_w, opt_h;
+static int opt_flags;
+static enum fmt opt_format;
+
+static enum fmt format_of(const char *path)
+{
+	const char *dot = path ? strrchr(path, '.') : NULL;
+
+	if (opt_format != FMT_NONE)
+		return opt_format;
+	if (dot && strcasecmp(dot, ".png") == 0)
+		return FMT_PNG;
+	if (dot && strcasecmp(dot, ".exr") == 0)
+		return FMT_EXR;
+	if (path == NULL || strcmp(path, "-") == 0)
+		cli_usage_error("cannot tell the format of standard output; "
+		    "give --format png or --format exr");
+	cli_usage_error("%s: unknown extension (use .png or .exr, or "
+	    "--format)", path);
+}
+
+static void write_map(const char *path, const struct frs_imap *m)
+{
+	struct outfile o;
+	enum fmt f = format_of(path);
+	int rc;
+
+	if (outfile_open(&o, path, 1) < 0)
+		cli_die_lib();
+	rc = f == FMT_PNG ? imap_write_png16(o.fp, o.name, m) :
+	    imap_write_exr(o.fp, o.name, m);
+	if (rc < 0) {
+		outfile_abort(&o);
+		cli_die_lib();
+	}
+	if (outfile_commit(&o) < 0)
+		cli_die_lib();
+}
+
+static int parse_opts(int argc, char **argv)
+{
+	int c;
+
+	while ((c = getopt_long(argc, argv, "s:" CLI_COMMON_SHORTOPTS,
+	    longopts, NULL)) != -1) {
+		switch (c) {
+		case 's':
+			cli_size("-s", optarg, IMAP_MAX_SIDE, &opt_w, &opt_h);
+			break;
+		case OPT_EQUIRECT:
+			opt_flags |= IMAP_EQUIRECT;
+			break;
+		case OPT_SRGB:
+			opt_flags |= IMAP_SRGB;
+			break;
+		case OPT_STRICT:
+			opt_flags |= IMAP_STRICT;
+			break;
+		case OPT_FORMAT:
+			if (strcmp(optarg, "png") == 0)
+				opt_format = FMT_PNG;
+			else if (strcmp(optarg, "exr") == 0)
+				opt_format = FMT_EXR;
+			else
+				cli_usage_error("--format: '%s' is not png or exr",
+				    optarg);
+			break;
+		default:
+			if (!cli_common_opt(c, optarg))
+				cli_usage(2);
+		}
+	}
+	return optind;
+}
+
+static int cmd_gen(int argc, char **argv)
+{
+	struct frs_imap m;
+
+	if (argc != 1)
+		cli_usage_error("gen takes one SPEC");
+	if (!imap_is_spec(argv[0]))
+		cli_usage_error("'%s' is not a procedural map (const, blob, "
+		    "ramp, aniso, sky)", argv[0]);
+	format_of(cli.out);	/* fail on a bad name before any work */
+	if (imap_load(argv[0], opt_w, opt_h, opt_flags | IMAP_ALLOW_ZERO,
+	    &m) < 0)
+		cli_die_lib();
+	write_map(cli.out, &m);
+	imap_free(&m);
+	return 0;
+}
+
+static int cmd_convert(int argc, char **argv)
+{
+	struct frs_imap m;
+	const char *out = cli.out;
+
+	if (argc == 2 && out == NULL)
+		out = argv[1];
+	else if (argc != 1 || out == NULL)
+		cli_usage_error("convert takes IN and OUT");
+	format_of(out);
+	if (imap_load(argv[0], opt_w, opt_h, opt_flags | IMAP_ALLOW_ZERO,
+	    &m) < 0)
+		cli_die_lib();
+	write_map(out, &m);
+	imap_free(&m);
+	return 0;
+}
+
+static int cmd_info(int argc, char **argv)
+{
+	struct frs_imap m;
+	struct frs_imap_stats s;
+	const char *name;
+
+	if (argc != 1)
+		cli_usage_error("info takes one FILE or SPEC");
+	name = strcmp(argv[0], "-") == 0 ? "<stdin>" : argv[0];
+	/* Statistics of the source as it is, negatives included. */
+	if (imap_load_raw(argv[0], opt_w, opt_h, opt_flags, &m) < 0)
+		cli_die_lib();
+	if (opt_flags & IMAP_EQUIRECT)
+		imap_equirect(&m);
+	imap_stats(&m, &s);
+	if (imap_validate(&m, name, opt_flags | IMAP_ALLOW_ZERO) < 0)
+		cli_die_lib();
+	printf("source %s\nwidth %u\nheight %u\npixels %llu\n", name, m.w, m.h,
+	    (unsigned long long)s.count);
+	printf("min %.9g\nmax %.9g\nmean %.9g\nsum %.9g\n", s.min, s.max,
+	    s.mean, s.sum);
+	printf("zeros %llu\nnegatives %llu\n", (unsigned long long)s.zeros,
+	    (unsigned long long)s.negatives);
+	if (s.negatives)
+		printf("min_negative %.9g\n", s.min_negative);
+	printf("nonfinite %llu\n", (unsigned long long)s.nonfinite);
+	printf("min_positive %.9g\n", s.min_positive);
+	printf("dynamic_range %.9g\n", s.min_positive > 0.0 ? s.max /
+	    s.min_positive : 0.0);
+	imap_free(&m);
+	if (fflush(stdout) != 0 || ferror(stdout))
+		cli_die("<stdout>: write error");
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	static char help[8192];
+	const char *cmd;
+	int first;
+
+	snprintf(help, sizeof help, "%s%s", usage, imap_spec_help());
+	cli_init("imap", help);
+	if (argc < 2)
+		cli_usage_error("no command (gen, info or convert)");
+	cmd = argv[1];
+	if (strcmp(cmd, "-h") == 0 || strcmp(cmd, "--help") == 0)
+		cli_usage(0);
+	if (strcmp(cmd, "--version") == 0)
+		cli_common_opt(OPT_VERSION, NULL);
+	first = parse_opts(argc - 1, argv + 1) + 1;
+	argc -= first;
+	argv += first;
+	if (strcmp(cmd, "gen") == 0)
+		return cmd_gen(argc, argv);
+	if (strcmp(cmd, "info") == 0)
+		return cmd_info(argc, argv);
+	if (strcmp(cmd, "convert") == 0)
+		return cmd_convert(argc, argv);
+	cli_usage_error("unknown command '%s' (gen, info or convert)", cmd);
+}

@@ -1,0 +1,152 @@
+#define _POSIX_C_SOURCE 200809L
+#include "cli.h"
+#include "outfile.h"
+#include "parse.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+struct cli_common cli = { NULL, 0, 1, 0, 0, 0 };
+const char *cli_prog = "frs";
+static const char *usage_text = "";
+
+void cli_init(const char *prog, const char *usage)
+{
+	cli_prog = prog;
+	usage_text = usage;
+	cli.threads = cli_ncpu();
+	frs_set_warn_prefix(prog);
+}
+
+int cli_ncpu(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+	return n < 1 ? 1 : n > 1024 ? 1024 : (int)n;
+}
+
+noreturn void cli_usage(int status)
+{
+	FILE *fp = status ? stderr : stdout;
+
+	if (status) {
+		/* Only the synopsis on errors. */
+		const char *nl = strchr(usage_text, '\n');
+		int len = nl ? (int)(nl - usage_text) : (int)strlen(usage_text);
+		fprintf(fp, "%.*s\nTry '%s --help' for more information.\n",
+		    len, usage_text, cli_prog);
+	} else {
+		fputs(usage_text, fp);
+	}
+	exit(status);
+}
+
+noreturn void cli_usage_error(const char *fmt, ...)
+{
+	va_list ap;
+
+	fprintf(stderr, "%s: ", cli_prog);
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fputc('\n', stderr);
+	cli_usage(2);
+}
+
+noreturn void cli_die(const char *fmt, ...)
+{
+	va_list ap;
+
+	fprintf(stderr, "%s: ", cli_prog);
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fputc('\n', stderr);
+	outfile_cleanup_all();
+	exit(1);
+}
+
+noreturn void cli_die_lib(void)
+{
+	cli_die("%s", frs_errmsg());
+}
+
+void cli_note(const char *fmt, ...)
+{
+	va_list ap;
+
+	if (cli.quiet)
+		return;
+	fprintf(stderr, "%s: ", cli_prog);
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fputc('\n', stderr);
+}
+
+int cli_common_opt(int c, const char *arg)
+{
+	switch (c) {
+	case 'h':
+		cli_usage(0);
+	case OPT_VERSION:
+		printf("%s (frs) %s\n", cli_prog, FRS_VERSION);
+		exit(0);
+	case 'o':
+		cli.out = arg;
+		return 1;
+	case 'T':
+		cli.text = 1;
+		return 1;
+	case 'S':
+		cli.seed = cli_u64("-S", arg, 0, UINT64_MAX);
+		return 1;
+	case 'j':
+		cli.threads = (int)cli_ll("-j", arg, 1, 1024);
+		return 1;
+	case 'q':
+		cli.quiet = 1;
+		frs_set_quiet(1);
+		return 1;
+	case OPT_PROGRESS:
+		cli.progress = 1;
+		return 1;
+	case '?':
+		cli_usage(2);
+	default:
+		return 0;
+	}
+}
+
+long long cli_ll(const char *opt, const char *s, long long min, long long max)
+{
+	long long v;
+	if (parse_ll(opt, s, min, max, &v) < 0)
+		cli_usage_error("%s", frs_errmsg());
+	return v;
+}
+
+uint64_t cli_u64(const char *opt, const char *s, uint64_t min, uint64_t max)
+{
+	uint64_t v;
+	if (parse_u64(opt, s, min, max, &v) < 0)
+		cli_usage_error("%s", frs_errmsg());
+	return v;
+}
+
+double cli_double(const char *opt, const char *s, double min, double max)
+{
+	double v;
+	if (parse_double(opt, s, min, max, &v) < 0)
+		cli_usage_error("%s", frs_errmsg());
+	return v;
+}
+
+void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
+    uint32_t *h)
+{
+	if (parse_size(opt, s, max, w, h) < 0)
+		cli_usage_error("%s", frs_errmsg());
+}

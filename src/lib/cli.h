@@ -1,0 +1,73 @@
+/*
+ * What every program shares: its name in messages, the common options
+ * (-h, --version, -o, -T, -S, -j, -q, --progress), err(3)-style exits and
+ * number options that reject junk.
+ *
+ * Exit status: 0 success, 1 error (bad input, failed output), 2 usage.
+ */
+#ifndef FRS_CLI_H
+#define FRS_CLI_H
+
+#include <getopt.h>
+#include <stdint.h>
+#include <stdnoreturn.h>
+
+#include "err.h"
+
+#define FRS_VERSION "0.1.0"
+
+enum {
+	OPT_VERSION = 0x1000,
+	OPT_PROGRESS,
+	OPT_FIRST_PRIVATE	/* programs number their own long options from here */
+};
+
+/* The long options every program has; put at the end of its table,
+ * before the terminating zero entry. */
+#define CLI_COMMON_LONGOPTS \
+	{ "help", no_argument, NULL, 'h' }, \
+	{ "version", no_argument, NULL, OPT_VERSION }, \
+	{ "output", required_argument, NULL, 'o' }, \
+	{ "text", no_argument, NULL, 'T' }, \
+	{ "seed", required_argument, NULL, 'S' }, \
+	{ "threads", required_argument, NULL, 'j' }, \
+	{ "quiet", no_argument, NULL, 'q' }, \
+	{ "progress", no_argument, NULL, OPT_PROGRESS }
+#define CLI_COMMON_SHORTOPTS "ho:TS:j:q"
+
+struct cli_common {
+	const char *out;	/* -o, NULL for standard output */
+	int text;		/* -T */
+	uint64_t seed;		/* -S, default 1 */
+	int threads;		/* -j, default: all cores */
+	int quiet;		/* -q */
+	int progress;		/* --progress */
+};
+extern struct cli_common cli;
+extern const char *cli_prog;
+
+/* Set the program name and the usage text printed by -h and on usage
+ * errors (its first line is the synopsis). */
+void cli_init(const char *prog, const char *usage);
+/* Handle a common option; returns 1 if c was one. */
+int cli_common_opt(int c, const char *arg);
+
+noreturn void cli_usage(int status);
+noreturn void cli_usage_error(const char *fmt, ...) FRS_PRINTF(1, 2);
+/* "prog: message", exit 1, removing unfinished output files. */
+noreturn void cli_die(const char *fmt, ...) FRS_PRINTF(1, 2);
+/* "prog: <library message>", exit 1. */
+noreturn void cli_die_lib(void);
+void cli_note(const char *fmt, ...) FRS_PRINTF(1, 2);	/* unless -q */
+
+/* Option values; a bad value is a usage error naming the option. */
+long long cli_ll(const char *opt, const char *s, long long min, long long max);
+uint64_t cli_u64(const char *opt, const char *s, uint64_t min, uint64_t max);
+double cli_double(const char *opt, const char *s, double min, double max);
+void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
+    uint32_t *h);
+
+/* Number of online processors. */
+int cli_ncpu(void);
+
+#endif

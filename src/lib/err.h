@@ -1,0 +1,37 @@
+/*
+ * Error reporting shared by the library and the programs.
+ *
+ * Library functions never print errors or exit: on failure they record one
+ * message of the form "context: problem" (the context is usually a file
+ * name) and return -1.  Programs print it as "prog: context: problem".
+ * Warnings go straight to standard error through a hook the program sets.
+ */
+#ifndef FRS_ERR_H
+#define FRS_ERR_H
+
+#include <stdarg.h>
+
+#if defined(__GNUC__)
+#define FRS_PRINTF(a, b) __attribute__((format(printf, a, b)))
+#else
+#define FRS_PRINTF(a, b)
+#endif
+
+/* Record an error message; always returns -1 so that callers can
+ * write "return frs_fail(...)". */
+int frs_fail(const char *fmt, ...) FRS_PRINTF(1, 2);
+/* Like frs_fail, appending ": strerror(errno)". */
+int frs_fail_errno(const char *fmt, ...) FRS_PRINTF(1, 2);
+/* Prefix the current message with "context: ". */
+int frs_fail_context(const char *context);
+const char *frs_errmsg(void);
+void frs_clearerr(void);
+
+/* Warnings: printed as "prog: warning: ..." unless silenced. */
+void frs_warn(const char *fmt, ...) FRS_PRINTF(1, 2);
+void frs_set_warn_prefix(const char *prog);
+void frs_set_quiet(int quiet);
+/* Number of warnings issued so far (tests use it). */
+unsigned long frs_warn_count(void);
+
+#endif

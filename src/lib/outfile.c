@@ -1,0 +1,207 @@
+#define _POSIX_C_SOURCE 200809L
+#include "outfile.h"
+#include "err.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* Temporary files alive now; the signal handler unlinks them, which is
+ * async-signal-safe. */
+#define MAXTMP 16
+static char *volatile live[MAXTMP];
+static int handlers_installed;
+
+static void on_signal(int sig)
+{
+	for (int i = 0; i < MAXTMP; i++)
+		if (live[i] != NULL)
+			unlink(live[i]);
+	signal(sig, SIG_DFL);
+	raise(sig);
+}
+
+static void install_handlers(void)
+{
+	struct sigaction sa;
+
+	if (handlers_installed)
+		return;
+	handlers_installed = 1;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sigaction(SIGINT, &sa, NULL);
+	sigaction(SIGTERM, &sa, NULL);
+	sigaction(SIGHUP, &sa, NULL);
+	sigaction(SIGPIPE, &sa, NULL);
+	atexit(outfile_cleanup_all);
+}
+
+static void track(char *tmp, int add)
+{
+	for (int i = 0; i < MAXTMP; i++) {
+		if (add && live[i] == NULL) {
+			live[i] = tmp;
+			return;
+		}
+		if (!add && live[i] == tmp) {
+			live[i] = NULL;
+			return;
+		}
+	}
+}
+
+void outfile_cleanup_all(void)
+{
+	for (int i = 0; i < MAXTMP; i++)
+		if (live[i] != NULL) {
+			unlink(live[i]);
+			live[i] = NULL;
+		}
+}
+
+int outfile_is_stdout(const struct outfile *o)
+{
+	return o->path == NULL;
+}
+
+static int open_stdout(struct outfile *o, int binary)
+{
+	if (binary && isatty(STDOUT_FILENO))
+		return frs_fail("<stdout>: refusing to write binary data to a "
+		    "terminal (use -o FILE, a pipe, or -T for text)");
+	o->fp = stdout;
+	o->name = "<stdout>";
+	return 0;
+}
+
+static int make_tmp(struct outfile *o)
+{
+	size_t len = strlen(o->path);
+	int fd;
+
+	o->tmp = malloc(len + 16);
+	if (o->tmp == NULL)
+		return frs_fail("%s: out of memory", o->path);
+	/* Same directory, so that rename() is atomic. */
+	snprintf(o->tmp, len + 16, "%s.tmp.XXXXXX", o->path);
+	fd = mkstemp(o->tmp);
+	if (fd < 0) {
+		frs_fail_errno("%s: cannot create", o->path);
+		free(o->tmp);
+		o->tmp = NULL;
+		return -1;
+	}
+	{
+		/* mkstemp makes 0600; give the file the usual 0666 & ~umask. */
+		mode_t m = umask(0);
+		umask(m);
+		fchmod(fd, 0666 & ~m);
+	}
+	track(o->tmp, 1);
+	o->fp = fdopen(fd, "wb");
+	if (o->fp == NULL) {
+		frs_fail_errno("%s: cannot open", o->path);
+		close(fd);
+		unlink(o->tmp);
+		track(o->tmp, 0);
+		free(o->tmp);
+		o->tmp = NULL;
+		return -1;
+	}
+	return 0;
+}
+
+int outfile_open(struct outfile *o, const char *path, int binary)
+{
+	struct stat st;
+
+	memset(o, 0, sizeof *o);
+	install_handlers();
+	if (path == NULL || strcmp(path, "-") == 0)
+		return open_stdout(o, binary);
+	o->path = strdup(path);
+	if (o->path == NULL)
+		return frs_fail("%s: out of memory", path);
+	o->name = o->path;
+	if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+		frs_fail("%s: is a directory", path);
+		goto fail;
+	}
+	if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+		o->fp = fopen(path, "wb");
+		if (o->fp == NULL) {
+			frs_fail_errno("%s: cannot open", path);
+			goto fail;
+		}
+		return 0;
+	}
+	if (make_tmp(o) == 0)
+		return 0;
+fail:
+	free(o->path);
+	o->path = NULL;
+	return -1;
+}
+
+static int finish_stream(struct outfile *o)
+{
+	int bad = fflush(o->fp) != 0 || ferror(o->fp);
+	int saved = errno;
+
+	if (o->fp != stdout) {
+		if (fclose(o->fp) != 0 && !bad) {
+			bad = 1;
+			saved = errno;
+		}
+	}
+	o->fp = NULL;
+	if (bad) {
+		errno = saved ? saved : EIO;
+		return frs_fail_errno("%s: write error", o->name);
+	}
+	return 0;
+}
+
+int outfile_commit(struct outfile *o)
+{
+	int rc;
+
+	if (o->fp == NULL)
+		return frs_fail("%s: output already closed", o->name);
+	rc = finish_stream(o);
+	if (rc == 0 && o->tmp != NULL && rename(o->tmp, o->path) != 0)
+		rc = frs_fail_errno("%s: cannot rename temporary file", o->path);
+	if (o->tmp != NULL) {
+		if (rc != 0)
+			unlink(o->tmp);
+		track(o->tmp, 0);
+		free(o->tmp);
+		o->tmp = NULL;
+	}
+	free(o->path);
+	o->path = NULL;
+	return rc;
+}
+
+void outfile_abort(struct outfile *o)
+{
+	if (o->fp != NULL && o->fp != stdout)
+		fclose(o->fp);
+	else if (o->fp == stdout)
+		fflush(stdout);
+	o->fp = NULL;
+	if (o->tmp != NULL) {
+		unlink(o->tmp);
+		track(o->tmp, 0);
+		free(o->tmp);
+		o->tmp = NULL;
+	}
+	free(o->path);
+	o->path = NULL;
+}

@@ -1,0 +1,486 @@
+#define _POSIX_C_SOURCE 200809L
+#include "ptsio.h"
+#include "err.h"
+#include "io.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void pts_free(struct frs_points *p)
+{
+	free(p->x);
+	memset(p, 0, sizeof *p);
+}
+
+/* ---- reading ---------------------------------------------------------- */
+
+static int rd_getc(struct pts_reader *r)
+{
+	if (r->ppre < r->npre)
+		return r->pre[r->ppre++];
+	return getc(r->fp);
+}
+
+/* Next line into r->buf without its newline; 0 at end of input. */
+static int rd_line(struct pts_reader *r)
+{
+	size_t n = 0;
+	int c;
+
+	while ((c = rd_getc(r)) != EOF && c != '\n') {
+		if (n + 2 > r->cap) {
+			size_t ncap = r->cap ? r->cap * 2 : 256;
+			char *nb = realloc(r->buf, ncap);
+			if (nb == NULL)
+				return frs_fail("%s: out of memory", r->name);
+			r->buf = nb;
+			r->cap = ncap;
+		}
+		r->buf[n++] = (char)c;
+	}
+	if (c == EOF && ferror(r->fp))
+		return frs_fail_errno("%s: read error", r->name);
+	if (c == EOF && n == 0)
+		return 0;
+	if (r->buf == NULL) {
+		r->buf = malloc(1);
+		if (r->buf == NULL)
+			return frs_fail("%s: out of memory", r->name);
+	}
+	if (n > 0 && r->buf[n - 1] == '\r')
+		n--;
+	r->buf[n] = '\0';
+	r->line++;
+	return 1;
+}
+
+static int blank_or_comment(const char *s)
+{
+	while (isspace((unsigned char)*s))
+		s++;
+	return *s == '\0' || *s == '#';
+}
+
+/* "#pts dims=K extra=E count=N" */
+static int text_header(struct pts_reader *r)
+{
+	char *tok, *save = NULL;
+	char *s = r->buf + 4;
+
+	for (tok = strtok_r(s, " \t", &save); tok; tok = strtok_r(NULL, " \t",
+	    &save)) {
+		unsigned long long v;
+		char key[16];
+		char *end;
+		const char *eq = strchr(tok, '=');
+		if (eq == NULL || (size_t)(eq - tok) >= sizeof key)
+			continue;
+		memcpy(key, tok, (size_t)(eq - tok));
+		key[eq - tok] = '\0';
+		errno = 0;
+		v = strtoull(eq + 1, &end, 10);
+		if (*end != '\0' || errno != 0)
+			return frs_fail("%s:%lu: bad header field '%s'", r->name,
+			    r->line, tok);
+		if (strcmp(key, "dims") == 0)
+			r->dims = (unsigned)(v > 99 ? 99 : v);
+		else if (strcmp(key, "extra") == 0)
+			r->extra = (unsigned)(v > 99 ? 99 : v);
+		else if (strcmp(key, "count") == 0)
+			r->count = v;
+	}
+	if (r->dims < 1 || r->dims + r->extra > PTS_MAXCOLS)
+		return frs_fail("%s:%lu: header gives %u coordinates and %u "
+		    "extra values (1 to %d columns allowed)", r->name, r->line,
+		    r->dims, r->extra, PTS_MAXCOLS);
+	return 0;
+}
+
+static int count_fields(const char *s)
+{
+	int n = 0;
+
+	for (;;) {
+		while (*s == ' ' || *s == '\t')
+			s++;
+		if (*s == '\0')
+			return n;
+		n++;
+		while (*s != '\0' && *s != ' ' && *s != '\t')
+			s++;
+	}
+}
+
+/* Find the layout of a text file: header line or the first data line. */
+static int text_open(struct pts_reader *r)
+{
+	int rc;
+
+	r->text = 1;
+	while ((rc = rd_line(r)) == 1) {
+		if (strncmp(r->buf, "#pts", 4) == 0 && r->dims == 0) {
+			if (text_header(r) < 0)
+				return -1;
+			continue;
+		}
+		if (blank_or_comment(r->buf))
+			continue;
+		r->have_line = 1;
+		if (r->dims == 0) {
+			int f = count_fields(r->buf);
+			if (f > PTS_MAXCOLS)
+				return frs_fail("%s:%lu: %d columns (at most %d)",
+				    r->name, r->line, f, PTS_MAXCOLS);
+			r->dims = (unsigned)f;
+		}
+		return 0;
+	}
+	if (rc < 0)
+		return -1;
+	if (r->dims == 0)
+		return frs_fail("%s: empty file", r->name);
+	return 0;
+}
+
+static int binary_open(struct pts_reader *r)
+{
+	const unsigned char *h = r->pre;
+	uint32_t version = io_get_u32(h + 8);
+	long long fsize = io_file_size(r->fp);
+
+	r->npre = r->ppre = 0;
+	if (version != PTS_VERSION)
+		return frs_fail("%s: unsupported format version %u (this program "
+		    "reads version %d)", r->name, version, PTS_VERSION);
+	r->dims = io_get_u32(h + 12);
+	r->extra = io_get_u32(h + 16);
+	r->count = io_get_u64(h + 24);
+	if (r->dims < 1 || r->dims > PTS_MAXCOLS || r->extra > PTS_MAXCOLS ||
+	    r->dims + r->extra > PTS_MAXCOLS)
+		return frs_fail("%s: header gives %u coordinates and %u extra "
+		    "values (1 to %d columns allowed)", r->name, r->dims,
+		    r->extra, PTS_MAXCOLS);
+	if (fsize >= 0) {
+		unsigned long long rec = 8ull * (r->dims + r->extra);
+		unsigned long long body = (unsigned long long)fsize - PTS_HEADER;
+		if (r->count == 0 && body % rec != 0)
+			return frs_fail("%s: truncated record at the end (%llu "
+			    "bytes after the header are not a multiple of %llu)",
+			    r->name, body, rec);
+		if (r->count != 0 && (r->count > body / rec ||
+		    body != r->count * rec))
+			return frs_fail("%s: header says %llu points but the file "
+			    "holds %llu bytes of records (%llu needed)", r->name,
+			    (unsigned long long)r->count, body,
+			    r->count > UINT64_MAX / rec ? UINT64_MAX :
+			    (unsigned long long)(r->count * rec));
+	}
+	return 0;
+}
+
+int pts_reader_open(struct pts_reader *r, const char *path)
+{
+	memset(r, 0, sizeof *r);
+	r->fp = io_open_in(path, &r->name);
+	if (r->fp == NULL)
+		return -1;
+	r->npre = fread(r->pre, 1, PTS_HEADER, r->fp);
+	if (ferror(r->fp)) {
+		frs_fail_errno("%s: read error", r->name);
+		goto fail;
+	}
+	if (r->npre == 0) {
+		frs_fail("%s: empty file", r->name);
+		goto fail;
+	}
+	if (r->npre >= 8 && memcmp(r->pre, PTS_MAGIC, 8) == 0) {
+		if (r->npre < PTS_HEADER) {
+			frs_fail("%s: truncated header (%zu of %d bytes)", r->name,
+			    r->npre, PTS_HEADER);
+			goto fail;
+		}
+		if (binary_open(r) < 0)
+			goto fail;
+		return 0;
+	}
+	if (memchr(r->pre, '\0', r->npre) != NULL || (r->pre[0] & 0x80)) {
+		frs_fail("%s: not a point file (wrong magic, and not text)",
+		    r->name);
+		goto fail;
+	}
+	if (text_open(r) < 0)
+		goto fail;
+	return 0;
+fail:
+	pts_reader_close(r);
+	return -1;
+}
+
+static int check_record(struct pts_reader *r, const double *rec)
+{
+	for (unsigned i = 0; i < r->dims + r->extra; i++) {
+		if (!isfinite(rec[i]))
+			goto bad;
+		if (i < r->dims && !(rec[i] >= 0.0 && rec[i] < 1.0))
+			goto bad;
+	}
+	return 0;
+bad:
+	for (unsigned i = 0; i < r->dims + r->extra; i++)
+		if (!isfinite(rec[i]) || (i < r->dims && !(rec[i] >= 0.0 &&
+		    rec[i] < 1.0))) {
+			if (r->text)
+				return frs_fail("%s:%lu: %s %u is %.17g, %s",
+				    r->name, r->line, i < r->dims ? "coordinate" :
+				    "value", i + 1, rec[i], isfinite(rec[i]) ?
+				    "outside [0,1)" : "not finite");
+			return frs_fail("%s: point %llu: %s %u is %.17g, %s",
+			    r->name, (unsigned long long)r->got,
+			    i < r->dims ? "coordinate" : "value", i + 1, rec[i],
+			    isfinite(rec[i]) ? "outside [0,1)" : "not finite");
+		}
+	return -1;
+}
+
+static int parse_line(struct pts_reader *r, double *rec)
+{
+	char *s = r->buf, *end;
+	unsigned ncol = r->dims + r->extra;
+
+	for (unsigned i = 0; i < ncol; i++) {
+		while (*s == ' ' || *s == '\t')
+			s++;
+		if (*s == '\0')
+			return frs_fail("%s:%lu: %u values, expected %u", r->name,
+			    r->line, i, ncol);
+		errno = 0;
+		rec[i] = strtod(s, &end);
+		if (end == s || (*end != '\0' && *end != ' ' && *end != '\t')) {
+			int len = 0;
+			while (s[len] && s[len] != ' ' && s[len] != '\t' &&
+			    len < 40)
+				len++;
+			return frs_fail("%s:%lu: '%.*s' is not a number", r->name,
+			    r->line, len, s);
+		}
+		s = end;
+	}
+	while (*s == ' ' || *s == '\t')
+		s++;
+	if (*s != '\0')
+		return frs_fail("%s:%lu: more than %u values", r->name, r->line,
+		    ncol);
+	return 0;
+}
+
+static int text_next(struct pts_reader *r, double *rec)
+{
+	int rc;
+
+	if (r->have_line)
+		r->have_line = 0;
+	else {
+		do
+			rc = rd_line(r);
+		while (rc == 1 && blank_or_comment(r->buf));
+		if (rc <= 0) {
+			if (rc == 0 && r->count != 0 && r->got != r->count)
+				return frs_fail("%s: truncated: %llu of %llu "
+				    "points", r->name,
+				    (unsigned long long)r->got,
+				    (unsigned long long)r->count);
+			return rc;
+		}
+	}
+	if (parse_line(r, rec) < 0)
+		return -1;
+	return 1;
+}
+
+static int binary_next(struct pts_reader *r, double *rec)
+{
+	size_t ncol = r->dims + r->extra;
+	size_t got;
+
+	if (r->count != 0 && r->got == r->count)
+		return 0;
+	got = fread(rec, 8, ncol, r->fp);
+	if (got == 0 && !ferror(r->fp)) {
+		if (r->count != 0)
+			return frs_fail("%s: truncated: %llu of %llu points",
+			    r->name, (unsigned long long)r->got,
+			    (unsigned long long)r->count);
+		return 0;
+	}
+	if (got != ncol) {
+		if (ferror(r->fp))
+			return frs_fail_errno("%s: read error", r->name);
+		return frs_fail("%s: truncated record after %llu points",
+		    r->name, (unsigned long long)r->got);
+	}
+	io_le_f64(rec, ncol);
+	return 1;
+}
+
+int pts_reader_next(struct pts_reader *r, double *rec)
+{
+	int rc = r->text ? text_next(r, rec) : binary_next(r, rec);
+
+	if (rc != 1)
+		return rc;
+	if (check_record(r, rec) < 0)
+		return -1;
+	r->got++;
+	return 1;
+}
+
+void pts_reader_close(struct pts_reader *r)
+{
+	io_close_in(r->fp);
+	free(r->buf);
+	memset(r, 0, sizeof *r);
+}
+
+int pts_read(const char *path, struct frs_points *p)
+{
+	struct pts_reader r;
+	size_t cap = 0, ncol;
+	double rec[PTS_MAXCOLS];
+	int rc;
+
+	memset(p, 0, sizeof *p);
+	if (pts_reader_open(&r, path) < 0)
+		return -1;
+	p->dims = r.dims;
+	p->extra = r.extra;
+	ncol = r.dims + r.extra;
+	if (r.count != 0 && r.count < ((uint64_t)1 << 40) / ncol)
+		cap = (size_t)r.count;
+	while ((rc = pts_reader_next(&r, rec)) == 1) {
+		if (p->n == cap || p->x == NULL) {
+			size_t ncap = cap > p->n ? cap : (cap ? cap * 2 : 1024);
+			double *nx = realloc(p->x, ncap * ncol * sizeof *nx);
+			if (nx == NULL) {
+				rc = frs_fail("%s: out of memory", r.name);
+				break;
+			}
+			p->x = nx;
+			cap = ncap;
+		}
+		memcpy(p->x + p->n * ncol, rec, ncol * sizeof *rec);
+		p->n++;
+	}
+	pts_reader_close(&r);
+	if (rc < 0)
+		pts_free(p);
+	return rc < 0 ? -1 : 0;
+}
+
+/* ---- writing ---------------------------------------------------------- */
+
+static void header_bytes(unsigned char *h, unsigned dims, unsigned extra,
+    uint64_t count)
+{
+	memcpy(h, PTS_MAGIC, 8);
+	io_put_u32(h + 8, PTS_VERSION);
+	io_put_u32(h + 12, dims);
+	io_put_u32(h + 16, extra);
+	io_put_u32(h + 20, 0);
+	io_put_u64(h + 24, count);
+}
+
+int pts_writer_begin(struct pts_writer *w, FILE *fp, const char *name,
+    unsigned dims, unsigned extra, uint64_t count, int text)
+{
+	memset(w, 0, sizeof *w);
+	w->fp = fp;
+	w->name = name;
+	w->dims = dims;
+	w->extra = extra;
+	w->count = count;
+	w->text = text;
+	if (dims < 1 || dims + extra > PTS_MAXCOLS)
+		return frs_fail("%s: %u coordinates and %u extra values per "
+		    "point are not supported", name, dims, extra);
+	if (text) {
+		if (fprintf(fp, "#pts dims=%u extra=%u count=%llu\n", dims, extra,
+		    (unsigned long long)count) < 0)
+			return frs_fail_errno("%s: write error", name);
+		return 0;
+	}
+	{
+		unsigned char h[PTS_HEADER];
+		header_bytes(h, dims, extra, count);
+		if (fwrite(h, 1, sizeof h, fp) != sizeof h)
+			return frs_fail_errno("%s: write error", name);
+	}
+	return 0;
+}
+
+int pts_writer_put(struct pts_writer *w, const double *rec)
+{
+	unsigned ncol = w->dims + w->extra;
+
+	for (unsigned i = 0; i < w->dims; i++)
+		if (!(rec[i] >= 0.0 && rec[i] < 1.0))
+			return frs_fail("%s: internal error: coordinate %.17g of "
+			    "point %llu is outside [0,1)", w->name, rec[i],
+			    (unsigned long long)w->written);
+	if (w->text) {
+		for (unsigned i = 0; i < ncol; i++)
+			if (fprintf(w->fp, i ? " %.17g" : "%.17g", rec[i]) < 0)
+				return frs_fail_errno("%s: write error", w->name);
+		if (putc('\n', w->fp) == EOF)
+			return frs_fail_errno("%s: write error", w->name);
+	} else {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+		double tmp[PTS_MAXCOLS];
+		memcpy(tmp, rec, ncol * sizeof *tmp);
+		io_le_f64(tmp, ncol);
+		rec = tmp;
+#endif
+		if (fwrite(rec, 8, ncol, w->fp) != ncol)
+			return frs_fail_errno("%s: write error", w->name);
+	}
+	w->written++;
+	return 0;
+}
+
+int pts_writer_end(struct pts_writer *w)
+{
+	if (w->count != 0 && w->written != w->count)
+		return frs_fail("%s: internal error: %llu points announced, %llu "
+		    "written", w->name, (unsigned long long)w->count,
+		    (unsigned long long)w->written);
+	if (w->count == 0 && !w->text && w->written > 0) {
+		/* Patch the true count in when the stream can seek. */
+		long pos = ftell(w->fp);
+		unsigned char h[PTS_HEADER];
+		header_bytes(h, w->dims, w->extra, w->written);
+		if (pos >= 0 && fseek(w->fp, 0, SEEK_SET) == 0) {
+			if (fwrite(h, 1, sizeof h, w->fp) != sizeof h ||
+			    fseek(w->fp, pos, SEEK_SET) != 0)
+				return frs_fail_errno("%s: write error", w->name);
+		}
+	}
+	if (fflush(w->fp) != 0)
+		return frs_fail_errno("%s: write error", w->name);
+	return 0;
+}
+
+int pts_write(FILE *fp, const char *name, const struct frs_points *p,
+    int text)
+{
+	struct pts_writer w;
+	size_t ncol = p->dims + p->extra;
+
+	if (pts_writer_begin(&w, fp, name, p->dims, p->extra, p->n, text) < 0)
+		return -1;
+	for (size_t i = 0; i < p->n; i++)
+		if (pts_writer_put(&w, p->x + i * ncol) < 0)
+			return -1;
+	return pts_writer_end(&w);
+}

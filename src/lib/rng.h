@@ -1,0 +1,55 @@
+/*
+ * Random numbers that are a pure function of (seed, stream, index).
+ *
+ * The generator is Philox4x32-10 (Salmon et al., "Parallel random numbers:
+ * as easy as 1, 2, 3", SC 2011): the key is the 64-bit seed, the 128-bit
+ * counter is (index low, index high, stream, 0).  Because a number depends
+ * only on its coordinates, results do not depend on thread count, work
+ * order or device; OpenCL kernels use the same function.
+ *
+ * Streams separate independent uses of one seed; each consumer owns one
+ * of the FRS_STREAM_* values below and derives the index from what it
+ * randomises (an insertion step, a window element, a point number).
+ */
+#ifndef FRS_RNG_H
+#define FRS_RNG_H
+
+#include <stdint.h>
+
+enum {
+	FRS_STREAM_TEST = 0,
+	FRS_STREAM_FRD_COIN = 1,	/* frd-gen candidate selection */
+	FRS_STREAM_FRD_TIE = 2,		/* frd-gen tie breaking */
+	FRS_STREAM_WINDOW = 3,		/* frs window offset */
+	FRS_STREAM_JITTER = 4,		/* frs jitter, per window element */
+	FRS_STREAM_COIN = 5,		/* frs fractional threshold coin */
+	FRS_STREAM_REF = 6,		/* reference samplers */
+	FRS_STREAM_HSW = 7,		/* hierarchical sample warping */
+	FRS_STREAM_SHAPES = 8,		/* discrepancy random shapes */
+	FRS_STREAM_SET = 9		/* per-set seeds of repeated runs */
+};
+
+/* One Philox4x32-10 block. */
+void frs_philox4x32_10(const uint32_t ctr[4], const uint32_t key[2],
+    uint32_t out[4]);
+
+/* 64 random bits at (seed, stream, index): words 0 and 1 of the block. */
+uint64_t frs_rand64(uint64_t seed, uint32_t stream, uint64_t index);
+/* Uniform double in [0, 1) with 53 random bits. */
+double frs_rand01(uint64_t seed, uint32_t stream, uint64_t index);
+
+/* A sequential stream over indices 0, 1, 2, ... of one (seed, stream), for
+ * code whose order is fixed.  Each index gives 64 bits. */
+struct frs_rng {
+	uint64_t seed;
+	uint64_t index;
+	uint32_t stream;
+};
+
+void frs_rng_init(struct frs_rng *r, uint64_t seed, uint32_t stream);
+uint64_t frs_rng_next64(struct frs_rng *r);
+double frs_rng_next01(struct frs_rng *r);
+/* Uniform integer in [0, bound), bound > 0, without modulo bias. */
+uint64_t frs_rng_below(struct frs_rng *r, uint64_t bound);
+
+#endif

@@ -1,0 +1,282 @@
+#define _POSIX_C_SOURCE 200809L
+#include "imap.h"
+#include "err.h"
+#include "parse.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define MAXPARAM 6
+
+struct param {
+	const char *key;
+	double def, min, max;
+	const char *help;
+};
+
+struct spec {
+	const char *name;
+	const char *help;
+	struct param p[MAXPARAM];
+	int (*eval)(const double *p, uint32_t w, uint32_t h, double *out);
+};
+
+/* ---- evaluators: each fills w*h pixel means ------------------------- */
+
+static int eval_const(const double *p, uint32_t w, uint32_t h, double *out)
+{
+	for (size_t i = 0; i < (size_t)w * h; i++)
+		out[i] = p[0];
+	return 0;
+}
+
+/* Mean over [a, b] of exp(-(t-c)^2 / (2 s^2)), using erfc in the tails so
+ * that far pixels keep their relative precision. */
+static double gauss_mean(double a, double b, double c, double s)
+{
+	double k = 1.0 / (s * sqrt(2.0));
+	double u = (a - c) * k, v = (b - c) * k, d;
+
+	if (u >= 0.0)
+		d = erfc(u) - erfc(v);
+	else if (v <= 0.0)
+		d = erfc(-v) - erfc(-u);
+	else
+		d = erf(v) - erf(u);
+	return d * s * sqrt(PI / 2.0) / (b - a);
+}
+
+static int eval_blob(const double *p, uint32_t w, uint32_t h, double *out)
+{
+	double *gx = malloc(w * sizeof *gx);
+
+	if (gx == NULL)
+		return frs_fail("out of memory");
+	for (uint32_t i = 0; i < w; i++)
+		gx[i] = gauss_mean((double)i / w, (double)(i + 1) / w, p[0], p[2]);
+	for (uint32_t j = 0; j < h; j++) {
+		double gy = gauss_mean((double)j / h, (double)(j + 1) / h, p[1],
+		    p[2]);
+		for (uint32_t i = 0; i < w; i++)
+			out[(size_t)j * w + i] = p[4] * gx[i] * gy + p[3];
+	}
+	free(gx);
+	return 0;
+}
+
+static int eval_ramp(const double *p, uint32_t w, uint32_t h, double *out)
+{
+	double a = p[2] * PI / 180.0, c = cos(a), s = sin(a);
+	double norm = fabs(c) + fabs(s);
+
+	/* Linear, so the pixel mean is the value at the pixel centre. */
+	for (uint32_t j = 0; j < h; j++)
+		for (uint32_t i = 0; i < w; i++) {
+			double x = (i + 0.5) / w - 0.5, y = (j + 0.5) / h - 0.5;
+			double t = 0.5 + (x * c + y * s) / norm;
+			out[(size_t)j * w + i] = p[0] + (p[1] - p[0]) * t;
+		}
+	return 0;
+}
+
+/* Pixel means of f by n x n stratified supersampling. */
+static void supersample(double (*f)(const double *, double, double),
+    const double *p, uint32_t w, uint32_t h, uint32_t n, double *out)
+{
+	for (uint32_t j = 0; j < h; j++)
+		for (uint32_t i = 0; i < w; i++) {
+			double acc = 0.0;
+			for (uint32_t b = 0; b < n; b++)
+				for (uint32_t a = 0; a < n; a++)
+					acc += f(p, (i + (a + 0.5) / n) / w,
+					    (j + (b + 0.5) / n) / h);
+			out[(size_t)j * w + i] = acc / ((double)n * n);
+		}
+}
+
+static double aniso_at(const double *p, double x, double y)
+{
+	double a = p[0] * PI / 180.0;
+	/* Distance from the line through the centre at angle a. */
+	double d = -(x - 0.5) * sin(a) + (y - 0.5) * cos(a);
+	return p[2] + exp(-d * d / (2.0 * p[1] * p[1]));
+}
+
+static uint32_t ss_for(double feature, uint32_t w, uint32_t h)
+{
+	double pix = 1.0 / (w < h ? w : h);
+	double n = ceil(4.0 * pix / feature);
+	return n < 4.0 ? 4 : n > 64.0 ? 64 : (uint32_t)n;
+}
+
+static int eval_aniso(const double *p, uint32_t w, uint32_t h, double *out)
+{
+	supersample(aniso_at, p, w, h, ss_for(p[1], w, h), out);
+	return 0;
+}
+
+/*
+ * An equirectangular sky: x is the azimuth phi = 2 pi x, y the polar angle
+ * theta = pi y (zenith at the top).  Sky brightening towards the horizon,
+ * a dim ground, and a sun lobe exp(-(gamma/size)^2) around the sun
+ * direction, gamma the angle to it.
+ */
+static double sky_at(const double *p, double x, double y)
+{
+	double th = PI * y, ph = 2.0 * PI * x;
+	double ts = (90.0 - p[0]) * PI / 180.0, ps = p[1] * PI / 180.0;
+	double cg = sin(th) * sin(ts) * cos(ph - ps) + cos(th) * cos(ts);
+	double g = acos(cg > 1.0 ? 1.0 : cg < -1.0 ? -1.0 : cg);
+	double r = g / (p[2] * PI / 180.0);
+	double base = th < PI / 2.0 ? 1.0 + 1.5 * (1.0 - cos(th)) : p[4];
+
+	return base + p[3] * exp(-r * r);
+}
+
+static int eval_sky(const double *p, uint32_t w, uint32_t h, double *out)
+{
+	supersample(sky_at, p, w, h, ss_for(p[2] / 360.0, w, h), out);
+	return 0;
+}
+
+static const struct spec specs[] = {
+	{ "const", "constant importance", {
+	    { "v", 1.0, 0.0, 1e300, "the value" } }, eval_const },
+	{ "blob", "Gaussian blob (exact pixel means)", {
+	    { "x", 0.5, -10.0, 10.0, "centre x" },
+	    { "y", 0.5, -10.0, 10.0, "centre y" },
+	    { "sigma", 0.15, 1e-6, 100.0, "standard deviation" },
+	    { "floor", 0.0, 0.0, 1e300, "constant added everywhere" },
+	    { "peak", 1.0, 1e-300, 1e300, "height of the Gaussian" } },
+	    eval_blob },
+	{ "ramp", "linear gradient", {
+	    { "from", 0.0, 0.0, 1e300, "value at the start edge" },
+	    { "to", 1.0, 0.0, 1e300, "value at the end edge" },
+	    { "angle", 0.0, -360.0, 360.0,
+	      "direction in degrees, 0 = left to right, 90 = top to bottom" } },
+	    eval_ramp },
+	{ "aniso", "thin ridge along a line through the centre", {
+	    { "angle", 30.0, -360.0, 360.0, "direction of the ridge, degrees" },
+	    { "width", 0.02, 1e-4, 10.0, "Gaussian width across the ridge" },
+	    { "floor", 0.001, 0.0, 1e300, "constant added everywhere" } },
+	    eval_aniso },
+	{ "sky", "equirectangular HDR sky with a sun", {
+	    { "elev", 30.0, -90.0, 90.0, "sun elevation, degrees" },
+	    { "azim", 90.0, -360.0, 360.0, "sun azimuth, degrees (x = azim/360)" },
+	    { "size", 2.0, 0.05, 90.0, "angular radius of the sun lobe, degrees" },
+	    { "sun", 1e5, 0.0, 1e300, "sun peak over the zenith sky" },
+	    { "ground", 0.05, 0.0, 1e300, "ground value below the horizon" } },
+	    eval_sky },
+};
+#define NSPECS (sizeof specs / sizeof specs[0])
+
+static const struct spec *find_spec(const char *s, size_t len)
+{
+	for (size_t i = 0; i < NSPECS; i++)
+		if (strlen(specs[i].name) == len &&
+		    strncmp(specs[i].name, s, len) == 0)
+			return &specs[i];
+	return NULL;
+}
+
+int imap_is_spec(const char *src)
+{
+	return find_spec(src, strcspn(src, ":")) != NULL;
+}
+
+static int set_param(const struct spec *sp, const char *spec, char *item,
+    int pos, double *val)
+{
+	char *eq = strchr(item, '=');
+	const char *key = item, *v = eq ? eq + 1 : item;
+	int k = -1;
+
+	if (eq == NULL) {
+		if (pos != 0)
+			return frs_fail("%s: '%s': only the first parameter may "
+			    "omit its name", spec, item);
+		k = 0;
+	} else {
+		*eq = '\0';
+		for (int i = 0; i < MAXPARAM && sp->p[i].key; i++)
+			if (strcmp(sp->p[i].key, key) == 0)
+				k = i;
+	}
+	if (k < 0) {
+		char known[128] = "";
+		for (int i = 0; i < MAXPARAM && sp->p[i].key; i++) {
+			strncat(known, i ? ", " : "", sizeof known - strlen(known) - 1);
+			strncat(known, sp->p[i].key, sizeof known - strlen(known) - 1);
+		}
+		return frs_fail("%s: unknown parameter '%s' of %s (%s)", spec, key,
+		    sp->name, known);
+	}
+	if (parse_double(sp->p[k].key, v, sp->p[k].min, sp->p[k].max,
+	    &val[k]) < 0)
+		return frs_fail_context(spec);
+	return 0;
+}
+
+static int parse_spec(const char *spec, const struct spec **out, double *val)
+{
+	size_t nlen = strcspn(spec, ":");
+	const struct spec *sp = find_spec(spec, nlen);
+	char *copy, *item, *save = NULL;
+	int pos = 0, rc = 0;
+
+	if (sp == NULL)
+		return frs_fail("%s: unknown map '%.*s' (const, blob, ramp, "
+		    "aniso, sky)", spec, (int)nlen, spec);
+	for (int i = 0; i < MAXPARAM; i++)
+		val[i] = sp->p[i].def;
+	*out = sp;
+	if (spec[nlen] == '\0')
+		return 0;
+	copy = strdup(spec + nlen + 1);
+	if (copy == NULL)
+		return frs_fail("out of memory");
+	for (item = strtok_r(copy, ",", &save); item && rc == 0;
+	    item = strtok_r(NULL, ",", &save))
+		rc = set_param(sp, spec, item, pos++, val);
+	if (rc == 0 && pos == 0)
+		rc = frs_fail("%s: empty parameter list", spec);
+	free(copy);
+	return rc;
+}
+
+int imap_spec(const char *spec, uint32_t w, uint32_t h, struct frs_imap *m)
+{
+	const struct spec *sp = NULL;
+	double val[MAXPARAM];
+
+	memset(m, 0, sizeof *m);
+	if (parse_spec(spec, &sp, val) < 0)
+		return -1;
+	if (imap_alloc(m, w, h) < 0)
+		return frs_fail_context(spec);
+	if (sp->eval(val, w, h, m->v) < 0) {
+		imap_free(m);
+		return frs_fail_context(spec);
+	}
+	return 0;
+}
+
+const char *imap_spec_help(void)
+{
+	static char buf[4096];
+	size_t len = 0;
+
+	if (buf[0])
+		return buf;
+	for (size_t i = 0; i < NSPECS; i++) {
+		len += (size_t)snprintf(buf + len, sizeof buf - len, "  %-6s %s\n",
+		    specs[i].name, specs[i].help);
+		for (int k = 0; k < MAXPARAM && specs[i].p[k].key; k++)
+			len += (size_t)snprintf(buf + len, sizeof buf - len,
+			    "         %s=%g  %s\n", specs[i].p[k].key,
+			    specs[i].p[k].def, specs[i].p[k].help);
+	}
+	return buf;
+}

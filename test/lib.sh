@@ -1,0 +1,64 @@
+# Helpers for the shell tests; source it.  Each check prints "ok - what"
+# or "not ok - what"; test/run.sh counts them.
+set -u
+: "${BIN:?BIN must name the directory of the programs}"
+PATH="$BIN:$PATH"
+SHARED=${FRS_SHARED:-../shared}
+T=$(mktemp -d "${TMPDIR:-/tmp}/frs-test.XXXXXX")
+trap 'rm -rf "$T"' EXIT INT TERM
+
+ok() { echo "ok - $*"; }
+nok() { echo "not ok - $*"; }
+
+# check WHAT CMD...: CMD succeeds.
+check() {
+	what=$1
+	shift
+	if "$@" >"$T/out" 2>"$T/err"; then
+		ok "$what"
+	else
+		nok "$what"
+		echo "# command: $*"
+		sed 's/^/# /' "$T/err" | head -n 10
+	fi
+}
+
+# expect_fail WHAT STATUS PATTERN OUTFILE CMD...: CMD exits with STATUS,
+# its standard error contains PATTERN (fixed string), and OUTFILE (may be
+# "-" for none) does not exist afterwards, nor any temporary beside it.
+expect_fail() {
+	what=$1 status=$2 pattern=$3 outfile=$4
+	shift 4
+	"$@" >"$T/out" 2>"$T/err"
+	rc=$?
+	why=""
+	[ "$rc" -eq "$status" ] || why="exit status $rc, expected $status"
+	grep -qF -- "$pattern" "$T/err" || why="$why; stderr lacks '$pattern'"
+	if [ "$outfile" != "-" ]; then
+		[ -e "$outfile" ] && why="$why; $outfile was left behind"
+		d=$(dirname "$outfile")
+		if [ -d "$d" ] && ls "$d" | grep -q '\.tmp\.'; then
+			why="$why; a temporary file was left in $d"
+		fi
+	fi
+	if [ -z "$why" ]; then
+		ok "$what"
+	else
+		nok "$what: $why"
+		echo "# command: $*"
+		sed 's/^/# stderr: /' "$T/err" | head -n 5
+	fi
+}
+
+# value KEY FILE: the value of "KEY value" lines (imap info output).
+value() {
+	awk -v k="$1" '$1 == k { print $2 }' "$2"
+}
+
+# near A B TOL: |A - B| <= TOL * max(1, |B|)
+near() {
+	awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN {
+		d = a - b; if (d < 0) d = -d
+		m = b < 0 ? -b : b; if (m < 1) m = 1
+		exit !(d <= t * m) }'
+}

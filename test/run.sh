@@ -1,0 +1,114 @@
+#!/bin/sh
+# Run every test: the cmocka binaries in BUILD/test and the shell tests
+# test/t_*.sh (against the programs in BUILD/bin), plus the man page lint.
+# The last line is "N passed, N failed"; the exit status is 0 only when
+# nothing failed.
+#   test/run.sh BUILD [NAME...]   NAME: test_x or t_x to run only those
+set -u
+build=${1:?usage: test/run.sh BUILD [NAME...]}
+shift
+top=$(cd "$(dirname "$0")/.." && pwd)
+cd "$top" || exit 1
+logs=$build/test-logs
+mkdir -p "$logs"
+export BIN="$top/$build/bin"
+export FRS_SHARED="${FRS_SHARED:-$top/../shared}"
+# Sanitizer settings: fail hard, and keep LeakSanitizer on.
+export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=0:detect_leaks=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+
+pass=0
+fail=0
+failed=""
+
+want() {
+	[ $# -eq 0 ] && return 0
+	for w in $sel; do [ "$w" = "$1" ] && return 0; done
+	return 1
+}
+sel="$*"
+
+# cmocka prints "[  PASSED  ] N test(s)." and "[  FAILED  ] N test(s)".
+run_cmocka() {
+	name=$(basename "$1")
+	log=$logs/$name.log
+	# One PoCL kernel cache per test binary, shared by its runs.
+	POCL_CACHE_DIR="$top/$build/pocl-cache/$name" && mkdir -p "$POCL_CACHE_DIR"
+	export POCL_CACHE_DIR
+	"$1" >"$log" 2>&1
+	rc=$?
+	p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)
+	f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)
+	p=${p:-0}
+	f=${f:-0}
+	if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
+		f=1	# crashed or a sanitizer stopped it
+	fi
+	pass=$((pass + p))
+	fail=$((fail + f))
+	if [ "$f" -ne 0 ]; then
+		failed="$failed $name"
+		echo "FAIL $name ($p passed, $f failed; log $log)"
+		grep -E '^\[  (ERROR|FAILED)|ERROR|runtime error|Sanitizer' "$log" |
+		    head -n 20
+	else
+		echo "ok   $name ($p)"
+	fi
+}
+
+# Shell tests print "ok - what" and "not ok - what" lines.
+run_shell() {
+	name=$(basename "$1" .sh)
+	log=$logs/$name.log
+	POCL_CACHE_DIR="$top/$build/pocl-cache/$name" && mkdir -p "$POCL_CACHE_DIR"
+	export POCL_CACHE_DIR
+	sh "$1" >"$log" 2>&1
+	rc=$?
+	p=$(grep -c '^ok ' "$log")
+	f=$(grep -c '^not ok ' "$log")
+	if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
+		f=1
+		echo "not ok - $name exited with status $rc" >>"$log"
+	fi
+	pass=$((pass + p))
+	fail=$((fail + f))
+	if [ "$f" -ne 0 ]; then
+		failed="$failed $name"
+		echo "FAIL $name ($p passed, $f failed; log $log)"
+		grep -A3 '^not ok' "$log" | head -n 30
+	else
+		echo "ok   $name ($p)"
+	fi
+}
+
+for t in "$build"/test/test_*; do
+	case $t in *.o|*.d) continue ;; esac
+	[ -x "$t" ] || continue
+	want "$(basename "$t")" $sel && run_cmocka "$t"
+done
+for t in test/t_*.sh; do
+	[ -f "$t" ] || continue
+	want "$(basename "$t" .sh)" $sel && run_shell "$t"
+done
+
+if want lint-man $sel; then
+	if command -v mandoc >/dev/null 2>&1; then
+		out=$(mandoc -Tlint -Wwarning man/man*/*.[0-9] 2>&1)
+		if [ -z "$out" ]; then
+			pass=$((pass + 1))
+			echo "ok   lint-man"
+		else
+			fail=$((fail + 1))
+			failed="$failed lint-man"
+			echo "FAIL lint-man"
+			echo "$out" | head -n 20
+		fi
+	else
+		fail=$((fail + 1))
+		echo "FAIL lint-man (mandoc missing: run scripts/deps.sh)"
+	fi
+fi
+
+[ -n "$failed" ] && echo "failed:$failed"
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -1,0 +1,94 @@
+/* The counter-based generator: Random123 known answers, order
+ * independence, and uniformity. */
+#include "testutil.h"
+#include "rng.h"
+
+/* Random123 tests/kat_vectors, "philox4x32 10": counter, key, result. */
+static void known_answers(void **state)
+{
+	static const uint32_t kat[3][10] = {
+		{ 0, 0, 0, 0, 0, 0,
+		  0x6627e8d5, 0xe169c58d, 0xbc57ac4c, 0x9b00dbd8 },
+		{ 0xffffffff, 0xffffffff, 0xffffffff, 0xffffffff, 0xffffffff,
+		  0xffffffff, 0x408f276d, 0x41c83b0e, 0xa20bc7c6, 0x6d5451fd },
+		{ 0x243f6a88, 0x85a308d3, 0x13198a2e, 0x03707344, 0xa4093822,
+		  0x299f31d0, 0xd16cfe09, 0x94fdcceb, 0x5001e420, 0x24126ea1 },
+	};
+	(void)state;
+	for (int i = 0; i < 3; i++) {
+		uint32_t out[4];
+		frs_philox4x32_10(kat[i], kat[i] + 4, out);
+		for (int k = 0; k < 4; k++)
+			assert_int_equal(out[k], kat[i][6 + k]);
+	}
+}
+
+/* A number depends only on (seed, stream, index), never on the order in
+ * which numbers are drawn. */
+static void order_independent(void **state)
+{
+	struct frs_rng r;
+	uint64_t seq[1000];
+	(void)state;
+
+	frs_rng_init(&r, 12345, FRS_STREAM_TEST);
+	for (int i = 0; i < 1000; i++)
+		seq[i] = frs_rng_next64(&r);
+	for (int i = 999; i >= 0; i -= 7)
+		assert_true(frs_rand64(12345, FRS_STREAM_TEST, (uint64_t)i) ==
+		    seq[i]);
+	/* Different seeds, streams and high index bits give other numbers. */
+	assert_true(frs_rand64(12346, FRS_STREAM_TEST, 0) != seq[0]);
+	assert_true(frs_rand64(12345, FRS_STREAM_JITTER, 0) != seq[0]);
+	assert_true(frs_rand64(12345, FRS_STREAM_TEST, (uint64_t)1 << 32) !=
+	    seq[0]);
+}
+
+/* Chi-square of 100000 uniforms in 100 bins; with 99 degrees of freedom
+ * the statistic exceeds 160 with probability below 1e-4. */
+static void uniform01(void **state)
+{
+	unsigned bins[100] = { 0 };
+	double chi = 0.0, e = 1000.0;
+	(void)state;
+
+	for (uint64_t i = 0; i < 100000; i++) {
+		double u = frs_rand01(7, FRS_STREAM_TEST, i);
+		assert_true(u >= 0.0 && u < 1.0);
+		bins[(int)(u * 100.0)]++;
+	}
+	for (int b = 0; b < 100; b++)
+		chi += (bins[b] - e) * (bins[b] - e) / e;
+	assert_true(chi < 160.0);
+}
+
+/* Bounded integers: every residue reachable and no bias for a bound that
+ * does not divide 2^64. */
+static void below(void **state)
+{
+	struct frs_rng r;
+	unsigned c[3] = { 0 };
+	(void)state;
+
+	frs_rng_init(&r, 99, FRS_STREAM_TEST);
+	for (int i = 0; i < 30000; i++) {
+		uint64_t v = frs_rng_below(&r, 3);
+		assert_true(v < 3);
+		c[v]++;
+	}
+	for (int k = 0; k < 3; k++)	/* 10000 +- 5 sigma (82) */
+		assert_true(c[k] > 9590 && c[k] < 10410);
+	assert_true(frs_rng_below(&r, 1) == 0);
+	assert_true(frs_rng_below(&r, UINT64_MAX) < UINT64_MAX);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(known_answers),
+		cmocka_unit_test(order_independent),
+		cmocka_unit_test(uniform01),
+		cmocka_unit_test(below),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

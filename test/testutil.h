@@ -1,0 +1,92 @@
+/* Shared helpers for the cmocka tests. */
+#ifndef FRS_TESTUTIL_H
+#define FRS_TESTUTIL_H
+
+#define _POSIX_C_SOURCE 200809L
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "err.h"
+
+/* A fresh temporary directory per test binary. */
+static inline const char *tu_dir(void)
+{
+	static char dir[64];
+	if (!dir[0]) {
+		snprintf(dir, sizeof dir, "/tmp/frs-unit.XXXXXX");
+		if (mkdtemp(dir) == NULL)
+			abort();
+	}
+	return dir;
+}
+
+static inline const char *tu_path(const char *name)
+{
+	static char buf[8][256];
+	static int k;
+	k = (k + 1) % 8;
+	snprintf(buf[k], sizeof buf[k], "%s/%s", tu_dir(), name);
+	return buf[k];
+}
+
+static inline void tu_write(const char *path, const void *data, size_t n)
+{
+	FILE *fp = fopen(path, "wb");
+	assert_non_null(fp);
+	assert_int_equal(fwrite(data, 1, n, fp), n);
+	assert_int_equal(fclose(fp), 0);
+}
+
+/* Read a whole file; caller frees. */
+static inline unsigned char *tu_read(const char *path, size_t *n)
+{
+	FILE *fp = fopen(path, "rb");
+	unsigned char *b;
+	long len;
+	assert_non_null(fp);
+	fseek(fp, 0, SEEK_END);
+	len = ftell(fp);
+	fseek(fp, 0, SEEK_SET);
+	b = malloc((size_t)len + 1);
+	assert_non_null(b);
+	assert_int_equal(fread(b, 1, (size_t)len, fp), (size_t)len);
+	fclose(fp);
+	*n = (size_t)len;
+	return b;
+}
+
+/* The last error message contains all the given fragments. */
+#define assert_err_has(...) tu_err_has(__FILE__, __LINE__, __VA_ARGS__, NULL)
+static inline void tu_err_has(const char *file, int line, ...)
+{
+	va_list ap;
+	const char *frag;
+	va_start(ap, line);
+	while ((frag = va_arg(ap, const char *)) != NULL)
+		if (strstr(frs_errmsg(), frag) == NULL) {
+			va_end(ap);
+			print_error("message '%s' lacks '%s'\n", frs_errmsg(),
+			    frag);
+			_fail(file, line);
+			return;
+		}
+	va_end(ap);
+	(void)file;
+}
+
+static inline void tu_rm_rf(void)
+{
+	char cmd[128];
+	snprintf(cmd, sizeof cmd, "rm -rf '%s'", tu_dir());
+	if (system(cmd) != 0)
+		fprintf(stderr, "could not remove %s\n", tu_dir());
+}
+
+#endif
