@@ -16,6 +16,7 @@ MANDIR ?= $(PREFIX)/share/man
 DESTDIR ?=
 
 CC ?= cc
+CXX ?= c++
 PKG_CONFIG ?= pkg-config
 OPT ?= -O2 -g
 WARN = -Wall -Wextra -Wshadow -Wconversion -Wno-sign-conversion
@@ -24,11 +25,15 @@ CSTD = -std=c11
 # Recursive (=) so that a sub-make started after scripts/deps.sh sees the
 # packages it installed.
 PKG_CFLAGS = $(shell $(PKG_CONFIG) --cflags libpng OpenEXR OpenCL 2>/dev/null)
-PKG_LIBS = $(shell $(PKG_CONFIG) --libs libpng OpenCL 2>/dev/null) -lOpenEXRCore
+# OpenEXR: the C core, plus the C++ library for the DWAA/DWAB codecs that
+# the 3.1 core lacks (src/lib/exrcxx.cc).
+PKG_LIBS = $(shell $(PKG_CONFIG) --libs libpng OpenEXR OpenCL 2>/dev/null) \
+	-lstdc++
 CMOCKA_LIBS = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
 PROGS = imap
 LIBSRC = $(wildcard src/lib/*.c)
+LIBCXXSRC = $(wildcard src/lib/*.cc)
 TESTSRC = $(wildcard test/test_*.c)
 
 # Variant: rel (bin/, portable), san (sanitizers, for make check),
@@ -49,7 +54,8 @@ ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) $(CFLAGS) \
 ALL_LDFLAGS = $(VFLAGS) $(LDFLAGS)
 LIBS = $(PKG_LIBS) -lm -lpthread
 
-LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o)
+LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o) \
+	$(LIBCXXSRC:src/lib/%.cc=$(B)/lib/%.o)
 PROGBIN = $(PROGS:%=$(B)/bin/%)
 TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%)
 
@@ -74,6 +80,11 @@ $(B)/libfrs.a: $(LIBOBJ)
 $(B)/lib/%.o: src/lib/%.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(B)/lib/%.o: src/lib/%.cc
+	@mkdir -p $(@D)
+	$(CXX) -std=c++14 -Wall -Wextra $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
+	    $(CXXFLAGS) -MMD -MP -c $< -o $@
 
 $(B)/obj/%.o: src/%.c
 	@mkdir -p $(@D)

@@ -5,7 +5,7 @@
 #   scripts/deps.sh --check  only report; exit 1 if something is missing
 set -eu
 
-PKGS="gcc make libc6-dev pkg-config libpng-dev libopenexr-dev libcmocka-dev
+PKGS="gcc g++ make libc6-dev pkg-config libpng-dev libopenexr-dev libcmocka-dev
 ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo mandoc gnuplot-nox"
 
 missing=""

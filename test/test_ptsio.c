@@ -136,6 +136,8 @@ static void bad_text(void **state)
 	expect_bad("hdr.txt", "#pts dims=0 extra=0\n", 20, "coordinates");
 	expect_bad("cnt.txt", "#pts dims=1 extra=0 count=3\n0.5\n", 32,
 	    "truncated: 1 of 3");
+	expect_bad("cnt2.txt", "#pts dims=1 extra=0 count=1\n0.5\n0.25\n", 37,
+	    ":3: more points than the header's count 1");
 	expect_bad("bin.txt", "\x01\x02\x00\x03", 4, "not a point file");
 }
 

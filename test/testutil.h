@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include <math.h>
 
 #include "err.h"
 
@@ -80,6 +81,20 @@ static inline void tu_err_has(const char *file, int line, ...)
 	va_end(ap);
 	(void)file;
 }
+
+/* |a - b| <= tol; cmocka 1.1.5 has no assert_double_equal. */
+#define assert_near(a, b, tol) tu_near(__FILE__, __LINE__, (a), (b), (tol))
+static inline void tu_near(const char *file, int line, double a, double b,
+    double tol)
+{
+	if (!(fabs(a - b) <= tol)) {
+		print_error("%.17g != %.17g (tolerance %g)\n", a, b, tol);
+		_fail(file, line);
+	}
+}
+#ifndef assert_double_equal
+#define assert_double_equal assert_near
+#endif
 
 static inline void tu_rm_rf(void)
 {

@@ -25,6 +25,17 @@ static void on_signal(int sig)
 	raise(sig);
 }
 
+/* A signal the parent set to be ignored (SIGINT for a background job)
+ * stays ignored. */
+static void catch_unless_ignored(int sig, const struct sigaction *sa)
+{
+	struct sigaction old;
+
+	if (sigaction(sig, NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+		return;
+	sigaction(sig, sa, NULL);
+}
+
 static void install_handlers(void)
 {
 	struct sigaction sa;
@@ -35,10 +46,10 @@ static void install_handlers(void)
 	memset(&sa, 0, sizeof sa);
 	sa.sa_handler = on_signal;
 	sigemptyset(&sa.sa_mask);
-	sigaction(SIGINT, &sa, NULL);
-	sigaction(SIGTERM, &sa, NULL);
-	sigaction(SIGHUP, &sa, NULL);
-	sigaction(SIGPIPE, &sa, NULL);
+	catch_unless_ignored(SIGINT, &sa);
+	catch_unless_ignored(SIGTERM, &sa);
+	catch_unless_ignored(SIGHUP, &sa);
+	catch_unless_ignored(SIGPIPE, &sa);
 	atexit(outfile_cleanup_all);
 }
 
@@ -74,7 +85,7 @@ static int open_stdout(struct outfile *o, int binary)
 {
 	if (binary && isatty(STDOUT_FILENO))
 		return frs_fail("<stdout>: refusing to write binary data to a "
-		    "terminal (use -o FILE, a pipe, or -T for text)");
+		    "terminal (use -o FILE or a pipe)");
 	o->fp = stdout;
 	o->name = "<stdout>";
 	return 0;

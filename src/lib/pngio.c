@@ -13,19 +13,24 @@ struct pngctx {
 	const unsigned char *buf;
 	size_t len, pos;
 	char msg[256];
+	char warning[256];	/* libpng explains some errors only here */
 };
 
 static void on_error(png_structp png, png_const_charp msg)
 {
 	struct pngctx *c = png_get_error_ptr(png);
-	snprintf(c->msg, sizeof c->msg, "%s", msg);
+	if (c->warning[0])
+		snprintf(c->msg, sizeof c->msg, "%s (%.120s)", msg, c->warning);
+	else
+		snprintf(c->msg, sizeof c->msg, "%s", msg);
 	png_longjmp(png, 1);
 }
 
 static void on_warning(png_structp png, png_const_charp msg)
 {
-	(void)png;
-	(void)msg;
+	struct pngctx *c = png_get_error_ptr(png);
+	if (!c->warning[0])
+		snprintf(c->warning, sizeof c->warning, "%s", msg);
 }
 
 static void read_mem(png_structp png, png_bytep out, size_t n)
@@ -69,7 +74,7 @@ static void rows_to_map(png_bytep *rows, int channels, int depth, int srgb,
 int imap_read_png_mem(const unsigned char *buf, size_t len, const char *name,
     int srgb, struct frs_imap *m)
 {
-	struct pngctx ctx = { buf, len, 0, "" };
+	struct pngctx ctx = { buf, len, 0, "", "" };
 	png_structp png;
 	png_infop info = NULL;
 	png_bytep *volatile rows = NULL;
@@ -160,7 +165,7 @@ static void write_rows(png_structp png, const struct frs_imap *m,
 
 int imap_write_png16(FILE *fp, const char *name, const struct frs_imap *m)
 {
-	struct pngctx ctx = { NULL, 0, 0, "" };
+	struct pngctx ctx = { NULL, 0, 0, "", "" };
 	png_structp png;
 	png_infop info = NULL;
 	png_bytep volatile row = NULL;

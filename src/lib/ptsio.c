@@ -295,6 +295,9 @@ static int text_next(struct pts_reader *r, double *rec)
 			return rc;
 		}
 	}
+	if (r->count != 0 && r->got == r->count)
+		return frs_fail("%s:%lu: more points than the header's count "
+		    "%llu", r->name, r->line, (unsigned long long)r->count);
 	if (parse_line(r, rec) < 0)
 		return -1;
 	return 1;
@@ -305,8 +308,13 @@ static int binary_next(struct pts_reader *r, double *rec)
 	size_t ncol = r->dims + r->extra;
 	size_t got;
 
-	if (r->count != 0 && r->got == r->count)
+	if (r->count != 0 && r->got == r->count) {
+		/* A stream has no length to check up front. */
+		if (getc(r->fp) != EOF)
+			return frs_fail("%s: data after the %llu points of the "
+			    "header", r->name, (unsigned long long)r->count);
 		return 0;
+	}
 	got = fread(rec, 8, ncol, r->fp);
 	if (got == 0 && !ferror(r->fp)) {
 		if (r->count != 0)

@@ -1,0 +1,129 @@
+#!/bin/sh
+# imap: generation, statistics, conversion, real HDR maps, bad input.
+. "$(dirname "$0")/lib.sh"
+
+# The issue's own acceptance line.
+check "gen blob -s 256x256 -o blob.exr" imap gen blob -s 256x256 -o "$T/blob.exr"
+check "info blob.exr" imap info "$T/blob.exr"
+cp "$T/out" "$T/info.exr"
+[ "$(value width "$T/info.exr")" = 256 ] && [ "$(value height "$T/info.exr")" = 256 ] &&
+    ok "info gives the size" || nok "info gives the size"
+
+# The file holds what the spec defines: same statistics as the spec itself
+# (float precision in the file).
+imap info -s 256x256 blob >"$T/info.spec" 2>"$T/err"
+for k in mean max min sum; do
+	if near "$(value $k "$T/info.exr")" "$(value $k "$T/info.spec")" 1e-6; then
+		ok "blob.exr $k matches the spec"
+	else
+		nok "blob.exr $k matches the spec"
+	fi
+done
+
+# PNG is scaled to its maximum: mean / max stays within 16-bit
+# quantisation.
+check "gen blob png" imap gen blob -s 256x256 -o "$T/blob.png"
+imap info "$T/blob.png" >"$T/info.png"
+want=$(awk -v m="$(value mean "$T/info.spec")" -v x="$(value max "$T/info.spec")" \
+    'BEGIN { printf "%.12g", m / x }')
+[ "$(value max "$T/info.png")" = 1 ] &&
+near "$(value mean "$T/info.png")" "$want" 2e-6 &&
+    ok "png mean within quantisation" || nok "png mean within quantisation"
+
+# Area-weighted resampling keeps the mean.
+check "convert -s 64x32" imap convert -s 64x32 "$T/blob.exr" "$T/small.exr"
+imap info "$T/small.exr" >"$T/info.small"
+[ "$(value width "$T/info.small")" = 64 ] && [ "$(value height "$T/info.small")" = 32 ] &&
+    ok "convert resizes" || nok "convert resizes"
+near "$(value mean "$T/info.small")" "$(value mean "$T/info.exr")" 1e-6 &&
+    ok "resampling keeps the mean" || nok "resampling keeps the mean"
+
+# Standard input and output.
+imap info - <"$T/blob.exr" >"$T/info.stdin" 2>"$T/err" &&
+    [ "$(value mean "$T/info.stdin")" = "$(value mean "$T/info.exr")" ] &&
+    ok "info reads standard input" || nok "info reads standard input"
+imap gen ramp --format exr | imap info - >"$T/info.pipe" 2>"$T/err" &&
+    near "$(value mean "$T/info.pipe")" 0.5 1e-7 &&
+    ok "gen | info through a pipe" || nok "gen | info through a pipe"
+
+# --equirect on a constant map: the mean becomes 2/pi.
+imap info --equirect -s 16x64 const >"$T/info.eq"
+near "$(value mean "$T/info.eq")" 0.636619772 1e-8 &&
+    ok "equirect weight integrates to 2/pi" || nok "equirect weight integrates to 2/pi"
+
+# Real HDR environment maps (DWAB-compressed float RGB).
+for m in sunset forest interior; do
+	f=$SHARED/data/env/$m.exr
+	if imap info "$f" >"$T/info.$m" 2>"$T/err" &&
+	    [ "$(value width "$T/info.$m")" = 1024 ] &&
+	    [ "$(value nonfinite "$T/info.$m")" = 0 ]; then
+		ok "real map $m.exr loads"
+	else
+		nok "real map $m.exr loads"
+		sed 's/^/# /' "$T/err"
+	fi
+done
+
+# interior.exr has small negative luminance values from lossy DWA:
+# clamped with one warning by default, an error with --strict.
+neg=$(value negatives "$T/info.interior")
+[ "${neg:-0}" -gt 1000 ] && ok "interior.exr has $neg negative pixels" ||
+    nok "interior.exr negative pixels counted (got '$neg')"
+imap convert -s 128x64 "$SHARED/data/env/interior.exr" "$T/int.exr" 2>"$T/err"
+if [ $? -eq 0 ] && [ "$(grep -c 'negative pixels clamped' "$T/err")" = 1 ] &&
+    grep -q "$neg negative" "$T/err"; then
+	ok "negatives clamped with one warning naming the count"
+else
+	nok "negatives clamped with one warning naming the count"
+	sed 's/^/# /' "$T/err"
+fi
+imap info "$T/int.exr" >"$T/info.int"
+[ "$(value negatives "$T/info.int")" = 0 ] && ok "clamped output has no negatives" ||
+    nok "clamped output has no negatives"
+expect_fail "--strict refuses negative importance" 1 "is negative" "$T/strict.exr" \
+    imap convert --strict "$SHARED/data/env/interior.exr" "$T/strict.exr"
+grep -q "pixel (" "$T/err" && ok "--strict names the pixel" || nok "--strict names the pixel"
+
+# Bad input: exit 1, file and problem named, no output left behind.
+: >"$T/empty.png"
+expect_fail "empty file" 1 "empty.png: empty file" "$T/o1.exr" \
+    imap convert "$T/empty.png" "$T/o1.exr"
+echo "just text" >"$T/text.png"
+expect_fail "not a PNG" 1 "not a PNG or OpenEXR" "$T/o2.exr" \
+    imap convert "$T/text.png" "$T/o2.exr"
+head -c 300 "$T/blob.png" >"$T/cut.png"
+expect_fail "truncated PNG" 1 "cut.png: bad PNG" "$T/o3.exr" \
+    imap convert "$T/cut.png" "$T/o3.exr"
+head -c 2000 "$SHARED/data/env/sunset.exr" >"$T/cut.exr"
+expect_fail "truncated EXR" 1 "cut.exr" "$T/o4.png" \
+    imap convert "$T/cut.exr" "$T/o4.png"
+expect_fail "unknown spec" 1 "unknown parameter 'radius'" "$T/o5.exr" \
+    imap gen blob:radius=3 -o "$T/o5.exr"
+expect_fail "unknown map name" 2 "not a procedural map" "$T/o6.exr" \
+    imap gen blobby -o "$T/o6.exr"
+expect_fail "missing input" 1 "nothere.exr: no such file" "$T/o7.exr" \
+    imap convert "$T/nothere.exr" "$T/o7.exr"
+expect_fail "bad size" 2 "-s" "$T/o8.exr" imap gen blob -s 0x5 -o "$T/o8.exr"
+expect_fail "junk size" 2 "-s" "$T/o9.exr" imap gen blob -s 12x -o "$T/o9.exr"
+expect_fail "unknown option" 2 "usage" "$T/o10.exr" imap gen blob --frobnicate -o "$T/o10.exr"
+expect_fail "unknown extension" 2 "unknown extension" "$T/o11.tif" imap gen blob -o "$T/o11.tif"
+expect_fail "missing directory" 1 "$T/no/dir/x.exr: cannot create" "$T/no/dir/x.exr" \
+    imap gen blob -o "$T/no/dir/x.exr"
+expect_fail "full disk" 1 "/dev/full" - imap gen blob --format exr -o /dev/full
+expect_fail "no command" 2 "no command" - imap
+expect_fail "unknown command" 2 "unknown command" - imap frob
+
+# A signal during a long run leaves no file and no temporary (SIGTERM:
+# a background job of a script ignores SIGINT).
+mkdir "$T/sig"
+imap gen sky -s 8000x8000 -o "$T/sig/big.exr" 2>/dev/null &
+pid=$!
+sleep 1
+kill -TERM $pid 2>/dev/null
+wait $pid
+rc=$?
+if [ $rc -ne 0 ] && [ -z "$(ls "$T/sig")" ]; then
+	ok "SIGTERM leaves nothing behind"
+else
+	nok "SIGTERM leaves nothing behind (status $rc, left: $(ls "$T/sig"))"
+fi

@@ -1,0 +1,107 @@
+/* Atomic output: a target appears only complete; errors and aborts leave
+ * nothing (not even a temporary), an old file survives a failed write. */
+#include "testutil.h"
+#include "outfile.h"
+
+#include <dirent.h>
+
+static int count_entries(const char *dir)
+{
+	DIR *d = opendir(dir);
+	struct dirent *e;
+	int n = 0;
+	assert_non_null(d);
+	while ((e = readdir(d)) != NULL)
+		if (e->d_name[0] != '.')
+			n++;
+	closedir(d);
+	return n;
+}
+
+static void commit(void **state)
+{
+	struct outfile o;
+	const char *p = tu_path("c.txt");
+	size_t n;
+	unsigned char *b;
+	(void)state;
+
+	assert_int_equal(outfile_open(&o, p, 0), 0);
+	assert_true(access(p, F_OK) != 0);	/* not there before commit */
+	fputs("hello\n", o.fp);
+	assert_int_equal(outfile_commit(&o), 0);
+	b = tu_read(p, &n);
+	assert_int_equal(n, 6);
+	assert_memory_equal(b, "hello\n", 6);
+	free(b);
+	assert_int_equal(count_entries(tu_dir()), 1);
+	unlink(p);
+}
+
+static void abort_keeps_old(void **state)
+{
+	struct outfile o;
+	const char *p = tu_path("old.txt");
+	size_t n;
+	unsigned char *b;
+	(void)state;
+
+	tu_write(p, "old", 3);
+	assert_int_equal(outfile_open(&o, p, 1), 0);
+	fputs("half of the new conte", o.fp);
+	outfile_abort(&o);
+	b = tu_read(p, &n);
+	assert_int_equal(n, 3);
+	assert_memory_equal(b, "old", 3);
+	free(b);
+	assert_int_equal(count_entries(tu_dir()), 1);
+	unlink(p);
+}
+
+static void bad_targets(void **state)
+{
+	struct outfile o;
+	(void)state;
+
+	assert_int_equal(outfile_open(&o, "/nonexistent/dir/x.png", 0), -1);
+	assert_err_has("/nonexistent/dir/x.png", "No such file or directory");
+	assert_int_equal(outfile_open(&o, tu_dir(), 0), -1);
+	assert_err_has("is a directory");
+}
+
+/* /dev/full is a device: written in place, and the error shows at the
+ * latest on commit. */
+static void full_disk(void **state)
+{
+	struct outfile o;
+	static char big[1 << 16];
+	int rc = 0;
+	(void)state;
+
+	if (access("/dev/full", W_OK) != 0)
+		skip();
+	assert_int_equal(outfile_open(&o, "/dev/full", 1), 0);
+	if (fwrite(big, 1, sizeof big, o.fp) != sizeof big)
+		rc = -1;
+	(void)rc;
+	assert_int_equal(outfile_commit(&o), -1);
+	assert_err_has("/dev/full", "No space left on device");
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	tu_rm_rf();
+	return 0;
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(commit),
+		cmocka_unit_test(abort_keeps_old),
+		cmocka_unit_test(bad_targets),
+		cmocka_unit_test(full_disk),
+	};
+	return cmocka_run_group_tests(tests, NULL, teardown);
+}
