@@ -2,7 +2,7 @@
  * imap: make, convert and describe importance maps.
  */
 #define _POSIX_C_SOURCE 200809L
-#include <ctype.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,9 +13,10 @@
 #include "outfile.h"
 
 static const char usage[] =
-    "usage: imap gen [-q] [-s WxH] [--equirect] [--format png|exr] [-o FILE] SPEC\n"
+    "usage: imap gen [-q] [-s WxH] [--equirect] [--log] [--format png|exr]\n"
+    "                [-o FILE] SPEC\n"
     "       imap info [-s WxH] [--srgb] [--strict] [--equirect] FILE|SPEC\n"
-    "       imap convert [-s WxH] [--srgb] [--strict] [--equirect]\n"
+    "       imap convert [-s WxH] [--srgb] [--strict] [--equirect] [--log]\n"
     "                    [--format png|exr] IN OUT\n"
     "\n"
     "  -s, --size WxH     size (N for NxN); specs default to 128x128,\n"
@@ -27,6 +28,9 @@ static const char usage[] =
     "                     (float Y); default from the output's extension\n"
     "      --srgb         decode PNG values from sRGB to linear\n"
     "      --strict       negative values are an error, not clamped\n"
+    "      --log          write log10 of the values over their positive\n"
+    "                     range, zero as black: a picture of an HDR map\n"
+    "                     for looking at, not an importance\n"
     "  -o, --output FILE  output file (default: standard output)\n"
     "  -q, --quiet        no warnings\n"
     "  -h, --help         this help;  --version  the version\n"
@@ -34,7 +38,10 @@ static const char usage[] =
     "Procedural specs, NAME[:PARAM=VALUE,...] (the first parameter may\n"
     "omit its name, e.g. const:0.5):\n";
 
-enum { OPT_EQUIRECT = OPT_FIRST_PRIVATE, OPT_FORMAT, OPT_SRGB, OPT_STRICT };
+enum {
+	OPT_EQUIRECT = OPT_FIRST_PRIVATE, OPT_FORMAT, OPT_SRGB, OPT_STRICT,
+	OPT_LOG
+};
 
 static const struct option longopts[] = {
 	{ "size", required_argument, NULL, 's' },
@@ -42,6 +49,7 @@ static const struct option longopts[] = {
 	{ "format", required_argument, NULL, OPT_FORMAT },
 	{ "srgb", no_argument, NULL, OPT_SRGB },
 	{ "strict", no_argument, NULL, OPT_STRICT },
+	{ "log", no_argument, NULL, OPT_LOG },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
@@ -51,6 +59,24 @@ enum fmt { FMT_NONE, FMT_PNG, FMT_EXR };
 static uint32_t opt_w, opt_h;
 static int opt_flags;
 static enum fmt opt_format;
+static int opt_log;
+
+/* log10 over the positive range mapped to (0, 1], zero stays zero. */
+static void to_log(struct frs_imap *m)
+{
+	struct frs_imap_stats s;
+	double lo, span;
+
+	imap_stats(m, &s);
+	if (s.min_positive <= 0.0)
+		return;
+	lo = log10(s.min_positive);
+	span = log10(s.max) - lo;
+	for (size_t i = 0; i < (size_t)m->w * m->h; i++)
+		if (m->v[i] > 0.0)
+			m->v[i] = span > 0.0 ? (1.0 + 255.0 *
+			    (log10(m->v[i]) - lo) / span) / 256.0 : 1.0;
+}
 
 static enum fmt format_of(const char *path)
 {
@@ -69,12 +95,14 @@ static enum fmt format_of(const char *path)
 	    "--format)", path);
 }
 
-static void write_map(const char *path, const struct frs_imap *m)
+static void write_map(const char *path, struct frs_imap *m)
 {
 	struct outfile o;
 	enum fmt f = format_of(path);
 	int rc;
 
+	if (opt_log)
+		to_log(m);
 	if (outfile_open(&o, path, 1) < 0)
 		cli_die_lib();
 	rc = f == FMT_PNG ? imap_write_png16(o.fp, o.name, m) :
@@ -105,6 +133,9 @@ static int parse_opts(int argc, char **argv)
 			break;
 		case OPT_STRICT:
 			opt_flags |= IMAP_STRICT;
+			break;
+		case OPT_LOG:
+			opt_log = 1;
 			break;
 		case OPT_FORMAT:
 			if (strcmp(optarg, "png") == 0)

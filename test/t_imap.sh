@@ -127,3 +127,17 @@ if [ $rc -ne 0 ] && [ -z "$(ls "$T/sig")" ]; then
 else
 	nok "SIGTERM leaves nothing behind (status $rc, left: $(ls "$T/sig"))"
 fi
+
+# --log maps the positive range onto (1/256, 1] for looking at HDR maps.
+imap gen 'ramp:from=1,to=1000' --log -o "$T/log.exr" 2>"$T/err" &&
+    imap info "$T/log.exr" >"$T/info.log" &&
+    near "$(value max "$T/info.log")" 1 1e-6 &&
+    near "$(value min "$T/info.log")" 0.00390625 1e-6 &&
+    ok "--log spans (1/256, 1]" || nok "--log spans (1/256, 1]"
+
+# Binary output to a terminal is refused (script(1) gives a pty).
+if command -v script >/dev/null 2>&1; then
+	script -qec "imap gen blob --format exr" /dev/null >"$T/tty" 2>&1
+	grep -q "refusing to write binary data to a terminal" "$T/tty" &&
+	    ok "no binary on a terminal" || nok "no binary on a terminal"
+fi
