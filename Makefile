@@ -19,12 +19,14 @@ CC ?= cc
 CXX ?= c++
 PKG_CONFIG ?= pkg-config
 OPT ?= -O2 -g
-WARN = -Wall -Wextra -Wshadow -Wconversion -Wno-sign-conversion
+WARN = -Wall -Wextra -Wshadow -Wconversion
 CSTD = -std=c11
 
 # Recursive (=) so that a sub-make started after scripts/deps.sh sees the
 # packages it installed.
-PKG_CFLAGS = $(shell $(PKG_CONFIG) --cflags libpng OpenEXR OpenCL 2>/dev/null)
+# -isystem: warnings in the libraries' headers are not ours.
+PKG_CFLAGS = $(patsubst -I%,-isystem %,$(shell $(PKG_CONFIG) --cflags \
+	libpng OpenEXR OpenCL 2>/dev/null))
 # OpenEXR: the C core, plus the C++ library for the DWAA/DWAB codecs that
 # the 3.1 core lacks (src/lib/exrcxx.cc).
 PKG_LIBS = $(shell $(PKG_CONFIG) --libs libpng OpenEXR OpenCL 2>/dev/null) \
