@@ -141,3 +141,9 @@ if command -v script >/dev/null 2>&1; then
 	grep -q "refusing to write binary data to a terminal" "$T/tty" &&
 	    ok "no binary on a terminal" || nok "no binary on a terminal"
 fi
+
+# Same bytes for any thread count.
+imap gen sky -s 200x100 -j 1 -o "$T/j1.exr" && imap gen sky -s 200x100 -j 2 -o "$T/j2.exr" &&
+    imap gen sky -s 200x100 -j 7 -o "$T/j7.exr" && cmp -s "$T/j1.exr" "$T/j2.exr" &&
+    cmp -s "$T/j1.exr" "$T/j7.exr" && ok "-j 1, 2 and 7 give the same bytes" ||
+    nok "-j 1, 2 and 7 give the same bytes"

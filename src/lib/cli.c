@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 #include "outfile.h"
+#include "par.h"
 #include "parse.h"
 
 #include <stdarg.h>
@@ -18,6 +19,7 @@ void cli_init(const char *prog, const char *usage)
 	cli_prog = prog;
 	usage_text = usage;
 	cli.threads = cli_ncpu();
+	frs_set_threads(cli.threads);
 	frs_set_warn_prefix(prog);
 }
 
@@ -105,6 +107,7 @@ int cli_common_opt(int c, const char *arg)
 		return 1;
 	case 'j':
 		cli.threads = (int)cli_ll("-j", arg, 1, 1024);
+		frs_set_threads(cli.threads);
 		return 1;
 	case 'q':
 		cli.quiet = 1;

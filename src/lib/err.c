@@ -2,21 +2,27 @@
 #include "err.h"
 
 #include <errno.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
 
+/* One message for the process; worker threads may fail at once, so
+ * writing it is serialised. */
 static char errbuf[1024];
+static pthread_mutex_t errlock = PTHREAD_MUTEX_INITIALIZER;
 static const char *warn_prefix = "frs";
 static int quiet;
 static unsigned long nwarn;
 
 static int vfail(const char *fmt, va_list ap, int with_errno, int saved)
 {
+	pthread_mutex_lock(&errlock);
 	vsnprintf(errbuf, sizeof errbuf, fmt, ap);
 	if (with_errno) {
 		size_t len = strlen(errbuf);
 		snprintf(errbuf + len, sizeof errbuf - len, ": %s", strerror(saved));
 	}
+	pthread_mutex_unlock(&errlock);
 	return -1;
 }
 

@@ -2,6 +2,8 @@
 #include "imap.h"
 #include "err.h"
 #include "parse.h"
+#include "par.h"
+#include "progress.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -20,14 +22,18 @@ struct spec {
 	const char *name;
 	const char *help;
 	struct param p[MAXPARAM];
-	int (*eval)(const double *p, uint32_t w, uint32_t h, double *out);
+	/* Fill rows [y0, y1) of a w x h map; out points at row 0. */
+	int (*eval)(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+	    uint32_t y1, double *out);
 };
 
 /* ---- evaluators: each fills w*h pixel means ------------------------- */
 
-static int eval_const(const double *p, uint32_t w, uint32_t h, double *out)
+static int eval_const(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
 {
-	for (size_t i = 0; i < (size_t)w * h; i++)
+	(void)h;
+	for (size_t i = (size_t)y0 * w; i < (size_t)y1 * w; i++)
 		out[i] = p[0];
 	return 0;
 }
@@ -48,7 +54,8 @@ static double gauss_mean(double a, double b, double c, double s)
 	return d * s * sqrt(PI / 2.0) / (b - a);
 }
 
-static int eval_blob(const double *p, uint32_t w, uint32_t h, double *out)
+static int eval_blob(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
 {
 	double *gx = malloc(w * sizeof *gx);
 
@@ -56,7 +63,7 @@ static int eval_blob(const double *p, uint32_t w, uint32_t h, double *out)
 		return frs_fail("out of memory");
 	for (uint32_t i = 0; i < w; i++)
 		gx[i] = gauss_mean((double)i / w, (double)(i + 1) / w, p[0], p[2]);
-	for (uint32_t j = 0; j < h; j++) {
+	for (uint32_t j = y0; j < y1; j++) {
 		double gy = gauss_mean((double)j / h, (double)(j + 1) / h, p[1],
 		    p[2]);
 		for (uint32_t i = 0; i < w; i++)
@@ -66,13 +73,14 @@ static int eval_blob(const double *p, uint32_t w, uint32_t h, double *out)
 	return 0;
 }
 
-static int eval_ramp(const double *p, uint32_t w, uint32_t h, double *out)
+static int eval_ramp(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
 {
 	double a = p[2] * PI / 180.0, c = cos(a), s = sin(a);
 	double norm = fabs(c) + fabs(s);
 
 	/* Linear, so the pixel mean is the value at the pixel centre. */
-	for (uint32_t j = 0; j < h; j++)
+	for (uint32_t j = y0; j < y1; j++)
 		for (uint32_t i = 0; i < w; i++) {
 			double x = (i + 0.5) / w - 0.5, y = (j + 0.5) / h - 0.5;
 			double t = 0.5 + (x * c + y * s) / norm;
@@ -83,9 +91,10 @@ static int eval_ramp(const double *p, uint32_t w, uint32_t h, double *out)
 
 /* Pixel means of f by n x n stratified supersampling. */
 static void supersample(double (*f)(const double *, double, double),
-    const double *p, uint32_t w, uint32_t h, uint32_t n, double *out)
+    const double *p, uint32_t w, uint32_t h, uint32_t y0, uint32_t y1,
+    uint32_t n, double *out)
 {
-	for (uint32_t j = 0; j < h; j++)
+	for (uint32_t j = y0; j < y1; j++)
 		for (uint32_t i = 0; i < w; i++) {
 			double acc = 0.0;
 			for (uint32_t b = 0; b < n; b++)
@@ -111,9 +120,10 @@ static uint32_t ss_for(double feature, uint32_t w, uint32_t h)
 	return n < 4.0 ? 4 : n > 64.0 ? 64 : (uint32_t)n;
 }
 
-static int eval_aniso(const double *p, uint32_t w, uint32_t h, double *out)
+static int eval_aniso(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
 {
-	supersample(aniso_at, p, w, h, ss_for(p[1], w, h), out);
+	supersample(aniso_at, p, w, h, y0, y1, ss_for(p[1], w, h), out);
 	return 0;
 }
 
@@ -135,9 +145,10 @@ static double sky_at(const double *p, double x, double y)
 	return base + p[3] * exp(-r * r);
 }
 
-static int eval_sky(const double *p, uint32_t w, uint32_t h, double *out)
+static int eval_sky(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
 {
-	supersample(sky_at, p, w, h, ss_for(p[2] / 360.0, w, h), out);
+	supersample(sky_at, p, w, h, y0, y1, ss_for(p[2] / 360.0, w, h), out);
 	return 0;
 }
 
@@ -246,17 +257,40 @@ static int parse_spec(const char *spec, const struct spec **out, double *val)
 	return rc;
 }
 
+struct eval_job {
+	const struct spec *sp;
+	const double *val;
+	struct frs_imap *m;
+};
+
+/* Rows are independent, so any thread may fill any band. */
+static int eval_rows(void *ctx, uint64_t y0, uint64_t y1)
+{
+	struct eval_job *j = ctx;
+	return j->sp->eval(j->val, j->m->w, j->m->h, (uint32_t)y0, (uint32_t)y1,
+	    j->m->v);
+}
+
 int imap_spec(const char *spec, uint32_t w, uint32_t h, struct frs_imap *m)
 {
 	const struct spec *sp = NULL;
 	double val[MAXPARAM];
+	struct progress pr;
+	struct eval_job job;
+	int rc;
 
 	memset(m, 0, sizeof *m);
 	if (parse_spec(spec, &sp, val) < 0)
 		return -1;
 	if (imap_alloc(m, w, h) < 0)
 		return frs_fail_context(spec);
-	if (sp->eval(val, w, h, m->v) < 0) {
+	progress_begin(&pr, sp->name, h);
+	job.sp = sp;
+	job.val = val;
+	job.m = m;
+	rc = frs_parallel(h, 16, eval_rows, &job, &pr);
+	progress_end(&pr);
+	if (rc < 0) {
 		imap_free(m);
 		return frs_fail_context(spec);
 	}

@@ -1,0 +1,26 @@
+/*
+ * Parallel loops over an index range on a fixed number of threads.
+ *
+ * The range [0, n) is cut into chunks of a fixed size that the threads
+ * take in turn; a result must depend only on the chunk, never on which
+ * thread ran it or when, so that output is the same for any thread count.
+ */
+#ifndef FRS_PAR_H
+#define FRS_PAR_H
+
+#include <stdint.h>
+
+struct progress;
+
+/* Threads used by frs_parallel; the programs set it from -j. */
+void frs_set_threads(int n);
+int frs_threads(void);
+
+/* fn(ctx, begin, end) for every chunk; returns 0, or -1 after the first
+ * chunk that failed (its frs_fail message is kept; chunks not yet started
+ * are skipped).  pr, if not NULL, is advanced by the items done. */
+int frs_parallel(uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx,
+    struct progress *pr);
+
+#endif

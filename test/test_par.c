@@ -1,0 +1,110 @@
+/* Parallel loops: every index exactly once for any thread count, errors
+ * stop the loop, and the progress bar draws rate and ETA. */
+#include "testutil.h"
+#include "cli.h"
+#include "par.h"
+#include "progress.h"
+
+#include <fcntl.h>
+
+struct ctx {
+	unsigned char *hit;
+	uint64_t fail_at;
+};
+
+static int mark(void *p, uint64_t b, uint64_t e)
+{
+	struct ctx *c = p;
+	for (uint64_t i = b; i < e; i++) {
+		if (i == c->fail_at)
+			return frs_fail("item %llu failed", (unsigned long long)i);
+		c->hit[i]++;
+	}
+	return 0;
+}
+
+static void every_index_once(void **state)
+{
+	const uint64_t n = 10007;	/* prime: the last chunk is short */
+	struct ctx c = { calloc(n, 1), UINT64_MAX };
+	(void)state;
+
+	for (int t = 1; t <= 8; t *= 2)
+		for (uint64_t chunk = 1; chunk <= 4096; chunk *= 8) {
+			memset(c.hit, 0, n);
+			frs_set_threads(t);
+			assert_int_equal(frs_parallel(n, chunk, mark, &c, NULL), 0);
+			for (uint64_t i = 0; i < n; i++)
+				assert_int_equal(c.hit[i], 1);
+		}
+	assert_int_equal(frs_parallel(0, 16, mark, &c, NULL), 0);
+	free(c.hit);
+}
+
+static void failure_stops(void **state)
+{
+	const uint64_t n = 1000;
+	struct ctx c = { calloc(n, 1), 500 };
+	(void)state;
+
+	frs_set_threads(4);
+	assert_int_equal(frs_parallel(n, 10, mark, &c, NULL), -1);
+	assert_err_has("item 500 failed");
+	free(c.hit);
+}
+
+/* Draw into a file instead of the terminal and look at what came out. */
+static void progress_draws(void **state)
+{
+	struct progress p;
+	const char *path = tu_path("progress.txt");
+	int fd = open(path, O_CREAT | O_TRUNC | O_WRONLY, 0600), saved;
+	size_t n;
+	char *out;
+	(void)state;
+
+	saved = dup(2);
+	fflush(stderr);
+	dup2(fd, 2);
+	cli.progress = 1;
+	progress_begin(&p, "testing", 200);
+	progress_update(&p, 10);		/* under a second: nothing */
+	p.start -= 2.0;				/* pretend 2 s have passed */
+	p.last -= 2.0;
+	progress_update(&p, 100);
+	progress_end(&p);
+	fflush(stderr);
+	dup2(saved, 2);
+	close(saved);
+	close(fd);
+	out = (char *)tu_read(path, &n);
+	out[n] = '\0';
+	assert_non_null(strstr(out, "testing"));
+	assert_non_null(strstr(out, "50.0%"));
+	assert_non_null(strstr(out, "ETA 00:0"));	/* 100 left at 50/s */
+	assert_non_null(strstr(out, "100.0%"));
+	assert_int_equal(out[n - 1], '\n');
+	free(out);
+	/* Off: neither a terminal nor --progress. */
+	cli.progress = 0;
+	progress_begin(&p, "quiet", 10);
+	assert_int_equal(p.on, isatty(2) && !cli.quiet);
+	progress_end(&p);
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	tu_rm_rf();
+	return 0;
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(every_index_once),
+		cmocka_unit_test(failure_stops),
+		cmocka_unit_test(progress_draws),
+	};
+	return cmocka_run_group_tests(tests, NULL, teardown);
+}
