@@ -64,6 +64,7 @@ TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%)
 .PHONY: all progs tests check demo bench install uninstall clean deps \
 	lint-man
 .DELETE_ON_ERROR:
+.SECONDARY:
 
 all: progs
 ifeq ($(VARIANT),rel)
