@@ -185,13 +185,6 @@ static void missing_file(void **state)
 	assert_err_has("is a directory");
 }
 
-static int teardown(void **state)
-{
-	(void)state;
-	tu_rm_rf();
-	return 0;
-}
-
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -201,5 +194,5 @@ int main(void)
 		cmocka_unit_test(truncated_stream),
 		cmocka_unit_test(missing_file),
 	};
-	return cmocka_run_group_tests(tests, NULL, teardown);
+	return cmocka_run_group_tests(tests, NULL, tu_teardown);
 }

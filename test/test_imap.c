@@ -196,13 +196,6 @@ static void load(void **state)
 	imap_free(&a);
 }
 
-static int teardown(void **state)
-{
-	(void)state;
-	tu_rm_rf();
-	return 0;
-}
-
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -213,5 +206,5 @@ int main(void)
 		cmocka_unit_test(equirect),
 		cmocka_unit_test(load),
 	};
-	return cmocka_run_group_tests(tests, NULL, teardown);
+	return cmocka_run_group_tests(tests, NULL, tu_teardown);
 }

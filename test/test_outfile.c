@@ -88,13 +88,6 @@ static void full_disk(void **state)
 	assert_err_has("/dev/full", "No space left on device");
 }
 
-static int teardown(void **state)
-{
-	(void)state;
-	tu_rm_rf();
-	return 0;
-}
-
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -103,5 +96,5 @@ int main(void)
 		cmocka_unit_test(bad_targets),
 		cmocka_unit_test(full_disk),
 	};
-	return cmocka_run_group_tests(tests, NULL, teardown);
+	return cmocka_run_group_tests(tests, NULL, tu_teardown);
 }

@@ -92,13 +92,6 @@ static void progress_draws(void **state)
 	progress_end(&p);
 }
 
-static int teardown(void **state)
-{
-	(void)state;
-	tu_rm_rf();
-	return 0;
-}
-
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -106,5 +99,5 @@ int main(void)
 		cmocka_unit_test(failure_stops),
 		cmocka_unit_test(progress_draws),
 	};
-	return cmocka_run_group_tests(tests, NULL, teardown);
+	return cmocka_run_group_tests(tests, NULL, tu_teardown);
 }

@@ -193,13 +193,6 @@ static void writer_checks(void **state)
 	assert_int_equal(pts_writer_begin(&w, stdout, "o", 0, 0, 0, 0), -1);
 }
 
-static int teardown(void **state)
-{
-	(void)state;
-	tu_rm_rf();
-	return 0;
-}
-
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -210,5 +203,5 @@ int main(void)
 		cmocka_unit_test(bad_binary),
 		cmocka_unit_test(writer_checks),
 	};
-	return cmocka_run_group_tests(tests, NULL, teardown);
+	return cmocka_run_group_tests(tests, NULL, tu_teardown);
 }

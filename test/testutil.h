@@ -104,4 +104,12 @@ static inline void tu_rm_rf(void)
 		fprintf(stderr, "could not remove %s\n", tu_dir());
 }
 
+/* Group teardown: remove the temporary directory. */
+static inline int tu_teardown(void **state)
+{
+	(void)state;
+	tu_rm_rf();
+	return 0;
+}
+
 #endif
