@@ -40,7 +40,14 @@ void frs_philox4x32_10(const uint32_t ctr[4], const uint32_t key[2],
 
 uint64_t frs_rand64(uint64_t seed, uint32_t stream, uint64_t index)
 {
-	uint32_t ctr[4] = { (uint32_t)index, (uint32_t)(index >> 32), stream, 0 };
+	return frs_rand64x(seed, stream, index, 0);
+}
+
+uint64_t frs_rand64x(uint64_t seed, uint32_t stream, uint64_t index,
+    uint32_t sub)
+{
+	uint32_t ctr[4] = { (uint32_t)index, (uint32_t)(index >> 32), stream,
+	    sub };
 	uint32_t key[2] = { (uint32_t)seed, (uint32_t)(seed >> 32) };
 	uint32_t out[4];
 

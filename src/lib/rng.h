@@ -35,6 +35,10 @@ void frs_philox4x32_10(const uint32_t ctr[4], const uint32_t key[2],
 
 /* 64 random bits at (seed, stream, index): words 0 and 1 of the block. */
 uint64_t frs_rand64(uint64_t seed, uint32_t stream, uint64_t index);
+/* The same with a fourth counter word, for two-index uses such as
+ * (insertion step, cell). */
+uint64_t frs_rand64x(uint64_t seed, uint32_t stream, uint64_t index,
+    uint32_t sub);
 /* Uniform double in [0, 1) with 53 random bits. */
 double frs_rand01(uint64_t seed, uint32_t stream, uint64_t index);
 

@@ -1,0 +1,229 @@
+/*
+ * frd-gen: Forced Random Dithering threshold matrices.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "frdgen.h"
+#include "frdio.h"
+#include "frdq.h"
+#include "outfile.h"
+#include "parse.h"
+#include "progress.h"
+
+static const char usage[] =
+    "usage: frd-gen -s SIZE [-k 2|3] [-p P] [--tol EPS | --exact] [-S SEED]\n"
+    "               [-j N] [--checkpoint FILE] [-v] [-o FILE]\n"
+    "       frd-gen --quality FILE\n"
+    "\n"
+    "  -s, --size SIZE     N (N x N, or N^3 with -k 3), WxH or WxHxD\n"
+    "  -k, --dims K        2 (default) or 3\n"
+    "  -p, --fraction P    candidate fraction in (0, 1] (default 0.5;\n"
+    "                      1 = always the global minimum)\n"
+    "      --tol EPS       neglect forces below EPS * f(0) (default 1e-4;\n"
+    "                      radius (ln 1/EPS)^2 / 2 cells for the default f)\n"
+    "      --exact         keep every contribution (O(N^2))\n"
+    "      --reach R       radius at least R times the spacing of the values\n"
+    "                      inserted so far (default 3, 0 = off)\n"
+    "      --force-s S     force f(r) = exp(-(r/S)^Q), default S = 0.5\n"
+    "      --force-q Q     default Q = 0.5\n"
+    "  -S, --seed N        random seed (default 1)\n"
+    "  -j, --threads N     threads (default: all cores); same bytes for any N\n"
+    "      --checkpoint F  resume from F if it holds a run with the same\n"
+    "                      parameters; save progress there every minute\n"
+    "      --checkpoint-every SEC  seconds between saves (default 60)\n"
+    "  -v, --verbose       print time and quality figures on standard error\n"
+    "      --quality FILE  print the quality figures of a matrix and exit\n"
+    "  -o, --output FILE   output (default: standard output)\n"
+    "  -q, --quiet         no progress bar or warnings\n"
+    "      --progress      progress bar even when standard error is no tty\n"
+    "  -h, --help          this help;  --version  the version\n";
+
+enum {
+	OPT_TOL = OPT_FIRST_PRIVATE, OPT_EXACT, OPT_REACH, OPT_FS, OPT_FQ,
+	OPT_CKPT, OPT_CKPT_EVERY, OPT_QUALITY
+};
+
+static const struct option longopts[] = {
+	{ "size", required_argument, NULL, 's' },
+	{ "dims", required_argument, NULL, 'k' },
+	{ "fraction", required_argument, NULL, 'p' },
+	{ "tol", required_argument, NULL, OPT_TOL },
+	{ "exact", no_argument, NULL, OPT_EXACT },
+	{ "reach", required_argument, NULL, OPT_REACH },
+	{ "force-s", required_argument, NULL, OPT_FS },
+	{ "force-q", required_argument, NULL, OPT_FQ },
+	{ "checkpoint", required_argument, NULL, OPT_CKPT },
+	{ "checkpoint-every", required_argument, NULL, OPT_CKPT_EVERY },
+	{ "quality", required_argument, NULL, OPT_QUALITY },
+	{ "verbose", no_argument, NULL, 'v' },
+	CLI_COMMON_LONGOPTS,
+	{ NULL, 0, NULL, 0 }
+};
+
+/* "N", "WxH" or "WxHxD"; N means a cube for k = 3. */
+static void parse_dims(const char *s, struct frdgen_params *pr)
+{
+	const char *x1 = strchr(s, 'x'), *x2 = x1 ? strchr(x1 + 1, 'x') : NULL;
+	uint32_t w, h;
+
+	if (x2 == NULL) {
+		cli_size("-s", s, UINT32_MAX, &w, &h);
+		pr->w = w;
+		pr->h = h;
+		pr->d = x1 == NULL && pr->dims == 3 ? w : 1;
+		return;
+	}
+	{
+		char buf[64];
+		size_t len = (size_t)(x2 - s);
+		if (len >= sizeof buf)
+			cli_usage_error("-s: '%s' is not a size", s);
+		memcpy(buf, s, len);
+		buf[len] = '\0';
+		cli_size("-s", buf, UINT32_MAX, &w, &h);
+		pr->w = w;
+		pr->h = h;
+		pr->d = (uint32_t)cli_ll("-s", x2 + 1, 1, UINT32_MAX);
+	}
+}
+
+static void print_quality(FILE *fp, const struct frs_matrix *m,
+    const char *name)
+{
+	static const uint32_t cs[] = { 16, 64, 256, 1024 };
+	double ratio;
+
+	fprintf(fp, "matrix %s\nsize %ux%ux%u\n", name, m->w, m->h, m->d);
+	for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++)
+		if (cs[i] <= m->n / 4)
+			fprintf(fp, "spread_%u %.4f\n", cs[i],
+			    frdq_spread(m, cs[i]));
+	if (frdq_lowpass(m, 0.025, &ratio) == 0)
+		fprintf(fp, "lowpass_2.5%% %.4f\n", ratio);
+}
+
+static int quality(const char *path)
+{
+	struct frs_matrix m;
+
+	if (frd_read(path, &m) < 0 || frd_check_permutation(&m, path) < 0)
+		cli_die_lib();
+	print_quality(stdout, &m, path);
+	frd_free(&m);
+	return 0;
+}
+
+static void check_memory(const struct frdgen_params *pr)
+{
+	long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+	uint64_t need = frdgen_memory(pr);
+
+	if (pages > 0 && psize > 0 && need > (uint64_t)pages * (uint64_t)psize)
+		cli_die("-s %ux%ux%u: needs %.1f GiB of memory, this machine "
+		    "has %.1f GiB", pr->w, pr->h, pr->d, (double)need / (1 << 30),
+		    (double)pages * (double)psize / (1 << 30));
+}
+
+int main(int argc, char **argv)
+{
+	struct frdgen_params pr;
+	struct frs_matrix m;
+	struct outfile o;
+	struct progress prog;
+	const char *size = NULL;
+	int c, verbose = 0;
+	double t0;
+
+	cli_init("frd-gen", usage);
+	frdgen_defaults(&pr);
+	while ((c = getopt_long(argc, argv, "s:k:p:v" CLI_COMMON_SHORTOPTS,
+	    longopts, NULL)) != -1) {
+		switch (c) {
+		case 's':
+			size = optarg;
+			break;
+		case 'k':
+			pr.dims = (unsigned)cli_ll("-k", optarg, 2, 3);
+			break;
+		case 'p':
+			pr.p = cli_double("-p", optarg, 0.0, 1.0);
+			if (pr.p <= 0.0)
+				cli_usage_error("-p: %s is outside (0, 1]", optarg);
+			break;
+		case OPT_TOL:
+			pr.tol = cli_double("--tol", optarg, 0.0, 0.999999);
+			if (pr.tol <= 0.0)
+				cli_usage_error("--tol: must be above 0 (use "
+				    "--exact to keep every contribution)");
+			break;
+		case OPT_EXACT:
+			pr.tol = 0.0;
+			break;
+		case OPT_REACH:
+			pr.reach = cli_double("--reach", optarg, 0.0, 1e6);
+			break;
+		case OPT_FS:
+			pr.s = cli_double("--force-s", optarg, 1e-6, 1e6);
+			break;
+		case OPT_FQ:
+			pr.q = cli_double("--force-q", optarg, 1e-3, 100.0);
+			break;
+		case OPT_CKPT:
+			pr.checkpoint = optarg;
+			break;
+		case OPT_CKPT_EVERY:
+			pr.checkpoint_every = cli_double("--checkpoint-every", optarg,
+			    0.0, 1e9);
+			break;
+		case OPT_QUALITY:
+			return quality(optarg);
+		case 'v':
+			verbose = 1;
+			break;
+		default:
+			if (!cli_common_opt(c, optarg))
+				cli_usage(2);
+		}
+	}
+	if (optind != argc)
+		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	if (size == NULL)
+		cli_usage_error("-s SIZE is required");
+	parse_dims(size, &pr);
+	pr.seed = cli.seed;
+	if (frdgen_check(&pr) < 0)
+		cli_usage_error("%s", frs_errmsg());
+	check_memory(&pr);
+	/* Open the output first: a bad path fails before hours of work. */
+	if (outfile_open(&o, cli.out, 1) < 0)
+		cli_die_lib();
+	t0 = progress_now();
+	progress_begin(&prog, "inserting", (uint64_t)pr.w * pr.h * pr.d);
+	if (frdgen_run(&pr, &m, &prog) < 0) {
+		progress_end(&prog);
+		outfile_abort(&o);
+		cli_die_lib();
+	}
+	progress_end(&prog);
+	if (frd_write(o.fp, o.name, &m) < 0) {
+		outfile_abort(&o);
+		cli_die_lib();
+	}
+	if (outfile_commit(&o) < 0)
+		cli_die_lib();
+	if (pr.checkpoint != NULL)
+		unlink(pr.checkpoint);
+	if (verbose) {
+		fprintf(stderr, "frd-gen: %ux%ux%u in %.3f s (radius %.1f)\n",
+		    pr.w, pr.h, pr.d, progress_now() - t0, frdgen_radius(&pr));
+		print_quality(stderr, &m, cli.out ? cli.out : "<stdout>");
+	}
+	frd_free(&m);
+	return 0;
+}

@@ -1,0 +1,71 @@
+/*
+ * Forced Random Dithering matrices (thesis ch. 3, Listing 3.1).
+ *
+ * The values 0 .. N-1 are inserted one by one into a toroidal force field.
+ * Value i goes to the cell with the smallest accumulated force among a
+ * random Bernoulli(p) subset of the free cells; then every cell within the
+ * insertion's radius gets f(r) = exp(-(r/s)^q) added, r the toroidal
+ * distance in cells.
+ *
+ * The minimum over a Bernoulli(p) subset is, in law, the K-th smallest free
+ * cell with K ~ Geometric(p) (truncated to the free count), which needs
+ * only the few smallest cells: a min-pyramid over tiles of cells finds
+ * them.  Ties in the force (exact equality) are broken by a random key per
+ * (insertion, cell).  Every random number is a function of (seed, step),
+ * and every cell gets one double add per insertion, in insertion order, so
+ * the result is the same for any thread count.
+ *
+ * Accuracy: contributions below tol * f(0) may be neglected, i.e. the
+ * radius is s * ln(1/tol)^(1/q).  Early insertions are far apart, so the
+ * radius also grows to reach * (expected spacing of the values inserted so
+ * far): the field stays exact where it decides, and the first values are
+ * spread evenly however large the matrix.  tol = 0 keeps every
+ * contribution (the full torus for every insertion, O(N^2)).
+ */
+#ifndef FRS_FRDGEN_H
+#define FRS_FRDGEN_H
+
+#include <stdint.h>
+
+#include "frdio.h"
+
+struct progress;
+
+struct frdgen_params {
+	unsigned dims;		/* 2 or 3 */
+	uint32_t w, h, d;	/* d = 1 for dims = 2 */
+	double p;		/* candidate fraction, (0, 1] */
+	double s, q;		/* force f(r) = exp(-(r/s)^q) */
+	double tol;		/* neglect f < tol * f(0); 0: exact */
+	double reach;		/* radius >= reach * spacing; 0: off */
+	uint64_t seed;
+	const char *checkpoint;	/* resume from / save to this file, or NULL */
+	double checkpoint_every;	/* seconds between checkpoints */
+};
+
+/* Defaults: s = q = 1/2, p = 1/2, the default tolerance, reach 3. */
+void frdgen_defaults(struct frdgen_params *pr);
+/* Check a parameter set; the message names the offending parameter. */
+int frdgen_check(const struct frdgen_params *pr);
+/* The neglect radius for a tolerance (cells), INFINITY for tol = 0. */
+double frdgen_radius(const struct frdgen_params *pr);
+/* Bytes of memory a run needs, to refuse impossible sizes up front. */
+uint64_t frdgen_memory(const struct frdgen_params *pr);
+/* The parameter text stored in the .frd header. */
+void frdgen_describe(const struct frdgen_params *pr, char *buf, size_t n);
+
+/* Generate; out is allocated.  pr may be NULL. */
+int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
+    struct progress *pr);
+
+/* Force of the default kernel at distance r (tests use it). */
+double frdgen_force(const struct frdgen_params *pr, double r);
+/* The truncated Geometric(p) rank K in [1, free] that insertion step
+ * "step" uses (tests use it). */
+uint64_t frdgen_rank(const struct frdgen_params *pr, uint64_t step,
+    uint64_t free);
+/* The tie key of cell c at insertion step "step". */
+uint64_t frdgen_tiekey(const struct frdgen_params *pr, uint64_t step,
+    uint32_t c);
+
+#endif

@@ -1,0 +1,80 @@
+#!/bin/sh
+# frd-gen: output format, determinism across threads, checkpoints, bad
+# arguments refused before any work.
+. "$(dirname "$0")/lib.sh"
+
+check "frd-gen -s 64" frd-gen -s 64 -o "$T/a.frd"
+# The .frd layout: 32-byte header with the magic, then the parameter
+# text, and the values as the last 4N bytes.
+size=$(wc -c <"$T/a.frd")
+plen=$(od -A n -t u4 -j 28 -N 4 "$T/a.frd" | tr -d ' ')
+[ "$size" -eq $((32 + plen + 4 * 64 * 64)) ] && ok "file length is header + params + 4N" ||
+    nok "file length is header + params + 4N ($size, params $plen)"
+head -c 8 "$T/a.frd" | od -A n -t x1 | grep -q '89 46 52 44 0d 0a 1a 0a' &&
+    ok "magic" || nok "magic"
+tail -c $((4 * 64 * 64)) "$T/a.frd" | od -A n -v -t u4 | tr -s ' ' '\n' |
+    grep -v '^$' | sort -n | awk '$1 != NR - 1 { bad = 1 } END { exit bad || NR != 4096 }' &&
+    ok "values are a permutation of 0..4095" || nok "values are a permutation of 0..4095"
+head -c $((32 + plen)) "$T/a.frd" | tail -c "$plen" | grep -q '^p=0.5$' &&
+    ok "parameters recorded in the header" || nok "parameters recorded in the header"
+
+# Same bytes for any thread count (windows large enough to be split).
+frd-gen -s 128 -j 1 -o "$T/j1.frd" && frd-gen -s 128 -j 2 -o "$T/j2.frd" &&
+    frd-gen -s 128 -j 5 -o "$T/j5.frd" && cmp -s "$T/j1.frd" "$T/j2.frd" &&
+    cmp -s "$T/j1.frd" "$T/j5.frd" && ok "-j 1, 2, 5 give the same bytes" ||
+    nok "-j 1, 2, 5 give the same bytes"
+frd-gen -s 128 -S 2 -o "$T/s2.frd"
+cmp -s "$T/j1.frd" "$T/s2.frd" && nok "another seed gives another matrix" ||
+    ok "another seed gives another matrix"
+frd-gen -s 128 -o - | cmp -s - "$T/j1.frd" && ok "standard output" ||
+    nok "standard output"
+
+# 3-D and non-square.
+check "-k 3 -s 12" frd-gen -k 3 -s 12 -o "$T/c.frd"
+[ "$(od -A n -t u4 -j 12 -N 16 "$T/c.frd" | tr -s ' ')" = " 3 12 12 12" ] &&
+    ok "3-D header" || nok "3-D header"
+check "-s 48x20" frd-gen -s 48x20 -p 1 --exact -o "$T/r.frd"
+
+# Quality figures of an existing matrix.
+frd-gen --quality "$T/j1.frd" >"$T/q" 2>"$T/err"
+awk '$1 == "spread_16" && $2 >= 0.55 { ok = 1 } END { exit !ok }' "$T/q" &&
+    ok "--quality prints the spread" || nok "--quality prints the spread"
+
+# An interrupted run resumes from its checkpoint to the same bytes.
+frd-gen -s 256 --tol 1e-3 -o "$T/full.frd"
+frd-gen -s 256 --tol 1e-3 --checkpoint "$T/ck" --checkpoint-every 0 \
+    -o "$T/resumed.frd" 2>/dev/null &
+pid=$!
+i=0
+while [ ! -f "$T/ck" ] && [ $i -lt 200 ]; do sleep 0.05; i=$((i + 1)); done
+kill -TERM $pid 2>/dev/null
+wait $pid
+if [ -f "$T/resumed.frd" ]; then
+	ok "checkpoint: the run finished before it could be interrupted"
+elif [ -f "$T/ck" ]; then
+	frd-gen -s 256 --tol 1e-3 --checkpoint "$T/ck" -o "$T/resumed.frd" &&
+	    cmp -s "$T/full.frd" "$T/resumed.frd" && [ ! -f "$T/ck" ] &&
+	    ok "resumed run gives the same bytes and removes the checkpoint" ||
+	    nok "resumed run gives the same bytes and removes the checkpoint"
+else
+	nok "checkpoint was written"
+fi
+[ -z "$(ls "$T" | grep '\.tmp\.')" ] && ok "no temporaries left" || nok "no temporaries left"
+
+# Bad arguments: clear messages before any work, exit 2.
+expect_fail "size 0" 2 "-s" "$T/o.frd" frd-gen -s 0 -o "$T/o.frd"
+expect_fail "size 1" 2 "at least 2 cells" "$T/o.frd" frd-gen -s 1 -o "$T/o.frd"
+expect_fail "no size" 2 "-s SIZE is required" "$T/o.frd" frd-gen -o "$T/o.frd"
+expect_fail "p = 0" 2 "-p" "$T/o.frd" frd-gen -s 16 -p 0 -o "$T/o.frd"
+expect_fail "p > 1" 2 "-p" "$T/o.frd" frd-gen -s 16 -p 1.5 -o "$T/o.frd"
+expect_fail "p = nan" 2 "not a finite number" "$T/o.frd" frd-gen -s 16 -p nan -o "$T/o.frd"
+expect_fail "tol = 0" 2 "--exact" "$T/o.frd" frd-gen -s 16 --tol 0 -o "$T/o.frd"
+expect_fail "k = 4" 2 "-k" "$T/o.frd" frd-gen -s 16 -k 4 -o "$T/o.frd"
+expect_fail "2^32 values" 2 "2^32" "$T/o.frd" frd-gen -s 65536 -o "$T/o.frd"
+expect_fail "memory that cannot be had" 1 "GiB of memory" "$T/o.frd" \
+    frd-gen -s 60000 -o "$T/o.frd"
+expect_fail "unknown option" 2 "usage" "$T/o.frd" frd-gen -s 16 --frob -o "$T/o.frd"
+expect_fail "missing directory" 1 "cannot create" "$T/no/o.frd" frd-gen -s 16 -o "$T/no/o.frd"
+expect_fail "full disk" 1 "No space left" - frd-gen -s 16 -o /dev/full
+: >"$T/empty.frd"
+expect_fail "--quality of an empty file" 1 "empty.frd: empty file" - frd-gen --quality "$T/empty.frd"

@@ -1,0 +1,348 @@
+/* The FRD generator against a brute-force reference written here from the
+ * definition (Listing 3.1 with the documented rank and tie rules), and
+ * the quality properties of what it makes. */
+#include "testutil.h"
+#include "fft.h"
+#include "frdgen.h"
+#include "frdq.h"
+#include "rng.h"
+
+static void perm_ok(const struct frs_matrix *m)
+{
+	unsigned char *seen = calloc(m->n, 1);
+	for (size_t i = 0; i < m->n; i++) {
+		assert_true(m->v[i] < m->n);
+		assert_int_equal(seen[m->v[i]], 0);
+		seen[m->v[i]] = 1;
+	}
+	free(seen);
+}
+
+static void params(struct frdgen_params *pr, uint32_t w, uint32_t h,
+    uint32_t d, double p, double tol)
+{
+	frdgen_defaults(pr);
+	pr->dims = d > 1 ? 3 : 2;
+	pr->w = w;
+	pr->h = h;
+	pr->d = d;
+	pr->p = p;
+	pr->tol = tol;
+	pr->seed = 42;
+}
+
+static void permutations(void **state)
+{
+	static const uint32_t sz[][4] = { { 16, 16, 1, 50 }, { 17, 9, 1, 50 },
+	    { 2, 2, 1, 100 }, { 32, 32, 1, 10 }, { 8, 8, 8, 50 },
+	    { 5, 7, 3, 100 }, { 64, 16, 1, 100 } };
+	(void)state;
+
+	for (size_t i = 0; i < sizeof sz / sizeof sz[0]; i++) {
+		struct frdgen_params pr;
+		struct frs_matrix m;
+		params(&pr, sz[i][0], sz[i][1], sz[i][2], sz[i][3] / 100.0, 1e-4);
+		assert_int_equal(frdgen_run(&pr, &m, NULL), 0);
+		perm_ok(&m);
+		frd_free(&m);
+	}
+}
+
+/* ---- the brute-force reference ------------------------------------ */
+
+static uint32_t tdist(uint32_t a, uint32_t b, uint32_t n)
+{
+	uint32_t d = a > b ? a - b : b - a;
+	return n - d < d ? n - d : d;
+}
+
+/* The radius after `inserted` values, from the rule in frdgen.h. */
+static double ref_radius(const struct frdgen_params *pr, uint64_t inserted)
+{
+	double r = pr->tol > 0 ? pr->s * pow(log(1 / pr->tol), 1 / pr->q) :
+	    INFINITY;
+	double vol = (double)pr->w * pr->h * pr->d, sp;
+	if (pr->reach > 0) {
+		sp = pr->dims == 2 ? sqrt(2 * vol / (sqrt(3.0) * inserted)) :
+		    cbrt(sqrt(2.0) * vol / inserted);
+		r = fmax(r, pr->reach * sp);
+	}
+	return r;
+}
+
+struct cand {
+	double f;
+	uint64_t key;
+	uint32_t c;
+};
+
+static int cand_cmp(const void *a, const void *b)
+{
+	const struct cand *x = a, *y = b;
+	if (x->f != y->f)
+		return x->f < y->f ? -1 : 1;
+	if (x->key != y->key)
+		return x->key < y->key ? -1 : 1;
+	return x->c < y->c ? -1 : x->c > y->c;
+}
+
+/* Sort every free cell by (force, tie key), take the K-th, add
+ * exp(-(r/s)^q) to every cell within the radius. */
+static void reference(const struct frdgen_params *pr, uint32_t *out)
+{
+	size_t n = (size_t)pr->w * pr->h * pr->d;
+	double *f = calloc(n, sizeof *f);
+	unsigned char *taken = calloc(n, 1);
+	struct cand *cs = malloc(n * sizeof *cs);
+
+	for (uint64_t step = 0; step < n; step++) {
+		size_t nc = 0;
+		uint64_t k = frdgen_rank(pr, step, n - step);
+		uint32_t c, cx, cy, cz;
+		double r;
+		for (uint32_t i = 0; i < n; i++)
+			if (!taken[i])
+				cs[nc++] = (struct cand){ f[i],
+				    frdgen_tiekey(pr, step, i), i };
+		qsort(cs, nc, sizeof *cs, cand_cmp);
+		c = cs[k - 1].c;
+		out[c] = (uint32_t)step;
+		taken[c] = 1;
+		cx = c % pr->w;
+		cy = c / pr->w % pr->h;
+		cz = c / pr->w / pr->h;
+		r = ref_radius(pr, step + 1);
+		for (uint32_t i = 0; i < n; i++) {
+			double dx = tdist(i % pr->w, cx, pr->w);
+			double dy = tdist(i / pr->w % pr->h, cy, pr->h);
+			double dz = tdist(i / pr->w / pr->h, cz, pr->d);
+			double d2 = dx * dx + dy * dy + dz * dz;
+			if (d2 <= r * r)
+				f[i] += exp(-pow(sqrt(d2) / pr->s, pr->q));
+		}
+	}
+	free(f);
+	free(taken);
+	free(cs);
+}
+
+static void against_reference(uint32_t w, uint32_t h, uint32_t d, double p,
+    double tol, double reach)
+{
+	struct frdgen_params pr;
+	struct frs_matrix m;
+	uint32_t *ref;
+
+	params(&pr, w, h, d, p, tol);
+	pr.reach = reach;
+	ref = malloc((size_t)w * h * d * sizeof *ref);
+	reference(&pr, ref);
+	assert_int_equal(frdgen_run(&pr, &m, NULL), 0);
+	for (size_t i = 0; i < m.n; i++)
+		if (m.v[i] != ref[i]) {
+			print_error("%ux%ux%u p=%g tol=%g reach=%g: cell %zu is %u, "
+			    "reference %u\n", w, h, d, p, tol, reach, i, m.v[i],
+			    ref[i]);
+			fail();
+		}
+	free(ref);
+	frd_free(&m);
+}
+
+/* Exact, p = 1: the global minimum every time (Listing 3.1 with p = 1). */
+static void exact_global_minimum(void **state)
+{
+	(void)state;
+	against_reference(16, 16, 1, 1.0, 0.0, 0.0);
+	against_reference(32, 32, 1, 1.0, 0.0, 0.0);
+}
+
+/* The K-th smallest by rank, the windowed adds that wrap around the
+ * torus, and the growing radius. */
+static void windows_and_ranks(void **state)
+{
+	(void)state;
+	against_reference(16, 16, 1, 0.5, 0.0, 0.0);
+	against_reference(32, 24, 1, 0.5, 1e-2, 0.0);	/* radius 10.6 */
+	against_reference(40, 40, 1, 0.3, 0.1, 3.0);	/* growing radius */
+	against_reference(9, 6, 5, 0.5, 0.05, 0.0);	/* 3-D windows */
+}
+
+/* The rank follows the truncated geometric law. */
+static void rank_law(void **state)
+{
+	struct frdgen_params pr;
+	unsigned cnt[4] = { 0 };
+	(void)state;
+
+	params(&pr, 8, 8, 1, 0.5, 0.0);
+	for (uint64_t s = 0; s < 40000; s++) {
+		uint64_t k = frdgen_rank(&pr, s, 1000000);
+		if (k <= 3)
+			cnt[k]++;
+		assert_true(frdgen_rank(&pr, s, 3) <= 3);
+		assert_true(frdgen_rank(&pr, s, 1) == 1);
+	}
+	/* 20000, 10000, 5000 expected; 5 sigma bounds */
+	assert_true(cnt[1] > 19500 && cnt[1] < 20500);
+	assert_true(cnt[2] > 9600 && cnt[2] < 10400);
+	assert_true(cnt[3] > 4750 && cnt[3] < 5250);
+	pr.p = 1.0;
+	assert_true(frdgen_rank(&pr, 7, 100) == 1);
+}
+
+/* The first c values of a 256^2 matrix are spread evenly: smallest
+ * toroidal distance over the hexagonal spacing, computed here. */
+static void spread(void **state)
+{
+	struct frdgen_params pr;
+	struct frs_matrix m;
+	static const uint32_t cs[] = { 16, 64, 256, 1024 };
+	uint32_t pos[1024][2];
+	(void)state;
+
+	params(&pr, 256, 256, 1, 0.5, 1e-4);
+	assert_int_equal(frdgen_run(&pr, &m, NULL), 0);
+	perm_ok(&m);
+	for (size_t i = 0; i < m.n; i++)
+		if (m.v[i] < 1024) {
+			pos[m.v[i]][0] = (uint32_t)(i % 256);
+			pos[m.v[i]][1] = (uint32_t)(i / 256);
+		}
+	for (size_t k = 0; k < 4; k++) {
+		double best = 1e30, rho;
+		for (uint32_t a = 0; a < cs[k]; a++)
+			for (uint32_t b = a + 1; b < cs[k]; b++) {
+				double dx = tdist(pos[a][0], pos[b][0], 256);
+				double dy = tdist(pos[a][1], pos[b][1], 256);
+				best = fmin(best, dx * dx + dy * dy);
+			}
+		rho = sqrt(best) / (256.0 * sqrt(2.0 / (sqrt(3.0) * cs[k])));
+		print_message("rho_%u = %.3f\n", cs[k], rho);
+		assert_true(rho >= 0.55);
+		assert_double_equal(frdq_spread(&m, cs[k]), rho, 1e-12);
+	}
+	/* Blue noise at 97.5 %: low frequencies far below the plateau. */
+	{
+		double ratio;
+		assert_int_equal(frdq_lowpass(&m, 0.025, &ratio), 0);
+		print_message("lowpass = %.3f\n", ratio);
+		assert_true(ratio < 0.2);
+	}
+	frd_free(&m);
+}
+
+/* The spectral measure itself: a regular grid has no power below its
+ * frequency (analytic), a random permutation is white (about 1). */
+static void lowpass_measure(void **state)
+{
+	struct frs_matrix m;
+	struct frs_rng r;
+	double ratio;
+	(void)state;
+
+	assert_int_equal(frd_alloc(&m, 2, 256, 256, 1, ""), 0);
+	/* Every 8th cell in x and y gets the smallest values: 1024 dots. */
+	for (uint32_t i = 0, lo = 0, hi = 1024; i < m.n; i++)
+		m.v[i] = (i % 8 == 0 && i / 256 % 8 == 0) ? lo++ : hi++;
+	assert_int_equal(frdq_lowpass(&m, 1024.0 / 65536.0, &ratio), 0);
+	assert_true(ratio < 1e-20);
+	frs_rng_init(&r, 5, FRS_STREAM_TEST);
+	for (uint32_t i = 0; i < m.n; i++)
+		m.v[i] = i;
+	for (uint32_t i = (uint32_t)m.n - 1; i > 0; i--) {
+		uint32_t j = (uint32_t)frs_rng_below(&r, i + 1), t = m.v[i];
+		m.v[i] = m.v[j];
+		m.v[j] = t;
+	}
+	assert_int_equal(frdq_lowpass(&m, 0.025, &ratio), 0);
+	assert_true(ratio > 0.8 && ratio < 1.25);
+	frd_free(&m);
+}
+
+/* The FFT against a direct DFT. */
+static void fft_vs_dft(void **state)
+{
+	double x[2 * 16], y[2 * 16];
+	(void)state;
+	for (int i = 0; i < 16; i++) {
+		x[2 * i] = sin(i * 1.3) + i % 3;
+		x[2 * i + 1] = cos(i * 0.7);
+	}
+	memcpy(y, x, sizeof x);
+	assert_int_equal(fft1(y, 16, 1, -1), 0);
+	for (int k = 0; k < 16; k++) {
+		double re = 0, im = 0;
+		for (int j = 0; j < 16; j++) {
+			double a = -2 * 3.14159265358979323846 * j * k / 16;
+			re += x[2 * j] * cos(a) - x[2 * j + 1] * sin(a);
+			im += x[2 * j] * sin(a) + x[2 * j + 1] * cos(a);
+		}
+		assert_double_equal(y[2 * k], re, 1e-12);
+		assert_double_equal(y[2 * k + 1], im, 1e-12);
+	}
+	assert_int_equal(fft1(y, 12, 1, -1), -1);
+}
+
+/* An interrupted run resumed from its checkpoint gives the same bytes. */
+static void checkpoint_resume(void **state)
+{
+	struct frdgen_params pr;
+	struct frs_matrix a, b;
+	const char *ck = tu_path("ck");
+	(void)state;
+
+	params(&pr, 128, 128, 1, 0.5, 1e-3);
+	assert_int_equal(frdgen_run(&pr, &a, NULL), 0);
+	pr.checkpoint = ck;
+	pr.checkpoint_every = 0.0;	/* save every 4096 steps */
+	assert_int_equal(frdgen_run(&pr, &b, NULL), 0);
+	frd_free(&b);
+	assert_int_equal(access(ck, F_OK), 0);	/* left at step 12289 */
+	assert_int_equal(frdgen_run(&pr, &b, NULL), 0);	/* resumes */
+	assert_memory_equal(a.v, b.v, a.n * 4);
+	frd_free(&b);
+	/* Another parameter set refuses the checkpoint. */
+	pr.seed = 7;
+	assert_int_equal(frdgen_run(&pr, &b, NULL), -1);
+	assert_err_has(ck, "another run");
+	frd_free(&a);
+}
+
+static void bad_params(void **state)
+{
+	struct frdgen_params pr;
+	struct frs_matrix m;
+	(void)state;
+
+	params(&pr, 1, 16, 1, 0.5, 1e-4);
+	assert_int_equal(frdgen_run(&pr, &m, NULL), -1);
+	assert_err_has("at least 2");
+	params(&pr, 16, 16, 1, 0.0, 1e-4);
+	assert_int_equal(frdgen_check(&pr), -1);
+	assert_err_has("-p");
+	pr.p = NAN;
+	assert_int_equal(frdgen_check(&pr), -1);
+	params(&pr, 65536, 65536, 1, 0.5, 1e-4);
+	assert_int_equal(frdgen_check(&pr), -1);
+	assert_err_has("2^32");
+	params(&pr, 16, 16, 1, 0.5, 1.5);
+	assert_int_equal(frdgen_check(&pr), -1);
+	assert_err_has("--tol");
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(permutations),
+		cmocka_unit_test(exact_global_minimum),
+		cmocka_unit_test(windows_and_ranks),
+		cmocka_unit_test(rank_law),
+		cmocka_unit_test(spread),
+		cmocka_unit_test(lowpass_measure),
+		cmocka_unit_test(fft_vs_dft),
+		cmocka_unit_test(checkpoint_resume),
+		cmocka_unit_test(bad_params),
+	};
+	return cmocka_run_group_tests(tests, NULL, tu_teardown);
+}
