@@ -37,6 +37,7 @@ PROGS = imap frd-gen
 LIBSRC = $(wildcard src/lib/*.c)
 LIBCXXSRC = $(wildcard src/lib/*.cc)
 TESTSRC = $(wildcard test/test_*.c)
+REFSRC = $(wildcard test/ref_*.c)
 
 # Variant: rel (bin/, portable), san (sanitizers, for make check),
 # bench (-O3 -march=native, for make bench).
@@ -60,6 +61,7 @@ LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o) \
 	$(LIBCXXSRC:src/lib/%.cc=$(B)/lib/%.o)
 PROGBIN = $(PROGS:%=$(B)/bin/%)
 TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%)
+REFBIN = $(REFSRC:test/%.c=$(B)/test/%)
 
 .PHONY: all progs tests check demo bench install uninstall clean deps \
 	lint-man
@@ -74,7 +76,7 @@ ifeq ($(VARIANT),rel)
 endif
 
 progs: $(PROGBIN)
-tests: $(TESTBIN) $(PROGBIN)
+tests: $(TESTBIN) $(PROGBIN) $(REFBIN)
 
 $(B)/libfrs.a: $(LIBOBJ)
 	@mkdir -p $(@D)
@@ -101,10 +103,14 @@ $(B)/test/%.o: test/%.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -Wno-conversion -c $< -o $@
 
-$(B)/test/%: $(B)/test/%.o $(B)/libfrs.a
+$(B)/test/test_%: $(B)/test/test_%.o $(B)/libfrs.a
 	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) $(CMOCKA_LIBS) -o $@
 
--include $(LIBOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d)
+# Reference implementations for the benchmarks (test/ref_*.c).
+$(B)/test/ref_%: $(B)/test/ref_%.o $(B)/libfrs.a
+	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
+
+-include $(LIBOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d) $(REFBIN:=.d)
 
 deps:
 	@sh scripts/deps.sh
@@ -119,8 +125,8 @@ demo: deps
 	@sh scripts/demo.sh
 
 bench: deps
-	@$(MAKE) --no-print-directory VARIANT=bench progs
-	@sh scripts/bench.sh build/bench/bin
+	@$(MAKE) --no-print-directory VARIANT=bench progs $(REFSRC:test/%.c=build/bench/test/%)
+	@sh scripts/bench.sh build/bench
 
 lint-man:
 	mandoc -Tlint -Wwarning man/man*/*.[0-9]

@@ -2,8 +2,8 @@
 # Importance-map input: seconds per load by format and size, and what
 # resampling costs.  Each figure is the best of 3 whole-process runs.
 set -eu
-BINDIR=${1:-bin}
-IMAP=$BINDIR/imap
+BUILD=${1:-build/bench}
+IMAP=$BUILD/bin/imap
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 

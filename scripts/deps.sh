@@ -6,7 +6,8 @@
 set -eu
 
 PKGS="gcc g++ make libc6-dev pkg-config libpng-dev libopenexr-dev libcmocka-dev
-ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo mandoc gnuplot-nox"
+ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo mandoc gnuplot-nox
+time"
 
 missing=""
 for p in $PKGS; do

@@ -25,7 +25,7 @@ static const char usage[] =
     "  -k, --dims K        2 (default) or 3\n"
     "  -p, --fraction P    candidate fraction in (0, 1] (default 0.5;\n"
     "                      1 = always the global minimum)\n"
-    "      --tol EPS       neglect forces below EPS * f(0) (default 1e-4;\n"
+    "      --tol EPS       neglect forces below EPS * f(0) (default 1e-3;\n"
     "                      radius (ln 1/EPS)^2 / 2 cells for the default f)\n"
     "      --exact         keep every contribution (O(N^2))\n"
     "      --reach R       radius at least R times the spacing of the values\n"
@@ -97,6 +97,7 @@ static void print_quality(FILE *fp, const struct frs_matrix *m,
     const char *name)
 {
 	static const uint32_t cs[] = { 16, 64, 256, 1024 };
+	static const double levels[] = { 2.5, 10 };
 	double ratio;
 
 	fprintf(fp, "matrix %s\nsize %ux%ux%u\n", name, m->w, m->h, m->d);
@@ -104,8 +105,13 @@ static void print_quality(FILE *fp, const struct frs_matrix *m,
 		if (cs[i] <= m->n / 4)
 			fprintf(fp, "spread_%u %.4f\n", cs[i],
 			    frdq_spread(m, cs[i]));
-	if (frdq_lowpass(m, 0.025, &ratio) == 0)
-		fprintf(fp, "lowpass_2.5%% %.4f\n", ratio);
+	/* First and last values: the late ones show what the radius cuts. */
+	for (size_t i = 0; i < sizeof levels / sizeof levels[0]; i++) {
+		if (frdq_lowpass(m, 0.0, levels[i] / 100.0, &ratio) == 0)
+			fprintf(fp, "lowpass_first_%g%% %.4f\n", levels[i], ratio);
+		if (frdq_lowpass(m, 1.0 - levels[i] / 100.0, 1.0, &ratio) == 0)
+			fprintf(fp, "lowpass_last_%g%% %.4f\n", levels[i], ratio);
+	}
 }
 
 static int quality(const char *path)

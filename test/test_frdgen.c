@@ -48,83 +48,7 @@ static void permutations(void **state)
 	}
 }
 
-/* ---- the brute-force reference ------------------------------------ */
-
-static uint32_t tdist(uint32_t a, uint32_t b, uint32_t n)
-{
-	uint32_t d = a > b ? a - b : b - a;
-	return n - d < d ? n - d : d;
-}
-
-/* The radius after `inserted` values, from the rule in frdgen.h. */
-static double ref_radius(const struct frdgen_params *pr, uint64_t inserted)
-{
-	double r = pr->tol > 0 ? pr->s * pow(log(1 / pr->tol), 1 / pr->q) :
-	    INFINITY;
-	double vol = (double)pr->w * pr->h * pr->d, sp;
-	if (pr->reach > 0) {
-		sp = pr->dims == 2 ? sqrt(2 * vol / (sqrt(3.0) * inserted)) :
-		    cbrt(sqrt(2.0) * vol / inserted);
-		r = fmax(r, pr->reach * sp);
-	}
-	return r;
-}
-
-struct cand {
-	double f;
-	uint64_t key;
-	uint32_t c;
-};
-
-static int cand_cmp(const void *a, const void *b)
-{
-	const struct cand *x = a, *y = b;
-	if (x->f != y->f)
-		return x->f < y->f ? -1 : 1;
-	if (x->key != y->key)
-		return x->key < y->key ? -1 : 1;
-	return x->c < y->c ? -1 : x->c > y->c;
-}
-
-/* Sort every free cell by (force, tie key), take the K-th, add
- * exp(-(r/s)^q) to every cell within the radius. */
-static void reference(const struct frdgen_params *pr, uint32_t *out)
-{
-	size_t n = (size_t)pr->w * pr->h * pr->d;
-	double *f = calloc(n, sizeof *f);
-	unsigned char *taken = calloc(n, 1);
-	struct cand *cs = malloc(n * sizeof *cs);
-
-	for (uint64_t step = 0; step < n; step++) {
-		size_t nc = 0;
-		uint64_t k = frdgen_rank(pr, step, n - step);
-		uint32_t c, cx, cy, cz;
-		double r;
-		for (uint32_t i = 0; i < n; i++)
-			if (!taken[i])
-				cs[nc++] = (struct cand){ f[i],
-				    frdgen_tiekey(pr, step, i), i };
-		qsort(cs, nc, sizeof *cs, cand_cmp);
-		c = cs[k - 1].c;
-		out[c] = (uint32_t)step;
-		taken[c] = 1;
-		cx = c % pr->w;
-		cy = c / pr->w % pr->h;
-		cz = c / pr->w / pr->h;
-		r = ref_radius(pr, step + 1);
-		for (uint32_t i = 0; i < n; i++) {
-			double dx = tdist(i % pr->w, cx, pr->w);
-			double dy = tdist(i / pr->w % pr->h, cy, pr->h);
-			double dz = tdist(i / pr->w / pr->h, cz, pr->d);
-			double d2 = dx * dx + dy * dy + dz * dz;
-			if (d2 <= r * r)
-				f[i] += exp(-pow(sqrt(d2) / pr->s, pr->q));
-		}
-	}
-	free(f);
-	free(taken);
-	free(cs);
-}
+#include "ref_frd.h"
 
 static void against_reference(uint32_t w, uint32_t h, uint32_t d, double p,
     double tol, double reach)
@@ -225,8 +149,11 @@ static void spread(void **state)
 	/* Blue noise at 97.5 %: low frequencies far below the plateau. */
 	{
 		double ratio;
-		assert_int_equal(frdq_lowpass(&m, 0.025, &ratio), 0);
-		print_message("lowpass = %.3f\n", ratio);
+		assert_int_equal(frdq_lowpass(&m, 0.0, 0.025, &ratio), 0);
+		print_message("lowpass first 2.5%% = %.3f\n", ratio);
+		assert_true(ratio < 0.2);
+		assert_int_equal(frdq_lowpass(&m, 0.975, 1.0, &ratio), 0);
+		print_message("lowpass last 2.5%% = %.3f\n", ratio);
 		assert_true(ratio < 0.2);
 	}
 	frd_free(&m);
@@ -245,7 +172,7 @@ static void lowpass_measure(void **state)
 	/* Every 8th cell in x and y gets the smallest values: 1024 dots. */
 	for (uint32_t i = 0, lo = 0, hi = 1024; i < m.n; i++)
 		m.v[i] = (i % 8 == 0 && i / 256 % 8 == 0) ? lo++ : hi++;
-	assert_int_equal(frdq_lowpass(&m, 1024.0 / 65536.0, &ratio), 0);
+	assert_int_equal(frdq_lowpass(&m, 0.0, 1024.0 / 65536.0, &ratio), 0);
 	assert_true(ratio < 1e-20);
 	frs_rng_init(&r, 5, FRS_STREAM_TEST);
 	for (uint32_t i = 0; i < m.n; i++)
@@ -255,7 +182,7 @@ static void lowpass_measure(void **state)
 		m.v[i] = m.v[j];
 		m.v[j] = t;
 	}
-	assert_int_equal(frdq_lowpass(&m, 0.025, &ratio), 0);
+	assert_int_equal(frdq_lowpass(&m, 0.0, 0.025, &ratio), 0);
 	assert_true(ratio > 0.8 && ratio < 1.25);
 	frd_free(&m);
 }

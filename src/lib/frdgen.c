@@ -12,10 +12,8 @@
 #include <string.h>
 
 #define MAXLEV 40
-#define DEFAULT_TOL 1e-4
+#define DEFAULT_TOL 1e-3
 #define DEFAULT_REACH 3.0
-/* Above this many cells a window is split over threads. */
-#define PAR_CELLS 65536
 
 /* One level of the min-pyramid: level 0 holds the minimum of each tile of
  * cells, level L+1 the minimum of 2x2x2 nodes of level L. */
@@ -23,6 +21,7 @@ struct level {
 	uint32_t nx, ny, nz;
 	double *min;
 	uint64_t *stamp;	/* last step that queued the node */
+	unsigned char *arg;	/* level 0: where in its tile the minimum is */
 };
 
 struct item {			/* a heap entry of the rank query */
@@ -35,12 +34,23 @@ struct gen {
 	const struct frdgen_params *pr;
 	uint32_t w, h, d;
 	size_t n;
-	double *field;		/* +inf marks a taken cell */
+	/* The field is stored tile by tile: each tile of tx*ty*tz cells is
+	 * one contiguous block (one cache line per tile row in 2-D), so that
+	 * adding a force and finding the new minimum of a tile work on the
+	 * same few lines.  Cells past the matrix edge pad the last tiles and
+	 * hold +inf, like taken cells. */
+	double *field;
 	uint32_t *val;
 	double *table;		/* f by |dx|, |dy|, |dz| */
 	uint32_t hw, hh, hd;	/* largest toroidal offsets: w/2, h/2, d/2 */
 	double rtol, rmax;
 	uint32_t tx, ty, tz;	/* tile size */
+	unsigned lx, ly, lz;	/* their log2 */
+	uint32_t ntx, nty, ntz;	/* tiles per axis */
+	size_t ts;		/* cells per tile */
+	uint32_t *tlist;	/* tiles of the current window */
+	unsigned char *changed;	/* per entry of tlist: its minimum moved */
+	int32_t *ext;		/* x reach per window row */
 	int nlev;
 	struct level lev[MAXLEV];
 	uint32_t *dirty[2];
@@ -112,8 +122,10 @@ uint64_t frdgen_memory(const struct frdgen_params *pr)
 	uint64_t n = (uint64_t)pr->w * pr->h * pr->d;
 	uint64_t t = ((uint64_t)pr->w / 2 + 1) * (pr->h / 2 + 1) *
 	    (pr->d / 2 + 1);
-	/* field, values (twice: the output), table, tiles and pyramid */
-	return n * 8 + n * 4 * 2 + t * 8 + n / 4 + (1 << 20);
+	/* field (with the padding of partial tiles), values, table, tiles
+	 * and pyramid */
+	uint64_t pad = ((uint64_t)pr->w + 8) * (pr->h + 8) * (pr->d + 4);
+	return pad * 8 + n * 4 + t * 8 + n / 4 + (1 << 20);
 }
 
 void frdgen_describe(const struct frdgen_params *pr, char *buf, size_t n)
@@ -150,6 +162,20 @@ uint64_t frdgen_tiekey(const struct frdgen_params *pr, uint64_t step,
 
 /* ---- setup -------------------------------------------------------- */
 
+static size_t fidx(const struct gen *g, uint32_t x, uint32_t y, uint32_t z)
+{
+	size_t t = ((size_t)(z >> g->lz) * g->nty + (y >> g->ly)) * g->ntx +
+	    (x >> g->lx);
+	return t * g->ts + (((z & (g->tz - 1)) << g->ly | (y & (g->ty - 1))) <<
+	    g->lx | (x & (g->tx - 1)));
+}
+
+/* Where cell c (row-major) lives in the tiled field. */
+static size_t cell_index(const struct gen *g, uint32_t c)
+{
+	return fidx(g, c % g->w, c / g->w % g->h, c / g->w / g->h);
+}
+
 static int make_table(struct gen *g)
 {
 	size_t nt = (size_t)(g->hw + 1) * (g->hh + 1) * (g->hd + 1);
@@ -170,9 +196,7 @@ static int make_table(struct gen *g)
 
 static int make_levels(struct gen *g)
 {
-	uint32_t nx = (g->w + g->tx - 1) / g->tx;
-	uint32_t ny = (g->h + g->ty - 1) / g->ty;
-	uint32_t nz = (g->d + g->tz - 1) / g->tz;
+	uint32_t nx = g->ntx, ny = g->nty, nz = g->ntz;
 	size_t total = 0;
 
 	for (g->nlev = 0; g->nlev < MAXLEV; g->nlev++) {
@@ -195,14 +219,19 @@ static int make_levels(struct gen *g)
 		nz = (nz + 1) / 2;
 	}
 	g->dcap = total;
-	g->ax[0] = malloc(g->lev[0].nx * sizeof(uint32_t));
-	g->ax[1] = malloc(g->lev[0].ny * sizeof(uint32_t));
-	g->ax[2] = malloc(g->lev[0].nz * sizeof(uint32_t));
-	if (g->ax[0] == NULL || g->ax[1] == NULL || g->ax[2] == NULL)
-		return frs_fail("out of memory for the min-pyramid");
 	g->dirty[0] = malloc(total * sizeof(uint32_t));
 	g->dirty[1] = malloc(total * sizeof(uint32_t));
-	if (g->dirty[0] == NULL || g->dirty[1] == NULL)
+	g->lev[0].arg = calloc((size_t)g->ntx * g->nty * g->ntz, 1);
+	g->tlist = malloc((size_t)g->ntx * g->nty * g->ntz * sizeof(uint32_t));
+	g->changed = malloc((size_t)g->ntx * g->nty * g->ntz);
+	g->ext = malloc((size_t)(2 * g->hh + 1) * (2 * g->hd + 1) *
+	    sizeof *g->ext);
+	g->ax[0] = malloc(g->ntx * sizeof(uint32_t));
+	g->ax[1] = malloc(g->nty * sizeof(uint32_t));
+	g->ax[2] = malloc(g->ntz * sizeof(uint32_t));
+	if (g->dirty[0] == NULL || g->dirty[1] == NULL || !g->lev[0].arg ||
+	    !g->tlist || !g->changed || !g->ax[0] || !g->ax[1] || !g->ax[2] ||
+	    !g->ext)
 		return frs_fail("out of memory for the min-pyramid");
 	return 0;
 }
@@ -214,19 +243,45 @@ static void gen_free(struct gen *g)
 	for (int i = 0; i < g->nlev; i++) {
 		free(g->lev[i].min);
 		free(g->lev[i].stamp);
+		free(g->lev[i].arg);
 	}
 	free(g->dirty[0]);
 	free(g->dirty[1]);
 	for (int i = 0; i < 3; i++)
 		free(g->ax[i]);
+	free(g->tlist);
+	free(g->changed);
+	free(g->ext);
 	free(g->heap);
 	free(g->emit);
+}
+
+static unsigned log2u(uint32_t v)
+{
+	unsigned l = 0;
+	while ((1u << l) < v)
+		l++;
+	return l;
+}
+
+/* Every cell free (0), padding cells +inf. */
+static void init_field(struct gen *g)
+{
+	size_t total = (size_t)g->ntx * g->nty * g->ntz * g->ts;
+
+	for (size_t i = 0; i < total; i++)
+		g->field[i] = INFINITY;
+	for (uint32_t z = 0; z < g->d; z++)
+		for (uint32_t y = 0; y < g->h; y++)
+			for (uint32_t x = 0; x < g->w; x++)
+				g->field[fidx(g, x, y, z)] = 0.0;
 }
 
 static int gen_init(struct gen *g, const struct frdgen_params *pr,
     struct frs_matrix *out)
 {
 	char params[512];
+	size_t total;
 
 	memset(g, 0, sizeof *g);
 	g->pr = pr;
@@ -240,17 +295,30 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
 	g->rtol = frdgen_radius(pr);
 	g->rmax = sqrt((double)g->hw * g->hw + (double)g->hh * g->hh +
 	    (double)g->hd * g->hd);
+	/* Tile shapes measured fastest (16 x 8 beat 8x8, 32x4, 64x2 at
+	 * 512^2 and 1024^2): rows long enough for vector adds, few enough
+	 * rows for little loop overhead.  At most 256 cells (arg is a byte). */
 	if (pr->dims == 2) {
-		g->tx = g->ty = 8;
+		g->tx = 16;
+		g->ty = 8;
 		g->tz = 1;
 	} else {
-		g->tx = g->ty = g->tz = 4;
+		g->tx = 8;
+		g->ty = g->tz = 4;
 	}
+	g->lx = log2u(g->tx);
+	g->ly = log2u(g->ty);
+	g->lz = log2u(g->tz);
+	g->ts = (size_t)g->tx * g->ty * g->tz;
+	g->ntx = (g->w + g->tx - 1) / g->tx;
+	g->nty = (g->h + g->ty - 1) / g->ty;
+	g->ntz = (g->d + g->tz - 1) / g->tz;
 	frdgen_describe(pr, params, sizeof params);
 	if (frd_alloc(out, pr->dims, g->w, g->h, g->d, params) < 0)
 		return -1;
 	g->val = out->v;
-	g->field = calloc(g->n, sizeof *g->field);
+	total = (size_t)g->ntx * g->nty * g->ntz * g->ts;
+	g->field = malloc(total * sizeof *g->field);
 	if (g->field == NULL)
 		return frs_fail("out of memory for a %zu-cell force field", g->n);
 	if (make_table(g) < 0 || make_levels(g) < 0)
@@ -260,21 +328,33 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
 
 /* ---- the min-pyramid ---------------------------------------------- */
 
-static double tile_min(const struct gen *g, uint32_t tx, uint32_t ty,
-    uint32_t tz)
+/* Minimum of a tile and the first cell that holds it. */
+static double block_min(const double *b, size_t n, unsigned char *arg)
 {
-	uint32_t x1 = (tx + 1) * g->tx < g->w ? (tx + 1) * g->tx : g->w;
-	uint32_t y1 = (ty + 1) * g->ty < g->h ? (ty + 1) * g->ty : g->h;
-	uint32_t z1 = (tz + 1) * g->tz < g->d ? (tz + 1) * g->tz : g->d;
-	double m = INFINITY;
+	double m[8] = { INFINITY, INFINITY, INFINITY, INFINITY, INFINITY,
+	    INFINITY, INFINITY, INFINITY }, best;
+	size_t i;
 
-	for (uint32_t z = tz * g->tz; z < z1; z++)
-		for (uint32_t y = ty * g->ty; y < y1; y++) {
-			const double *row = g->field + ((size_t)z * g->h + y) * g->w;
-			for (uint32_t x = tx * g->tx; x < x1; x++)
-				m = row[x] < m ? row[x] : m;
-		}
-	return m;
+	/* Eight running minima: vectorises, and the order of a minimum does
+	 * not change its value. */
+	for (i = 0; i + 8 <= n; i += 8)
+		for (size_t k = 0; k < 8; k++)
+			m[k] = b[i + k] < m[k] ? b[i + k] : m[k];
+	for (; i < n; i++)
+		m[0] = b[i] < m[0] ? b[i] : m[0];
+	best = m[0];
+	for (int k = 1; k < 8; k++)
+		best = m[k] < best ? m[k] : best;
+	for (i = 0; i < n && b[i] != best; i++)
+		;
+	*arg = (unsigned char)(i < n ? i : 0);
+	return best;
+}
+
+static double tile_rescan(struct gen *g, size_t t)
+{
+	return g->lev[0].min[t] = block_min(g->field + t * g->ts, g->ts,
+	    &g->lev[0].arg[t]);
 }
 
 static double node_min(const struct gen *g, int l, uint32_t x, uint32_t y,
@@ -292,24 +372,18 @@ static double node_min(const struct gen *g, int l, uint32_t x, uint32_t y,
 	return m;
 }
 
-static int tiles_rows(void *ctx, uint64_t b, uint64_t e)
+static int tiles_task(void *ctx, uint64_t b, uint64_t e)
 {
 	struct gen *g = ctx;
-	struct level *l = &g->lev[0];
-
-	for (uint64_t r = b; r < e; r++) {
-		uint32_t ty = (uint32_t)(r % l->ny), tz = (uint32_t)(r / l->ny);
-		for (uint32_t tx = 0; tx < l->nx; tx++)
-			l->min[((size_t)tz * l->ny + ty) * l->nx + tx] =
-			    tile_min(g, tx, ty, tz);
-	}
+	for (uint64_t t = b; t < e; t++)
+		tile_rescan(g, (size_t)t);
 	return 0;
 }
 
-/* Recompute every tile and level (start, resume, full-torus windows). */
+/* Recompute every tile and level (start, resume). */
 static void rebuild_all(struct gen *g)
 {
-	frs_parallel((uint64_t)g->lev[0].ny * g->lev[0].nz, 4, tiles_rows, g,
+	frs_parallel((uint64_t)g->ntx * g->nty * g->ntz, 256, tiles_task, g,
 	    NULL);
 	for (int l = 1; l < g->nlev; l++) {
 		struct level *v = &g->lev[l];
@@ -321,16 +395,16 @@ static void rebuild_all(struct gen *g)
 	}
 }
 
-/* Tiles along one axis that a window [c - neg, c + pos] touches. */
-static uint32_t axis_tiles(uint32_t c, uint32_t neg, uint32_t pos,
-    uint32_t size, uint32_t ts, uint32_t *out)
+/* Tiles along one axis that a window [c - ext, c + ext] touches. */
+static uint32_t axis_tiles(uint32_t c, uint32_t ext, uint32_t size,
+    uint32_t ts, uint32_t *out)
 {
 	uint32_t nt = (size + ts - 1) / ts, k = 0, first, last;
 
-	if (neg + pos + 1 < size) {
-		first = (c + size - neg) % size / ts;
-		last = (c + pos) % size / ts;
-		if (first <= last && (c + size - neg) % size <= (c + pos) % size) {
+	if (2 * (uint64_t)ext + 1 < size) {
+		first = (c + size - ext) % size / ts;
+		last = (c + ext) % size / ts;
+		if (first <= last && (c + size - ext) % size <= (c + ext) % size) {
 			for (uint32_t t = first; t <= last; t++)
 				out[k++] = t;
 			return k;
@@ -356,27 +430,11 @@ static void push_dirty(struct gen *g, int side, int l, uint32_t idx)
 	g->dirty[side][g->ndirty[side]++] = idx;
 }
 
-/* After a window add: recompute its tiles, then their ancestors. */
-static void update_window(struct gen *g, uint32_t ext[3][2])
+/* Bring the levels above the changed tiles up to date. */
+static void update_levels(struct gen *g)
 {
-	uint32_t **ax = g->ax, cnt[3], c[3] = { g->cx, g->cy, g->cz };
-	uint32_t size[3] = { g->w, g->h, g->d }, ts[3] = { g->tx, g->ty, g->tz };
-	struct level *l0 = &g->lev[0];
 	int side = 0;
 
-	for (int i = 0; i < 3; i++)
-		cnt[i] = axis_tiles(c[i], ext[i][0], ext[i][1], size[i], ts[i],
-		    ax[i]);
-	g->ndirty[0] = 0;
-	for (uint32_t k = 0; k < cnt[2]; k++)
-		for (uint32_t j = 0; j < cnt[1]; j++)
-			for (uint32_t i = 0; i < cnt[0]; i++) {
-				uint32_t idx = (ax[2][k] * l0->ny + ax[1][j]) *
-				    l0->nx + ax[0][i];
-				l0->min[idx] = tile_min(g, ax[0][i], ax[1][j],
-				    ax[2][k]);
-				g->dirty[0][g->ndirty[0]++] = idx;
-			}
 	for (int l = 1; l < g->nlev; l++) {
 		struct level *lo = &g->lev[l - 1], *up = &g->lev[l];
 		g->ndirty[!side] = 0;
@@ -420,63 +478,132 @@ static uint32_t extent(double rr, uint32_t cap)
 	return (uint32_t)e;
 }
 
-static void add_row(struct gen *g, int dz, int dy, uint32_t en, uint32_t ep)
+/* Toroidal offset a - c in (-n/2, n/2]. */
+static int64_t toff(uint32_t a, uint32_t c, uint32_t n)
 {
-	uint32_t zz = (uint32_t)(((int64_t)g->cz + dz + g->d) % g->d);
-	uint32_t yy = (uint32_t)(((int64_t)g->cy + dy + g->h) % g->h);
-	double *row = g->field + ((size_t)zz * g->h + yy) * g->w;
-	const double *t = g->table + ((size_t)(dz < 0 ? -dz : dz) * (g->hh + 1) +
-	    (size_t)(dy < 0 ? -dy : dy)) * (g->hw + 1);
-	uint32_t cx = g->cx, w = g->w;
+	int64_t d = (int64_t)a - (int64_t)c;
+	if (d > (int64_t)(n / 2))
+		d -= n;
+	else if (d <= -(int64_t)((n + 1) / 2))
+		d += n;
+	return d;
+}
 
-	/* dx = 0 .. ep, then -1 .. -en, each cut where the torus wraps. */
-	if (cx + ep < w) {
-		for (uint32_t dx = 0; dx <= ep; dx++)
-			row[cx + dx] += t[dx];
-	} else {
-		for (uint32_t dx = 0; dx < w - cx; dx++)
-			row[cx + dx] += t[dx];
-		for (uint32_t dx = w - cx; dx <= ep; dx++)
-			row[cx + dx - w] += t[dx];
-	}
-	if (en <= cx) {
-		for (uint32_t dx = 1; dx <= en; dx++)
-			row[cx - dx] += t[dx];
-	} else {
-		for (uint32_t dx = 1; dx <= cx; dx++)
-			row[cx - dx] += t[dx];
-		for (uint32_t dx = cx + 1; dx <= en; dx++)
-			row[cx + w - dx] += t[dx];
-	}
+/* Toroidal distance from c to the nearest of the cells [a, b]. */
+static uint32_t tgap(uint32_t c, uint32_t a, uint32_t b, uint32_t n)
+{
+	int64_t da, db;
+
+	if (c >= a && c <= b)
+		return 0;
+	da = toff(a, c, n);
+	db = toff(b, c, n);
+	da = da < 0 ? -da : da;
+	db = db < 0 ? -db : db;
+	return (uint32_t)(da < db ? da : db);
 }
 
 struct window {
-	uint32_t ext[3][2];	/* negative and positive extent per axis */
 	double r2;
+	uint32_t e;	/* floor(r), capped */
+	uint32_t ey, ez;	/* reach in y and z */
+	int fast;	/* one contiguous run per tile row (see add_tile_row) */
+	int32_t *ext;	/* x reach per (dz, dy), -1 out of reach */
 };
 
-static void window_row(struct gen *g, const struct window *wd, uint64_t r)
+/* The x reach of every row (dy, dz) of the window, once per insertion. */
+static void window_extents(struct gen *g, struct window *wd)
 {
-	uint32_t ny = wd->ext[1][0] + wd->ext[1][1] + 1;
-	int dy = (int)(r % ny) - (int)wd->ext[1][0];
-	int dz = (int)(r / ny) - (int)wd->ext[2][0];
-	double rr = wd->r2 - (double)dy * dy - (double)dz * dz;
+	uint32_t ny = 2 * wd->ey + 1;
 
-	if (rr < 0.0)
-		return;
-	add_row(g, dz, dy, extent(rr, wd->ext[0][0]), extent(rr, wd->ext[0][1]));
+	for (int64_t dz = -(int64_t)wd->ez; dz <= (int64_t)wd->ez; dz++)
+		for (int64_t dy = -(int64_t)wd->ey; dy <= (int64_t)wd->ey; dy++) {
+			double rr = wd->r2 - (double)(dy * dy) - (double)(dz * dz);
+			wd->ext[(size_t)(dz + wd->ez) * ny + (size_t)(dy + wd->ey)] =
+			    rr < 0.0 ? -1 : (int32_t)extent(rr, g->hw);
+		}
 }
 
-struct rowjob {
+/* Add the row of forces at offsets dy, dz to cells x0 .. x1 of one tile
+ * row. */
+static void add_tile_row(struct gen *g, const struct window *wd, double *row,
+    uint32_t x0, uint32_t x1, int64_t dy, int64_t dz)
+{
+	const double *t;
+	int64_t e, dx0, klo, khi, kmid;
+
+	if ((dy < 0 ? -dy : dy) > (int64_t)wd->ey ||
+	    (dz < 0 ? -dz : dz) > (int64_t)wd->ez)
+		return;
+	e = wd->ext[(size_t)(dz + wd->ez) * (2 * wd->ey + 1) +
+	    (size_t)(dy + wd->ey)];
+	if (e < 0)
+		return;
+	t = g->table + ((size_t)(dz < 0 ? -dz : dz) * (g->hh + 1) +
+	    (size_t)(dy < 0 ? -dy : dy)) * (g->hw + 1);
+	if (!wd->fast) {
+		for (uint32_t x = x0; x <= x1; x++) {
+			int64_t dx = toff(x, g->cx, g->w);
+			if ((dx < 0 ? -dx : dx) <= e)
+				row[x - x0] += t[dx < 0 ? -dx : dx];
+		}
+		return;
+	}
+	/* Fast: the cells within reach are one run of offsets dx0 + k.  A
+	 * seam of the torus inside the tile would break the run, but 2e + 1
+	 * is two tiles shorter than the row, so cells past a seam are out of
+	 * reach and fall outside [klo, khi]. */
+	dx0 = toff(x0, g->cx, g->w);
+	klo = -e - dx0 > 0 ? -e - dx0 : 0;
+	khi = e - dx0 < (int64_t)(x1 - x0) ? e - dx0 : (int64_t)(x1 - x0);
+	kmid = -dx0 < klo ? klo : -dx0 > khi + 1 ? khi + 1 : -dx0;
+	for (int64_t k = klo; k < kmid; k++)
+		row[k] += t[-dx0 - k];
+	for (int64_t k = kmid; k <= khi; k++)
+		row[k] += t[dx0 + k];
+}
+
+/* Add the force to one tile and report whether its minimum moved. */
+static int add_tile(struct gen *g, const struct window *wd, uint32_t t)
+{
+	uint32_t tx = t % g->ntx, ty = t / g->ntx % g->nty, tz = t / g->ntx / g->nty;
+	uint32_t x0 = tx * g->tx, x1 = umin(x0 + g->tx, g->w) - 1;
+	uint32_t y0 = ty * g->ty, y1 = umin(y0 + g->ty, g->h) - 1;
+	uint32_t z0 = tz * g->tz, z1 = umin(z0 + g->tz, g->d) - 1;
+	uint32_t gx = tgap(g->cx, x0, x1, g->w), gy = tgap(g->cy, y0, y1, g->h);
+	uint32_t gz = tgap(g->cz, z0, z1, g->d);
+	double *blk = g->field + (size_t)t * g->ts, old = g->lev[0].min[t];
+	unsigned a = g->lev[0].arg[t];
+	int64_t ax, ay, az;
+
+	if ((double)gx * gx + (double)gy * gy + (double)gz * gz > wd->r2)
+		return 0;	/* out of reach */
+	for (uint32_t z = z0; z <= z1; z++)
+		for (uint32_t y = y0; y <= y1; y++)
+			add_tile_row(g, wd, blk + (((z - z0) << g->ly | (y - y0)) <<
+			    g->lx), x0, x1, toff(y, g->cy, g->h),
+			    toff(z, g->cz, g->d));
+	/* Forces only grow: if the cell holding the minimum got nothing
+	 * (and is not the one just taken), the minimum stays. */
+	ax = toff(x0 + (a & (g->tx - 1)), g->cx, g->w);
+	ay = toff(y0 + (a >> g->lx & (g->ty - 1)), g->cy, g->h);
+	az = toff(z0 + (a >> (g->lx + g->ly)), g->cz, g->d);
+	if ((double)(ax * ax + ay * ay + az * az) > wd->r2 && blk[a] == old)
+		return 0;
+	return tile_rescan(g, t) != old;
+}
+
+struct tilejob {
 	struct gen *g;
 	const struct window *wd;
 };
 
-static int rows_task(void *ctx, uint64_t b, uint64_t e)
+static int tiles_add_task(void *ctx, uint64_t b, uint64_t e)
 {
-	struct rowjob *j = ctx;
-	for (uint64_t r = b; r < e; r++)
-		window_row(j->g, j->wd, r);
+	struct tilejob *j = ctx;
+	for (uint64_t i = b; i < e; i++)
+		j->g->changed[i] = (unsigned char)add_tile(j->g, j->wd,
+		    j->g->tlist[i]);
 	return 0;
 }
 
@@ -485,30 +612,37 @@ static int rows_task(void *ctx, uint64_t b, uint64_t e)
 static void add_force(struct gen *g, double r)
 {
 	struct window wd;
-	uint32_t size[3] = { g->w, g->h, g->d }, full = r >= g->rmax;
-	uint64_t nrows, cells;
+	uint32_t size[3] = { g->w, g->h, g->d }, ts[3] = { g->tx, g->ty, g->tz };
+	uint32_t c[3] = { g->cx, g->cy, g->cz }, cnt[3];
+	size_t nt = 0;
 
-	for (int i = 0; i < 3; i++) {
-		uint32_t cap = full ? size[i] : (uint32_t)umin((uint32_t)
-		    fmin(floor(r), (double)size[i]), size[i]);
-		wd.ext[i][0] = umin(cap, (size[i] - 1) / 2);
-		wd.ext[i][1] = umin(cap, size[i] / 2);
-	}
-	wd.r2 = full ? INFINITY : r * r;
-	nrows = (uint64_t)(wd.ext[1][0] + wd.ext[1][1] + 1) *
-	    (wd.ext[2][0] + wd.ext[2][1] + 1);
-	cells = nrows * (wd.ext[0][0] + wd.ext[0][1] + 1);
-	if (cells >= PAR_CELLS && frs_threads() > 1) {
-		struct rowjob j = { g, &wd };
-		frs_parallel(nrows, 8, rows_task, &j, NULL);
+	wd.e = r >= (double)UINT32_MAX ? UINT32_MAX : (uint32_t)floor(r);
+	wd.r2 = r >= g->rmax ? INFINITY : r * r;
+	wd.fast = 2 * (uint64_t)wd.e + 1 + 2 * g->tx <= g->w;
+	wd.ey = umin(wd.e, g->hh);
+	wd.ez = umin(wd.e, g->hd);
+	wd.ext = g->ext;
+	window_extents(g, &wd);
+	for (int i = 0; i < 3; i++)
+		cnt[i] = axis_tiles(c[i], umin(wd.e, size[i]), size[i], ts[i],
+		    g->ax[i]);
+	for (uint32_t k = 0; k < cnt[2]; k++)
+		for (uint32_t j = 0; j < cnt[1]; j++)
+			for (uint32_t i = 0; i < cnt[0]; i++)
+				g->tlist[nt++] = (g->ax[2][k] * g->nty + g->ax[1][j]) *
+				    g->ntx + g->ax[0][i];
+	if (nt >= 16 && frs_threads() > 1) {
+		struct tilejob j = { g, &wd };
+		frs_team_run(nt, nt >= 1024 ? 64 : 8, tiles_add_task, &j);
 	} else {
-		for (uint64_t k = 0; k < nrows; k++)
-			window_row(g, &wd, k);
+		for (size_t i = 0; i < nt; i++)
+			g->changed[i] = (unsigned char)add_tile(g, &wd, g->tlist[i]);
 	}
-	if (full && frs_threads() > 1)
-		rebuild_all(g);
-	else
-		update_window(g, wd.ext);
+	g->ndirty[0] = 0;
+	for (size_t i = 0; i < nt; i++)
+		if (g->changed[i])
+			push_dirty(g, 0, 0, g->tlist[i]);
+	update_levels(g);
 }
 
 /* ---- the rank query: the K-th smallest free cell ------------------ */
@@ -562,14 +696,15 @@ static int expand(struct gen *g, int lev, uint32_t idx)
 	uint32_t x = idx % l->nx, y = idx / l->nx % l->ny, z = idx / l->nx / l->ny;
 
 	if (lev == 0) {
-		for (uint32_t k = z * g->tz; k < umin((z + 1) * g->tz, g->d); k++)
-			for (uint32_t j = y * g->ty; j < umin((y + 1) * g->ty, g->h);
-			    j++)
-				for (uint32_t i = x * g->tx;
-				    i < umin((x + 1) * g->tx, g->w); i++) {
+		const double *blk = g->field + (size_t)idx * g->ts;
+		uint32_t x0 = x * g->tx, y0 = y * g->ty, z0 = z * g->tz;
+		for (uint32_t k = z0; k < umin(z0 + g->tz, g->d); k++)
+			for (uint32_t j = y0; j < umin(y0 + g->ty, g->h); j++)
+				for (uint32_t i = x0; i < umin(x0 + g->tx, g->w); i++) {
+					double v = blk[((k - z0) << g->ly | (j - y0)) <<
+					    g->lx | (i - x0)];
 					uint32_t c = (k * g->h + j) * g->w + i;
-					if (g->field[c] < INFINITY &&
-					    heap_push(g, g->field[c], -1, c) < 0)
+					if (v < INFINITY && heap_push(g, v, -1, c) < 0)
 						return -1;
 				}
 		return 0;
@@ -662,7 +797,7 @@ static int stream_ties(struct gen *g, double v, struct keyheap *kh)
 	while (g->nheap > 0) {
 		struct item it = g->heap[--g->nheap];	/* used as a stack */
 		if (it.lev < 0) {
-			if (g->field[it.idx] == v)
+			if (g->field[cell_index(g, it.idx)] == v)
 				keyheap_offer(kh, frdgen_tiekey(g->pr, g->step,
 				    it.idx), it.idx);
 			continue;
@@ -749,6 +884,12 @@ static int select_cell(struct gen *g, uint64_t k, uint32_t *c)
 
 /* ---- checkpoints -------------------------------------------------- */
 
+/* The field in its tiled layout, padding included. */
+static size_t field_cells(const struct gen *g)
+{
+	return (size_t)g->ntx * g->nty * g->ntz * g->ts;
+}
+
 #define CKPT_MAGIC "FRDCKPT1"
 
 /* The state after "step" insertions: parameters, step, values (free cells
@@ -771,7 +912,7 @@ static int save_checkpoint(struct gen *g, uint64_t step)
 	ok = fwrite(h, 1, sizeof h, o.fp) == sizeof h &&
 	    fwrite(params, 1, plen, o.fp) == plen &&
 	    fwrite(g->val, 4, g->n, o.fp) == g->n &&
-	    fwrite(g->field, 8, g->n, o.fp) == g->n;
+	    fwrite(g->field, 8, field_cells(g), o.fp) == field_cells(g);
 	if (!ok) {
 		frs_fail_errno("%s: write error", o.name);
 		outfile_abort(&o);
@@ -814,8 +955,8 @@ static int load_checkpoint(struct gen *g, uint64_t *step)
 		goto done;
 	}
 	if (*step > g->n || io_read_exact(fp, name, g->val, g->n * 4,
-	    "values") < 0 || io_read_exact(fp, name, g->field, g->n * 8,
-	    "field") < 0)
+	    "values") < 0 || io_read_exact(fp, name, g->field,
+	    field_cells(g) * 8, "field") < 0)
 		goto done;
 	rc = 1;
 done:
@@ -864,9 +1005,13 @@ int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
 		if (rc < 0)
 			goto fail;
 	}
-	if (start == 0)
+	if (start == 0) {
 		memset(g.val, 0xff, g.n * sizeof *g.val);
+		init_field(&g);
+	}
 	rebuild_all(&g);
+	if (frs_team_start() < 0)
+		goto fail;
 	last_save = progress_now();
 	for (g.step = start; g.step < g.n; g.step++) {
 		uint32_t c = 0;
@@ -874,10 +1019,10 @@ int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
 		if (select_cell(&g, k, &c) < 0)
 			goto fail;
 		g.val[c] = (uint32_t)g.step;
-		g.field[c] = INFINITY;
 		g.cx = c % g.w;
 		g.cy = c / g.w % g.h;
 		g.cz = c / g.w / g.h;
+		g.field[fidx(&g, g.cx, g.cy, g.cz)] = INFINITY;
 		add_force(&g, radius_after(&g, g.step + 1));
 		if (prog != NULL && (g.step & 1023) == 0)
 			progress_update(prog, g.step);
@@ -888,9 +1033,11 @@ int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
 			last_save = progress_now();
 		}
 	}
+	frs_team_stop();
 	gen_free(&g);
 	return 0;
 fail:
+	frs_team_stop();
 	gen_free(&g);
 	frd_free(out);
 	return -1;

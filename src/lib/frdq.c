@@ -47,12 +47,14 @@ double frdq_spread(const struct frs_matrix *m, uint32_t c)
 	return sqrt(best) / ideal;
 }
 
-int frdq_lowpass(const struct frs_matrix *m, double frac, double *ratio)
+int frdq_lowpass(const struct frs_matrix *m, double from, double to,
+    double *ratio)
 {
 	size_t w = m->w, h = m->h;
 	double *img, lo = 0.0, hi = 0.0, fp;
 	size_t nlo = 0, nhi = 0, dots = 0;
-	uint32_t cut = (uint32_t)(frac * (double)m->n);
+	uint64_t lo_v = (uint64_t)(from * (double)m->n);
+	uint64_t hi_v = (uint64_t)(to * (double)m->n);
 
 	if (m->dims != 2 || !fft_is_pow2(w) || !fft_is_pow2(h))
 		return frs_fail("the spectrum needs a 2-D matrix with "
@@ -61,7 +63,7 @@ int frdq_lowpass(const struct frs_matrix *m, double frac, double *ratio)
 	if (img == NULL)
 		return frs_fail("out of memory for the spectrum");
 	for (size_t i = 0; i < m->n; i++)
-		if (m->v[i] < cut) {
+		if (m->v[i] >= lo_v && m->v[i] < hi_v) {
 			img[2 * i] = 1.0;
 			dots++;
 		}

@@ -7,9 +7,10 @@
  * (sqrt(3) c)); face-centred cubic in 3-D).  Near 1 is perfect, a random
  * set of c points has rho ~ 1 / sqrt(c).
  *
- * lowpass: threshold at a constant level (the cells with the smallest
- * frac * N values, the dots of a dither of a (1 - frac) grey) and take
- * the power spectrum of that dot pattern, normalised by the dot count so
+ * lowpass: the cells whose values lie in [from * N, to * N) are dots (from
+ * = 0: the first values, the dots of a dither of a (1 - to) grey; to = 1:
+ * the last values, the black dots of a dither of a "from" grey as in the
+ * thesis's Fig. 3.1 at 97.5 %); take the power spectrum of that pattern, normalised by the dot count so
  * that white noise is 1 everywhere.  The figure is the mean power at
  * frequencies below half the principal frequency sqrt(dots) over the mean
  * power of the plateau between 1.5 and 2.5 times it.  White noise gives
@@ -24,6 +25,7 @@
 
 double frdq_spread(const struct frs_matrix *m, uint32_t c);
 /* -1 with frs_fail when the matrix is not 2-D with power-of-two sides. */
-int frdq_lowpass(const struct frs_matrix *m, double frac, double *ratio);
+int frdq_lowpass(const struct frs_matrix *m, double from, double to,
+    double *ratio);
 
 #endif

@@ -4,6 +4,7 @@
 #include "progress.h"
 
 #include <pthread.h>
+#include <sched.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 
@@ -87,4 +88,94 @@ int frs_parallel(uint64_t n, uint64_t chunk,
 		pthread_join(tid[t], NULL);
 	free(tid);
 	return atomic_load(&j.failed) ? -1 : 0;
+}
+
+/* ---- a spinning team ---------------------------------------------- */
+
+static struct team {
+	int size;			/* threads besides the caller */
+	pthread_t *tid;
+	atomic_uint_fast64_t gen;	/* bumped for each job; odd never */
+	atomic_int busy;		/* workers still on the current job */
+	atomic_int quit;
+	struct job *job;
+} team;
+
+static void *team_worker(void *arg)
+{
+	uint64_t seen = 0;
+	(void)arg;
+
+	for (;;) {
+		uint64_t g;
+		unsigned spins = 0;
+		while ((g = atomic_load_explicit(&team.gen,
+		    memory_order_acquire)) == seen) {
+			if (atomic_load(&team.quit))
+				return NULL;
+			/* Spin a while, then let the core go. */
+			if (++spins > 20000)
+				sched_yield();
+		}
+		seen = g;
+		run(team.job, 0);
+		atomic_fetch_sub_explicit(&team.busy, 1, memory_order_release);
+	}
+}
+
+int frs_team_start(void)
+{
+	team.size = 0;
+	atomic_init(&team.gen, 0);
+	atomic_init(&team.busy, 0);
+	atomic_init(&team.quit, 0);
+	if (nthreads <= 1)
+		return 0;
+	team.tid = malloc((size_t)(nthreads - 1) * sizeof *team.tid);
+	if (team.tid == NULL)
+		return frs_fail("out of memory for threads");
+	for (int t = 0; t < nthreads - 1; t++) {
+		if (pthread_create(&team.tid[t], NULL, team_worker, NULL) != 0)
+			break;
+		team.size++;
+	}
+	return 0;
+}
+
+int frs_team_run(uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx)
+{
+	struct job j;
+
+	if (chunk == 0)
+		chunk = 1;
+	j.n = n;
+	j.chunk = chunk;
+	j.fn = fn;
+	j.ctx = ctx;
+	j.pr = NULL;
+	atomic_init(&j.next, 0);
+	atomic_init(&j.done, 0);
+	atomic_init(&j.failed, 0);
+	if (team.size == 0 || n <= chunk) {
+		run(&j, 1);
+		return atomic_load(&j.failed) ? -1 : 0;
+	}
+	team.job = &j;
+	atomic_store(&team.busy, team.size);
+	atomic_fetch_add_explicit(&team.gen, 1, memory_order_release);
+	run(&j, 1);
+	while (atomic_load_explicit(&team.busy, memory_order_acquire) > 0)
+		;
+	return atomic_load(&j.failed) ? -1 : 0;
+}
+
+void frs_team_stop(void)
+{
+	atomic_store(&team.quit, 1);
+	for (int t = 0; t < team.size; t++)
+		pthread_join(team.tid[t], NULL);
+	free(team.tid);
+	team.tid = NULL;
+	team.size = 0;
 }

@@ -24,3 +24,14 @@ int frs_parallel(uint64_t n, uint64_t chunk,
     struct progress *pr);
 
 #endif
+
+/*
+ * A team of threads kept spinning between many tiny parallel steps (one
+ * FRD insertion is ~10 microseconds: creating threads for each would cost
+ * more than the work).  Chunks are handed out as by frs_parallel.  Only
+ * one team at a time; frs_team_run from the thread that started it.
+ */
+int frs_team_start(void);
+int frs_team_run(uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx);
+void frs_team_stop(void);

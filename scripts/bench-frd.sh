@@ -1,0 +1,80 @@
+#!/bin/sh
+# frd-gen: what accuracy costs.  A table of matrix size by tolerance with
+# seconds, peak memory and the quality figures of frd-gen(1), then ratios
+# against the brute-force reference, a plain radius-42 run and the thesis,
+# and the check of the shipped default matrix.
+#   scripts/bench-frd.sh [BUILD]      BENCH_QUICK=1 skips 2048^2
+set -eu
+BUILD=${1:-build/bench}
+GEN=$BUILD/bin/frd-gen
+REF=$BUILD/test/ref_frd
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+TIME=/usr/bin/time
+[ -x "$TIME" ] || { echo "bench-frd: needs /usr/bin/time (scripts/deps.sh)"; exit 1; }
+
+# run NAME ARGS...: time and peak memory of one frd-gen run, then its
+# quality figures; prints one table row.
+row() {
+	size=$1 tol=$2
+	shift 2
+	if [ "$tol" = exact ]; then a=--exact; else a="--tol $tol"; fi
+	$TIME -f "%e %M" -o "$T/time" "$GEN" -q -s "$size" $a "$@" -o "$T/m.frd"
+	"$GEN" --quality "$T/m.frd" >"$T/q"
+	awk -v s="$size" -v t="$tol" -v tf="$T/time" '
+		BEGIN { getline tm < tf; split(tm, a, " ")
+			r = t == "exact" ? "all" : sprintf("%.1f", log(1 / t) ^ 2 / 2) }
+		{ q[$1] = $2 }
+		END { printf "%-6s %-6s %6s %9.2f %8.1f %8s %8s %8s %8s\n", s, t, r,
+			a[1], a[2] / 1024, q["spread_16"], q["spread_1024"] == "" ? "-" :
+			q["spread_1024"], q["lowpass_first_2.5%"], q["lowpass_last_2.5%"] }' "$T/q"
+}
+
+echo "frd-gen: accuracy against time ($(nproc) threads, default tol 1e-3)"
+printf '%-6s %-6s %6s %9s %8s %8s %8s %8s %8s\n' size tol radius seconds \
+    peak_MiB spread16 spread1k lp_first lp_last
+for s in 64 128 256; do
+	for t in 1e-2 1e-3 1e-4 1e-6 exact; do row $s $t; done
+done
+for t in 1e-2 1e-3 1e-4 1e-6; do row 512 $t; done
+for t in 1e-2 1e-3 1e-4; do row 1024 $t; done
+if [ -z "${BENCH_QUICK:-}" ]; then
+	for t in 1e-3 1e-4; do row 2048 $t; done
+fi
+echo "(lp_*: low-frequency power over the plateau of the first and last 2.5 %"
+echo " of the values, white noise 1; spread: min distance over the ideal)"
+
+echo
+echo "frd-gen against the brute-force reference (exact, p = 1, one thread)"
+printf '%-6s %12s %12s %8s %s\n' size ref_s frd-gen_s speedup same
+for s in 64 128; do
+	$TIME -f "%e" -o "$T/tr" "$REF" $s $s 1 0 0 1 >"$T/ref.u32"
+	$TIME -f "%e" -o "$T/tg" "$GEN" -q -j 1 -s $s -p 1 --exact --reach 0 -S 1 \
+	    -o "$T/g.frd"
+	tail -c $((4 * s * s)) "$T/g.frd" | cmp -s - "$T/ref.u32" && same=yes || same=NO
+	awk -v s=$s -v a="$(cat "$T/tr")" -v b="$(cat "$T/tg")" -v same=$same \
+	    'BEGIN { printf "%-6s %12.2f %12.2f %8.1f %s\n", s, a, b, a / b, same }'
+done
+
+echo
+echo "frd-gen --tol 1e-4 against a plain radius-42 run (--reach 0, -j 1)"
+printf '%-6s %12s %12s %8s\n' size plain_s ours_s ratio
+for s in 512 1024; do
+	$TIME -f "%e" -o "$T/tp" "$GEN" -q -j 1 --reach 0 --tol 1e-4 -s $s -o "$T/p.frd"
+	$TIME -f "%e" -o "$T/to" "$GEN" -q --tol 1e-4 -s $s -o "$T/o.frd"
+	awk -v s=$s -v a="$(cat "$T/tp")" -v b="$(cat "$T/to")" \
+	    'BEGIN { printf "%-6s %12.2f %12.2f %8.2f\n", s, a, b, a / b }'
+done
+
+echo
+echo "the shipped default matrix (data/default.frd): first values spread"
+if [ -f data/default.frd ]; then
+	"$GEN" --quality data/default.frd | awk '
+		/^spread_/ { ok = $2 >= 0.55; bad += !ok
+			printf "%-12s %.4f %s\n", $1, $2, ok ? ">= 0.55 ok" : "< 0.55 FAIL" }
+		/^lowpass/ { printf "%-20s %.4f\n", $1, $2 }
+		END { exit bad > 0 }'
+else
+	echo "data/default.frd: missing"
+fi
+echo "(thesis: 2048^2 took over 4 hours = 14400 s on a GTX 680)"
