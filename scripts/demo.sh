@@ -1,7 +1,7 @@
 #!/bin/sh
 # make demo: run the pipeline on the embedded data and leave pictures in
-# results/.  Only imap exists so far: the demo makes and shows the
-# importance maps that the samplers will use (thesis Fig. 6.1).
+# results/.  So far: the importance maps that the samplers will use
+# (thesis Fig. 6.1) and threshold matrices (ch. 3).
 set -eu
 cd "$(dirname "$0")/.."
 BIN=${BIN:-bin}
@@ -20,6 +20,12 @@ echo "demo: the real environment map data/sunset.exr as importance"
 "$BIN/imap" convert --equirect -s 256x128 data/sunset.exr "$out/sunset-importance.exr"
 "$BIN/imap" convert --log "$out/sunset-importance.exr" "$out/sunset-importance-log.png"
 "$BIN/imap" info "$out/sunset-importance.exr" | sed 's/^/demo:   /'
+
+echo "demo: a 256x256 Forced Random Dithering matrix and its quality"
+"$BIN/frd-gen" -s 256 -q -o "$out/M256.frd"
+"$BIN/frd-gen" --quality "$out/M256.frd" | sed 's/^/demo:   /'
+echo "demo: the shipped default matrix data/default.frd (2048x2048)"
+"$BIN/frd-gen" --quality data/default.frd | sed 's/^/demo:   /'
 
 echo "demo: pictures in $out/:"
 ls "$out" | sed 's/^/demo:   /'
