@@ -33,7 +33,7 @@ PKG_LIBS = $(shell $(PKG_CONFIG) --libs libpng OpenEXR OpenCL 2>/dev/null) \
 	-lstdc++
 CMOCKA_LIBS = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
-PROGS = imap frd-gen
+PROGS = imap frd-gen frs-sample
 LIBSRC = $(wildcard src/lib/*.c)
 LIBCXXSRC = $(wildcard src/lib/*.cc)
 TESTSRC = $(wildcard test/test_*.c)
@@ -52,8 +52,11 @@ else
 VFLAGS = $(OPT)
 endif
 
-ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) $(CFLAGS) \
-	-MMD -MP
+# Where frs-sample finds the default matrix: the source tree, then the
+# installed copy.
+PATHS = -DFRS_SRCDATA='"$(CURDIR)/data"' -DFRS_SHAREDIR='"$(PREFIX)/share/frs"'
+ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) $(PATHS) \
+	$(CFLAGS) -MMD -MP
 ALL_LDFLAGS = $(VFLAGS) $(LDFLAGS)
 LIBS = $(PKG_LIBS) -lm -lpthread
 
@@ -135,12 +138,15 @@ install: all
 	mkdir -p $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR)/man1 \
 	    $(DESTDIR)$(MANDIR)/man5 $(DESTDIR)$(MANDIR)/man7
 	for p in $(PROGS); do install -m 755 bin/$$p $(DESTDIR)$(BINDIR)/; done
+	mkdir -p $(DESTDIR)$(PREFIX)/share/frs
+	install -m 644 data/default.frd $(DESTDIR)$(PREFIX)/share/frs/
 	for s in 1 3 5 7; do for f in man/man$$s/*.$$s; do \
 	    [ -f "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(MANDIR)/man$$s/; \
 	    done; done; true
 
 uninstall:
 	for p in $(PROGS); do rm -f $(DESTDIR)$(BINDIR)/$$p; done
+	rm -f $(DESTDIR)$(PREFIX)/share/frs/default.frd
 	for s in 1 3 5 7; do for f in man/man$$s/*.$$s; do \
 	    rm -f $(DESTDIR)$(MANDIR)/man$$s/$${f##*/}; done; done
 

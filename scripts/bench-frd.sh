@@ -22,12 +22,15 @@ row() {
 	$TIME -f "%e %M" -o "$T/time" "$GEN" -q -s "$size" $a "$@" -o "$T/m.frd"
 	"$GEN" --quality "$T/m.frd" >"$T/q"
 	awk -v s="$size" -v t="$tol" -v tf="$T/time" '
-		BEGIN { getline tm < tf; split(tm, a, " ")
-			r = t == "exact" ? "all" : sprintf("%.1f", log(1 / t) ^ 2 / 2) }
+		BEGIN {
+			getline tm < tf; split(tm, a, " ")
+			if (t == "exact") r = "all"; else r = sprintf("%.1f", log(1 / t) ^ 2 / 2)
+		}
 		{ q[$1] = $2 }
-		END { printf "%-6s %-6s %6s %9.2f %8.1f %8s %8s %8s %8s\n", s, t, r,
-			a[1], a[2] / 1024, q["spread_16"], q["spread_1024"] == "" ? "-" :
-			q["spread_1024"], q["lowpass_first_2.5%"], q["lowpass_last_2.5%"] }' "$T/q"
+		END {
+			s1k = q["spread_1024"]; if (s1k == "") s1k = "-"
+			printf "%-6s %-6s %6s %9.2f %8.1f %8s %8s %8s %8s\n", s, t, r, a[1], a[2] / 1024, q["spread_16"], s1k, q["lowpass_first_2.5%"], q["lowpass_last_2.5%"]
+		}' "$T/q"
 }
 
 echo "frd-gen: accuracy against time ($(nproc) threads, default tol 1e-3)"

@@ -22,6 +22,8 @@ int main(int argc, char **argv)
 	frdgen_defaults(&pr);
 	pr.w = (uint32_t)atoi(argv[1]);
 	pr.h = (uint32_t)atoi(argv[2]);
+	pr.d = 1;
+	pr.dims = 2;
 	pr.p = atof(argv[3]);
 	pr.tol = atof(argv[4]);
 	pr.reach = atof(argv[5]);

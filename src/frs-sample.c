@@ -1,0 +1,300 @@
+/*
+ * frs-sample: Forced Random Sampling of an importance map.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "frdio.h"
+#include "frs.h"
+#include "imap.h"
+#include "outfile.h"
+#include "progress.h"
+#include "ptsio.h"
+
+static const char usage[] =
+    "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
+    "                  [--sigma S] [--jitter none|halton|random] [--pdf]\n"
+    "                  [--progressive N1,N2,...] [--threshold unbiased|thesis]\n"
+    "                  [--count-only] [-s WxH] [-S SEED] [-j N] [-T] [-v]\n"
+    "                  [-o FILE]\n"
+    "\n"
+    "  -n, --count N        samples to make (about; see frs-sample(1))\n"
+    "  -i, --importance M   map: PNG, OpenEXR or a spec such as blob\n"
+    "                       (default const: uniform sampling)\n"
+    "  -m, --matrix FILE    threshold matrix .frd (default: the shipped\n"
+    "                       2048x2048 data/default.frd)\n"
+    "  -a, --algo A         naive, stack, level1, level2 or sorted (default)\n"
+    "      --sigma S        sparsity: one of S^2 window elements passes at\n"
+    "                       the maximum importance (default 8)\n"
+    "      --jitter J       none (element centres), halton or random offsets\n"
+    "      --pdf            add a column: the density of each sample over\n"
+    "                       the unit square, I / mean I\n"
+    "      --progressive L  counts N1 < N2 < ...: write the samples of each\n"
+    "                       step in turn, with a column giving the step\n"
+    "      --threshold R    unbiased (default) or thesis (Eq. 4.14)\n"
+    "      --count-only     print the count, make no points\n"
+    "  -s, --size WxH       size at which procedural maps are evaluated\n"
+    "                       (default 128x128), or files resampled\n"
+    "      --equirect       weight map rows by sin(theta)\n"
+    "      --strict         negative importance is an error\n"
+    "  -S, --seed N         seed (default 1)\n"
+    "  -j, --threads N      threads (default all); same points for any N\n"
+    "  -T, --text           text output\n"
+    "  -v, --verbose        setup, count and phase times on standard error\n"
+    "  -o, --output FILE    output (default standard output)\n"
+    "  -q, --quiet          no warnings\n"
+    "  -h, --help           this help;  --version  the version\n";
+
+enum {
+	OPT_SIGMA = OPT_FIRST_PRIVATE, OPT_JITTER, OPT_PDF, OPT_PROG,
+	OPT_THRESHOLD, OPT_COUNT_ONLY, OPT_EQUIRECT, OPT_STRICT
+};
+
+static const struct option longopts[] = {
+	{ "count", required_argument, NULL, 'n' },
+	{ "importance", required_argument, NULL, 'i' },
+	{ "matrix", required_argument, NULL, 'm' },
+	{ "algo", required_argument, NULL, 'a' },
+	{ "size", required_argument, NULL, 's' },
+	{ "sigma", required_argument, NULL, OPT_SIGMA },
+	{ "jitter", required_argument, NULL, OPT_JITTER },
+	{ "pdf", no_argument, NULL, OPT_PDF },
+	{ "progressive", required_argument, NULL, OPT_PROG },
+	{ "threshold", required_argument, NULL, OPT_THRESHOLD },
+	{ "count-only", no_argument, NULL, OPT_COUNT_ONLY },
+	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
+	{ "strict", no_argument, NULL, OPT_STRICT },
+	{ "verbose", no_argument, NULL, 'v' },
+	CLI_COMMON_LONGOPTS,
+	{ NULL, 0, NULL, 0 }
+};
+
+struct opts {
+	const char *imp, *matrix;
+	uint64_t steps[16];
+	unsigned nsteps;
+	enum frs_algo algo;
+	double sigma;
+	enum frs_jitter jitter;
+	enum frs_rule rule;
+	int pdf, count_only, verbose, flags;
+	uint32_t w, h;
+};
+
+static void parse_steps(struct opts *o, const char *s)
+{
+	char buf[512], *tok, *save = NULL;
+
+	if (strlen(s) >= sizeof buf)
+		cli_usage_error("--progressive: list too long");
+	strcpy(buf, s);
+	o->nsteps = 0;
+	for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",",
+	    &save)) {
+		if (o->nsteps == 16)
+			cli_usage_error("--progressive: at most 16 steps");
+		o->steps[o->nsteps] = cli_u64("--progressive", tok, 1,
+		    (uint64_t)1 << 40);
+		if (o->nsteps > 0 && o->steps[o->nsteps] <= o->steps[o->nsteps - 1])
+			cli_usage_error("--progressive: counts must increase");
+		o->nsteps++;
+	}
+	if (o->nsteps == 0)
+		cli_usage_error("--progressive: no counts");
+}
+
+static void parse_opts(int argc, char **argv, struct opts *o)
+{
+	int c, have_n = 0;
+	uint64_t n = 0;
+
+	while ((c = getopt_long(argc, argv, "n:i:m:a:s:v" CLI_COMMON_SHORTOPTS,
+	    longopts, NULL)) != -1) {
+		switch (c) {
+		case 'n':
+			n = cli_u64("-n", optarg, 1, (uint64_t)1 << 40);
+			have_n = 1;
+			break;
+		case 'i': o->imp = optarg; break;
+		case 'm': o->matrix = optarg; break;
+		case 'a':
+			if (frs_algo_parse(optarg, &o->algo) < 0)
+				cli_usage_error("%s", frs_errmsg());
+			break;
+		case 's':
+			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->w, &o->h);
+			break;
+		case OPT_SIGMA:
+			o->sigma = cli_double("--sigma", optarg, 1.0, 1024.0);
+			break;
+		case OPT_JITTER:
+			if (strcmp(optarg, "none") == 0)
+				o->jitter = FRS_JITTER_NONE;
+			else if (strcmp(optarg, "halton") == 0)
+				o->jitter = FRS_JITTER_HALTON;
+			else if (strcmp(optarg, "random") == 0)
+				o->jitter = FRS_JITTER_RANDOM;
+			else
+				cli_usage_error("--jitter: '%s' is not none, halton or "
+				    "random", optarg);
+			break;
+		case OPT_PDF: o->pdf = 1; break;
+		case OPT_PROG: parse_steps(o, optarg); break;
+		case OPT_THRESHOLD:
+			if (strcmp(optarg, "unbiased") == 0)
+				o->rule = FRS_UNBIASED;
+			else if (strcmp(optarg, "thesis") == 0)
+				o->rule = FRS_THESIS;
+			else
+				cli_usage_error("--threshold: '%s' is not unbiased or "
+				    "thesis", optarg);
+			break;
+		case OPT_COUNT_ONLY: o->count_only = 1; break;
+		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
+		case 'v': o->verbose = 1; break;
+		default:
+			if (!cli_common_opt(c, optarg))
+				cli_usage(2);
+		}
+	}
+	if (optind != argc)
+		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	if (o->nsteps == 0) {
+		if (!have_n)
+			cli_usage_error("-n COUNT is required");
+		o->steps[0] = n;
+		o->nsteps = 1;
+	} else if (have_n && n != o->steps[o->nsteps - 1]) {
+		cli_usage_error("-n %llu differs from the last progressive count",
+		    (unsigned long long)n);
+	}
+}
+
+/* The default matrix: $FRS_MATRIX, the source tree, the installed one. */
+static const char *default_matrix(void)
+{
+	static const char *const where[] = { FRS_SRCDATA "/default.frd",
+	    FRS_SHAREDIR "/default.frd" };
+	const char *env = getenv("FRS_MATRIX");
+
+	if (env != NULL && *env)
+		return env;
+	for (size_t i = 0; i < sizeof where / sizeof where[0]; i++)
+		if (access(where[i], R_OK) == 0)
+			return where[i];
+	cli_die("no default matrix (looked for %s and %s); give -m MATRIX",
+	    where[0], where[1]);
+}
+
+static void print_setup(const struct frs_setup *s, const char *mname)
+{
+	fprintf(stderr, "frs-sample: matrix %s %ux%u, map %ux%u, mean %.6g, "
+	    "max %.6g\n", mname, s->mw, s->mh, s->iw, s->ih, s->mean, s->max);
+	fprintf(stderr, "frs-sample: n %llu, sigma %g, n_s %u, window %llux%llu "
+	    "at (%llu, %llu), tau %.9g, start level %u\n",
+	    (unsigned long long)s->n, s->sigma, s->ns,
+	    (unsigned long long)s->sw, (unsigned long long)s->sh,
+	    (unsigned long long)s->wx, (unsigned long long)s->wy, s->tau,
+	    s->level0);
+}
+
+static void write_points(const struct opts *o, const struct frs_setup *s,
+    const struct frs_imap *map, const struct frs_result *r)
+{
+	struct outfile of;
+	struct pts_writer w;
+	unsigned extra = (unsigned)o->pdf + (o->nsteps > 1);
+
+	if (outfile_open(&of, cli.out, !cli.text) < 0)
+		cli_die_lib();
+	if (pts_writer_begin(&w, of.fp, of.name, 2, extra, r->count,
+	    cli.text) < 0)
+		goto fail;
+	for (uint64_t c = 0; c < r->nchunk; c++)
+		for (uint64_t i = 0; i < r->chunk[c].n; i++) {
+			const struct frs_elem *e = &r->chunk[c].e[i];
+			double rec[4];
+			unsigned k = 2;
+			frs_point(s, e, &rec[0], &rec[1]);
+			if (o->pdf)
+				rec[k++] = map->v[(uint64_t)(e->y / s->ns) * s->iw +
+				    e->x / s->ns] / s->mean;
+			if (o->nsteps > 1)
+				rec[k++] = (double)(e->step + 1);
+			if (pts_writer_put(&w, rec) < 0)
+				goto fail;
+		}
+	if (pts_writer_end(&w) < 0)
+		goto fail;
+	if (outfile_commit(&of) < 0)
+		cli_die_lib();
+	return;
+fail:
+	outfile_abort(&of);
+	cli_die_lib();
+}
+
+int main(int argc, char **argv)
+{
+	struct opts o = { NULL, NULL, { 0 }, 0, FRS_SORTED, 8.0,
+	    FRS_JITTER_NONE, FRS_UNBIASED, 0, 0, 0, 0, 0, 0 };
+	struct frs_matrix mat;
+	struct frs_imap map;
+	struct frs_setup s;
+	struct frs_prep prep;
+	struct frs_result r;
+	double t0, t1, t2, t3;
+
+	cli_init("frs-sample", usage);
+	parse_opts(argc, argv, &o);
+	if (o.matrix == NULL)
+		o.matrix = default_matrix();
+	if (imap_load(o.imp ? o.imp : "const", o.w, o.h, o.flags, &map) < 0)
+		cli_die_lib();
+	if (frd_read(o.matrix, &mat) < 0)
+		cli_die_lib();
+	t0 = progress_now();
+	if (frs_setup(&s, &map, &mat, o.steps[o.nsteps - 1], o.sigma,
+	    cli.seed) < 0)
+		cli_die("%s", frs_errmsg());
+	s.rule = o.rule;
+	s.jitter = o.jitter;
+	if ((double)s.n > frs_unique(&s))
+		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
+		    "its patterns (it gives %.0f without repetition, thesis "
+		    "Table 4.1)", (unsigned long long)s.n, s.mw, s.mh, s.sigma,
+		    frs_unique(&s));
+	if (frs_prepare(&prep, &mat, o.algo == FRS_STACK ||
+	    o.algo == FRS_LEVEL1 || o.algo == FRS_LEVEL2,
+	    o.algo == FRS_SORTED ? (s.ns < mat.w ? (s.ns < mat.h ? s.ns : mat.h) :
+	    (mat.w < mat.h ? mat.w : mat.h)) : 0) < 0)
+		cli_die("%s: %s", o.matrix, frs_errmsg());
+	t1 = progress_now();
+	if (frs_sample(&s, &map, &prep, o.algo, o.steps, o.nsteps, o.count_only,
+	    &r) < 0)
+		cli_die("%s", frs_errmsg());
+	t2 = progress_now();
+	if (o.count_only)
+		printf("%llu\n", (unsigned long long)r.count);
+	else
+		write_points(&o, &s, &map, &r);
+	t3 = progress_now();
+	if (o.verbose) {
+		print_setup(&s, o.matrix);
+		fprintf(stderr, "frs-sample: %llu samples (%s); setup %.6f s, "
+		    "thresholding %.6f s, output %.6f s\n",
+		    (unsigned long long)r.count, frs_algo_name(o.algo), t1 - t0,
+		    t2 - t1, t3 - t2);
+	}
+	frs_result_free(&r);
+	frs_prep_free(&prep);
+	frd_free(&mat);
+	imap_free(&map);
+	return 0;
+}

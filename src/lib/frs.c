@@ -1,0 +1,553 @@
+#define _POSIX_C_SOURCE 200809L
+#include "frs.h"
+#include "err.h"
+#include "par.h"
+#include "rng.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Map rows per parallel chunk. */
+#define ROWS_PER_CHUNK 2
+
+static const char *const algo_names[FRS_NALGO] = {
+	"naive", "stack", "level1", "level2", "sorted"
+};
+
+const char *frs_algo_name(enum frs_algo a)
+{
+	return a < FRS_NALGO ? algo_names[a] : "?";
+}
+
+int frs_algo_parse(const char *s, enum frs_algo *a)
+{
+	for (int i = 0; i < FRS_NALGO; i++)
+		if (strcmp(s, algo_names[i]) == 0) {
+			*a = (enum frs_algo)i;
+			return 0;
+		}
+	return frs_fail("-a: unknown implementation '%s' (naive, stack, "
+	    "level1, level2, sorted)", s);
+}
+
+static int is_pow2(uint64_t v)
+{
+	return v && !(v & (v - 1));
+}
+
+static unsigned log2u64(uint64_t v)
+{
+	unsigned l = 0;
+	while (((uint64_t)1 << l) < v)
+		l++;
+	return l;
+}
+
+/* ---- setup (Listing 5.1) ------------------------------------------ */
+
+int frs_setup(struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed)
+{
+	struct frs_imap_stats st;
+	uint32_t small, large;
+	double a, wmin;
+	uint64_t ns = 1, ux, uy;
+
+	memset(s, 0, sizeof *s);
+	if (mat->dims != 2)
+		return frs_fail("a %u-D matrix cannot sample a 2-D map", mat->dims);
+	if (n == 0)
+		return frs_fail("-n: the count must be at least 1");
+	if (!(sigma >= 1.0 && isfinite(sigma)))
+		return frs_fail("--sigma: %g is below 1", sigma);
+	imap_stats(map, &st);
+	if (!(st.max > 0.0) || st.nonfinite || st.negatives)
+		return frs_fail("importance must be finite, non-negative and not "
+		    "zero everywhere");
+	s->iw = map->w;
+	s->ih = map->h;
+	s->mw = mat->w;
+	s->mh = mat->h;
+	s->n = n;
+	s->sigma = sigma;
+	s->mean = st.mean;
+	s->max = st.max;
+	s->seed = seed;
+	small = map->w < map->h ? map->w : map->h;
+	large = map->w < map->h ? map->h : map->w;
+	a = (double)large / small;
+	wmin = ceil(sigma * sqrt((double)n * st.max / (st.mean * a)));
+	while ((double)small * (double)ns < wmin) {
+		ns <<= 1;
+		if (ns > ((uint64_t)1 << 31))
+			return frs_fail("-n %llu: the window would need more than "
+			    "2^31 elements per pixel side", (unsigned long long)n);
+	}
+	s->ns = (uint32_t)ns;
+	s->sw = ns * map->w;
+	s->sh = ns * map->h;
+	/* A random multiple of n_s, or of the matrix when n_s exceeds it
+	 * (every offset is then the same). */
+	ux = ns < mat->w ? ns : mat->w;
+	uy = ns < mat->h ? ns : mat->h;
+	s->wx = (uint64_t)(frs_rand01(seed, FRS_STREAM_WINDOW, 0) *
+	    (double)(mat->w / ux)) * ux;
+	s->wy = (uint64_t)(frs_rand01(seed, FRS_STREAM_WINDOW, 1) *
+	    (double)(mat->h / uy)) * uy;
+	s->tau = frs_tau(s, n);
+	s->level0 = (unsigned)floor(log2(fmin((double)ns, sigma)));
+	return 0;
+}
+
+double frs_tau(const struct frs_setup *s, uint64_t n)
+{
+	return (double)n * (double)s->mw * (double)s->mh /
+	    ((double)s->sw * (double)s->sh * s->mean);
+}
+
+double frs_unique(const struct frs_setup *s)
+{
+	return (double)s->mw * (double)s->mh / (s->sigma * s->sigma);
+}
+
+/* ---- preparation -------------------------------------------------- */
+
+void frs_prep_free(struct frs_prep *p)
+{
+	for (unsigned l = 1; l < p->nlev; l++)
+		free(p->lev[l]);
+	free(p->sval);
+	free(p->sidx);
+	memset(p, 0, sizeof *p);
+}
+
+static int make_minmap(struct frs_prep *p)
+{
+	const struct frs_matrix *m = p->m;
+
+	p->lev[0] = m->v;
+	p->nlev = 1;
+	while ((m->w >> p->nlev) > 0 && (m->h >> p->nlev) > 0 && p->nlev < 32) {
+		unsigned l = p->nlev;
+		uint32_t w = m->w >> l, h = m->h >> l, pw = m->w >> (l - 1);
+		const uint32_t *lo = p->lev[l - 1];
+		uint32_t *up = malloc((size_t)w * h * sizeof *up);
+		if (up == NULL)
+			return frs_fail("out of memory for the minmap");
+		for (uint32_t y = 0; y < h; y++)
+			for (uint32_t x = 0; x < w; x++) {
+				const uint32_t *q = lo + (size_t)2 * y * pw + 2 * x;
+				uint32_t a = q[0] < q[1] ? q[0] : q[1];
+				uint32_t b = q[pw] < q[pw + 1] ? q[pw] : q[pw + 1];
+				up[(size_t)y * w + x] = a < b ? a : b;
+			}
+		p->lev[l] = up;
+		p->nlev++;
+	}
+	return 0;
+}
+
+struct pair {
+	uint32_t v, i;
+};
+
+static int pair_cmp(const void *a, const void *b)
+{
+	const struct pair *x = a, *y = b;
+	return x->v < y->v ? -1 : x->v > y->v;
+}
+
+/* Listing 5.10, keeping every element of a block (no n_t cap: the
+ * thesis's cap 2 n_s^2 / sigma^2 is 0 for n_s < sigma and too small for
+ * some blocks, and a sample lost there is a bias). */
+static int make_sorted(struct frs_prep *p, uint32_t b)
+{
+	const struct frs_matrix *m = p->m;
+	uint32_t bw = m->w / b, bh = m->h / b;
+	size_t bb = (size_t)b * b;
+	struct pair *tmp = malloc(bb * sizeof *tmp);
+
+	p->block = b;
+	p->sval = malloc(m->n * sizeof *p->sval);
+	p->sidx = malloc(m->n * sizeof *p->sidx);
+	if (tmp == NULL || p->sval == NULL || p->sidx == NULL) {
+		free(tmp);
+		return frs_fail("out of memory for the sorted lists");
+	}
+	for (uint32_t by = 0; by < bh; by++)
+		for (uint32_t bx = 0; bx < bw; bx++) {
+			size_t base = ((size_t)by * bw + bx) * bb;
+			for (uint32_t k = 0; k < bb; k++)
+				tmp[k] = (struct pair){ m->v[((size_t)by * b + k / b) *
+				    m->w + (size_t)bx * b + k % b], k };
+			qsort(tmp, bb, sizeof *tmp, pair_cmp);
+			for (size_t k = 0; k < bb; k++) {
+				p->sval[base + k] = tmp[k].v;
+				p->sidx[base + k] = tmp[k].i;
+			}
+		}
+	free(tmp);
+	return 0;
+}
+
+int frs_prepare(struct frs_prep *p, const struct frs_matrix *m, int minmap,
+    uint32_t block)
+{
+	memset(p, 0, sizeof *p);
+	p->m = m;
+	p->lev[0] = m->v;
+	p->nlev = 1;
+	if ((minmap || block) && (!is_pow2(m->w) || !is_pow2(m->h)))
+		return frs_fail("the matrix is %ux%u: the minmap and sorted "
+		    "implementations need power-of-two sides (naive does not)",
+		    m->w, m->h);
+	if (block && (block > m->w || block > m->h || !is_pow2(block)))
+		return frs_fail("sorted blocks of %u do not fit the %ux%u matrix",
+		    block, m->w, m->h);
+	if ((minmap && make_minmap(p) < 0) || (block && make_sorted(p, block) < 0)) {
+		frs_prep_free(p);
+		return -1;
+	}
+	return 0;
+}
+
+/* ---- thresholds --------------------------------------------------- */
+
+/* The threshold of one pixel for one step. */
+struct thr {
+	uint64_t lim;	/* values below lim may pass, values from lim never */
+	uint64_t tf;	/* floor(T) */
+	double frac;	/* T - floor(T) */
+	double t;	/* T */
+};
+
+static void make_thr(struct thr *th, double t, enum frs_rule rule)
+{
+	/* Past 2^33 every value of a uint32 matrix passes. */
+	if (!(t < 0x1p33))
+		t = 0x1p33;
+	th->t = t;
+	th->tf = (uint64_t)floor(t);
+	th->frac = t - floor(t);
+	if (rule == FRS_THESIS)		/* v < T  <=>  v < ceil(T) */
+		th->lim = (uint64_t)ceil(t);
+	else
+		th->lim = th->tf + (th->frac > 0.0);
+}
+
+static double coin(const struct frs_setup *s, uint64_t x, uint64_t y)
+{
+	return frs_rand01(s->seed, FRS_STREAM_COIN, y * s->sw + x);
+}
+
+static int passes(const struct frs_setup *s, const struct thr *th, uint64_t v,
+    uint64_t x, uint64_t y)
+{
+	if (s->rule == FRS_THESIS)
+		return (double)v < th->t;
+	if (v < th->tf)
+		return 1;
+	return v == th->tf && th->frac > 0.0 && coin(s, x, y) < th->frac;
+}
+
+/* ---- the implementations ------------------------------------------ */
+
+struct run {
+	const struct frs_setup *s;
+	const struct frs_imap *map;
+	const struct frs_prep *p;
+	enum frs_algo algo;
+	const double *tau;	/* per step */
+	unsigned nsteps;
+	int count_only;
+	struct frs_result *r;
+};
+
+/* What one pixel's work needs. */
+struct pix {
+	const struct run *run;
+	struct frs_chunk *c;
+	struct thr th[16];	/* per step; th[nsteps - 1] is the last */
+	uint64_t lim;
+	uint64_t x0, y0;	/* the pixel's first window element */
+};
+
+static void emit(struct pix *px, uint64_t x, uint64_t y, uint32_t v)
+{
+	const struct run *run = px->run;
+	unsigned k, last = run->nsteps - 1;
+
+	if (!passes(run->s, &px->th[last], v, x, y))
+		return;
+	for (k = 0; k < last && !passes(run->s, &px->th[k], v, x, y); k++)
+		;
+	px->c->count++;
+	if (run->count_only)
+		return;
+	if (px->c->n == px->c->cap) {
+		uint64_t ncap = px->c->cap ? 2 * px->c->cap : 1024;
+		struct frs_elem *ne = realloc(px->c->e, ncap * sizeof *ne);
+		if (ne == NULL) {
+			px->c->failed = 1;
+			return;
+		}
+		px->c->e = ne;
+		px->c->cap = ncap;
+	}
+	px->c->e[px->c->n++] = (struct frs_elem){ (uint32_t)x, (uint32_t)y, k };
+}
+
+static uint64_t wrap(uint64_t v, uint32_t n)
+{
+	return (n & (n - 1)) == 0 ? v & (n - 1) : v % n;
+}
+
+/* Listing 5.2: every window element of the pixel. */
+static void pix_naive(struct pix *px)
+{
+	const struct frs_setup *s = px->run->s;
+	const uint32_t *mv = px->run->p->m->v;
+
+	for (uint32_t sy = 0; sy < s->ns; sy++) {
+		uint64_t y = px->y0 + sy;
+		const uint32_t *row = mv + wrap(s->wy + y, s->mh) * s->mw;
+		uint64_t mx = wrap(s->wx + px->x0, s->mw);
+		for (uint32_t sx = 0; sx < s->ns; sx++) {
+			if (row[mx] < px->lim)
+				emit(px, px->x0 + sx, y, row[mx]);
+			if (++mx == s->mw)
+				mx = 0;
+		}
+	}
+}
+
+/* The minmap value of the level-l block whose first element is (x, y). */
+static uint32_t minmap_at(const struct run *run, unsigned l, uint64_t x,
+    uint64_t y)
+{
+	const struct frs_setup *s = run->s;
+	uint64_t mx = wrap(s->wx + x, s->mw) >> l, my = wrap(s->wy + y, s->mh) >> l;
+	return run->p->lev[l][my * (s->mw >> l) + mx];
+}
+
+/* The level at which the minmap implementations start. */
+static unsigned start_level(const struct run *run, unsigned want)
+{
+	unsigned l = want, lns = log2u64(run->s->ns);
+	if (l > lns)
+		l = lns;
+	if (l > run->p->nlev - 1)
+		l = run->p->nlev - 1;
+	return l;
+}
+
+/* Listing 5.4: an explicit stack of minmap blocks. */
+struct blk {
+	uint64_t x, y;
+	unsigned l;
+};
+
+static void pix_stack(struct pix *px)
+{
+	const struct run *run = px->run;
+	unsigned L = start_level(run, run->s->level0);
+	uint64_t b = (uint64_t)1 << L, nb = run->s->ns / b;
+	struct blk st[3 * 32 + 4];
+
+	for (uint64_t by = 0; by < nb; by++)
+		for (uint64_t bx = 0; bx < nb; bx++) {
+			int top = 0;
+			st[top++] = (struct blk){ px->x0 + bx * b, px->y0 + by * b, L };
+			while (top > 0) {
+				struct blk e = st[--top];
+				uint32_t v = minmap_at(run, e.l, e.x, e.y);
+				uint64_t h;
+				if (v >= px->lim)
+					continue;
+				if (e.l == 0) {
+					emit(px, e.x, e.y, v);
+					continue;
+				}
+				h = (uint64_t)1 << (e.l - 1);
+				st[top++] = (struct blk){ e.x + h, e.y + h, e.l - 1 };
+				st[top++] = (struct blk){ e.x, e.y + h, e.l - 1 };
+				st[top++] = (struct blk){ e.x + h, e.y, e.l - 1 };
+				st[top++] = (struct blk){ e.x, e.y, e.l - 1 };
+			}
+		}
+}
+
+/* Listing 5.5 for N = 1 and 2: nested loops over the quadrants. */
+static void level_block(struct pix *px, unsigned l, uint64_t x, uint64_t y)
+{
+	uint32_t v = minmap_at(px->run, l, x, y);
+	uint64_t h;
+
+	if (v >= px->lim)
+		return;
+	if (l == 0) {
+		emit(px, x, y, v);
+		return;
+	}
+	h = (uint64_t)1 << (l - 1);
+	for (uint64_t qy = 0; qy < 2; qy++)
+		for (uint64_t qx = 0; qx < 2; qx++)
+			level_block(px, l - 1, x + qx * h, y + qy * h);
+}
+
+static void pix_level(struct pix *px, unsigned n)
+{
+	unsigned L = start_level(px->run, n);
+	uint64_t b = (uint64_t)1 << L, nb = px->run->s->ns / b;
+
+	for (uint64_t by = 0; by < nb; by++)
+		for (uint64_t bx = 0; bx < nb; bx++)
+			level_block(px, L, px->x0 + bx * b, px->y0 + by * b);
+}
+
+/* Listing 5.11: the sorted values of each block, until one is too
+ * large. */
+static void pix_sorted(struct pix *px)
+{
+	const struct run *run = px->run;
+	const struct frs_setup *s = run->s;
+	const struct frs_prep *p = run->p;
+	uint32_t b = p->block, bw = s->mw / b;
+	uint64_t nb = s->ns / b, bb = (uint64_t)b * b;
+
+	for (uint64_t by = 0; by < nb; by++)
+		for (uint64_t bx = 0; bx < nb; bx++) {
+			uint64_t x = px->x0 + bx * b, y = px->y0 + by * b;
+			uint64_t blk = (wrap(s->wy + y, s->mh) / b) * bw +
+			    wrap(s->wx + x, s->mw) / b;
+			const uint32_t *val = p->sval + blk * bb;
+			const uint32_t *idx = p->sidx + blk * bb;
+			for (uint64_t k = 0; k < bb && val[k] < px->lim; k++)
+				emit(px, x + idx[k] % b, y + idx[k] / b, val[k]);
+		}
+}
+
+static int rows_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct run *run = ctx;
+	const struct frs_setup *s = run->s;
+	struct pix px;
+
+	px.run = run;
+	for (uint64_t ci = b; ci < e; ci++) {
+		px.c = &run->r->chunk[ci];
+		for (uint64_t py = ci * ROWS_PER_CHUNK;
+		    py < (ci + 1) * ROWS_PER_CHUNK && py < s->ih; py++)
+			for (uint64_t pxi = 0; pxi < s->iw; pxi++) {
+				double imp = run->map->v[py * s->iw + pxi];
+				if (!(imp > 0.0))
+					continue;	/* zero importance costs nothing */
+				for (unsigned k = 0; k < run->nsteps; k++)
+					make_thr(&px.th[k], run->tau[k] * imp, s->rule);
+				px.lim = px.th[run->nsteps - 1].lim;
+				if (px.lim == 0)
+					continue;
+				px.x0 = pxi * s->ns;
+				px.y0 = py * s->ns;
+				switch (run->algo) {
+				case FRS_NAIVE: pix_naive(&px); break;
+				case FRS_STACK: pix_stack(&px); break;
+				case FRS_LEVEL1: pix_level(&px, 1); break;
+				case FRS_LEVEL2: pix_level(&px, 2); break;
+				default: pix_sorted(&px); break;
+				}
+			}
+		if (px.c->failed)
+			return frs_fail("out of memory for the samples");
+	}
+	return 0;
+}
+
+int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
+    unsigned nsteps, int count_only, struct frs_result *r)
+{
+	double tau[16];
+	struct run run = { s, map, p, algo, tau, nsteps, count_only, r };
+	int rc;
+
+	memset(r, 0, sizeof *r);
+	if (nsteps < 1 || nsteps > 16)
+		return frs_fail("--progressive: 1 to 16 steps");
+	for (unsigned k = 0; k < nsteps; k++) {
+		if (k > 0 && steps[k] <= steps[k - 1])
+			return frs_fail("--progressive: counts must increase");
+		tau[k] = frs_tau(s, steps[k]);
+	}
+	if (!count_only && (s->sw > UINT32_MAX || s->sh > UINT32_MAX))
+		return frs_fail("the window of %llux%llu elements is too large to "
+		    "store samples (--count-only counts them)",
+		    (unsigned long long)s->sw, (unsigned long long)s->sh);
+	if (algo != FRS_NAIVE && p->nlev < 2 && algo != FRS_SORTED)
+		return frs_fail("-a %s: the matrix has no minmap",
+		    frs_algo_name(algo));
+	if (algo == FRS_SORTED && (p->block == 0 || p->block > s->ns ||
+	    s->ns % p->block))
+		return frs_fail("-a sorted: lists of blocks of %u do not fit "
+		    "n_s = %u", p->block, s->ns);
+	r->nchunk = (s->ih + ROWS_PER_CHUNK - 1) / ROWS_PER_CHUNK;
+	r->chunk = calloc(r->nchunk, sizeof *r->chunk);
+	if (r->chunk == NULL)
+		return frs_fail("out of memory");
+	rc = frs_parallel(r->nchunk, 1, rows_task, &run, NULL);
+	for (uint64_t i = 0; i < r->nchunk; i++)
+		r->count += r->chunk[i].count;
+	if (rc < 0)
+		frs_result_free(r);
+	return rc;
+}
+
+void frs_result_free(struct frs_result *r)
+{
+	for (uint64_t i = 0; i < r->nchunk; i++)
+		free(r->chunk[i].e);
+	free(r->chunk);
+	memset(r, 0, sizeof *r);
+}
+
+/* ---- points ------------------------------------------------------- */
+
+static double radical_inverse(uint64_t i, unsigned base)
+{
+	double inv = 1.0 / base, f = inv, r = 0.0;
+	while (i > 0) {
+		r += (double)(i % base) * f;
+		i /= base;
+		f *= inv;
+	}
+	return r;
+}
+
+static double below_one(double v)
+{
+	return v < 1.0 ? v : 0x1.fffffffffffffp-1;
+}
+
+void frs_point(const struct frs_setup *s, const struct frs_elem *e,
+    double *x, double *y)
+{
+	uint64_t id = (uint64_t)e->y * s->sw + e->x;
+	double jx = 0.5, jy = 0.5;
+
+	if (s->jitter == FRS_JITTER_RANDOM) {
+		jx = frs_rand01(s->seed, FRS_STREAM_JITTER, 2 * id);
+		jy = frs_rand01(s->seed, FRS_STREAM_JITTER, 2 * id + 1);
+	} else if (s->jitter == FRS_JITTER_HALTON) {
+		/* Halton (2, 3) by element, rotated by the seed
+		 * (Cranley-Patterson), so it depends on nothing but both. */
+		double rx = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX);
+		double ry = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX - 1);
+		jx = radical_inverse(id + 1, 2) + rx;
+		jy = radical_inverse(id + 1, 3) + ry;
+		jx -= floor(jx);
+		jy -= floor(jy);
+	}
+	*x = below_one(((double)e->x + jx) / (double)s->sw);
+	*y = below_one(((double)e->y + jy) / (double)s->sh);
+}

@@ -1,0 +1,199 @@
+/*
+ * pts-render: draw a point set as a PNG stipple image, over its
+ * importance map if one is given.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "cli.h"
+#include "imap.h"
+#include "outfile.h"
+#include "ptsio.h"
+#include "raster.h"
+
+static const char usage[] =
+    "usage: pts-render [-q] [-s SIZE] [-r RADIUS] [-i IMPORTANCE [--log]\n"
+    "                  [--srgb] [--equirect]] [--color] [--format png|pnm]\n"
+    "                  [-o FILE.png] [FILE]\n"
+    "\n"
+    "  FILE                a point file, binary or text (default: standard\n"
+    "                      input, also '-'); x, y are its first two\n"
+    "                      coordinates, y growing downward\n"
+    "  -s, --size SIZE     image size, N (NxN) or WxH (default 512)\n"
+    "  -r, --radius R      dot radius in pixels (default 1.5 * W / 512,\n"
+    "                      at least 0.7)\n"
+    "  -i, --importance M  draw over the importance map M (PNG, OpenEXR or\n"
+    "                      a procedural spec such as blob) resampled to the\n"
+    "                      image size: white for 0, light grey for its\n"
+    "                      maximum\n"
+    "      --log           shade the map by log10 of its positive values\n"
+    "                      (for HDR maps)\n"
+    "      --srgb          decode a PNG map from sRGB to linear\n"
+    "      --equirect      weight the map's rows by sin(theta), as for an\n"
+    "                      equirectangular environment map\n"
+    "      --color         colour the dots by their order in the file,\n"
+    "                      first blue to last red (RGB output)\n"
+    "      --format FMT    png (default) or pnm (binary PGM, or PPM with\n"
+    "                      --color); default pnm for a name ending in\n"
+    "                      .pgm, .ppm or .pnm\n"
+    "  -o, --output FILE   output file (default: standard output, never a\n"
+    "                      terminal)\n"
+    "  -q, --quiet         no warnings\n"
+    "  -h, --help          this help;  --version  the version\n";
+
+enum {
+	OPT_LOG = OPT_FIRST_PRIVATE, OPT_COLOR, OPT_SRGB, OPT_EQUIRECT,
+	OPT_FORMAT
+};
+
+static const struct option longopts[] = {
+	{ "size", required_argument, NULL, 's' },
+	{ "radius", required_argument, NULL, 'r' },
+	{ "importance", required_argument, NULL, 'i' },
+	{ "log", no_argument, NULL, OPT_LOG },
+	{ "color", no_argument, NULL, OPT_COLOR },
+	{ "colour", no_argument, NULL, OPT_COLOR },
+	{ "srgb", no_argument, NULL, OPT_SRGB },
+	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
+	{ "format", required_argument, NULL, OPT_FORMAT },
+	CLI_COMMON_LONGOPTS,
+	{ NULL, 0, NULL, 0 }
+};
+
+enum fmt { FMT_NONE, FMT_PNG, FMT_PNM };
+
+static int is_stdin(const char *path)
+{
+	return path == NULL || strcmp(path, "-") == 0;
+}
+
+/* PNG unless asked otherwise or the name ends in a netpbm extension. */
+static enum fmt format_of(enum fmt f, const char *path)
+{
+	const char *dot = path ? strrchr(path, '.') : NULL;
+
+	if (f != FMT_NONE)
+		return f;
+	if (dot && (strcasecmp(dot, ".pgm") == 0 || strcasecmp(dot, ".ppm") ==
+	    0 || strcasecmp(dot, ".pnm") == 0))
+		return FMT_PNM;
+	return FMT_PNG;
+}
+
+int main(int argc, char **argv)
+{
+	const char *in = "-", *imp = NULL, *name;
+	uint32_t w = 512, h = 512;
+	double rad = 0.0;
+	int c, logscale = 0, color = 0, flags = IMAP_ALLOW_ZERO;
+	struct frs_points p;
+	struct frs_raster r;
+	struct outfile o;
+	enum fmt format = FMT_NONE;
+	size_t ncol;
+	int rc;
+
+	cli_init("pts-render", usage);
+	while ((c = getopt_long(argc, argv, "s:r:i:" CLI_COMMON_SHORTOPTS,
+	    longopts, NULL)) != -1) {
+		switch (c) {
+		case 's':
+			cli_size("-s", optarg, IMAP_MAX_SIDE, &w, &h);
+			break;
+		case 'r':
+			rad = cli_double("-r", optarg, 0.01, 65536.0);
+			break;
+		case 'i':
+			imp = optarg;
+			break;
+		case OPT_LOG:
+			logscale = 1;
+			break;
+		case OPT_COLOR:
+			color = 1;
+			break;
+		case OPT_SRGB:
+			flags |= IMAP_SRGB;
+			break;
+		case OPT_EQUIRECT:
+			flags |= IMAP_EQUIRECT;
+			break;
+		case OPT_FORMAT:
+			if (strcmp(optarg, "png") == 0)
+				format = FMT_PNG;
+			else if (strcmp(optarg, "pnm") == 0)
+				format = FMT_PNM;
+			else
+				cli_usage_error("--format: '%s' is not png or pnm",
+				    optarg);
+			break;
+		default:
+			if (!cli_common_opt(c, optarg))
+				cli_usage(2);
+		}
+	}
+	if (argc - optind > 1)
+		cli_usage_error("one point file at most");
+	if (argc - optind == 1)
+		in = argv[optind];
+	if ((uint64_t)w * h > IMAP_MAX_PIXELS)
+		cli_usage_error("-s: %ux%u has more than %llu pixels", w, h,
+		    (unsigned long long)IMAP_MAX_PIXELS);
+	if (imp != NULL && is_stdin(imp) && is_stdin(in))
+		cli_usage_error("the points and the importance map cannot both "
+		    "be standard input");
+	if (imp == NULL && (logscale || (flags & ~IMAP_ALLOW_ZERO)))
+		cli_usage_error("--log, --srgb and --equirect need -i");
+	if (rad == 0.0)
+		rad = raster_default_radius(w);
+
+	/* The output first: a bad path fails before any work, and standard
+	 * output is never a terminal. */
+	if (outfile_open(&o, cli.out, 1) < 0)
+		cli_die_lib();
+
+	name = is_stdin(in) ? "<stdin>" : in;
+	if (pts_read(in, &p) < 0)
+		cli_die_lib();
+	if (p.dims < 2)
+		cli_die("%s: points have %u coordinate%s, need 2", name, p.dims,
+		    p.dims == 1 ? "" : "s");
+
+	if (raster_alloc(&r, w, h, color ? 3 : 1) < 0)
+		cli_die_lib();
+	if (imp != NULL) {
+		struct frs_imap m;
+
+		if (imap_load(imp, w, h, flags, &m) < 0)
+			cli_die_lib();
+		if (raster_fill_imap(&r, &m, logscale) < 0)
+			cli_die_lib();
+		imap_free(&m);
+	}
+
+	ncol = (size_t)p.dims + p.extra;
+	for (size_t k = 0; k < p.n; k++) {
+		const double *x = p.x + k * ncol;
+		uint8_t ink[3] = { 0, 0, 0 };
+
+		if (color)
+			raster_ramp(k, p.n, ink);
+		raster_disc(&r, x[0] * w, x[1] * h, rad, ink);
+	}
+	pts_free(&p);
+
+	format = format_of(format, cli.out);
+	rc = format == FMT_PNM ? raster_write_pnm(o.fp, o.name, &r) :
+	    raster_write_png(o.fp, o.name, &r);
+	if (rc < 0) {
+		outfile_abort(&o);
+		cli_die_lib();
+	}
+	raster_free(&r);
+	if (outfile_commit(&o) < 0)
+		cli_die_lib();
+	return 0;
+}
