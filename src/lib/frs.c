@@ -408,6 +408,27 @@ static void pix_level(struct pix *px, unsigned n)
 
 /* Listing 5.11: the sorted values of each block, until one is too
  * large. */
+/* Count a sorted block without visiting its elements: the values below
+ * lim by bisection, and the one that may need a coin (values are
+ * distinct, so at most the last of them). */
+static void count_block(struct pix *px, const uint32_t *val,
+    const uint32_t *idx, uint64_t bb, uint32_t b, uint64_t x, uint64_t y)
+{
+	uint64_t lo = 0, hi = bb;
+
+	while (lo < hi) {
+		uint64_t mid = lo + (hi - lo) / 2;
+		if (val[mid] < px->lim)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	if (lo > 0 && !passes(px->run->s, &px->th[0], val[lo - 1],
+	    x + idx[lo - 1] % b, y + idx[lo - 1] / b))
+		lo--;
+	px->c->count += lo;
+}
+
 static void pix_sorted(struct pix *px)
 {
 	const struct run *run = px->run;
@@ -423,6 +444,10 @@ static void pix_sorted(struct pix *px)
 			    wrap(s->wx + x, s->mw) / b;
 			const uint32_t *val = p->sval + blk * bb;
 			const uint32_t *idx = p->sidx + blk * bb;
+			if (run->count_only && run->nsteps == 1) {
+				count_block(px, val, idx, bb, b, x, y);
+				continue;
+			}
 			for (uint64_t k = 0; k < bb && val[k] < px->lim; k++)
 				emit(px, x + idx[k] % b, y + idx[k] / b, val[k]);
 		}

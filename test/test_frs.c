@@ -1,0 +1,238 @@
+/* Forced Random Sampling: setup against closed forms, every
+ * implementation against Naive, and the statistics of what comes out. */
+#include "testutil.h"
+#include "frdio.h"
+#include "frs.h"
+#include "imap.h"
+#include "par.h"
+#include "rng.h"
+
+/* A random permutation matrix: the implementations must agree on any. */
+static void perm_matrix(struct frs_matrix *m, uint32_t w, uint32_t h)
+{
+	struct frs_rng r;
+	assert_int_equal(frd_alloc(m, 2, w, h, 1, ""), 0);
+	frs_rng_init(&r, 3, FRS_STREAM_TEST);
+	for (uint32_t i = 0; i < m->n; i++)
+		m->v[i] = i;
+	for (uint32_t i = (uint32_t)m->n - 1; i > 0; i--) {
+		uint32_t j = (uint32_t)frs_rng_below(&r, i + 1), t = m->v[i];
+		m->v[i] = m->v[j];
+		m->v[j] = t;
+	}
+}
+
+static void map_of(const char *spec, uint32_t w, uint32_t h,
+    struct frs_imap *m)
+{
+	if (imap_load(spec, w, h, 0, m) != 0)
+		print_error("%s\n", frs_errmsg());
+	assert_non_null(m->v);
+}
+
+/* Listing 5.1 by hand: constant 128^2 map, n = 1024, sigma 8:
+ * w_min = 8 sqrt(1024) = 256, n_s = 2, tau = 1024 * 2048^2 / 256^2. */
+static void setup_closed_form(void **state)
+{
+	struct frs_matrix m = { 2, 2048, 2048, 1, (size_t)2048 * 2048, NULL, NULL };
+	struct frs_imap map;
+	struct frs_setup s;
+	(void)state;
+
+	map_of("const", 128, 128, &map);
+	assert_int_equal(frs_setup(&s, &map, &m, 1024, 8.0, 1), 0);
+	assert_int_equal(s.ns, 2);
+	assert_true(s.sw == 256 && s.sh == 256);
+	assert_double_equal(s.tau, 65536.0, 1e-9);
+	assert_int_equal(s.level0, 1);
+	assert_true(s.wx % 2 == 0 && s.wx < 2048 && s.wy % 2 == 0);
+	assert_double_equal(frs_unique(&s), 65536.0, 0);
+	/* 2^34 samples: windows of 2^20 a side, 2^40 elements; 64-bit math
+	 * keeps tau exact: 2^34 * 2^22 / 2^40. */
+	assert_int_equal(frs_setup(&s, &map, &m, (uint64_t)1 << 34, 8.0, 1), 0);
+	assert_int_equal(s.ns, 1 << 13);
+	assert_true(s.sw == (uint64_t)1 << 20);
+	assert_double_equal(s.tau, 65536.0, 1e-9);
+	assert_int_equal(s.level0, 3);
+	imap_free(&map);
+	/* A 64 x 256 map: a = 4, the smaller side sets n_s. */
+	map_of("const", 64, 256, &map);
+	assert_int_equal(frs_setup(&s, &map, &m, 4096, 8.0, 1), 0);
+	/* w_min = 8 sqrt(4096 / 4) = 256 -> n_s = 4 */
+	assert_int_equal(s.ns, 4);
+	assert_true(s.sw == 256 && s.sh == 1024);
+	imap_free(&map);
+	/* The maximum over the mean widens the window (Eq. 4.9). */
+	map_of("ramp:from=0,to=2", 128, 128, &map);	/* mean 1, max ~2 */
+	assert_int_equal(frs_setup(&s, &map, &m, 1024, 8.0, 1), 0);
+	assert_int_equal(s.ns, 4);	/* 8 sqrt(1024 * 2) = 362 > 256 */
+	imap_free(&map);
+	map_of("const", 16, 16, &map);
+	assert_int_equal(frs_setup(&s, &map, &m, 0, 8.0, 1), -1);
+	assert_int_equal(frs_setup(&s, &map, &m, 10, 0.5, 1), -1);
+	imap_free(&map);
+}
+
+static int elem_cmp(const void *a, const void *b)
+{
+	const struct frs_elem *x = a, *y = b;
+	if (x->y != y->y)
+		return x->y < y->y ? -1 : 1;
+	if (x->x != y->x)
+		return x->x < y->x ? -1 : 1;
+	return (int)x->step - (int)y->step;
+}
+
+/* All elements of a result, sorted. */
+static struct frs_elem *collect(const struct frs_result *r)
+{
+	struct frs_elem *e = malloc((r->count + 1) * sizeof *e);
+	uint64_t k = 0;
+	for (uint64_t c = 0; c < r->nchunk; c++)
+		for (uint64_t i = 0; i < r->chunk[c].n; i++)
+			e[k++] = r->chunk[c].e[i];
+	assert_true(k == r->count);
+	qsort(e, k, sizeof *e, elem_cmp);
+	return e;
+}
+
+static void run(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_matrix *m, enum frs_algo a, const uint64_t *steps,
+    unsigned nsteps, struct frs_result *r)
+{
+	struct frs_prep p;
+	uint32_t b = a == FRS_SORTED ? (s->ns < m->w ? s->ns : m->w) : 0;
+	assert_int_equal(frs_prepare(&p, m, a != FRS_NAIVE && a != FRS_SORTED, b),
+	    0);
+	if (frs_sample(s, map, &p, a, steps, nsteps, 0, r) != 0)
+		print_error("%s\n", frs_errmsg());
+	assert_non_null(r->chunk);
+	frs_prep_free(&p);
+}
+
+/* Every implementation, thread count and rule gives Naive's elements. */
+static void implementations_agree(void **state)
+{
+	static const char *maps[] = { "blob:x=0.3,sigma=0.1", "ramp", "const",
+	    "sky", "aniso" };
+	static const uint64_t ns[] = { 1, 37, 1000, 20000 };
+	static const double sig[] = { 1, 2, 8, 16 };
+	struct frs_matrix m;
+	(void)state;
+
+	perm_matrix(&m, 256, 256);
+	for (size_t mi = 0; mi < 5; mi++)
+		for (size_t ni = 0; ni < 4; ni++) {
+			struct frs_imap map;
+			struct frs_setup s;
+			struct frs_result ref;
+			struct frs_elem *re;
+			uint64_t n = ns[ni];
+			map_of(maps[mi], 32 + 8 * (uint32_t)mi, 24, &map);
+			assert_int_equal(frs_setup(&s, &map, &m, n, sig[(mi + ni) % 4],
+			    7 + ni), 0);
+			s.rule = ni == 2 ? FRS_THESIS : FRS_UNBIASED;
+			frs_set_threads(1);
+			run(&s, &map, &m, FRS_NAIVE, &n, 1, &ref);
+			re = collect(&ref);
+			for (int a = FRS_STACK; a < FRS_NALGO; a++) {
+				struct frs_result r;
+				struct frs_elem *e;
+				frs_set_threads(1 + a % 3);
+				run(&s, &map, &m, (enum frs_algo)a, &n, 1, &r);
+				if (r.count != ref.count)
+					print_error("%s %s n=%llu: %llu vs naive %llu\n",
+					    frs_algo_name((enum frs_algo)a), maps[mi],
+					    (unsigned long long)n,
+					    (unsigned long long)r.count,
+					    (unsigned long long)ref.count);
+				assert_true(r.count == ref.count);
+				e = collect(&r);
+				assert_memory_equal(e, re, r.count * sizeof *e);
+				free(e);
+				frs_result_free(&r);
+			}
+			free(re);
+			frs_result_free(&ref);
+			imap_free(&map);
+		}
+	frd_free(&m);
+	frs_set_threads(1);
+}
+
+/* Elements come in the same order for any thread count. */
+static void thread_order(void **state)
+{
+	struct frs_matrix m;
+	struct frs_imap map;
+	struct frs_setup s;
+	struct frs_result a, b;
+	uint64_t n = 5000;
+	(void)state;
+
+	perm_matrix(&m, 256, 256);
+	map_of("blob", 64, 64, &map);
+	assert_int_equal(frs_setup(&s, &map, &m, n, 8.0, 1), 0);
+	frs_set_threads(1);
+	run(&s, &map, &m, FRS_SORTED, &n, 1, &a);
+	frs_set_threads(4);
+	run(&s, &map, &m, FRS_SORTED, &n, 1, &b);
+	assert_true(a.count == b.count);
+	for (uint64_t c = 0; c < a.nchunk; c++) {
+		assert_true(a.chunk[c].n == b.chunk[c].n);
+		assert_memory_equal(a.chunk[c].e, b.chunk[c].e,
+		    a.chunk[c].n * sizeof *a.chunk[c].e);
+	}
+	frs_result_free(&a);
+	frs_result_free(&b);
+	imap_free(&map);
+	frd_free(&m);
+	frs_set_threads(1);
+}
+
+/* Progressive: the union of the steps is the one-shot set at the last
+ * count, and each step adds about its share. */
+static void progressive(void **state)
+{
+	struct frs_matrix m;
+	struct frs_imap map;
+	struct frs_setup s;
+	struct frs_result one, prog;
+	uint64_t steps[3] = { 256, 1024, 4096 }, cnt[3] = { 0 };
+	struct frs_elem *a, *b;
+	(void)state;
+
+	perm_matrix(&m, 256, 256);
+	map_of("blob", 64, 64, &map);
+	assert_int_equal(frs_setup(&s, &map, &m, 4096, 8.0, 2), 0);
+	run(&s, &map, &m, FRS_SORTED, steps + 2, 1, &one);
+	run(&s, &map, &m, FRS_SORTED, steps, 3, &prog);
+	assert_true(one.count == prog.count);
+	a = collect(&one);
+	b = collect(&prog);
+	for (uint64_t i = 0; i < one.count; i++) {
+		assert_true(a[i].x == b[i].x && a[i].y == b[i].y);
+		cnt[b[i].step]++;
+	}
+	print_message("steps: %llu %llu %llu\n", (unsigned long long)cnt[0],
+	    (unsigned long long)cnt[1], (unsigned long long)cnt[2]);
+	assert_true(llabs((long long)cnt[0] - 256) < 40);
+	assert_true(llabs((long long)(cnt[0] + cnt[1]) - 1024) < 80);
+	free(a);
+	free(b);
+	frs_result_free(&one);
+	frs_result_free(&prog);
+	imap_free(&map);
+	frd_free(&m);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(setup_closed_form),
+		cmocka_unit_test(implementations_agree),
+		cmocka_unit_test(thread_order),
+		cmocka_unit_test(progressive),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
