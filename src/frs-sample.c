@@ -240,6 +240,97 @@ fail:
 	cli_die_lib();
 }
 
+static int needs_minmap(enum frs_algo a)
+{
+	return a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2;
+}
+
+static uint32_t sorted_block(const struct frs_setup *s)
+{
+	uint32_t b = s->ns < s->mw ? s->ns : s->mw;
+	return b < s->mh ? b : s->mh;
+}
+
+/* Setup, then the matrix and what the implementation needs: from a .frp,
+ * from the .frp beside a .frd when it was made from that matrix, or
+ * prepared here. */
+static void setup(const struct opts *o, const struct frs_imap *map,
+    const struct frs_matrix *mat, struct frs_setup *s)
+{
+	if (frs_setup(s, map, mat, o->steps[o->nsteps - 1], o->sigma,
+	    cli.seed) < 0)
+		cli_die("%s", frs_errmsg());
+	s->rule = o->rule;
+	s->jitter = o->jitter;
+}
+
+static const char *sibling_frp(const char *path)
+{
+	static char buf[4096];
+	const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+	size_t len = dot && (!slash || dot > slash) ? (size_t)(dot - path) :
+	    strlen(path);
+
+	if (len + 5 > sizeof buf)
+		return NULL;
+	memcpy(buf, path, len);
+	strcpy(buf + len, ".frp");
+	return buf;
+}
+
+static void load_matrix(const struct opts *o, const struct frs_imap *map,
+    struct frs_matrix *mat, struct frs_prep *prep, struct frs_setup *s)
+{
+	const char *frp = NULL;
+	int have_minmap, have_block;
+
+	if (frp_is(o->matrix) == 1) {
+		frp = o->matrix;
+	} else {
+		const char *sib;
+		uint32_t w, h;
+		uint64_t sum;
+		if (frd_read(o->matrix, mat) < 0)
+			cli_die_lib();
+		sib = sibling_frp(o->matrix);
+		if (sib && strcmp(sib, o->matrix) && frp_is(sib) == 1 &&
+		    frp_info(sib, &w, &h, &sum) == 0) {
+			if (sum == frd_checksum(mat))
+				frp = sib;
+			else
+				frs_warn("%s is stale (made from another matrix than "
+				    "%s); ignored", sib, o->matrix);
+		}
+		if (frp != NULL)
+			frd_free(mat);
+	}
+	if (frp != NULL) {
+		uint32_t w, h;
+		uint64_t sum;
+		struct frs_matrix shape = { 2, 0, 0, 1, 0, NULL, NULL };
+		if (frp_info(frp, &w, &h, &sum) < 0)
+			cli_die_lib();
+		shape.w = w;
+		shape.h = h;
+		setup(o, map, &shape, s);
+		if (frp_read(frp, mat, prep, sorted_block(s)) < 0)
+			cli_die_lib();
+	} else {
+		setup(o, map, mat, s);
+		memset(prep, 0, sizeof *prep);
+	}
+	have_minmap = prep->nlev > 1;
+	have_block = prep->block == sorted_block(s);
+	if ((needs_minmap(o->algo) && !have_minmap) ||
+	    (o->algo == FRS_SORTED && !have_block)) {
+		frs_prep_free(prep);
+		if (frs_prepare(prep, mat, needs_minmap(o->algo),
+		    o->algo == FRS_SORTED ? sorted_block(s) : 0) < 0)
+			cli_die("%s: %s", o->matrix, frs_errmsg());
+	}
+	prep->m = mat;
+}
+
 int main(int argc, char **argv)
 {
 	struct opts o = { NULL, NULL, { 0 }, 0, FRS_SORTED, 8.0,
@@ -257,24 +348,13 @@ int main(int argc, char **argv)
 		o.matrix = default_matrix();
 	if (imap_load(o.imp ? o.imp : "const", o.w, o.h, o.flags, &map) < 0)
 		cli_die_lib();
-	if (frd_read(o.matrix, &mat) < 0)
-		cli_die_lib();
 	t0 = progress_now();
-	if (frs_setup(&s, &map, &mat, o.steps[o.nsteps - 1], o.sigma,
-	    cli.seed) < 0)
-		cli_die("%s", frs_errmsg());
-	s.rule = o.rule;
-	s.jitter = o.jitter;
+	load_matrix(&o, &map, &mat, &prep, &s);
 	if ((double)s.n > frs_unique(&s))
 		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.0f without repetition, thesis "
 		    "Table 4.1)", (unsigned long long)s.n, s.mw, s.mh, s.sigma,
 		    frs_unique(&s));
-	if (frs_prepare(&prep, &mat, o.algo == FRS_STACK ||
-	    o.algo == FRS_LEVEL1 || o.algo == FRS_LEVEL2,
-	    o.algo == FRS_SORTED ? (s.ns < mat.w ? (s.ns < mat.h ? s.ns : mat.h) :
-	    (mat.w < mat.h ? mat.w : mat.h)) : 0) < 0)
-		cli_die("%s: %s", o.matrix, frs_errmsg());
 	t1 = progress_now();
 	if (frs_sample(&s, &map, &prep, o.algo, o.steps, o.nsteps, o.count_only,
 	    &r) < 0)

@@ -120,3 +120,31 @@ void frs_point(const struct frs_setup *s, const struct frs_elem *e,
     double *x, double *y);
 
 #endif
+
+/*
+ * Prepared matrices, the .frp format (see frd(5)), little-endian:
+ *   0   8  magic "\211FRP\r\n\032\n"
+ *   8   4  version 1
+ *   12  4  width, 16 4 height
+ *   20  4  flags: 1 minmap, 2 sorted lists
+ *   24  8  checksum of the matrix (frd_checksum)
+ *   32  4  number of sorted block sizes, 36 4 reserved (0)
+ *   40     the matrix values; then minmap levels 1, 2, ... while both
+ *          sides are at least 1; then per block size B: B, 0 (8 bytes),
+ *          the sorted values and their in-block indices, uint32 each.
+ */
+#define FRP_MAGIC "\211FRP\r\n\032\n"
+
+/* Write m with its minmap (if minmap) and the sorted lists of the given
+ * block sizes. */
+int frp_write(FILE *fp, const char *name, const struct frs_matrix *m,
+    int minmap, const uint32_t *blocks, unsigned nblocks);
+/* Read a .frp: the matrix, the minmap when present, and the sorted lists
+ * of block size "block" when present (p->block = 0 if not).  The
+ * checksum must match the matrix read. */
+int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
+    uint32_t block);
+/* The size and checksum recorded in a .frp. */
+int frp_info(const char *path, uint32_t *w, uint32_t *h, uint64_t *sum);
+/* 1 if the file starts with the .frp magic, 0 if not, -1 if unreadable. */
+int frp_is(const char *path);

@@ -91,44 +91,67 @@ static double chord_integral(double y, double rad)
 	    asin(yc / rad));
 }
 
-/* Integral of sqrt(r^2 - u^2) over [a, b], u outside [-r, r] giving 0. */
-static double chord_area(double a, double b, double rad)
+/*
+ * The disc of radius rad around the origin within the horizontal strip
+ * y0 <= y <= y1.  With s(y) = sqrt(r^2 - y^2) its half-chord at height y
+ * (0 outside the disc), the length of [x0, x1] within [-s, s] is
+ * clamp(x1, -s, s) - clamp(x0, -s, s), so the area of the disc within
+ * [x0, x1] x [y0, y1] is G(x1) - G(x0) with
+ *
+ *   G(x) = integral over [y0, y1] of clamp(x, -s(y), s(y)) dy,
+ *
+ * an odd function of x.  For 0 <= x < r, min(x, s(y)) is x where
+ * |y| <= t = sqrt(r^2 - x^2) and s(y) elsewhere, which gives G in closed
+ * form from the integrals C(y) of s at y0, y1 and +-t.  Pixels of a row
+ * share their edges' G, and C(y0), C(y1) are the row's.
+ */
+struct strip {
+	double y0, y1, c0, c1, rad;
+};
+
+static void strip_init(struct strip *st, double y0, double y1, double rad)
 {
-	return chord_integral(b, rad) - chord_integral(a, rad);
+	st->y0 = y0;
+	st->y1 = y1;
+	st->rad = rad;
+	st->c0 = chord_integral(y0, rad);
+	st->c1 = chord_integral(y1, rad);
 }
 
-/*
- * G(x) = integral over y in [y0, y1] of clamp(x, -s(y), s(y)), where
- * s(y) = sqrt(r^2 - y^2) is the half-chord of the disc at height y (0
- * outside it).  The disc's part of the pixel is G(x1) - G(x0), since the
- * length of [x0, x1] within [-s, s] is clamp(x1) - clamp(x0).
- */
-static double strip_integral(double x, double y0, double y1, double rad)
+static double strip_g(const struct strip *st, double x)
 {
-	double t, a, b, inner;
+	double ax = fabs(x), rad = st->rad, t, ct, a, b, ca, cb, g;
 
-	if (x < 0.0)
-		return -strip_integral(-x, y0, y1, rad);
-	if (x >= rad)
-		return chord_area(y0, y1, rad);
-	/* min(x, s(y)) is x where |y| <= t, s(y) elsewhere. */
-	t = sqrt(rad * rad - x * x);
-	a = y0 > -t ? y0 : -t;
-	b = y1 < t ? y1 : t;
-	inner = b > a ? b - a : 0.0;
-	return x * inner + chord_area(y0, y1, rad) -
-	    (inner > 0.0 ? chord_area(a, b, rad) : 0.0);
+	if (ax >= rad) {
+		g = st->c1 - st->c0;
+	} else {
+		t = sqrt(rad * rad - ax * ax);
+		a = st->y0 > -t ? st->y0 : -t;
+		b = st->y1 < t ? st->y1 : t;
+		if (b <= a) {
+			g = st->c1 - st->c0;
+		} else {
+			/* C(t) = (t |x| + r^2 acos(|x| / r)) / 2, C odd. */
+			ct = a == st->y0 && b == st->y1 ? 0.0 :
+			    0.5 * (t * ax + rad * rad * acos(ax / rad));
+			ca = a == st->y0 ? st->c0 : -ct;
+			cb = b == st->y1 ? st->c1 : ct;
+			g = ax * (b - a) + (st->c1 - st->c0) - (cb - ca);
+		}
+	}
+	return x < 0.0 ? -g : g;
 }
 
 double raster_coverage(double x0, double y0, double x1, double y1,
     double rad)
 {
 	double area = (x1 - x0) * (y1 - y0), c;
+	struct strip st;
 
 	if (!(rad > 0.0) || !(area > 0.0))
 		return 0.0;
-	c = (strip_integral(x1, y0, y1, rad) - strip_integral(x0, y0, y1,
-	    rad)) / area;
+	strip_init(&st, y0, y1, rad);
+	c = (strip_g(&st, x1) - strip_g(&st, x0)) / area;
 	return c < 0.0 ? 0.0 : c > 1.0 ? 1.0 : c;
 }
 
@@ -143,49 +166,89 @@ static double farthest(double a, double b)
 	return fabs(a) > fabs(b) ? fabs(a) : fabs(b);
 }
 
+static void blend(uint8_t *p, unsigned channels, const uint8_t *color,
+    double c)
+{
+	for (unsigned k = 0; k < channels; k++) {
+		double v = p[k] * (1.0 - c) + color[k] * c;
+		/* v is in [0, 255]: adding 1/2 and truncating rounds. */
+		p[k] = (uint8_t)(v <= 0.0 ? 0.0 : v >= 255.0 ? 255.0 : v + 0.5);
+	}
+}
+
+/* Pixel range [lo, hi] of a row from real bounds, clipped to [0, w). */
+static int span(double lo, double hi, uint32_t w, uint32_t *a, uint32_t *b)
+{
+	if (!(hi >= lo) || hi < 0.0 || lo >= (double)w)
+		return 0;
+	*a = lo < 0.0 ? 0 : (uint32_t)lo;
+	*b = hi >= (double)w ? w - 1 : (uint32_t)hi;
+	return 1;
+}
+
 void raster_disc(struct frs_raster *r, double cx, double cy, double rad,
     const uint8_t *color)
 {
-	double flo_x, fhi_x, flo_y, fhi_y, r2 = rad * rad;
-	uint32_t i0, i1, j0, j1;
+	double r2 = rad * rad;
+	uint32_t j0, j1;
+	unsigned ch = r->channels;
 
-	if (!(rad > 0.0) || !isfinite(cx) || !isfinite(cy) || !isfinite(rad))
+	if (!(rad > 0.0) || !isfinite(cx) || !isfinite(cy) || !isfinite(rad) ||
+	    !span(floor(cy - rad), floor(cy + rad), r->h, &j0, &j1) ||
+	    floor(cx + rad) < 0.0 || floor(cx - rad) >= (double)r->w)
 		return;
-	flo_x = floor(cx - rad);
-	fhi_x = floor(cx + rad);
-	flo_y = floor(cy - rad);
-	fhi_y = floor(cy + rad);
-	if (fhi_x < 0.0 || fhi_y < 0.0 || flo_x >= (double)r->w ||
-	    flo_y >= (double)r->h)
-		return;
-	i0 = flo_x < 0.0 ? 0 : (uint32_t)flo_x;
-	j0 = flo_y < 0.0 ? 0 : (uint32_t)flo_y;
-	i1 = fhi_x >= (double)r->w ? r->w - 1 : (uint32_t)fhi_x;
-	j1 = fhi_y >= (double)r->h ? r->h - 1 : (uint32_t)fhi_y;
 	for (uint32_t j = j0; j <= j1; j++) {
-		double y0 = (double)j - cy, y1 = y0 + 1.0;
+		double y0 = (double)j - cy, y1 = (double)j + 1.0 - cy;
 		double ny = nearest(y0, y1), fy = farthest(y0, y1);
-		uint8_t *row = r->px + (size_t)j * r->w * r->channels;
+		double ht, gprev = 0.0;
+		uint32_t t0, t1, f0 = 1, f1 = 0, iprev = UINT32_MAX;
+		uint8_t *row = r->px + (size_t)j * r->w * ch;
+		struct strip st;
+		int have_strip = 0;
 
-		for (uint32_t i = i0; i <= i1; i++) {
-			double x0 = (double)i - cx, x1 = x0 + 1.0;
-			double nx = nearest(x0, x1), fx = farthest(x0, x1);
-			double c;
-			uint8_t *p = row + (size_t)i * r->channels;
-
-			if (nx * nx + ny * ny >= r2)
-				continue;
-			if (fx * fx + fy * fy <= r2)
-				c = 1.0;
-			else
-				c = raster_coverage(x0, y0, x1, y1, rad);
-			if (c <= 0.0)
-				continue;
-			for (unsigned k = 0; k < r->channels; k++) {
-				double v = p[k] * (1.0 - c) + color[k] * c;
-				p[k] = (uint8_t)lround(v < 0.0 ? 0.0 :
-				    v > 255.0 ? 255.0 : v);
+		if (ny * ny >= r2)
+			continue;
+		/* Pixels the disc touches: |x - cx| < ht somewhere in them. */
+		ht = sqrt(r2 - ny * ny);
+		if (!span(floor(cx - ht), floor(cx + ht), r->w, &t0, &t1))
+			continue;
+		/* Pixels it covers whole: i - cx >= -hf and i + 1 - cx <= hf. */
+		if (fy * fy < r2) {
+			double hf = sqrt(r2 - fy * fy);
+			if (!span(ceil(cx - hf), floor(cx + hf) - 1.0, r->w, &f0,
+			    &f1)) {
+				f0 = 1;
+				f1 = 0;
 			}
+		}
+		for (uint32_t i = t0; i <= t1; i++) {
+			double g0, g1, c;
+
+			if (i >= f0 && i <= f1) {
+				if (ch == 1)
+					memset(row + i, color[0], f1 - i + 1);
+				else
+					for (uint32_t k = i; k <= f1; k++) {
+						uint8_t *p = row + (size_t)k * 3;
+						p[0] = color[0];
+						p[1] = color[1];
+						p[2] = color[2];
+					}
+				i = f1;
+				continue;
+			}
+			if (!have_strip) {
+				strip_init(&st, y0, y1, rad);
+				have_strip = 1;
+			}
+			g0 = iprev == i ? gprev : strip_g(&st, (double)i - cx);
+			g1 = strip_g(&st, (double)i + 1.0 - cx);
+			gprev = g1;
+			iprev = i + 1;
+			c = g1 - g0;
+			if (c > 0.0)
+				blend(row + (size_t)i * ch, ch, color,
+				    c > 1.0 ? 1.0 : c);
 		}
 	}
 }

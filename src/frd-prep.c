@@ -1,0 +1,143 @@
+/*
+ * frd-prep: validate, import and prepare threshold matrices.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "frdio.h"
+#include "frs.h"
+#include "outfile.h"
+
+static const char usage[] =
+    "usage: frd-prep [-a none|stack|level1|level2|sorted|all] [--check]\n"
+    "                [--import frd|raw32|png16|text] [--rank] [-s WxH]\n"
+    "                [--blocks LIST] [-o FILE] [IN]\n"
+    "\n"
+    "  -a, --algo A       prepare for A: the minmap (stack, level1, level2),\n"
+    "                     block-sorted lists (sorted) or both (all), and\n"
+    "                     write a .frp; none (default) writes a .frd\n"
+    "      --import F     the input's format: frd (default), raw32\n"
+    "                     (little-endian 32-bit values), png16 (a dither\n"
+    "                     mask's grey levels, as ranks) or text (rows of\n"
+    "                     integers)\n"
+    "      --rank         turn any raw32 or text values into ranks\n"
+    "  -s, --size WxH     size of a raw32 matrix (default: square)\n"
+    "      --blocks LIST  block sizes of the sorted lists (default\n"
+    "                     1,2,4,...,256 up to the matrix size)\n"
+    "      --check        check that the values are a permutation\n"
+    "  -v, --verbose      print the matrix size and checksum\n"
+    "  -o, --output FILE  output (default standard output)\n"
+    "  -q, --quiet        no warnings\n"
+    "  -h, --help         this help;  --version  the version\n";
+
+enum { OPT_IMPORT = OPT_FIRST_PRIVATE, OPT_RANK, OPT_BLOCKS, OPT_CHECK };
+
+static const struct option longopts[] = {
+	{ "algo", required_argument, NULL, 'a' },
+	{ "import", required_argument, NULL, OPT_IMPORT },
+	{ "rank", no_argument, NULL, OPT_RANK },
+	{ "size", required_argument, NULL, 's' },
+	{ "blocks", required_argument, NULL, OPT_BLOCKS },
+	{ "check", no_argument, NULL, OPT_CHECK },
+	{ "verbose", no_argument, NULL, 'v' },
+	CLI_COMMON_LONGOPTS,
+	{ NULL, 0, NULL, 0 }
+};
+
+static unsigned parse_blocks(const char *s, uint32_t *out)
+{
+	char buf[256], *tok, *save = NULL;
+	unsigned n = 0;
+
+	if (strlen(s) >= sizeof buf)
+		cli_usage_error("--blocks: list too long");
+	strcpy(buf, s);
+	for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",",
+	    &save)) {
+		uint32_t b = (uint32_t)cli_ll("--blocks", tok, 1, 1 << 16);
+		if (b & (b - 1))
+			cli_usage_error("--blocks: %u is not a power of two", b);
+		if (n == 32)
+			cli_usage_error("--blocks: at most 32 sizes");
+		out[n++] = b;
+	}
+	return n;
+}
+
+int main(int argc, char **argv)
+{
+	const char *fmt = "frd", *algo = "none", *in;
+	uint32_t w = 0, h = 0, blocks[32];
+	unsigned nblocks = 0;
+	int c, rank = 0, check = 0, verbose = 0, minmap, sorted, rc;
+	struct frs_matrix m;
+	struct outfile o;
+
+	cli_init("frd-prep", usage);
+	while ((c = getopt_long(argc, argv, "a:s:v" CLI_COMMON_SHORTOPTS,
+	    longopts, NULL)) != -1) {
+		switch (c) {
+		case 'a': algo = optarg; break;
+		case 's': cli_size("-s", optarg, 1u << 16, &w, &h); break;
+		case OPT_IMPORT: fmt = optarg; break;
+		case OPT_RANK: rank = 1; break;
+		case OPT_BLOCKS: nblocks = parse_blocks(optarg, blocks); break;
+		case OPT_CHECK: check = 1; break;
+		case 'v': verbose = 1; break;
+		default:
+			if (!cli_common_opt(c, optarg))
+				cli_usage(2);
+		}
+	}
+	if (argc - optind > 1)
+		cli_usage_error("one input at most");
+	in = optind < argc ? argv[optind] : "-";
+	minmap = strcmp(algo, "all") == 0 || strcmp(algo, "stack") == 0 ||
+	    strcmp(algo, "level1") == 0 || strcmp(algo, "level2") == 0;
+	sorted = strcmp(algo, "all") == 0 || strcmp(algo, "sorted") == 0;
+	if (!minmap && !sorted && strcmp(algo, "none") != 0)
+		cli_usage_error("-a: '%s' is not none, stack, level1, level2, "
+		    "sorted or all", algo);
+	if (strcmp(fmt, "frd") == 0)
+		rc = frd_read(in, &m);
+	else if (strcmp(fmt, "raw32") == 0)
+		rc = frd_import_raw32(in, w, h, rank, &m);
+	else if (strcmp(fmt, "text") == 0)
+		rc = frd_import_text(in, rank, &m);
+	else if (strcmp(fmt, "png16") == 0 || strcmp(fmt, "png") == 0)
+		rc = frd_import_png(in, &m);
+	else
+		cli_usage_error("--import: '%s' is not frd, raw32, png16 or text",
+		    fmt);
+	if (rc < 0)
+		cli_die_lib();
+	if ((check || strcmp(fmt, "frd") != 0) &&
+	    frd_check_permutation(&m, strcmp(in, "-") ? in : "<stdin>") < 0)
+		cli_die_lib();
+	if (sorted && nblocks == 0)
+		for (uint32_t b = 1; b <= 256 && b <= m.w && b <= m.h; b *= 2)
+			blocks[nblocks++] = b;
+	for (unsigned i = 0; i < nblocks; i++)
+		if (blocks[i] > m.w || blocks[i] > m.h)
+			cli_die("--blocks: %u exceeds the %ux%u matrix", blocks[i],
+			    m.w, m.h);
+	if (outfile_open(&o, cli.out, 1) < 0)
+		cli_die_lib();
+	rc = minmap || sorted ? frp_write(o.fp, o.name, &m, minmap,
+	    sorted ? blocks : NULL, sorted ? nblocks : 0) :
+	    frd_write(o.fp, o.name, &m);
+	if (rc < 0) {
+		outfile_abort(&o);
+		cli_die_lib();
+	}
+	if (outfile_commit(&o) < 0)
+		cli_die_lib();
+	if (verbose)
+		fprintf(stderr, "frd-prep: %ux%u matrix, checksum %016llx\n", m.w,
+		    m.h, (unsigned long long)frd_checksum(&m));
+	frd_free(&m);
+	return 0;
+}

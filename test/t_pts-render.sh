@@ -1,0 +1,199 @@
+#!/bin/sh
+# pts-render: size, where a dot lands, how dark it is, the importance
+# background, colour by order, standard input and output, bad input.
+. "$(dirname "$0")/lib.sh"
+
+# Pixels of a binary PGM/PPM as "index value" lines, one per byte
+# after the header ("P5\nW H\n255\n": HEAD bytes).
+pixels() {
+	od -An -v -tu1 -j "$2" "$1" | awk '{ for (i = 1; i <= NF; i++) print n++, $i }'
+}
+
+awk 'BEGIN { srand(1); for (i = 0; i < 1000; i++) printf "%.17g %.17g\n", rand(), rand() }' >"$T/X.txt"
+
+# The issue's example, and the size of the result.
+check "render over blob" pts-render -i blob "$T/X.txt" -o "$T/X.png"
+imap info "$T/X.png" >"$T/info" 2>"$T/err"
+[ "$(value width "$T/info")" = 512 ] && [ "$(value height "$T/info")" = 512 ] &&
+    ok "default size 512x512" || nok "default size 512x512"
+check "-s 300x200" pts-render -s 300x200 "$T/X.txt" -o "$T/s.png"
+imap info "$T/s.png" >"$T/info" 2>"$T/err"
+[ "$(value width "$T/info")" = 300 ] && [ "$(value height "$T/info")" = 200 ] &&
+    ok "-s WxH gives that size" || nok "-s WxH gives that size"
+check "-s 64" pts-render -s 64 "$T/X.txt" -o "$T/s64.png"
+imap info "$T/s64.png" >"$T/info" 2>"$T/err"
+[ "$(value width "$T/info")" = 64 ] && [ "$(value height "$T/info")" = 64 ] &&
+    ok "-s N gives NxN" || nok "-s N gives NxN"
+# An 8-bit grey PNG (IHDR: depth at byte 24, colour type at 25).
+[ "$(od -An -tu1 -j24 -N2 "$T/X.png" | tr -s ' ')" = " 8 0" ] &&
+    ok "8-bit grey PNG" || nok "8-bit grey PNG"
+
+# Standard input ("-" or none) and standard output give the same bytes.
+pts-render -i blob <"$T/X.txt" >"$T/stdio.png" 2>"$T/err" &&
+    cmp -s "$T/X.png" "$T/stdio.png" &&
+    ok "standard input to standard output" || nok "standard input to standard output"
+pts-render -i blob - -o "$T/dash.png" <"$T/X.txt" 2>"$T/err" &&
+    cmp -s "$T/X.png" "$T/dash.png" && ok "'-' is standard input" ||
+    nok "'-' is standard input"
+
+# One point at (0.25, 0.75): y grows downward, so on a 512x512 image the
+# dot is centred at pixel coordinates (128, 384).  The netpbm output
+# gives the pixels to od; its darkness has its centroid there, the
+# darkest pixel touches it, and it adds up to pi r^2.
+echo "0.25 0.75" >"$T/one.txt"
+check "one point, PGM" pts-render -r 3 "$T/one.txt" -o "$T/one.pgm"
+[ "$(head -c 15 "$T/one.pgm" | od -An -c | tr -d ' \n')" = 'P5\n512512\n255\n' ] &&
+    ok "PGM header" || nok "PGM header"
+pixels "$T/one.pgm" 15 | awk '
+	{ d = 1 - $2 / 255; x = $1 % 512 + 0.5; y = int($1 / 512) + 0.5
+	  s += d; sx += d * x; sy += d * y; n++
+	  if (n == 1 || $2 < min) { min = $2; mx = x; my = y } }
+	END { printf "n %d\ncx %.6f\ncy %.6f\nsum %.6f\nmx %g\nmy %g\n",
+	    n, sx / s, sy / s, s, mx, my }' >"$T/stats"
+[ "$(value n "$T/stats")" = 262144 ] && ok "PGM has 512x512 pixels" ||
+    nok "PGM has 512x512 pixels"
+near "$(value cx "$T/stats")" 128 1e-4 && near "$(value cy "$T/stats")" 384 1e-5 &&
+    ok "dot centred at (128, 384)" ||
+    nok "dot centred at (128, 384): $(value cx "$T/stats"), $(value cy "$T/stats")"
+awk -v x="$(value mx "$T/stats")" -v y="$(value my "$T/stats")" 'BEGIN {
+	exit !((x - 128) ^ 2 + (y - 384) ^ 2 < 9) }' &&
+    ok "darkest pixel within the dot" || nok "darkest pixel within the dot"
+near "$(value sum "$T/stats")" 28.2743339 0.01 &&
+    ok "darkness of a dot of radius 3 is 9 pi" ||
+    nok "darkness of a dot of radius 3 is 9 pi: $(value sum "$T/stats")"
+# The PNG holds the same picture: same mean.
+check "one point, PNG" pts-render -r 3 "$T/one.txt" -o "$T/one.png"
+imap info "$T/one.png" >"$T/info" 2>"$T/err"
+near "$(value mean "$T/info")" "$(awk -v s="$(value sum "$T/stats")" \
+    'BEGIN { printf "%.12g", 1 - s / 262144 }')" 1e-9 &&
+    ok "PNG and PGM agree" || nok "PNG and PGM agree"
+# --format pnm to standard output is the same file.
+pts-render -r 3 --format pnm "$T/one.txt" >"$T/one-stdout.pgm" 2>"$T/err" &&
+    cmp -s "$T/one.pgm" "$T/one-stdout.pgm" && ok "--format pnm" ||
+    nok "--format pnm"
+
+# A binary .pts file with the same point: the same picture.
+printf '\211PTS\r\n\032\n\001\000\000\000\002\000\000\000\000\000\000\000\000\000\000\000\001\000\000\000\000\000\000\000\000\000\000\000\000\000\320\077\000\000\000\000\000\000\350\077' \
+    >"$T/one.pts"
+pts-render -r 3 "$T/one.pts" -o "$T/one-bin.pgm" 2>"$T/err" &&
+    cmp -s "$T/one.pgm" "$T/one-bin.pgm" && ok "binary .pts input" ||
+    { nok "binary .pts input"; sed 's/^/# /' "$T/err"; }
+# Three coordinates: the first two are drawn.
+echo "0.25 0.75 0.5" >"$T/three.txt"
+pts-render -r 3 "$T/three.txt" -o "$T/three.pgm" 2>"$T/err" &&
+    cmp -s "$T/one.pgm" "$T/three.pgm" && ok "3-D points draw x, y" ||
+    nok "3-D points draw x, y"
+
+# The default radius scales with the width: 1.5 at 512, 3 at 1024, so
+# the darkness grows 4 times.
+pts-render -s 1024 "$T/one.txt" -o "$T/big.pgm" 2>"$T/err" &&
+    pts-render "$T/one.txt" -o "$T/small.pgm" 2>"$T/err" &&
+    a=$(pixels "$T/small.pgm" 15 | awk '{ s += 1 - $2 / 255 } END { print s }') &&
+    b=$(pixels "$T/big.pgm" 17 | awk '{ s += 1 - $2 / 255 } END { print s }') &&
+    near "$a" 7.0685835 0.02 && near "$b" 28.2743339 0.01 &&
+    ok "default radius 1.5 * W / 512" || nok "default radius 1.5 * W / 512 ($a, $b)"
+
+# The importance background: white for zero, 255 - 80 at the maximum.
+# A tiny dot in a corner leaves the background as it is.
+echo "0.001 0.001" >"$T/corner.txt"
+check "-i blob" pts-render -i blob -r 0.01 "$T/corner.txt" -o "$T/bg.png"
+imap info "$T/bg.png" >"$T/info" 2>"$T/err"
+near "$(value min "$T/info")" 0.68627451 1e-8 && near "$(value max "$T/info")" 1 1e-12 &&
+    ok "background from white to 175/255" || nok "background from white to 175/255"
+awk -v m="$(value mean "$T/info")" 'BEGIN { exit !(m < 0.97) }' &&
+    ok "blob background darkens the mean" || nok "blob background darkens the mean"
+pts-render -i blob -s 100 -r 0.01 "$T/corner.txt" -o "$T/bg100.png" 2>"$T/err" &&
+    imap info "$T/bg100.png" >"$T/info" && [ "$(value width "$T/info")" = 100 ] &&
+    ok "background resampled to the image size" ||
+    nok "background resampled to the image size"
+# A zero map is fine: white.
+pts-render -i const:0 -r 0.01 "$T/corner.txt" -o "$T/zero.png" 2>"$T/err" &&
+    imap info "$T/zero.png" >"$T/info" && [ "$(value min "$T/info")" = 1 ] &&
+    ok "zero map gives white" || nok "zero map gives white"
+# --log: the positive range onto 254 .. 175.
+pts-render -i 'ramp:from=1,to=1000' --log -r 0.01 "$T/corner.txt" -o "$T/log.png" \
+    2>"$T/err" && imap info "$T/log.png" >"$T/info" &&
+    near "$(value min "$T/info")" 0.68627451 1e-8 &&
+    near "$(value max "$T/info")" 0.996078431 1e-8 &&
+    ok "--log spans 254/255 to 175/255" || nok "--log spans 254/255 to 175/255"
+# An importance map from a file.
+imap gen blob -s 64 -o "$T/blob.exr" 2>"$T/err" &&
+    pts-render -i "$T/blob.exr" -r 0.01 "$T/corner.txt" -o "$T/bgexr.png" 2>"$T/err" &&
+    imap info "$T/bgexr.png" >"$T/info" &&
+    near "$(value min "$T/info")" 0.68627451 1e-8 &&
+    ok "importance map from an EXR file" || nok "importance map from an EXR file"
+
+# --color: RGB, first point blue, last red, over the background.
+printf '0.28125 0.5625\n0.71875 0.5625\n' >"$T/two.txt"
+check "--color" pts-render --color -i blob "$T/X.txt" -o "$T/c.png"
+[ "$(od -An -tu1 -j24 -N2 "$T/c.png" | tr -s ' ')" = " 8 2" ] &&
+    ok "--color gives 8-bit RGB" || nok "--color gives 8-bit RGB"
+check "--color PPM" pts-render --color -s 16x8 -r 1.5 "$T/two.txt" -o "$T/two.ppm"
+# Header "P6\n16 8\n255\n" is 12 bytes; pixel (i, j) at 12 + 3 (16 j + i).
+[ "$(od -An -tu1 -j $((12 + 3 * (16 * 4 + 4))) -N3 "$T/two.ppm" | tr -s ' ')" = " 0 0 255" ] &&
+    ok "first point blue" || nok "first point blue"
+[ "$(od -An -tu1 -j $((12 + 3 * (16 * 4 + 11))) -N3 "$T/two.ppm" | tr -s ' ')" = " 255 0 0" ] &&
+    ok "last point red" || nok "last point red"
+[ "$(od -An -tu1 -j 12 -N3 "$T/two.ppm" | tr -s ' ')" = " 255 255 255" ] &&
+    ok "--color background white" || nok "--color background white"
+
+# Help and version.
+pts-render -h >"$T/out" 2>&1 && grep -q "^usage: pts-render" "$T/out" &&
+    ok "-h" || nok "-h"
+pts-render --version >"$T/out" 2>&1 && grep -q "^pts-render (frs)" "$T/out" &&
+    ok "--version" || nok "--version"
+
+# Bad input: exit 1, file and problem named, no output left behind.
+expect_fail "missing file" 1 "nothere.txt: No such file" "$T/o1.png" \
+    pts-render "$T/nothere.txt" -o "$T/o1.png"
+expect_fail "not a point file" 1 "X.png: not a point file" "$T/o2.png" \
+    pts-render "$T/X.png" -o "$T/o2.png"
+printf '0.1 0.2\n0.3 0.4\n1.5 0.5\n' >"$T/bad.txt"
+expect_fail "coordinate 1.5" 1 "bad.txt:3: coordinate 1 is 1.5, outside [0,1)" \
+    "$T/o3.png" pts-render "$T/bad.txt" -o "$T/o3.png"
+printf '0.1\n0.2\n' >"$T/d1.txt"
+expect_fail "1-D points" 1 "d1.txt: points have 1 coordinate, need 2" "$T/o4.png" \
+    pts-render "$T/d1.txt" -o "$T/o4.png"
+expect_fail "1-D points on standard input" 1 \
+    "<stdin>: points have 1 coordinate, need 2" "$T/o4b.png" \
+    sh -c 'pts-render -o "$1" <"$2"' sh "$T/o4b.png" "$T/d1.txt"
+: >"$T/empty.txt"
+expect_fail "empty file" 1 "empty.txt: empty file" "$T/o5.png" \
+    pts-render "$T/empty.txt" -o "$T/o5.png"
+expect_fail "-s 0" 2 "-s" "$T/o6.png" pts-render -s 0 "$T/X.txt" -o "$T/o6.png"
+expect_fail "-s 12x" 2 "-s" "$T/o7.png" pts-render -s 12x "$T/X.txt" -o "$T/o7.png"
+expect_fail "-s too many pixels" 2 "-s" "$T/o8.png" \
+    pts-render -s 65536x65536 "$T/X.txt" -o "$T/o8.png"
+expect_fail "-r 0" 2 "-r" "$T/o9.png" pts-render -r 0 "$T/X.txt" -o "$T/o9.png"
+expect_fail "-r junk" 2 "-r" "$T/o10.png" pts-render -r 1x "$T/X.txt" -o "$T/o10.png"
+expect_fail "unknown option" 2 "usage" "$T/o11.png" \
+    pts-render --frobnicate "$T/X.txt" -o "$T/o11.png"
+expect_fail "two inputs" 2 "one point file" "$T/o12.png" \
+    pts-render "$T/X.txt" "$T/X.txt" -o "$T/o12.png"
+expect_fail "--format bmp" 2 "--format" "$T/o13.png" \
+    pts-render --format bmp "$T/X.txt" -o "$T/o13.png"
+expect_fail "--log without -i" 2 "need -i" "$T/o14.png" \
+    pts-render --log "$T/X.txt" -o "$T/o14.png"
+expect_fail "both on standard input" 2 "standard input" "$T/o15.png" \
+    pts-render -i - - -o "$T/o15.png"
+expect_fail "bad importance map" 1 "unknown parameter" "$T/o16.png" \
+    pts-render -i blob:radius=3 "$T/X.txt" -o "$T/o16.png"
+expect_fail "missing importance file" 1 "nothere.exr" "$T/o17.png" \
+    pts-render -i "$T/nothere.exr" "$T/X.txt" -o "$T/o17.png"
+expect_fail "full disk" 1 "/dev/full" - pts-render "$T/X.txt" -o /dev/full
+expect_fail "full disk, PNM" 1 "/dev/full" - pts-render -s 100 "$T/X.txt" \
+    --format pnm -o /dev/full
+expect_fail "missing directory" 1 "$T/no/dir/x.png: cannot create" "$T/no/dir/x.png" \
+    pts-render "$T/X.txt" -o "$T/no/dir/x.png"
+# A failed run leaves an existing file as it was.
+cp "$T/X.png" "$T/keep.png"
+pts-render "$T/bad.txt" -o "$T/keep.png" 2>/dev/null
+cmp -s "$T/X.png" "$T/keep.png" && ok "failed run keeps the old file" ||
+    nok "failed run keeps the old file"
+
+# Binary output to a terminal is refused (script(1) gives a pty).
+if command -v script >/dev/null 2>&1; then
+	script -qec "pts-render '$T/X.txt'" /dev/null >"$T/tty" 2>&1
+	grep -q "refusing to write binary data to a terminal" "$T/tty" &&
+	    ok "no PNG on a terminal" || nok "no PNG on a terminal"
+fi
