@@ -204,6 +204,22 @@ static void print_setup(const struct frs_setup *s, const char *mname)
 	    s->level0);
 }
 
+static int put_elem(struct pts_writer *w, const struct opts *o,
+    const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_elem *e)
+{
+	double rec[4];
+	unsigned k = 2;
+
+	frs_point(s, e, &rec[0], &rec[1]);
+	if (o->pdf)
+		rec[k++] = map->v[(uint64_t)(e->y / s->ns) * s->iw + e->x / s->ns] /
+		    s->mean;
+	if (o->nsteps > 1)
+		rec[k++] = (double)(e->step + 1);
+	return pts_writer_put(w, rec);
+}
+
 static void write_points(const struct opts *o, const struct frs_setup *s,
     const struct frs_imap *map, const struct frs_result *r)
 {
@@ -216,20 +232,13 @@ static void write_points(const struct opts *o, const struct frs_setup *s,
 	if (pts_writer_begin(&w, of.fp, of.name, 2, extra, r->count,
 	    cli.text) < 0)
 		goto fail;
-	for (uint64_t c = 0; c < r->nchunk; c++)
-		for (uint64_t i = 0; i < r->chunk[c].n; i++) {
-			const struct frs_elem *e = &r->chunk[c].e[i];
-			double rec[4];
-			unsigned k = 2;
-			frs_point(s, e, &rec[0], &rec[1]);
-			if (o->pdf)
-				rec[k++] = map->v[(uint64_t)(e->y / s->ns) * s->iw +
-				    e->x / s->ns] / s->mean;
-			if (o->nsteps > 1)
-				rec[k++] = (double)(e->step + 1);
-			if (pts_writer_put(&w, rec) < 0)
-				goto fail;
-		}
+	/* Progressive steps in turn, each in map order. */
+	for (uint32_t step = 0; step < o->nsteps; step++)
+		for (uint64_t c = 0; c < r->nchunk; c++)
+			for (uint64_t i = 0; i < r->chunk[c].n; i++)
+				if (r->chunk[c].e[i].step == step &&
+				    put_elem(&w, o, s, map, &r->chunk[c].e[i]) < 0)
+					goto fail;
 	if (pts_writer_end(&w) < 0)
 		goto fail;
 	if (outfile_commit(&of) < 0)

@@ -1,0 +1,58 @@
+#!/bin/sh
+# frd-prep: imports, validation and prepared matrices.
+. "$(dirname "$0")/lib.sh"
+
+# The thesis authors' matrix: raw little-endian int32, 512 x 512.
+check "import the authors' raw32 matrix" frd-prep --import raw32 \
+    "$SHARED/data/ref/authors-512x512.matrix" -o "$T/a.frd"
+tail -c $((4 * 512 * 512)) "$T/a.frd" | cmp -s - "$SHARED/data/ref/authors-512x512.matrix" &&
+    ok "values kept as they are" || nok "values kept as they are"
+check "sample from it" frs-sample -m "$T/a.frd" -i blob -n 1000 -o "$T/a.pts"
+
+# Text, with ranks of arbitrary values.
+printf '3 0 2\n1 5 4\n' >"$T/m.txt"
+frd-prep --import text "$T/m.txt" -o "$T/t.frd" &&
+    [ "$(tail -c 24 "$T/t.frd" | od -A n -t u4 | tr -s ' \n' ' ')" = " 3 0 2 1 5 4 " ] &&
+    ok "text import" || nok "text import"
+printf '30 0 20\n10 50 40\n' >"$T/r.txt"
+expect_fail "text that is no permutation" 1 "--rank" "$T/r.frd" frd-prep --import text "$T/r.txt" -o "$T/r.frd"
+frd-prep --import text --rank "$T/r.txt" -o "$T/r.frd" &&
+    [ "$(tail -c 24 "$T/r.frd" | od -A n -t u4 | tr -s ' \n' ' ')" = " 3 0 2 1 5 4 " ] &&
+    ok "--rank turns values into ranks" || nok "--rank turns values into ranks"
+
+# A 16-bit PNG mask: its grey levels become ranks.
+imap gen ramp -s 8x4 -o "$T/mask.png"
+frd-prep --import png16 "$T/mask.png" -o "$T/p.frd" && frd-prep --check "$T/p.frd" -o /dev/null &&
+    ok "png16 import is a permutation" || nok "png16 import is a permutation"
+
+# Prepared matrices.
+frd-gen -s 64 -o "$T/g.frd"
+check "prepare all" frd-prep -a all "$T/g.frd" -o "$T/g.frp"
+head -c 8 "$T/g.frp" | od -A n -t x1 | grep -q '89 46 52 50 0d 0a 1a 0a' && ok ".frp magic" || nok ".frp magic"
+frs-sample -m "$T/g.frd" -i blob -n 500 -T -o "$T/f1.txt" &&
+    frs-sample -m "$T/g.frp" -i blob -n 500 -T -o "$T/f2.txt" && cmp -s "$T/f1.txt" "$T/f2.txt" &&
+    ok "same points from .frd and .frp" || nok "same points from .frd and .frp"
+for a in stack level1 level2; do
+	frs-sample -m "$T/g.frp" -a $a -i blob -n 500 -T | grep -v '^#' | sort >"$T/$a.s"
+done
+grep -v '^#' "$T/f1.txt" | sort >"$T/sorted.s"
+cmp -s "$T/stack.s" "$T/sorted.s" && cmp -s "$T/level2.s" "$T/sorted.s" &&
+    ok "minmap implementations from a .frp" || nok "minmap implementations from a .frp"
+cp "$T/g.frp" "$T/bad.frp"
+printf 'X' | dd of="$T/bad.frp" bs=1 seek=100 conv=notrunc 2>/dev/null
+expect_fail "damaged .frp" 1 "checksum" "$T/o.pts" frs-sample -m "$T/bad.frp" -n 10 -o "$T/o.pts"
+
+# Bad input.
+expect_fail "raw32 of the wrong length" 1 "not a whole number" "$T/o.frd" \
+    sh -c "printf 'abc' >'$T/x.raw'; frd-prep --import raw32 '$T/x.raw' -o '$T/o.frd'"
+expect_fail "raw32 not square" 1 "not a square" "$T/o.frd" \
+    sh -c "head -c 12 /dev/zero >'$T/y.raw'; frd-prep --import raw32 '$T/y.raw' -o '$T/o.frd'"
+expect_fail "raw32 with repeats" 1 "not a permutation" "$T/o.frd" \
+    sh -c "head -c 16 /dev/zero >'$T/z.raw'; frd-prep --import raw32 '$T/z.raw' -o '$T/o.frd'"
+printf '1 2\n3\n' >"$T/ragged.txt"
+expect_fail "ragged text" 1 "the first row has 2" "$T/o.frd" frd-prep --import text "$T/ragged.txt" -o "$T/o.frd"
+printf '1 x\n' >"$T/word.txt"
+expect_fail "text with a word" 1 "not an integer" "$T/o.frd" frd-prep --import text "$T/word.txt" -o "$T/o.frd"
+expect_fail "unknown import" 2 "--import" "$T/o.frd" frd-prep --import jpeg "$T/g.frd" -o "$T/o.frd"
+expect_fail "unknown algorithm" 2 "-a" "$T/o.frp" frd-prep -a fast "$T/g.frd" -o "$T/o.frp"
+expect_fail "block too large" 1 "exceeds" "$T/o.frp" frd-prep -a sorted --blocks 128 "$T/g.frd" -o "$T/o.frp"

@@ -1,0 +1,100 @@
+#!/bin/sh
+# frs-sample: output, determinism, options, hard cases and bad input.
+. "$(dirname "$0")/lib.sh"
+
+# A small matrix keeps the tests fast; the default one is tried once.
+frd-gen -s 256 --tol 1e-2 -o "$T/m.frd"
+M=$T/m.frd
+
+check "blob, 2000 samples" frs-sample -m "$M" -i blob -n 2000 -o "$T/a.pts"
+cnt=$(od -A n -t u8 -j 24 -N 8 "$T/a.pts" | tr -d ' ')
+[ "$cnt" -gt 1900 ] && [ "$cnt" -lt 2100 ] && ok "about n samples ($cnt)" ||
+    nok "about n samples ($cnt)"
+[ "$(wc -c <"$T/a.pts")" -eq $((32 + 16 * cnt)) ] && ok "binary .pts layout" ||
+    nok "binary .pts layout"
+
+# Same bytes for any thread count and implementation order aside.
+frs-sample -m "$M" -i blob -n 3000 -j 1 -T -o "$T/j1.txt"
+frs-sample -m "$M" -i blob -n 3000 -j 2 -T -o "$T/j2.txt"
+cmp -s "$T/j1.txt" "$T/j2.txt" && ok "-j 1 and -j 2 give the same bytes" ||
+    nok "-j 1 and -j 2 give the same bytes"
+for a in naive stack level1 level2; do
+	frs-sample -m "$M" -i blob -n 3000 -a $a -T | grep -v '^#' | sort >"$T/$a.s"
+done
+grep -v '^#' "$T/j1.txt" | sort >"$T/sorted.s"
+same=1
+for a in naive stack level1 level2; do cmp -s "$T/$a.s" "$T/sorted.s" || same=0; done
+[ $same = 1 ] && ok "all implementations give the same points" ||
+    nok "all implementations give the same points"
+frs-sample -m "$M" -i blob -n 3000 -S 2 -T -o "$T/s2.txt"
+cmp -s "$T/j1.txt" "$T/s2.txt" && nok "another seed moves the window" ||
+    ok "another seed moves the window"
+
+# Columns: --pdf adds I / mean I; jitter keeps points in their elements.
+frs-sample -m "$M" -i const -n 500 --pdf -T -o "$T/pdf.txt"
+awk '!/^#/ && ($3 < 0.999999 || $3 > 1.000001) { bad = 1 } END { exit bad }' "$T/pdf.txt" &&
+    ok "--pdf of a constant map is 1" || nok "--pdf of a constant map is 1"
+head -n 1 "$T/pdf.txt" | grep -q 'dims=2 extra=1' && ok "--pdf header" || nok "--pdf header"
+frs-sample -m "$M" -i blob -n 1000 --jitter random -T -o "$T/jr.txt" &&
+    frs-sample -m "$M" -i blob -n 1000 --jitter halton -T -o "$T/jh.txt" &&
+    frs-sample -m "$M" -i blob -n 1000 -T -o "$T/jn.txt" &&
+    [ "$(grep -vc '^#' "$T/jr.txt")" = "$(grep -vc '^#' "$T/jn.txt")" ] &&
+    ! cmp -s "$T/jr.txt" "$T/jn.txt" && ! cmp -s "$T/jh.txt" "$T/jr.txt" &&
+    ok "jitter moves points, keeps the count" || nok "jitter moves points, keeps the count"
+
+# Progressive: the union of the steps is the one-shot set at the last count.
+frs-sample -m "$M" -i blob --progressive 200,800,2000 -T -o "$T/prog.txt"
+frs-sample -m "$M" -i blob -n 2000 -T -o "$T/one.txt"
+awk '!/^#/ { print $1, $2 }' "$T/prog.txt" | sort >"$T/prog.s"
+grep -v '^#' "$T/one.txt" | sort >"$T/one.s"
+cmp -s "$T/prog.s" "$T/one.s" && ok "progressive union equals one shot" ||
+    nok "progressive union equals one shot"
+awk '!/^#/ { if ($3 < last) bad = 1; last = $3 } END { exit bad || last != 3 }' "$T/prog.txt" &&
+    ok "steps come in order 1, 2, 3" || nok "steps come in order 1, 2, 3"
+
+# Count only, with window math past 2^32 (n = 2^34).
+n=$(frs-sample -m "$M" -i blob -n 17179869184 --count-only -q)
+awk -v n="$n" 'BEGIN { exit !(n > 0.999 * 17179869184 && n < 1.001 * 17179869184) }' &&
+    ok "--count-only at 2^34 ($n)" || nok "--count-only at 2^34 ($n)"
+frs-sample -m "$M" -i blob -n 100000 2>"$T/warn" >/dev/null
+grep -q 'Table 4.1' "$T/warn" && ok "warning past the matrix's unique samples" ||
+    nok "warning past the matrix's unique samples"
+
+# The default matrix and a prepared one beside it.
+check "default matrix" frs-sample -i blob -n 100 -o "$T/d.pts"
+frd-prep -a all "$M" -o "$T/m.frp"
+frs-sample -m "$T/m.frp" -i blob -n 3000 -T -o "$T/frp.txt"
+cmp -s "$T/frp.txt" "$T/j1.txt" && ok "a .frp gives the same points" ||
+    nok "a .frp gives the same points"
+frd-gen -s 256 --tol 1e-2 -S 9 -o "$T/m2.frd"
+cp "$T/m.frp" "$T/m2.frp"
+frs-sample -m "$T/m2.frd" -i blob -n 100 -o /dev/null 2>"$T/warn"
+grep -q 'stale' "$T/warn" && ok "a stale .frp beside the matrix is refused" ||
+    nok "a stale .frp beside the matrix is refused"
+
+# Hard maps: negative values clamped with a warning or refused, a real
+# HDR map, a map of one row.
+frs-sample -m "$M" -i "$SHARED/data/env/interior.exr" -s 128x64 -n 1000 -o "$T/int.pts" 2>"$T/warn"
+grep -q 'negative pixels clamped' "$T/warn" && ok "negative importance clamped with a warning" ||
+    nok "negative importance clamped with a warning"
+expect_fail "--strict refuses negative importance" 1 "is negative" "$T/strict.pts" \
+    frs-sample -m "$M" --strict -i "$SHARED/data/env/interior.exr" -n 100 -o "$T/strict.pts"
+check "1x4096 map" frs-sample -m "$M" -i ramp -s 1x4096 -n 500 -o "$T/thin.pts"
+
+# Bad input.
+expect_fail "all-zero map" 1 "zero everywhere" "$T/z.pts" frs-sample -m "$M" -i const:0 -n 10 -o "$T/z.pts"
+expect_fail "no count" 2 "-n COUNT is required" "$T/o.pts" frs-sample -m "$M" -o "$T/o.pts"
+expect_fail "n = 0" 2 "-n" "$T/o.pts" frs-sample -m "$M" -n 0 -o "$T/o.pts"
+expect_fail "unknown implementation" 2 "unknown implementation" "$T/o.pts" frs-sample -m "$M" -n 10 -a quick -o "$T/o.pts"
+expect_fail "sigma below 1" 2 "--sigma" "$T/o.pts" frs-sample -m "$M" -n 10 --sigma 0.5 -o "$T/o.pts"
+expect_fail "progressive not increasing" 2 "increase" "$T/o.pts" frs-sample -m "$M" --progressive 100,50 -o "$T/o.pts"
+expect_fail "bad jitter" 2 "--jitter" "$T/o.pts" frs-sample -m "$M" -n 10 --jitter some -o "$T/o.pts"
+expect_fail "missing matrix" 1 "nothere.frd" "$T/o.pts" frs-sample -m "$T/nothere.frd" -n 10 -o "$T/o.pts"
+echo junk >"$T/junk.frd"
+expect_fail "not a matrix" 1 "junk.frd" "$T/o.pts" frs-sample -m "$T/junk.frd" -n 10 -o "$T/o.pts"
+frd-gen -s 48x40 -o "$T/odd.frd"
+expect_fail "stack on a non-power-of-two matrix" 1 "power-of-two" "$T/o.pts" \
+    frs-sample -m "$T/odd.frd" -a stack -n 10 -o "$T/o.pts"
+check "naive on a non-power-of-two matrix" frs-sample -m "$T/odd.frd" -a naive -i blob -n 100 -o "$T/odd.pts"
+expect_fail "missing directory" 1 "cannot create" "$T/no/o.pts" frs-sample -m "$M" -n 10 -o "$T/no/o.pts"
+expect_fail "full disk" 1 "No space left" - frs-sample -m "$M" -n 10 -o /dev/full
