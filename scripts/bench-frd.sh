@@ -29,13 +29,13 @@ row() {
 		{ q[$1] = $2 }
 		END {
 			s1k = q["spread_1024"]; if (s1k == "") s1k = "-"
-			printf "%-6s %-6s %6s %9.2f %8.1f %8s %8s %8s %8s\n", s, t, r, a[1], a[2] / 1024, q["spread_16"], s1k, q["lowpass_first_2.5%"], q["lowpass_last_2.5%"]
+			printf "%-6s %-6s %6s %9.2f %8.1f %8s %8s %8s %8s %7s %7s\n", s, t, r, a[1], a[2] / 1024, q["spread_16"], s1k, q["lowpass_first_2.5%"], q["lowpass_last_2.5%"], q["peak_first_10%"], q["peak_last_10%"]
 		}' "$T/q"
 }
 
 echo "frd-gen: accuracy against time ($(nproc) threads, default tol 1e-3)"
-printf '%-6s %-6s %6s %9s %8s %8s %8s %8s %8s\n' size tol radius seconds \
-    peak_MiB spread16 spread1k lp_first lp_last
+printf '%-6s %-6s %6s %9s %8s %8s %8s %8s %8s %7s %7s\n' size tol radius \
+    seconds peak_MiB spread16 spread1k lp_first lp_last pk_f10 pk_l10
 for s in 64 128 256; do
 	for t in 1e-2 1e-3 1e-4 1e-6 exact; do row $s $t; done
 done
@@ -45,7 +45,21 @@ if [ -z "${BENCH_QUICK:-}" ]; then
 	for t in 1e-3 1e-4; do row 2048 $t; done
 fi
 echo "(lp_*: low-frequency power over the plateau of the first and last 2.5 %"
-echo " of the values, white noise 1; spread: min distance over the ideal)"
+echo " of the values, white noise 1; pk_*: spectral peak of the first and last"
+echo " 10 %, blue noise ~2, lattice 5+; spread: min distance over the ideal)"
+echo
+echo "the thesis authors' 512^2 matrix, for comparison"
+"$BUILD/bin/frd-prep" --import raw32 ../shared/data/ref/authors-512x512.matrix \
+    -o "$T/authors.frd" 2>/dev/null && "$GEN" --quality "$T/authors.frd" |
+    awk '{ printf "%s %s  ", $1, $2 } END { print "" }' || echo "(not found)"
+echo
+echo "--reach: exact fields crystallise (512^2, default tol)"
+printf '%-6s %8s %8s %8s %8s %8s\n' reach spread16 spread1k lp_first pk_f10 pk_l10
+for r in 0 0.5 0.7 1 3; do
+	"$GEN" -q -s 512 --reach $r -o "$T/r.frd"
+	"$GEN" --quality "$T/r.frd" | awk -v r=$r '{ q[$1] = $2 } END {
+		printf "%-6s %8s %8s %8s %8s %8s\n", r, q["spread_16"], q["spread_1024"], q["lowpass_first_2.5%"], q["peak_first_10%"], q["peak_last_10%"] }'
+done
 
 echo
 echo "frd-gen against the brute-force reference (exact, p = 1, one thread)"

@@ -1,7 +1,7 @@
 #!/bin/sh
 # make demo: run the pipeline on the embedded data and leave pictures in
-# results/.  So far: the importance maps that the samplers will use
-# (thesis Fig. 6.1) and threshold matrices (ch. 3).
+# results/: importance maps (thesis Fig. 6.1), threshold matrices (ch. 3),
+# and Forced Random Sampling of the maps (ch. 4-5), drawn as stipples.
 set -eu
 cd "$(dirname "$0")/.."
 BIN=${BIN:-bin}
@@ -26,6 +26,18 @@ echo "demo: a 256x256 Forced Random Dithering matrix and its quality"
 "$BIN/frd-gen" --quality "$out/M256.frd" | sed 's/^/demo:   /'
 echo "demo: the shipped default matrix data/default.frd (2048x2048)"
 "$BIN/frd-gen" --quality data/default.frd | sed 's/^/demo:   /'
+
+echo "demo: Forced Random Sampling with the default matrix, rendered"
+"$BIN/frs-sample" -i blob -n 4096 -v -o "$out/blob.pts"
+"$BIN/pts-render" -i blob "$out/blob.pts" -o "$out/blob-samples.png"
+"$BIN/frs-sample" -i "$out/sunset-importance.exr" -n 8192 --jitter random \
+    -o "$out/sunset.pts"
+"$BIN/pts-render" -i "$out/sunset-importance.exr" --log -s 1024x512 \
+    "$out/sunset.pts" -o "$out/sunset-samples.png"
+"$BIN/frs-sample" -i aniso -n 2048 -o "$out/aniso.pts"
+"$BIN/pts-render" -i aniso "$out/aniso.pts" -o "$out/aniso-samples.png"
+"$BIN/frs-sample" -i blob --progressive 256,1024,4096 -o "$out/progressive.pts"
+"$BIN/pts-render" --color "$out/progressive.pts" -o "$out/progressive.png"
 
 echo "demo: pictures in $out/:"
 ls "$out" | sed 's/^/demo:   /'

@@ -29,7 +29,7 @@ static const char usage[] =
     "                      radius (ln 1/EPS)^2 / 2 cells for the default f)\n"
     "      --exact         keep every contribution (O(N^2))\n"
     "      --reach R       radius at least R times the spacing of the values\n"
-    "                      inserted so far (default 3, 0 = off)\n"
+    "                      inserted so far (default 0.7, 0 = off)\n"
     "      --force-s S     force f(r) = exp(-(r/S)^Q), default S = 0.5\n"
     "      --force-q Q     default Q = 0.5\n"
     "  -S, --seed N        random seed (default 1)\n"
@@ -98,7 +98,7 @@ static void print_quality(FILE *fp, const struct frs_matrix *m,
 {
 	static const uint32_t cs[] = { 16, 64, 256, 1024 };
 	static const double levels[] = { 2.5, 10 };
-	double ratio;
+	double ratio, peak;
 
 	fprintf(fp, "matrix %s\nsize %ux%ux%u\n", name, m->w, m->h, m->d);
 	for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++)
@@ -107,10 +107,13 @@ static void print_quality(FILE *fp, const struct frs_matrix *m,
 			    frdq_spread(m, cs[i]));
 	/* First and last values: the late ones show what the radius cuts. */
 	for (size_t i = 0; i < sizeof levels / sizeof levels[0]; i++) {
-		if (frdq_lowpass(m, 0.0, levels[i] / 100.0, &ratio) == 0)
-			fprintf(fp, "lowpass_first_%g%% %.4f\n", levels[i], ratio);
-		if (frdq_lowpass(m, 1.0 - levels[i] / 100.0, 1.0, &ratio) == 0)
-			fprintf(fp, "lowpass_last_%g%% %.4f\n", levels[i], ratio);
+		if (frdq_spectrum(m, 0.0, levels[i] / 100.0, &ratio, &peak) == 0)
+			fprintf(fp, "lowpass_first_%g%% %.4f\npeak_first_%g%% %.3f\n",
+			    levels[i], ratio, levels[i], peak);
+		if (frdq_spectrum(m, 1.0 - levels[i] / 100.0, 1.0, &ratio,
+		    &peak) == 0)
+			fprintf(fp, "lowpass_last_%g%% %.4f\npeak_last_%g%% %.3f\n",
+			    levels[i], ratio, levels[i], peak);
 	}
 }
 

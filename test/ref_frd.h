@@ -70,6 +70,24 @@ static void reference(const struct frdgen_params *pr, uint32_t *out)
 				    frdgen_tiekey(pr, step, i), i };
 		qsort(cs, nc, sizeof *cs, cand_cmp);
 		c = cs[k - 1].c;
+		{
+			/* A tie that, with the smaller cells, numbers more than
+			 * K + tie_cap: cells drawn until one is in it. */
+			uint64_t a = 0, g = 0;
+			double v = cs[k - 1].f;
+			for (size_t i = 0; i < nc; i++) {
+				a += cs[i].f < v;
+				g += cs[i].f == v;
+			}
+			if (a + g > k + pr->tie_cap)
+				for (uint32_t j = 0;; j++) {
+					uint32_t d = frdgen_tiecell(pr, step, j, n);
+					if (!taken[d] && f[d] == v) {
+						c = d;
+						break;
+					}
+				}
+		}
 		out[c] = (uint32_t)step;
 		taken[c] = 1;
 		cx = c % pr->w;

@@ -50,8 +50,8 @@ static void permutations(void **state)
 
 #include "ref_frd.h"
 
-static void against_reference(uint32_t w, uint32_t h, uint32_t d, double p,
-    double tol, double reach)
+static void against_reference_cap(uint32_t w, uint32_t h, uint32_t d,
+    double p, double tol, double reach, uint32_t cap)
 {
 	struct frdgen_params pr;
 	struct frs_matrix m;
@@ -59,6 +59,7 @@ static void against_reference(uint32_t w, uint32_t h, uint32_t d, double p,
 
 	params(&pr, w, h, d, p, tol);
 	pr.reach = reach;
+	pr.tie_cap = cap;
 	ref = malloc((size_t)w * h * d * sizeof *ref);
 	reference(&pr, ref);
 	assert_int_equal(frdgen_run(&pr, &m, NULL), 0);
@@ -71,6 +72,22 @@ static void against_reference(uint32_t w, uint32_t h, uint32_t d, double p,
 		}
 	free(ref);
 	frd_free(&m);
+}
+
+static void against_reference(uint32_t w, uint32_t h, uint32_t d, double p,
+    double tol, double reach)
+{
+	against_reference_cap(w, h, d, p, tol, reach, 4096);
+}
+
+/* Large ties (the zero field where no force reaches yet) drawn by
+ * rejection: a small cap makes them happen at small sizes. */
+static void large_ties(void **state)
+{
+	(void)state;
+	against_reference_cap(32, 32, 1, 0.5, 0.1, 0.0, 8);
+	against_reference_cap(24, 40, 1, 1.0, 1e-2, 0.7, 16);
+	against_reference_cap(16, 16, 1, 0.5, 0.0, 0.0, 4);
 }
 
 /* Exact, p = 1: the global minimum every time (Listing 3.1 with p = 1). */
@@ -146,9 +163,14 @@ static void spread(void **state)
 		assert_true(rho >= 0.55);
 		assert_double_equal(frdq_spread(&m, cs[k]), rho, 1e-12);
 	}
-	/* Blue noise at 97.5 %: low frequencies far below the plateau. */
+	/* Blue noise at 97.5 %: low frequencies far below the plateau, and
+	 * no lattice: the spectral peak stays low (a crystallised matrix,
+	 * --reach 3, has 7). */
 	{
-		double ratio;
+		double ratio, peak;
+		assert_int_equal(frdq_spectrum(&m, 0.0, 0.025, &ratio, &peak), 0);
+		print_message("peak first 2.5%% = %.3f\n", peak);
+		assert_true(peak < 3.0);
 		assert_int_equal(frdq_lowpass(&m, 0.0, 0.025, &ratio), 0);
 		print_message("lowpass first 2.5%% = %.3f\n", ratio);
 		assert_true(ratio < 0.2);
@@ -264,6 +286,7 @@ int main(void)
 		cmocka_unit_test(permutations),
 		cmocka_unit_test(exact_global_minimum),
 		cmocka_unit_test(windows_and_ranks),
+		cmocka_unit_test(large_ties),
 		cmocka_unit_test(rank_law),
 		cmocka_unit_test(spread),
 		cmocka_unit_test(lowpass_measure),

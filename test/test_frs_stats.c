@@ -270,34 +270,43 @@ static void thin_maps(void **state)
 }
 
 /* Uniform sampling, sigma 8, n 1024: density rho = d_min / sqrt(2 /
- * (sqrt(3) n)) with plain distance at least 0.6 (thesis Table 6.1: 0.65). */
+ * (sqrt(3) n)) with plain distance, averaged over 10 sets as in thesis
+ * Table 6.1 (FRS: 0.65), at least 0.6.  (One set's rho is the distance of
+ * a single closest pair and strays: 0.50 to 0.63 here, and 0.34 to 0.66
+ * for the thesis authors' own matrix.) */
 static void uniform_density(void **state)
 {
-	struct frs_imap map;
-	struct frs_setup s;
-	struct frs_result r;
-	double *p, best = 1e9, rho;
-	uint64_t k = 0;
+	double mean = 0;
 	(void)state;
 
-	assert_int_equal(imap_load("const", 128, 128, 0, &map), 0);
-	sample(&map, 1024, FRS_UNBIASED, 1, FRS_SORTED, &s, &r);
-	p = malloc(2 * r.count * sizeof *p);
-	for (uint64_t c = 0; c < r.nchunk; c++)
-		for (uint64_t i = 0; i < r.chunk[c].n; i++, k++)
-			frs_point(&s, &r.chunk[c].e[i], &p[2 * k], &p[2 * k + 1]);
-	for (uint64_t i = 0; i < k; i++)
-		for (uint64_t j = i + 1; j < k; j++) {
-			double dx = p[2 * i] - p[2 * j], dy = p[2 * i + 1] - p[2 * j + 1];
-			best = fmin(best, dx * dx + dy * dy);
-		}
-	rho = sqrt(best) / sqrt(2 / (sqrt(3.0) * 1024));
-	print_message("uniform: %llu samples, rho %.3f\n",
-	    (unsigned long long)k, rho);
-	assert_true(rho >= 0.6);
-	free(p);
-	frs_result_free(&r);
-	imap_free(&map);
+	for (uint64_t seed = 1; seed <= 10; seed++) {
+		struct frs_imap map;
+		struct frs_setup s;
+		struct frs_result r;
+		double *p, best = 1e9, rho;
+		uint64_t k = 0;
+		assert_int_equal(imap_load("const", 128, 128, 0, &map), 0);
+		sample(&map, 1024, FRS_UNBIASED, seed, FRS_SORTED, &s, &r);
+		p = malloc(2 * r.count * sizeof *p);
+		for (uint64_t c = 0; c < r.nchunk; c++)
+			for (uint64_t i = 0; i < r.chunk[c].n; i++, k++)
+				frs_point(&s, &r.chunk[c].e[i], &p[2 * k], &p[2 * k + 1]);
+		for (uint64_t i = 0; i < k; i++)
+			for (uint64_t j = i + 1; j < k; j++) {
+				double dx = p[2 * i] - p[2 * j];
+				double dy = p[2 * i + 1] - p[2 * j + 1];
+				best = fmin(best, dx * dx + dy * dy);
+			}
+		rho = sqrt(best) / sqrt(2 / (sqrt(3.0) * 1024));
+		print_message("uniform, seed %llu: %llu samples, rho %.3f\n",
+		    (unsigned long long)seed, (unsigned long long)k, rho);
+		mean += rho / 10;
+		free(p);
+		frs_result_free(&r);
+		imap_free(&map);
+	}
+	print_message("uniform: mean rho %.3f\n", mean);
+	assert_true(mean >= 0.6);
 }
 
 int main(void)

@@ -13,7 +13,7 @@
 
 #define MAXLEV 40
 #define DEFAULT_TOL 1e-3
-#define DEFAULT_REACH 3.0
+#define DEFAULT_REACH 0.7
 
 /* One level of the min-pyramid: level 0 holds the minimum of each tile of
  * cells, level L+1 the minimum of 2x2x2 nodes of level L. */
@@ -79,6 +79,7 @@ void frdgen_defaults(struct frdgen_params *pr)
 	pr->reach = DEFAULT_REACH;
 	pr->seed = 1;
 	pr->checkpoint_every = 60.0;
+	pr->tie_cap = 4096;
 }
 
 int frdgen_check(const struct frdgen_params *pr)
@@ -158,6 +159,14 @@ uint64_t frdgen_tiekey(const struct frdgen_params *pr, uint64_t step,
     uint32_t c)
 {
 	return frs_rand64x(pr->seed, FRS_STREAM_FRD_TIE, step, c);
+}
+
+uint32_t frdgen_tiecell(const struct frdgen_params *pr, uint64_t step,
+    uint32_t j, uint64_t n)
+{
+	/* 53 random bits scaled to [0, n): bias below 2^-21 for n < 2^32. */
+	uint64_t r = frs_rand64x(pr->seed, FRS_STREAM_FRD_DRAW, step, j) >> 11;
+	return (uint32_t)((double)r * 0x1p-53 * (double)n);
 }
 
 /* ---- setup -------------------------------------------------------- */
@@ -735,81 +744,6 @@ static int emit(struct gen *g, struct item it)
 	return 0;
 }
 
-/* Up to this many cells of equal force are gathered in memory; a larger
- * tie (the all-zero field before the first insertion) is streamed. */
-#define TIECAP 4096
-
-/* Bounded max-heap of keys: the m smallest (key, cell) pairs seen. */
-struct keyheap {
-	uint64_t *key;
-	uint32_t *cell;
-	size_t n, m;
-};
-
-static int key_less(uint64_t ka, uint32_t ca, uint64_t kb, uint32_t cb)
-{
-	return ka < kb || (ka == kb && ca < cb);
-}
-
-static void keyheap_offer(struct keyheap *h, uint64_t k, uint32_t c)
-{
-	size_t i;
-
-	if (h->n == h->m) {
-		if (!key_less(k, c, h->key[0], h->cell[0]))
-			return;
-		/* Replace the largest and sift down. */
-		i = 0;
-		for (;;) {
-			size_t ch = 2 * i + 1;
-			if (ch >= h->n)
-				break;
-			if (ch + 1 < h->n && key_less(h->key[ch], h->cell[ch],
-			    h->key[ch + 1], h->cell[ch + 1]))
-				ch++;
-			if (!key_less(k, c, h->key[ch], h->cell[ch]))
-				break;
-			h->key[i] = h->key[ch];
-			h->cell[i] = h->cell[ch];
-			i = ch;
-		}
-		h->key[i] = k;
-		h->cell[i] = c;
-		return;
-	}
-	i = h->n++;
-	while (i > 0 && key_less(h->key[(i - 1) / 2], h->cell[(i - 1) / 2], k, c)) {
-		h->key[i] = h->key[(i - 1) / 2];
-		h->cell[i] = h->cell[(i - 1) / 2];
-		i = (i - 1) / 2;
-	}
-	h->key[i] = k;
-	h->cell[i] = c;
-}
-
-/* Every free cell whose force equals v, in depth-first order; offer each
- * to the key heap. */
-static int stream_ties(struct gen *g, double v, struct keyheap *kh)
-{
-	g->nheap = 0;
-	if (heap_push(g, 0.0, g->nlev - 1, 0) < 0)
-		return -1;
-	while (g->nheap > 0) {
-		struct item it = g->heap[--g->nheap];	/* used as a stack */
-		if (it.lev < 0) {
-			if (g->field[cell_index(g, it.idx)] == v)
-				keyheap_offer(kh, frdgen_tiekey(g->pr, g->step,
-				    it.idx), it.idx);
-			continue;
-		}
-		if (g->lev[it.lev].min[it.idx] > v)
-			continue;
-		if (expand(g, it.lev, it.idx) < 0)
-			return -1;
-	}
-	return 0;
-}
-
 static int cmp_key(const void *a, const void *b)
 {
 	const uint64_t *x = a, *y = b;
@@ -849,7 +783,7 @@ static int select_cell(struct gen *g, uint64_t k, uint32_t *c)
 	while (g->nheap > 0) {
 		struct item it;
 		if (g->nemit >= k && (g->heap[0].v > g->emit[k - 1].v ||
-		    g->nemit >= k + TIECAP))
+		    g->nemit >= k + g->pr->tie_cap))
 			break;
 		it = heap_pop(g);
 		if ((it.lev < 0 ? emit(g, it) : expand(g, it.lev, it.idx)) < 0)
@@ -866,19 +800,13 @@ static int select_cell(struct gen *g, uint64_t k, uint32_t *c)
 			g->nemit--;
 		return pick_in_group(g, a, k - 1 - a, c);
 	}
-	/* A tie too large to gather: stream it. */
-	{
-		struct keyheap kh = { NULL, NULL, 0, k - a };
-		int rc;
-		kh.key = malloc(kh.m * sizeof *kh.key);
-		kh.cell = malloc(kh.m * sizeof *kh.cell);
-		rc = kh.key && kh.cell ? stream_ties(g, v, &kh) :
-		    frs_fail("out of memory in the rank query");
-		if (rc == 0)
-			*c = kh.cell[0];	/* the largest of the m smallest */
-		free(kh.key);
-		free(kh.cell);
-		return rc;
+	/* A tie too large to gather: draw cells until one is in it. */
+	for (uint32_t j = 0;; j++) {
+		uint32_t cell = frdgen_tiecell(g->pr, g->step, j, g->n);
+		if (g->field[cell_index(g, cell)] == v) {
+			*c = cell;
+			return 0;
+		}
 	}
 }
 

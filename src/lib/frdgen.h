@@ -11,15 +11,22 @@
  * cell with K ~ Geometric(p) (truncated to the free count), which needs
  * only the few smallest cells: a min-pyramid over tiles of cells finds
  * them.  Ties in the force (exact equality) are broken by a random key per
- * (insertion, cell).  Every random number is a function of (seed, step),
+ * (insertion, cell); a tie of more than tie_cap cells (the zero field far
+ * from every value early on) is broken by drawing random cells,
+ * frdgen_tiecell(step, 0), (step, 1), ..., until one is in the tie: the
+ * same law (uniform over the tie), in time N / (tie size) instead of N.  Every random number is a function of (seed, step),
  * and every cell gets one double add per insertion, in insertion order, so
  * the result is the same for any thread count.
  *
  * Accuracy: contributions below tol * f(0) may be neglected, i.e. the
  * radius is s * ln(1/tol)^(1/q).  Early insertions are far apart, so the
  * radius also grows to reach * (expected spacing of the values inserted so
- * far): the field stays exact where it decides, and the first values are
- * spread evenly however large the matrix.  tol = 0 keeps every
+ * far), so that the field is never zero in a gap and the first values are
+ * spread evenly however large the matrix.  Not much further, though: a
+ * field exact to several spacings makes every value go to the centre of
+ * the largest gap, and the values crystallise into a lattice (spectral
+ * peaks of 7 to 30 times the plateau at reach 3; about 2 at 0.7, where
+ * the thesis authors' matrix has 1.4 to 1.7).  tol = 0 keeps every
  * contribution (the full torus for every insertion, O(N^2)).
  */
 #ifndef FRS_FRDGEN_H
@@ -39,11 +46,12 @@ struct frdgen_params {
 	double tol;		/* neglect f < tol * f(0); 0: exact */
 	double reach;		/* radius >= reach * spacing; 0: off */
 	uint64_t seed;
+	uint32_t tie_cap;	/* ties larger than this are drawn by rejection */
 	const char *checkpoint;	/* resume from / save to this file, or NULL */
 	double checkpoint_every;	/* seconds between checkpoints */
 };
 
-/* Defaults: s = q = 1/2, p = 1/2, the default tolerance, reach 3. */
+/* Defaults: s = q = 1/2, p = 1/2, the default tolerance, reach 0.7. */
 void frdgen_defaults(struct frdgen_params *pr);
 /* Check a parameter set; the message names the offending parameter. */
 int frdgen_check(const struct frdgen_params *pr);
@@ -67,5 +75,8 @@ uint64_t frdgen_rank(const struct frdgen_params *pr, uint64_t step,
 /* The tie key of cell c at insertion step "step". */
 uint64_t frdgen_tiekey(const struct frdgen_params *pr, uint64_t step,
     uint32_t c);
+/* The j-th random cell drawn to break a large tie at step "step". */
+uint32_t frdgen_tiecell(const struct frdgen_params *pr, uint64_t step,
+    uint32_t j, uint64_t n);
 
 #endif

@@ -50,6 +50,17 @@ double frdq_spread(const struct frs_matrix *m, uint32_t c)
 int frdq_lowpass(const struct frs_matrix *m, double from, double to,
     double *ratio)
 {
+	double peak;
+	return frdq_spectrum(m, from, to, ratio, &peak);
+}
+
+#define NBINS 64
+
+int frdq_spectrum(const struct frs_matrix *m, double from, double to,
+    double *ratio, double *peak)
+{
+	double bin[NBINS] = { 0 };
+	size_t nbin[NBINS] = { 0 };
 	size_t w = m->w, h = m->h;
 	double *img, lo = 0.0, hi = 0.0, fp;
 	size_t nlo = 0, nhi = 0, dots = 0;
@@ -80,6 +91,12 @@ int frdq_lowpass(const struct frs_matrix *m, double from, double to,
 			double pw = (img[2 * (y * w + x)] * img[2 * (y * w + x)] +
 			    img[2 * (y * w + x) + 1] * img[2 * (y * w + x) + 1]) /
 			    (double)dots;
+			if (f >= 0.5 * fp && f < 3.0 * fp) {
+				size_t b = (size_t)((f - 0.5 * fp) / (2.5 * fp) * NBINS);
+				b = b < NBINS ? b : NBINS - 1;	/* rounding at 3 fp */
+				bin[b] += pw;
+				nbin[b]++;
+			}
 			if (f > 0.0 && f < 0.5 * fp) {
 				lo += pw;
 				nlo++;
@@ -92,5 +109,12 @@ int frdq_lowpass(const struct frs_matrix *m, double from, double to,
 	if (nlo == 0 || nhi == 0 || hi == 0.0)
 		return frs_fail("too few dots (%zu) for the spectrum", dots);
 	*ratio = (lo / (double)nlo) / (hi / (double)nhi);
+	/* The highest radial mean: about 1.5 for blue noise, far more for
+	 * the rings of a lattice. */
+	*peak = 0.0;
+	for (size_t b = 0; b < NBINS; b++)
+		if (nbin[b] >= 8 && bin[b] / (double)nbin[b] > *peak)
+			*peak = bin[b] / (double)nbin[b];
+	*peak /= hi / (double)nhi;
 	return 0;
 }

@@ -27,5 +27,10 @@ double frdq_spread(const struct frs_matrix *m, uint32_t c);
 /* -1 with frs_fail when the matrix is not 2-D with power-of-two sides. */
 int frdq_lowpass(const struct frs_matrix *m, double from, double to,
     double *ratio);
+/* The same, and the peak: the highest radially averaged power between 0.5
+ * and 3 times the principal frequency over the plateau mean.  Blue noise
+ * has a low, broad peak (about 1.5 to 2); a lattice has sharp rings. */
+int frdq_spectrum(const struct frs_matrix *m, double from, double to,
+    double *ratio, double *peak);
 
 #endif

@@ -26,7 +26,8 @@ enum {
 	FRS_STREAM_REF = 6,		/* reference samplers */
 	FRS_STREAM_HSW = 7,		/* hierarchical sample warping */
 	FRS_STREAM_SHAPES = 8,		/* discrepancy random shapes */
-	FRS_STREAM_SET = 9		/* per-set seeds of repeated runs */
+	FRS_STREAM_SET = 9,		/* per-set seeds of repeated runs */
+	FRS_STREAM_FRD_DRAW = 10	/* frd-gen cells drawn for large ties */
 };
 
 /* One Philox4x32-10 block. */

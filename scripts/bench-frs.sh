@@ -1,0 +1,62 @@
+#!/bin/sh
+# frs-sample: the analogue of thesis Table 6.2 and Fig. 6.13.  n = 2^0 ..
+# 2^24 samples from four 128^2 maps, S_M = 2048 (data/default.frd
+# prepared as a .frp), sigma 8, every implementation on one thread and on
+# all; the thresholding time reported by -v (output to /dev/null) and
+# the whole process.  BENCH_QUICK=1: the blob map, fewer counts.
+set -eu
+BUILD=${1:-build/bench}
+FRS=$BUILD/bin/frs-sample
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+TIME=/usr/bin/time
+ALL=$(nproc)
+
+"$BUILD/bin/frd-prep" -a all data/default.frd -o "$T/M.frp"
+"$BUILD/bin/imap" convert --equirect -s 128x128 data/sunset.exr "$T/sunset.exr" 2>/dev/null
+if [ -n "${BENCH_QUICK:-}" ]; then
+	MAPS="blob"
+	NS="0 16 24"
+else
+	MAPS="const blob ramp sunset"
+	NS="0 4 8 12 16 20 24"
+fi
+
+echo "frs-sample: seconds to threshold (-v) and whole process, S_M 2048, sigma 8"
+printf '%-7s %-6s %-7s %3s %10s %11s %9s %9s %9s\n' map log2n algo thr \
+    samples threshold_s Msamp/s process_s vs_naive
+for map in $MAPS; do
+	imp=$map
+	[ "$map" = sunset ] && imp=$T/sunset.exr
+	for e in $NS; do
+		n=$((1 << e))
+		naive=""
+		for a in naive stack level1 level2 sorted; do
+			# Naive visits every window element: 10 s at 2^24.
+			[ $a = naive ] && [ "$e" -gt 20 ] && continue
+			for j in 1 $ALL; do
+				$TIME -f "%e" -o "$T/t" "$FRS" -q -m "$T/M.frp" -i "$imp" \
+				    -n $n -a $a -j $j -v -o /dev/null 2>"$T/v"
+				line=$(grep 'samples (' "$T/v")
+				cnt=$(echo "$line" | awk '{ print $2 }')
+				th=$(echo "$line" | sed 's/.*thresholding \([0-9.]*\) s.*/\1/')
+				[ $a = naive ] && [ $j = 1 ] && naive=$th
+				awk -v m=$map -v e=$e -v a=$a -v j=$j -v c=$cnt -v t=$th \
+				    -v p="$(cat "$T/t")" -v nv="$naive" 'BEGIN {
+					r = (nv != "" && t > 0) ? sprintf("%.1f", nv / t) : "-"
+					rate = (t > 0) ? c / t / 1e6 : 0
+					printf "%-7s %-6s %-7s %3s %10d %11.6f %9.1f %9.2f %9s\n", m, e, a, j, c, t, rate, p, r }'
+				[ "$j" = "$ALL" ] && break
+			done
+		done
+	done
+done
+
+echo
+echo "Sorted, 2^24 samples from the blob map, one thread, against the thesis"
+"$FRS" -q -m "$T/M.frp" -i blob -n 16777216 -j 1 -v -o /dev/null 2>"$T/v"
+th=$(grep 'samples (' "$T/v" | sed 's/.*thresholding \([0-9.]*\) s.*/\1/')
+$TIME -f "%M" -o "$T/mem" "$FRS" -q -m "$T/M.frp" -i blob -n 16777216 -j 1 -o "$T/out.pts"
+awk -v t="$th" -v mem="$(cat "$T/mem")" -v out="$(wc -c <"$T/out.pts")" 'BEGIN {
+	printf "thresholding %.4f s (target 0.1 s); thesis 0.883 s on a Q6600: %.1fx\n", t, 0.883 / t
+	printf "peak memory %.0f MiB; the output is %.0f MiB, the matrix 16 MiB (target: at most output + 2 x matrix = %.0f MiB)\n", mem / 1024, out / 1048576, out / 1048576 + 32 }'
