@@ -117,6 +117,8 @@ int main(int argc, char **argv)
 	if ((check || strcmp(fmt, "frd") != 0) &&
 	    frd_check_permutation(&m, strcmp(in, "-") ? in : "<stdin>") < 0)
 		cli_die_lib();
+	if (nblocks > 0 && !sorted)
+		cli_usage_error("--blocks needs -a sorted or -a all");
 	if (sorted && nblocks == 0)
 		for (uint32_t b = 1; b <= 256 && b <= m.w && b <= m.h; b *= 2)
 			blocks[nblocks++] = b;

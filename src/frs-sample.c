@@ -249,6 +249,32 @@ fail:
 	cli_die_lib();
 }
 
+static void write_count(uint64_t count)
+{
+	struct outfile of;
+
+	if (outfile_open(&of, cli.out, 0) < 0)
+		cli_die_lib();
+	fprintf(of.fp, "%llu\n", (unsigned long long)count);
+	if (outfile_commit(&of) < 0)
+		cli_die_lib();
+}
+
+/* Refuse counts whose elements could not be stored (12 bytes each, and
+ * 16 per point written) before spending the time. */
+static void check_room(const struct opts *o)
+{
+	long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+	double need = 12.0 * 1.1 * (double)o->steps[o->nsteps - 1];
+
+	if (!o->count_only && pages > 0 && psize > 0 &&
+	    need > (double)pages * (double)psize)
+		cli_die("-n %llu: storing the samples needs %.0f GiB, this "
+		    "machine has %.0f GiB (--count-only counts them)",
+		    (unsigned long long)o->steps[o->nsteps - 1], need / (1 << 30),
+		    (double)pages * (double)psize / (1 << 30));
+}
+
 static int needs_minmap(enum frs_algo a)
 {
 	return a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2;
@@ -322,9 +348,17 @@ static void load_matrix(const struct opts *o, const struct frs_imap *map,
 		shape.w = w;
 		shape.h = h;
 		setup(o, map, &shape, s);
-		if (frp_read(frp, mat, prep, sorted_block(s)) < 0)
-			cli_die_lib();
-	} else {
+		if (frp_read(frp, mat, prep, sorted_block(s)) < 0) {
+			if (frp == o->matrix)
+				cli_die_lib();
+			/* A damaged .frp beside the matrix: use the matrix. */
+			frs_warn("%s; ignored", frs_errmsg());
+			frp = NULL;
+			if (frd_read(o->matrix, mat) < 0)
+				cli_die_lib();
+		}
+	}
+	if (frp == NULL) {
 		setup(o, map, mat, s);
 		memset(prep, 0, sizeof *prep);
 	}
@@ -353,6 +387,7 @@ int main(int argc, char **argv)
 
 	cli_init("frs-sample", usage);
 	parse_opts(argc, argv, &o);
+	check_room(&o);
 	if (o.matrix == NULL)
 		o.matrix = default_matrix();
 	if (imap_load(o.imp ? o.imp : "const", o.w, o.h, o.flags, &map) < 0)
@@ -370,7 +405,7 @@ int main(int argc, char **argv)
 		cli_die("%s", frs_errmsg());
 	t2 = progress_now();
 	if (o.count_only)
-		printf("%llu\n", (unsigned long long)r.count);
+		write_count(r.count);
 	else
 		write_points(&o, &s, &map, &r);
 	t3 = progress_now();

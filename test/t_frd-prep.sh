@@ -56,3 +56,18 @@ expect_fail "text with a word" 1 "not an integer" "$T/o.frd" frd-prep --import t
 expect_fail "unknown import" 2 "--import" "$T/o.frd" frd-prep --import jpeg "$T/g.frd" -o "$T/o.frd"
 expect_fail "unknown algorithm" 2 "-a" "$T/o.frp" frd-prep -a fast "$T/g.frd" -o "$T/o.frp"
 expect_fail "block too large" 1 "exceeds" "$T/o.frp" frd-prep -a sorted --blocks 128 "$T/g.frd" -o "$T/o.frp"
+
+# Damaged derived data (not covered by the checksum) are caught too.
+# (500 samples of blob at 128^2 need sorted blocks of 4)
+frd-prep -a sorted --blocks 4 "$T/g.frd" -o "$T/bad2.frp"
+size=$(wc -c <"$T/bad2.frp")
+printf '\377\377\377\177' | dd of="$T/bad2.frp" bs=1 seek=$((size - 8)) conv=notrunc 2>/dev/null
+expect_fail "damaged sorted list" 1 "damaged sorted list" "$T/o.pts" \
+    frs-sample -m "$T/bad2.frp" -i blob -n 500 -o "$T/o.pts"
+# A damaged .frp beside its matrix is skipped with a warning.
+cp "$T/g.frd" "$T/h.frd"
+cp "$T/bad2.frp" "$T/h.frp"
+frs-sample -m "$T/h.frd" -i blob -n 500 -T -o "$T/h.txt" 2>"$T/warn" &&
+    grep -q 'ignored' "$T/warn" && cmp -s "$T/h.txt" "$T/f1.txt" &&
+    ok "a damaged .frp beside the matrix is skipped" || nok "a damaged .frp beside the matrix is skipped"
+expect_fail "--blocks without sorted" 2 "--blocks needs" "$T/o.frd" frd-prep --blocks 8 "$T/g.frd" -o "$T/o.frd"

@@ -98,3 +98,8 @@ expect_fail "stack on a non-power-of-two matrix" 1 "power-of-two" "$T/o.pts" \
 check "naive on a non-power-of-two matrix" frs-sample -m "$T/odd.frd" -a naive -i blob -n 100 -o "$T/odd.pts"
 expect_fail "missing directory" 1 "cannot create" "$T/no/o.pts" frs-sample -m "$M" -n 10 -o "$T/no/o.pts"
 expect_fail "full disk" 1 "No space left" - frs-sample -m "$M" -n 10 -o /dev/full
+expect_fail "a count too large to store" 1 "--count-only" "$T/big.pts" \
+    frs-sample -m "$M" -i blob -n 1099511627776 -o "$T/big.pts"
+frs-sample -m "$M" -i blob -n 1000 --count-only -o "$T/count.txt" &&
+    [ "$(cat "$T/count.txt")" -gt 900 ] && ok "--count-only writes to -o" ||
+    nok "--count-only writes to -o"

@@ -142,6 +142,48 @@ static int read_levels(FILE *fp, const char *name, const struct frs_matrix *m,
 	return 0;
 }
 
+/* The derived data are not covered by the checksum: check that each
+ * sorted list holds its block's values, ascending, at their places. */
+static int check_sorted(const char *name, const struct frs_matrix *m,
+    const struct frs_prep *p)
+{
+	uint32_t b = p->block, bw = m->w / b;
+	uint64_t bb = (uint64_t)b * b;
+
+	for (size_t i = 0; i < m->n; i++) {
+		uint64_t blk = i / bb, k = p->sidx[i];
+		size_t cell;
+		if (k >= bb || (i % bb && p->sval[i] <= p->sval[i - 1]))
+			return frs_fail("%s: damaged sorted list of block %llu", name,
+			    (unsigned long long)blk);
+		cell = ((blk / bw) * b + k / b) * m->w + (blk % bw) * b + k % b;
+		if (m->v[cell] != p->sval[i])
+			return frs_fail("%s: damaged sorted list of block %llu", name,
+			    (unsigned long long)blk);
+	}
+	return 0;
+}
+
+/* Each minmap level must be the minimum of the one below. */
+static int check_levels(const char *name, const struct frs_matrix *m,
+    const struct frs_prep *p)
+{
+	for (unsigned l = 1; l < p->nlev; l++) {
+		uint32_t w = m->w >> l, h = m->h >> l, pw = m->w >> (l - 1);
+		const uint32_t *lo = p->lev[l - 1];
+		for (uint32_t y = 0; y < h; y++)
+			for (uint32_t x = 0; x < w; x++) {
+				const uint32_t *q = lo + (size_t)2 * y * pw + 2 * x;
+				uint32_t a = q[0] < q[1] ? q[0] : q[1];
+				uint32_t c = q[pw] < q[pw + 1] ? q[pw] : q[pw + 1];
+				if (p->lev[l][(size_t)y * w + x] != (a < c ? a : c))
+					return frs_fail("%s: damaged minmap level %u", name,
+					    l);
+			}
+	}
+	return 0;
+}
+
 static int read_sorted(FILE *fp, const char *name, const struct frs_matrix *m,
     struct frs_prep *p, uint32_t nblocks, uint32_t want)
 {
@@ -159,9 +201,10 @@ static int read_sorted(FILE *fp, const char *name, const struct frs_matrix *m,
 			continue;
 		}
 		p->block = size;
-		return read_u32s(fp, name, &p->sval, m->n, "sorted values") < 0 ||
-		    read_u32s(fp, name, &p->sidx, m->n, "sorted indices") < 0 ?
-		    -1 : 0;
+		if (read_u32s(fp, name, &p->sval, m->n, "sorted values") < 0 ||
+		    read_u32s(fp, name, &p->sidx, m->n, "sorted indices") < 0)
+			return -1;
+		return check_sorted(name, m, p);
 	}
 	return 0;
 }
@@ -193,7 +236,8 @@ int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
 	p->m = m;
 	p->lev[0] = m->v;
 	p->nlev = 1;
-	if ((flags & 1) && read_levels(fp, name, m, p) < 0)
+	if ((flags & 1) && (read_levels(fp, name, m, p) < 0 ||
+	    check_levels(name, m, p) < 0))
 		goto fail;
 	if ((flags & 2) && read_sorted(fp, name, m, p, nb, block) < 0)
 		goto fail;
