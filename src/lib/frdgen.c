@@ -656,18 +656,26 @@ static void add_force(struct gen *g, double r)
 
 /* ---- the rank query: the K-th smallest free cell ------------------ */
 
+/* Room for one more item in a growing array. */
+static int item_room(struct item **a, size_t n, size_t *cap)
+{
+	if (n == *cap) {
+		size_t ncap = *cap ? 2 * *cap : 256;
+		struct item *na = realloc(*a, ncap * sizeof *na);
+		if (na == NULL)
+			return frs_fail("out of memory in the rank query");
+		*a = na;
+		*cap = ncap;
+	}
+	return 0;
+}
+
 static int heap_push(struct gen *g, double v, int lev, uint32_t idx)
 {
 	size_t i;
 
-	if (g->nheap == g->hcap) {
-		size_t ncap = g->hcap ? 2 * g->hcap : 256;
-		struct item *nh = realloc(g->heap, ncap * sizeof *nh);
-		if (nh == NULL)
-			return frs_fail("out of memory in the rank query");
-		g->heap = nh;
-		g->hcap = ncap;
-	}
+	if (item_room(&g->heap, g->nheap, &g->hcap) < 0)
+		return -1;
 	i = g->nheap++;
 	while (i > 0 && g->heap[(i - 1) / 2].v > v) {
 		g->heap[i] = g->heap[(i - 1) / 2];
@@ -732,14 +740,8 @@ static int expand(struct gen *g, int lev, uint32_t idx)
 
 static int emit(struct gen *g, struct item it)
 {
-	if (g->nemit == g->ecap) {
-		size_t ncap = g->ecap ? 2 * g->ecap : 64;
-		struct item *ne = realloc(g->emit, ncap * sizeof *ne);
-		if (ne == NULL)
-			return frs_fail("out of memory in the rank query");
-		g->emit = ne;
-		g->ecap = ncap;
-	}
+	if (item_room(&g->emit, g->nemit, &g->ecap) < 0)
+		return -1;
 	g->emit[g->nemit++] = it;
 	return 0;
 }

@@ -56,15 +56,11 @@ int frd_import_raw32(const char *path, uint32_t w, uint32_t h, int rank,
 	const char *name;
 	unsigned char *buf;
 	size_t len;
-	FILE *fp = io_open_in(path, &name);
 	char params[128];
 	int rc;
 
 	memset(m, 0, sizeof *m);
-	if (fp == NULL)
-		return -1;
-	rc = io_slurp(fp, name, &buf, &len);
-	io_close_in(fp);
+	rc = io_slurp_path(path, &name, &buf, &len);
 	if (rc < 0)
 		return -1;
 	if (len == 0 || len % 4) {
@@ -139,17 +135,13 @@ int frd_import_text(const char *path, int rank, struct frs_matrix *m)
 	const char *name;
 	unsigned char *buf;
 	size_t len;
-	FILE *fp = io_open_in(path, &name);
 	uint32_t w = 0, h = 0;
 	char *s, *line, *save = NULL;
 	unsigned long ln = 0;
 	int rc;
 
 	memset(m, 0, sizeof *m);
-	if (fp == NULL)
-		return -1;
-	rc = io_slurp(fp, name, &buf, &len);
-	io_close_in(fp);
+	rc = io_slurp_path(path, &name, &buf, &len);
 	if (rc < 0)
 		return -1;
 	s = realloc(buf, len + 1);
@@ -210,15 +202,11 @@ int frd_import_png(const char *path, struct frs_matrix *m)
 	const char *name;
 	unsigned char *buf;
 	size_t len;
-	FILE *fp = io_open_in(path, &name);
 	struct frs_imap img;
 	int rc;
 
 	memset(m, 0, sizeof *m);
-	if (fp == NULL)
-		return -1;
-	rc = io_slurp(fp, name, &buf, &len);
-	io_close_in(fp);
+	rc = io_slurp_path(path, &name, &buf, &len);
 	if (rc < 0)
 		return -1;
 	rc = imap_read_png_mem(buf, len, name, 0, &img);

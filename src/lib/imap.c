@@ -231,15 +231,10 @@ static int load_file(const char *path, int flags, struct frs_imap *m)
 	const char *name;
 	unsigned char *buf = NULL;
 	size_t len = 0;
-	FILE *fp = io_open_in(path, &name);
-	int rc;
-
-	if (fp == NULL)
-		return -1;
 	/* Both decoders want random access, so buffer the whole input
 	 * (standard input included). */
-	rc = io_slurp(fp, name, &buf, &len);
-	io_close_in(fp);
+	int rc = io_slurp_path(path, &name, &buf, &len);
+
 	if (rc < 0)
 		return -1;
 	if (len == 0)

@@ -97,6 +97,19 @@ int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len)
 	return 0;
 }
 
+int io_slurp_path(const char *path, const char **name, unsigned char **buf,
+    size_t *len)
+{
+	FILE *fp = io_open_in(path, name);
+	int rc;
+
+	if (fp == NULL)
+		return -1;
+	rc = io_slurp(fp, *name, buf, len);
+	io_close_in(fp);
+	return rc;
+}
+
 uint32_t io_get_u32(const unsigned char *p)
 {
 	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |

@@ -20,6 +20,9 @@ int io_read_exact(FILE *fp, const char *name, void *buf, size_t n,
     const char *what);
 /* Read everything (for formats that need random access, e.g. EXR). */
 int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len);
+/* Open path ("-": standard input), read it whole, close it. */
+int io_slurp_path(const char *path, const char **name, unsigned char **buf,
+    size_t *len);
 
 uint32_t io_get_u32(const unsigned char *p);
 uint64_t io_get_u64(const unsigned char *p);

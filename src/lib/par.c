@@ -30,6 +30,19 @@ struct job {
 	atomic_int failed;
 };
 
+static void job_init(struct job *j, uint64_t n, uint64_t chunk,
+    int (*fn)(void *, uint64_t, uint64_t), void *ctx, struct progress *pr)
+{
+	j->n = n;
+	j->chunk = chunk;
+	j->fn = fn;
+	j->ctx = ctx;
+	j->pr = pr;
+	atomic_init(&j->next, 0);
+	atomic_init(&j->done, 0);
+	atomic_init(&j->failed, 0);
+}
+
 static void run(struct job *j, int main_thread)
 {
 	for (;;) {
@@ -71,14 +84,7 @@ int frs_parallel(uint64_t n, uint64_t chunk,
 		chunk = 1;
 	nchunks = (n + chunk - 1) / chunk;
 	nt = nchunks < (uint64_t)nthreads ? (int)nchunks : nthreads;
-	j.n = n;
-	j.chunk = chunk;
-	j.fn = fn;
-	j.ctx = ctx;
-	j.pr = pr;
-	atomic_init(&j.next, 0);
-	atomic_init(&j.done, 0);
-	atomic_init(&j.failed, 0);
+	job_init(&j, n, chunk, fn, ctx, pr);
 	tid = nt > 1 ? malloc((size_t)(nt - 1) * sizeof *tid) : NULL;
 	for (int t = 0; tid != NULL && t < nt - 1; t++)
 		if (pthread_create(&tid[t], NULL, worker, &j) == 0)
@@ -149,14 +155,7 @@ int frs_team_run(uint64_t n, uint64_t chunk,
 
 	if (chunk == 0)
 		chunk = 1;
-	j.n = n;
-	j.chunk = chunk;
-	j.fn = fn;
-	j.ctx = ctx;
-	j.pr = NULL;
-	atomic_init(&j.next, 0);
-	atomic_init(&j.done, 0);
-	atomic_init(&j.failed, 0);
+	job_init(&j, n, chunk, fn, ctx, NULL);
 	if (team.size == 0 || n <= chunk) {
 		run(&j, 1);
 		return atomic_load(&j.failed) ? -1 : 0;
