@@ -32,6 +32,7 @@ static const char usage[] =
     "                      inserted so far (default 0.7, 0 = off)\n"
     "      --force-s S     force f(r) = exp(-(r/S)^Q), default S = 0.5\n"
     "      --force-q Q     default Q = 0.5\n"
+
     "  -S, --seed N        random seed (default 1)\n"
     "  -j, --threads N     threads (default: all cores); same bytes for any N\n"
     "      --checkpoint F  resume from F if it holds a run with the same\n"
@@ -61,6 +62,7 @@ static const struct option longopts[] = {
 	{ "checkpoint", required_argument, NULL, OPT_CKPT },
 	{ "checkpoint-every", required_argument, NULL, OPT_CKPT_EVERY },
 	{ "quality", required_argument, NULL, OPT_QUALITY },
+
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
@@ -192,6 +194,7 @@ int main(int argc, char **argv)
 			break;
 		case OPT_QUALITY:
 			return quality(optarg);
+
 		case 'v':
 			verbose = 1;
 			break;

@@ -70,23 +70,17 @@ static void reference(const struct frdgen_params *pr, uint32_t *out)
 				    frdgen_tiekey(pr, step, i), i };
 		qsort(cs, nc, sizeof *cs, cand_cmp);
 		c = cs[k - 1].c;
-		{
-			/* A tie that, with the smaller cells, numbers more than
-			 * K + tie_cap: cells drawn until one is in it. */
-			uint64_t a = 0, g = 0;
-			double v = cs[k - 1].f;
-			for (size_t i = 0; i < nc; i++) {
-				a += cs[i].f < v;
-				g += cs[i].f == v;
-			}
-			if (a + g > k + pr->tie_cap)
-				for (uint32_t j = 0;; j++) {
-					uint32_t d = frdgen_tiecell(pr, step, j, n);
-					if (!taken[d] && f[d] == v) {
-						c = d;
-						break;
-					}
-				}
+		if (cs[0].f == 0.0) {
+			/* Cells no force has reached: the r-th of them in the
+			 * documented order. */
+			uint64_t z = 0, zr;
+			for (size_t i = 0; i < nc && cs[i].f == 0.0; i++)
+				z++;
+			zr = frdgen_zerorank(pr, step, z);
+			for (size_t i = 0; i < z; i++)
+				cs[i].key = frdgen_cellorder(pr, cs[i].c);
+			qsort(cs, z, sizeof *cs, cand_cmp);
+			c = cs[zr].c;
 		}
 		out[c] = (uint32_t)step;
 		taken[c] = 1;

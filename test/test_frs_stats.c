@@ -226,7 +226,8 @@ static void dynamic_range(void **state)
 
 /* Maps of one row or one column, and n = 1.  A one-pixel-wide window
  * reads one narrow strip of the matrix again and again, so one seed's
- * count strays by a few per cent; the mean over seeds must not. */
+ * count strays by several per cent; the mean over 64 seeds (window
+ * offsets) must stay within 2 per cent. */
 static void thin_maps(void **state)
 {
 	static const uint32_t sz[2][2] = { { 1, 4096 }, { 4096, 1 } };
@@ -238,7 +239,7 @@ static void thin_maps(void **state)
 		double avg = 0;
 		assert_int_equal(imap_load("ramp:from=1,to=3,angle=45", sz[k][0],
 		    sz[k][1], 0, &map), 0);
-		for (uint64_t seed = 1; seed <= 16; seed++) {
+		for (uint64_t seed = 1; seed <= 64; seed++) {
 			struct frs_setup s;
 			struct frs_result r, nv;
 			sample(&map, 2000, FRS_UNBIASED, seed, FRS_SORTED, &s, &r);
@@ -247,12 +248,12 @@ static void thin_maps(void **state)
 				assert_true(r.count == nv.count);
 				frs_result_free(&nv);
 			}
-			avg += (double)r.count / 16;
+			avg += (double)r.count / 64;
 			frs_result_free(&r);
 		}
 		print_message("%ux%u: %.1f samples on average\n", sz[k][0], sz[k][1],
 		    avg);
-		assert_true(fabs(avg / 2000 - 1) < 0.025);
+		assert_true(fabs(avg / 2000 - 1) < 0.02);
 		imap_free(&map);
 	}
 	for (uint64_t seed = 0; seed < 200; seed++) {

@@ -51,6 +51,10 @@ struct gen {
 	uint32_t *tlist;	/* tiles of the current window */
 	unsigned char *changed;	/* per entry of tlist: its minimum moved */
 	int32_t *ext;		/* x reach per window row */
+	uint32_t *zc;		/* per tile: cells of force exactly 0 */
+	uint32_t *zf;		/* what the Fenwick tree holds for each tile */
+	uint64_t *fen;		/* Fenwick tree of zf over the tiles */
+	size_t ntiles;
 	int nlev;
 	struct level lev[MAXLEV];
 	uint32_t *dirty[2];
@@ -79,7 +83,6 @@ void frdgen_defaults(struct frdgen_params *pr)
 	pr->reach = DEFAULT_REACH;
 	pr->seed = 1;
 	pr->checkpoint_every = 60.0;
-	pr->tie_cap = 4096;
 }
 
 int frdgen_check(const struct frdgen_params *pr)
@@ -161,12 +164,35 @@ uint64_t frdgen_tiekey(const struct frdgen_params *pr, uint64_t step,
 	return frs_rand64x(pr->seed, FRS_STREAM_FRD_TIE, step, c);
 }
 
-uint32_t frdgen_tiecell(const struct frdgen_params *pr, uint64_t step,
-    uint32_t j, uint64_t n)
+uint64_t frdgen_zerorank(const struct frdgen_params *pr, uint64_t step,
+    uint64_t z)
 {
-	/* 53 random bits scaled to [0, n): bias below 2^-21 for n < 2^32. */
-	uint64_t r = frs_rand64x(pr->seed, FRS_STREAM_FRD_DRAW, step, j) >> 11;
-	return (uint32_t)((double)r * 0x1p-53 * (double)n);
+	uint64_t r = (uint64_t)(frs_rand01(pr->seed, FRS_STREAM_FRD_DRAW, step) *
+	    (double)z);
+	return r < z ? r : z - 1;
+}
+
+static void tile_shape(unsigned dims, uint32_t t[3])
+{
+	/* Tile shapes measured fastest (16 x 8 beat 8x8, 32x4, 64x2 at
+	 * 512^2 and 1024^2): rows long enough for vector adds, few enough
+	 * rows for little loop overhead.  At most 256 cells (arg is a byte). */
+	t[0] = dims == 2 ? 16 : 8;
+	t[1] = dims == 2 ? 8 : 4;
+	t[2] = dims == 2 ? 1 : 4;
+}
+
+uint64_t frdgen_cellorder(const struct frdgen_params *pr, uint32_t c)
+{
+	uint32_t t[3], x = c % pr->w, y = c / pr->w % pr->h, z = c / pr->w / pr->h;
+	uint64_t ntx, nty, tile, local;
+
+	tile_shape(pr->dims, t);
+	ntx = (pr->w + t[0] - 1) / t[0];
+	nty = (pr->h + t[1] - 1) / t[1];
+	tile = ((uint64_t)(z / t[2]) * nty + y / t[1]) * ntx + x / t[0];
+	local = ((uint64_t)(z % t[2]) * t[1] + y % t[1]) * t[0] + x % t[0];
+	return tile << 16 | local;
 }
 
 /* ---- setup -------------------------------------------------------- */
@@ -177,12 +203,6 @@ static size_t fidx(const struct gen *g, uint32_t x, uint32_t y, uint32_t z)
 	    (x >> g->lx);
 	return t * g->ts + (((z & (g->tz - 1)) << g->ly | (y & (g->ty - 1))) <<
 	    g->lx | (x & (g->tx - 1)));
-}
-
-/* Where cell c (row-major) lives in the tiled field. */
-static size_t cell_index(const struct gen *g, uint32_t c)
-{
-	return fidx(g, c % g->w, c / g->w % g->h, c / g->w / g->h);
 }
 
 static int make_table(struct gen *g)
@@ -235,12 +255,16 @@ static int make_levels(struct gen *g)
 	g->changed = malloc((size_t)g->ntx * g->nty * g->ntz);
 	g->ext = malloc((size_t)(2 * g->hh + 1) * (2 * g->hd + 1) *
 	    sizeof *g->ext);
+	g->ntiles = (size_t)g->ntx * g->nty * g->ntz;
+	g->zc = calloc(g->ntiles, sizeof *g->zc);
+	g->zf = calloc(g->ntiles, sizeof *g->zf);
+	g->fen = calloc(g->ntiles + 1, sizeof *g->fen);
 	g->ax[0] = malloc(g->ntx * sizeof(uint32_t));
 	g->ax[1] = malloc(g->nty * sizeof(uint32_t));
 	g->ax[2] = malloc(g->ntz * sizeof(uint32_t));
 	if (g->dirty[0] == NULL || g->dirty[1] == NULL || !g->lev[0].arg ||
 	    !g->tlist || !g->changed || !g->ax[0] || !g->ax[1] || !g->ax[2] ||
-	    !g->ext)
+	    !g->ext || !g->zc || !g->zf || !g->fen)
 		return frs_fail("out of memory for the min-pyramid");
 	return 0;
 }
@@ -261,6 +285,9 @@ static void gen_free(struct gen *g)
 	free(g->tlist);
 	free(g->changed);
 	free(g->ext);
+	free(g->zc);
+	free(g->zf);
+	free(g->fen);
 	free(g->heap);
 	free(g->emit);
 }
@@ -304,16 +331,12 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
 	g->rtol = frdgen_radius(pr);
 	g->rmax = sqrt((double)g->hw * g->hw + (double)g->hh * g->hh +
 	    (double)g->hd * g->hd);
-	/* Tile shapes measured fastest (16 x 8 beat 8x8, 32x4, 64x2 at
-	 * 512^2 and 1024^2): rows long enough for vector adds, few enough
-	 * rows for little loop overhead.  At most 256 cells (arg is a byte). */
-	if (pr->dims == 2) {
-		g->tx = 16;
-		g->ty = 8;
-		g->tz = 1;
-	} else {
-		g->tx = 8;
-		g->ty = g->tz = 4;
+	{
+		uint32_t t[3];
+		tile_shape(pr->dims, t);
+		g->tx = t[0];
+		g->ty = t[1];
+		g->tz = t[2];
 	}
 	g->lx = log2u(g->tx);
 	g->ly = log2u(g->ty);
@@ -362,8 +385,54 @@ static double block_min(const double *b, size_t n, unsigned char *arg)
 
 static double tile_rescan(struct gen *g, size_t t)
 {
-	return g->lev[0].min[t] = block_min(g->field + t * g->ts, g->ts,
-	    &g->lev[0].arg[t]);
+	const double *b = g->field + t * g->ts;
+	double m = block_min(b, g->ts, &g->lev[0].arg[t]);
+	uint32_t z = 0;
+
+	if (m == 0.0)
+		for (size_t i = 0; i < g->ts; i++)
+			z += b[i] == 0.0;
+	g->zc[t] = z;
+	return g->lev[0].min[t] = m;
+}
+
+/* ---- zero cells: counts per tile in a Fenwick tree ----------------- */
+
+static void fen_add(struct gen *g, size_t t, int64_t d)
+{
+	for (size_t i = t + 1; i <= g->ntiles; i += i & (~i + 1))
+		g->fen[i] = (uint64_t)((int64_t)g->fen[i] + d);
+}
+
+static void fen_sync(struct gen *g, size_t t)
+{
+	if (g->zc[t] != g->zf[t]) {
+		fen_add(g, t, (int64_t)g->zc[t] - (int64_t)g->zf[t]);
+		g->zf[t] = g->zc[t];
+	}
+}
+
+static uint64_t fen_total(const struct gen *g)
+{
+	uint64_t s = 0;
+	for (size_t i = g->ntiles; i > 0; i -= i & (~i + 1))
+		s += g->fen[i];
+	return s;
+}
+
+/* The tile holding zero number r (0-based); r becomes its rank inside. */
+static size_t fen_find(const struct gen *g, uint64_t *r)
+{
+	size_t pos = 0, step = 1;
+
+	while (step * 2 <= g->ntiles)
+		step *= 2;
+	for (; step > 0; step /= 2)
+		if (pos + step <= g->ntiles && g->fen[pos + step] <= *r) {
+			pos += step;
+			*r -= g->fen[pos];
+		}
+	return pos;
 }
 
 static double node_min(const struct gen *g, int l, uint32_t x, uint32_t y,
@@ -394,6 +463,8 @@ static void rebuild_all(struct gen *g)
 {
 	frs_parallel((uint64_t)g->ntx * g->nty * g->ntz, 256, tiles_task, g,
 	    NULL);
+	for (size_t t = 0; t < g->ntiles; t++)
+		fen_sync(g, t);
 	for (int l = 1; l < g->nlev; l++) {
 		struct level *v = &g->lev[l];
 		for (uint32_t z = 0; z < v->nz; z++)
@@ -597,7 +668,8 @@ static int add_tile(struct gen *g, const struct window *wd, uint32_t t)
 	ax = toff(x0 + (a & (g->tx - 1)), g->cx, g->w);
 	ay = toff(y0 + (a >> g->lx & (g->ty - 1)), g->cy, g->h);
 	az = toff(z0 + (a >> (g->lx + g->ly)), g->cz, g->d);
-	if ((double)(ax * ax + ay * ay + az * az) > wd->r2 && blk[a] == old)
+	if ((double)(ax * ax + ay * ay + az * az) > wd->r2 && blk[a] == old &&
+	    old != 0.0)	/* zero counts must stay exact */
 		return 0;
 	return tile_rescan(g, t) != old;
 }
@@ -648,9 +720,11 @@ static void add_force(struct gen *g, double r)
 			g->changed[i] = (unsigned char)add_tile(g, &wd, g->tlist[i]);
 	}
 	g->ndirty[0] = 0;
-	for (size_t i = 0; i < nt; i++)
+	for (size_t i = 0; i < nt; i++) {
+		fen_sync(g, g->tlist[i]);
 		if (g->changed[i])
 			push_dirty(g, 0, 0, g->tlist[i]);
+	}
 	update_levels(g);
 }
 
@@ -773,10 +847,35 @@ static int pick_in_group(struct gen *g, size_t a, size_t rank, uint32_t *c)
 }
 
 /* The K-th smallest free cell in the order (force, tie key). */
+/* The r-th zero cell of the matrix, in the order of frdgen_cellorder. */
+static uint32_t zero_cell(const struct gen *g, uint64_t r)
+{
+	size_t t = fen_find(g, &r);
+	const double *b = g->field + t * g->ts;
+	uint32_t tx = (uint32_t)(t % g->ntx), ty = (uint32_t)(t / g->ntx % g->nty);
+	uint32_t tz = (uint32_t)(t / g->ntx / g->nty);
+
+	for (size_t i = 0; i < g->ts; i++)
+		if (b[i] == 0.0 && r-- == 0) {
+			uint32_t x = tx * g->tx + (uint32_t)(i & (g->tx - 1));
+			uint32_t y = ty * g->ty + (uint32_t)(i >> g->lx & (g->ty - 1));
+			uint32_t z = tz * g->tz + (uint32_t)(i >> (g->lx + g->ly));
+			return (z * g->h + y) * g->w + x;
+		}
+	return 0;	/* not reached: the counts are exact */
+}
+
 static int select_cell(struct gen *g, uint64_t k, uint32_t *c)
 {
 	double v;
 	size_t a;
+
+	/* Cells no force has reached: one of them, uniformly. */
+	if (g->lev[g->nlev - 1].min[0] == 0.0) {
+		uint64_t z = fen_total(g);
+		*c = zero_cell(g, frdgen_zerorank(g->pr, g->step, z));
+		return 0;
+	}
 
 	g->nheap = g->nemit = 0;
 	if (heap_push(g, g->lev[g->nlev - 1].min[0], g->nlev - 1, 0) < 0)
@@ -784,8 +883,7 @@ static int select_cell(struct gen *g, uint64_t k, uint32_t *c)
 	/* Best-first: cells come out in nondecreasing force. */
 	while (g->nheap > 0) {
 		struct item it;
-		if (g->nemit >= k && (g->heap[0].v > g->emit[k - 1].v ||
-		    g->nemit >= k + g->pr->tie_cap))
+		if (g->nemit >= k && g->heap[0].v > g->emit[k - 1].v)
 			break;
 		it = heap_pop(g);
 		if ((it.lev < 0 ? emit(g, it) : expand(g, it.lev, it.idx)) < 0)
@@ -802,14 +900,7 @@ static int select_cell(struct gen *g, uint64_t k, uint32_t *c)
 			g->nemit--;
 		return pick_in_group(g, a, k - 1 - a, c);
 	}
-	/* A tie too large to gather: draw cells until one is in it. */
-	for (uint32_t j = 0;; j++) {
-		uint32_t cell = frdgen_tiecell(g->pr, g->step, j, g->n);
-		if (g->field[cell_index(g, cell)] == v) {
-			*c = cell;
-			return 0;
-		}
-	}
+	return frs_fail("internal error: tie at %g not gathered", v);
 }
 
 /* ---- checkpoints -------------------------------------------------- */

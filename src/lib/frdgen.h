@@ -11,10 +11,10 @@
  * cell with K ~ Geometric(p) (truncated to the free count), which needs
  * only the few smallest cells: a min-pyramid over tiles of cells finds
  * them.  Ties in the force (exact equality) are broken by a random key per
- * (insertion, cell); a tie of more than tie_cap cells (the zero field far
- * from every value early on) is broken by drawing random cells,
- * frdgen_tiecell(step, 0), (step, 1), ..., until one is in the tie: the
- * same law (uniform over the tie), in time N / (tie size) instead of N.  Every random number is a function of (seed, step),
+ * (insertion, cell).  Cells that no force has reached yet hold exactly 0,
+ * and early on they are most of the matrix: while there are any, the value
+ * goes to one of them drawn uniformly (frdgen_zerorank), the r-th in the
+ * order of frdgen_cellorder, found through per-tile counts in O(log N).  Every random number is a function of (seed, step),
  * and every cell gets one double add per insertion, in insertion order, so
  * the result is the same for any thread count.
  *
@@ -46,7 +46,6 @@ struct frdgen_params {
 	double tol;		/* neglect f < tol * f(0); 0: exact */
 	double reach;		/* radius >= reach * spacing; 0: off */
 	uint64_t seed;
-	uint32_t tie_cap;	/* ties larger than this are drawn by rejection */
 	const char *checkpoint;	/* resume from / save to this file, or NULL */
 	double checkpoint_every;	/* seconds between checkpoints */
 };
@@ -75,8 +74,12 @@ uint64_t frdgen_rank(const struct frdgen_params *pr, uint64_t step,
 /* The tie key of cell c at insertion step "step". */
 uint64_t frdgen_tiekey(const struct frdgen_params *pr, uint64_t step,
     uint32_t c);
-/* The j-th random cell drawn to break a large tie at step "step". */
-uint32_t frdgen_tiecell(const struct frdgen_params *pr, uint64_t step,
-    uint32_t j, uint64_t n);
+/* Which of z zero-force cells step "step" takes (0 .. z-1). */
+uint64_t frdgen_zerorank(const struct frdgen_params *pr, uint64_t step,
+    uint64_t z);
+/* The order in which zero cells are counted: tile by tile (tiles of
+ * 16 x 8 cells in 2-D, 8 x 4 x 4 in 3-D, in row-major order of tiles),
+ * row-major inside a tile.  Returns the sort key of cell c. */
+uint64_t frdgen_cellorder(const struct frdgen_params *pr, uint32_t c);
 
 #endif
