@@ -1,0 +1,223 @@
+/*
+ * hsw-sample: Hierarchical Sample Warping of a point set by an importance
+ * map (Clarberg et al. 2005), the reference FRS is compared with.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "hsw.h"
+#include "imap.h"
+#include "outfile.h"
+#include "par.h"
+#include "progress.h"
+#include "ptsio.h"
+
+static const char usage[] =
+    "usage: hsw-sample -i IMPORTANCE -n COUNT [--input SET|FILE] [--pdf]\n"
+    "                  [-s WxH] [-S SEED] [-j N] [-T] [-v] [-o FILE]\n"
+    "\n"
+    "  -i, --importance M   map: PNG, OpenEXR or a spec such as blob\n"
+    "  -n, --count N        points to make (exactly; with --input FILE at\n"
+    "                       most the file's count, default all of it)\n"
+    "      --input SET      points to warp: random, regular, jittered,\n"
+    "                       halton (default), hammersley, or a .pts FILE\n"
+    "                       (its first two coordinates)\n"
+    "      --pdf            add a column: I / mean I of each point's pixel\n"
+    "  -s, --size WxH       size at which procedural maps are evaluated\n"
+    "                       (default 128x128), or files resampled\n"
+    "  -S, --seed N         seed of random and jittered (default 1)\n"
+    "  -j, --threads N      threads (default all); same points for any N\n"
+    "  -T, --text           text output\n"
+    "  -v, --verbose        setup and warping time on standard error\n"
+    "  -o, --output FILE    output (default standard output)\n"
+    "  -q, --quiet          no warnings\n"
+    "  -h, --help           this help;  --version  the version\n";
+
+enum { OPT_INPUT = OPT_FIRST_PRIVATE, OPT_PDF };
+
+static const struct option longopts[] = {
+	{ "count", required_argument, NULL, 'n' },
+	{ "importance", required_argument, NULL, 'i' },
+	{ "size", required_argument, NULL, 's' },
+	{ "input", required_argument, NULL, OPT_INPUT },
+	{ "pdf", no_argument, NULL, OPT_PDF },
+	{ "verbose", no_argument, NULL, 'v' },
+	CLI_COMMON_LONGOPTS,
+	{ NULL, 0, NULL, 0 }
+};
+
+struct opts {
+	const char *imp, *file;
+	int input;		/* enum hsw_input, or -1 for file */
+	uint64_t n;
+	int have_n, pdf, verbose;
+	uint32_t w, h;
+};
+
+static void parse_opts(int argc, char **argv, struct opts *o)
+{
+	int c;
+
+	while ((c = getopt_long(argc, argv, "n:i:s:v" CLI_COMMON_SHORTOPTS,
+	    longopts, NULL)) != -1) {
+		switch (c) {
+		case 'n':
+			o->n = cli_u64("-n", optarg, 1, (uint64_t)1 << 36);
+			o->have_n = 1;
+			break;
+		case 'i': o->imp = optarg; break;
+		case 's':
+			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->w, &o->h);
+			break;
+		case OPT_INPUT:
+			o->input = hsw_input_parse(optarg);
+			o->file = NULL;
+			if (o->input >= 0)
+				break;
+			/* A file: a path with '/' or '.', "-", or one that
+			 * exists; any other word is a misspelt set. */
+			if (strchr(optarg, '/') || strchr(optarg, '.') ||
+			    strcmp(optarg, "-") == 0 || access(optarg, F_OK) == 0)
+				o->file = optarg;
+			else
+				cli_usage_error("--input: '%s' is not random, regular, "
+				    "jittered, halton, hammersley or a file", optarg);
+			break;
+		case OPT_PDF: o->pdf = 1; break;
+		case 'v': o->verbose = 1; break;
+		default:
+			if (!cli_common_opt(c, optarg))
+				cli_usage(2);
+		}
+	}
+	if (optind != argc)
+		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	if (o->imp == NULL)
+		cli_usage_error("-i IMPORTANCE is required");
+	if (!o->have_n && o->file == NULL)
+		cli_usage_error("-n COUNT is required");
+}
+
+/* The input set: 2n doubles. */
+static double *make_input(struct opts *o)
+{
+	double *pts;
+
+	if (o->file != NULL) {
+		struct frs_points p;
+		if (pts_read(o->file, &p) < 0)
+			cli_die_lib();
+		if (p.dims < 2) {
+			pts_free(&p);
+			cli_die("%s: points have %u coordinate, need 2", o->file,
+			    p.dims);
+		}
+		if (!o->have_n)
+			o->n = p.n;
+		if (o->n == 0 || p.n < o->n) {
+			size_t have = p.n;
+			pts_free(&p);
+			cli_die("%s: %zu points, need %llu", o->file, have,
+			    (unsigned long long)(o->n ? o->n : 1));
+		}
+		pts = malloc((size_t)o->n * 2 * sizeof *pts);
+		if (pts == NULL)
+			cli_die("out of memory");
+		for (uint64_t i = 0; i < o->n; i++) {
+			const double *r = p.x + i * (p.dims + p.extra);
+			if (!(r[0] >= 0 && r[0] < 1 && r[1] >= 0 && r[1] < 1)) {
+				pts_free(&p);
+				free(pts);
+				cli_die("%s: point %llu is outside [0,1)^2", o->file,
+				    (unsigned long long)i + 1);
+			}
+			pts[2 * i] = r[0];
+			pts[2 * i + 1] = r[1];
+		}
+		pts_free(&p);
+		return pts;
+	}
+	if (o->n > SIZE_MAX / 16)
+		cli_die("-n %llu: too many points", (unsigned long long)o->n);
+	pts = malloc((size_t)o->n * 2 * sizeof *pts);
+	if (pts == NULL)
+		cli_die("-n %llu: out of memory", (unsigned long long)o->n);
+	hsw_input_make((enum hsw_input)o->input, o->n, cli.seed, pts);
+	return pts;
+}
+
+static void write_points(const struct opts *o, const struct hsw_tree *t,
+    const struct frs_imap *map, const double *pts)
+{
+	struct outfile of;
+	struct pts_writer w;
+	double mean = t->total / ((double)map->w * (double)map->h);
+
+	if (outfile_open(&of, cli.out, !cli.text) < 0)
+		cli_die_lib();
+	if (pts_writer_begin(&w, of.fp, of.name, 2, (unsigned)o->pdf, o->n,
+	    cli.text) < 0)
+		goto fail;
+	for (uint64_t i = 0; i < o->n; i++) {
+		double rec[3] = { pts[2 * i], pts[2 * i + 1], 0 };
+		if (o->pdf) {
+			uint32_t px = (uint32_t)(rec[0] * map->w);
+			uint32_t py = (uint32_t)(rec[1] * map->h);
+			rec[2] = map->v[(uint64_t)py * map->w + px] / mean;
+		}
+		if (pts_writer_put(&w, rec) < 0)
+			goto fail;
+	}
+	if (pts_writer_end(&w) < 0)
+		goto fail;
+	if (outfile_commit(&of) < 0)
+		cli_die_lib();
+	return;
+fail:
+	outfile_abort(&of);
+	cli_die_lib();
+}
+
+int main(int argc, char **argv)
+{
+	static const char *const names[] = { "random", "regular", "jittered",
+	    "halton", "hammersley" };
+	struct opts o = { NULL, NULL, HSW_HALTON, 0, 0, 0, 0, 0, 0 };
+	struct frs_imap map;
+	struct hsw_tree t;
+	double *pts, t0, t1, t2, t3;
+
+	cli_init("hsw-sample", usage);
+	parse_opts(argc, argv, &o);
+	if (imap_load(o.imp, o.w, o.h, 0, &map) < 0)
+		cli_die_lib();
+	t0 = progress_now();
+	if (hsw_build(&t, &map) < 0)
+		cli_die("%s: %s", o.imp, frs_errmsg());
+	pts = make_input(&o);
+	t1 = progress_now();
+	if (hsw_warp_points(&t, pts, pts, o.n) < 0)
+		cli_die_lib();
+	t2 = progress_now();
+	write_points(&o, &t, &map, pts);
+	t3 = progress_now();
+	if (o.verbose) {
+		fprintf(stderr, "hsw-sample: map %ux%u padded to %ux%u "
+		    "(%u levels), mean %.6g; input %s, %llu points, %d "
+		    "threads\n", map.w, map.h, t.size, t.size, t.levels,
+		    t.total / ((double)map.w * (double)map.h),
+		    o.file ? o.file : names[o.input], (unsigned long long)o.n,
+		    frs_threads());
+		fprintf(stderr, "hsw-sample: setup %.6f s, warping %.6f s, "
+		    "output %.6f s\n", t1 - t0, t2 - t1, t3 - t2);
+	}
+	free(pts);
+	hsw_free(&t);
+	imap_free(&map);
+	return 0;
+}

@@ -1,0 +1,282 @@
+/*
+ * Reference point sets: random, regular, jittered, Halton, Hammersley,
+ * Owen-scrambled Sobol' and dart throwing.  See refsamp.h.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "refsamp.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "err.h"
+#include "rng.h"
+
+static const char *const names[] = { "random", "regular", "jittered",
+    "halton", "hammersley", "sobol", "dart" };
+
+int refsamp_parse(const char *name, enum refsamp_kind *k)
+{
+	for (unsigned i = 0; i < sizeof names / sizeof names[0]; i++)
+		if (strcmp(name, names[i]) == 0) {
+			*k = (enum refsamp_kind)i;
+			return 0;
+		}
+	return frs_fail("unknown kind '%s' (random, regular, jittered, halton, "
+	    "hammersley, sobol or dart)", name);
+}
+
+const char *refsamp_name(enum refsamp_kind k)
+{
+	return (unsigned)k < sizeof names / sizeof names[0] ? names[k] : "?";
+}
+
+uint64_t refsamp_grid_side(uint64_t n)
+{
+	uint64_t k = (uint64_t)llround(sqrt((double)n));
+
+	/* Exact rounding of sqrt(n) for large n. */
+	while (k > 1 && (2 * k - 1) * (2 * k - 1) > 4 * n)
+		k--;
+	while ((2 * k + 1) * (2 * k + 1) <= 4 * n)
+		k++;
+	return k < 1 ? 1 : k;
+}
+
+uint64_t refsamp_count(enum refsamp_kind k, uint64_t n)
+{
+	if (k == REFSAMP_REGULAR || k == REFSAMP_JITTERED) {
+		uint64_t s = refsamp_grid_side(n);
+		return s * s;
+	}
+	return n;
+}
+
+double refsamp_dart_radius(uint64_t n)
+{
+	return 0.7 * sqrt(2.0 / (sqrt(3.0) * (double)n));
+}
+
+double refsamp_radical_inverse(uint64_t i, unsigned b)
+{
+	uint64_t num = 0, den = 1;
+
+	/* Digits reversed as an integer over b^m: one rounding only, while
+	 * b^m fits; past that fall back to the sum. */
+	while (i > 0 && den <= UINT64_MAX / b / b) {
+		num = num * b + i % b;
+		den *= b;
+		i /= b;
+	}
+	if (i == 0)
+		return (double)num / (double)den;
+	{
+		double v = 0, f = 1.0 / (double)den, inv = 1.0 / b;
+		double r = (double)num / (double)den;
+		while (i > 0) {
+			f *= inv;
+			v += (double)(i % b) * f;
+			i /= b;
+		}
+		r += v;
+		return r < 1.0 ? r : nextafter(1.0, 0.0);
+	}
+}
+
+static uint32_t reverse32(uint32_t x)
+{
+	x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+	x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+	x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+	x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+	return (x >> 16) | (x << 16);
+}
+
+/* Laine and Karras (2011) hash permutation as refined by Burley (2020):
+ * on bit-reversed values each bit depends only on the bits below it, so
+ * reversed back it is a nested uniform (Owen) scramble. */
+static uint32_t owen_scramble(uint32_t x, uint32_t key)
+{
+	x = reverse32(x);
+	x += key;
+	x ^= x * 0x6c50b47cu;
+	x ^= x * 0xb82f1e52u;
+	x ^= x * 0xc7afe638u;
+	x ^= x * 0x8d22f6e6u;
+	return reverse32(x);
+}
+
+void refsamp_sobol32(uint32_t i, uint32_t key_x, uint32_t key_y,
+    uint32_t out[2])
+{
+	uint32_t g = i ^ (i >> 1), x = 0, y = 0, v = 0x80000000u;
+
+	/* Dimension 1: van der Corput; dimension 2: primitive polynomial
+	 * x + 1, v_1 = 1/2, v_k = v_{k-1} ^ (v_{k-1} >> 1). */
+	for (unsigned k = 0; k < 32; k++) {
+		if (g >> k & 1) {
+			x ^= 0x80000000u >> k;
+			y ^= v;
+		}
+		v ^= v >> 1;
+	}
+	if (key_x || key_y) {
+		x = owen_scramble(x, key_x);
+		y = owen_scramble(y, key_y);
+	}
+	out[0] = x;
+	out[1] = y;
+}
+
+/* A Cranley-Patterson shift from the seed, (0, 0) for seed 0. */
+static void seed_shift(uint64_t seed, double u[2])
+{
+	u[0] = u[1] = 0;
+	if (seed == 0)
+		return;
+	u[0] = (double)(frs_rand64x(seed, FRS_STREAM_REF, 0, 1) >> 11) *
+	    0x1p-53;
+	u[1] = (double)(frs_rand64x(seed, FRS_STREAM_REF, 1, 1) >> 11) *
+	    0x1p-53;
+}
+
+static double wrap(double v)
+{
+	if (v >= 1.0)
+		v -= 1.0;
+	return v < 1.0 ? v : 0.0;
+}
+
+static double below1(double v)
+{
+	return v < 1.0 ? v : nextafter(1.0, 0.0);
+}
+
+static int gen_dart(uint64_t n, uint64_t seed, uint64_t max_failures,
+    double *xy, uint64_t *placed)
+{
+	double r = refsamp_dart_radius(n), r2 = r * r;
+	uint64_t g = (uint64_t)ceil(sqrt(2.0) / r), got = 0, fails = 0, t = 0;
+	int64_t *cell;
+	int reach = 2, all;
+
+	if (g < 1)
+		g = 1;
+	/* Cells of side 1/g <= r / sqrt 2 hold one point at most. */
+	while (1.0 / (double)g > r / sqrt(2.0))
+		g++;
+	if (g > ((uint64_t)1 << 31) ||
+	    (cell = malloc(g * g * sizeof *cell)) == NULL)
+		return frs_fail("dart throwing: no memory for %llu cells",
+		    (unsigned long long)(g * g));
+	for (uint64_t c = 0; c < g * g; c++)
+		cell[c] = -1;
+	all = g < 2 * (uint64_t)reach + 1;
+	while (got < n && fails < max_failures) {
+		double x = frs_rand01(seed, FRS_STREAM_REF, 2 * t);
+		double y = frs_rand01(seed, FRS_STREAM_REF, 2 * t + 1);
+		int64_t cx = (int64_t)(x * (double)g), cy = (int64_t)(y * (double)g);
+		int64_t lo = all ? 0 : -reach, hi = all ? (int64_t)g - 1 : reach;
+		int ok = 1;
+
+		t++;
+		if (cx >= (int64_t)g)
+			cx = (int64_t)g - 1;
+		if (cy >= (int64_t)g)
+			cy = (int64_t)g - 1;
+		for (int64_t dy = lo; ok && dy <= hi; dy++)
+			for (int64_t dx = lo; ok && dx <= hi; dx++) {
+				int64_t ix = all ? dx : (cx + dx + (int64_t)g) %
+				    (int64_t)g;
+				int64_t iy = all ? dy : (cy + dy + (int64_t)g) %
+				    (int64_t)g;
+				int64_t p = cell[(uint64_t)iy * g + (uint64_t)ix];
+				double ddx, ddy;
+				if (p < 0)
+					continue;
+				ddx = fabs(xy[2 * p] - x);
+				ddy = fabs(xy[2 * p + 1] - y);
+				if (ddx > 0.5)
+					ddx = 1.0 - ddx;
+				if (ddy > 0.5)
+					ddy = 1.0 - ddy;
+				if (ddx * ddx + ddy * ddy < r2)
+					ok = 0;
+			}
+		if (!ok) {
+			fails++;
+			continue;
+		}
+		fails = 0;
+		cell[(uint64_t)cy * g + (uint64_t)cx] = (int64_t)got;
+		xy[2 * got] = x;
+		xy[2 * got + 1] = y;
+		got++;
+	}
+	free(cell);
+	*placed = got;
+	return 0;
+}
+
+int refsamp_gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
+    uint64_t max_failures, double *xy, uint64_t *placed)
+{
+	double u[2];
+	uint64_t s;
+
+	if (n < 1 || n > REFSAMP_MAX_N)
+		return frs_fail("count %llu is not in 1 to %llu",
+		    (unsigned long long)n, (unsigned long long)REFSAMP_MAX_N);
+	*placed = refsamp_count(k, n);
+	seed_shift(seed, u);
+	switch (k) {
+	case REFSAMP_RANDOM:
+		for (uint64_t i = 0; i < n; i++) {
+			xy[2 * i] = frs_rand01(seed, FRS_STREAM_REF, 2 * i);
+			xy[2 * i + 1] = frs_rand01(seed, FRS_STREAM_REF, 2 * i + 1);
+		}
+		return 0;
+	case REFSAMP_REGULAR:
+	case REFSAMP_JITTERED:
+		s = refsamp_grid_side(n);
+		for (uint64_t i = 0; i < s * s; i++) {
+			double jx = 0.5, jy = 0.5;
+			if (k == REFSAMP_JITTERED) {
+				jx = frs_rand01(seed, FRS_STREAM_REF, 2 * i);
+				jy = frs_rand01(seed, FRS_STREAM_REF, 2 * i + 1);
+			}
+			xy[2 * i] = below1(((double)(i % s) + jx) / (double)s);
+			xy[2 * i + 1] = below1(((double)(i / s) + jy) / (double)s);
+		}
+		return 0;
+	case REFSAMP_HALTON:
+		for (uint64_t i = 0; i < n; i++) {
+			xy[2 * i] = wrap(refsamp_radical_inverse(i + 1, 2) + u[0]);
+			xy[2 * i + 1] = wrap(refsamp_radical_inverse(i + 1, 3) +
+			    u[1]);
+		}
+		return 0;
+	case REFSAMP_HAMMERSLEY:
+		for (uint64_t i = 0; i < n; i++) {
+			xy[2 * i] = wrap(((double)i + 0.5) / (double)n + u[0]);
+			xy[2 * i + 1] = wrap(refsamp_radical_inverse(i, 2) + u[1]);
+		}
+		return 0;
+	case REFSAMP_SOBOL: {
+		uint32_t kx = 0, ky = 0, p[2];
+		if (seed != 0) {
+			kx = (uint32_t)frs_rand64x(seed, FRS_STREAM_REF, 0, 2);
+			ky = (uint32_t)frs_rand64x(seed, FRS_STREAM_REF, 1, 2);
+		}
+		for (uint64_t i = 0; i < n; i++) {
+			refsamp_sobol32((uint32_t)i, kx, ky, p);
+			xy[2 * i] = (double)p[0] * 0x1p-32;
+			xy[2 * i + 1] = (double)p[1] * 0x1p-32;
+		}
+		return 0;
+	}
+	case REFSAMP_DART:
+		return gen_dart(n, seed, max_failures, xy, placed);
+	}
+	return frs_fail("unknown kind %d", (int)k);
+}

@@ -1,0 +1,56 @@
+/*
+ * Reference point sets: uniform 2-D samplers in [0,1)^2 that Forced
+ * Random Sampling is compared against (see ref-sample(1)).
+ *
+ * Each generator fills an array of 2 * count doubles (x0, y0, x1, y1, ...)
+ * and depends only on (kind, n, seed, options): the same arguments give
+ * the same bits.  Random numbers come from frs_rand01 on FRS_STREAM_REF.
+ */
+#ifndef FRS_REFSAMP_H
+#define FRS_REFSAMP_H
+
+#include <stdint.h>
+
+enum refsamp_kind {
+	REFSAMP_RANDOM,
+	REFSAMP_REGULAR,
+	REFSAMP_JITTERED,
+	REFSAMP_HALTON,
+	REFSAMP_HAMMERSLEY,
+	REFSAMP_SOBOL,
+	REFSAMP_DART
+};
+
+/* Largest n accepted by refsamp_gen (Sobol' uses 32-bit indices). */
+#define REFSAMP_MAX_N ((uint64_t)1 << 32)
+#define REFSAMP_DART_FAILURES 100000
+
+/* Name to kind; -1 with a message for an unknown name. */
+int refsamp_parse(const char *name, enum refsamp_kind *k);
+const char *refsamp_name(enum refsamp_kind k);
+
+/* Side of the grid of regular and jittered: round(sqrt(n)), at least 1. */
+uint64_t refsamp_grid_side(uint64_t n);
+/* Points made for n: k*k for regular and jittered, n otherwise (dart
+ * may place fewer; refsamp_gen says how many). */
+uint64_t refsamp_count(enum refsamp_kind k, uint64_t n);
+
+/* Dart throwing radius for n points: 0.7 of the densest packing
+ * distance sqrt(2 / (sqrt(3) n)) (Lagae and Dutre 2008). */
+double refsamp_dart_radius(uint64_t n);
+
+/* Radical inverse of i in base b (2 <= b), correctly rounded. */
+double refsamp_radical_inverse(uint64_t i, unsigned b);
+/* 2-D Sobol' point i (Gray-code order) as 32-bit integers, Owen
+ * scrambled by hashing with the given per-dimension keys (0, 0: none). */
+void refsamp_sobol32(uint32_t i, uint32_t key_x, uint32_t key_y,
+    uint32_t out[2]);
+
+/* Fill xy with refsamp_count(k, n) points; *placed gets the number of
+ * points made (fewer than the count only for dart, which stops after
+ * max_failures consecutive rejected candidates).  -1 with a message on
+ * bad arguments or no memory. */
+int refsamp_gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
+    uint64_t max_failures, double *xy, uint64_t *placed);
+
+#endif

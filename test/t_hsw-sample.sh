@@ -1,0 +1,74 @@
+#!/bin/sh
+# hsw-sample: exact counts, text output, --pdf, file input, determinism
+# and bad input.
+. "$(dirname "$0")/lib.sh"
+
+check "blob, 2000 points" hsw-sample -i blob -n 2000 -o "$T/a.pts"
+cnt=$(od -A n -t u8 -j 24 -N 8 "$T/a.pts" | tr -d ' ')
+[ "$cnt" = 2000 ] && ok "exactly n points ($cnt)" || nok "exactly n points ($cnt)"
+[ "$(wc -c <"$T/a.pts")" -eq $((32 + 16 * 2000)) ] && ok "binary .pts layout" ||
+    nok "binary .pts layout"
+for s in random regular jittered halton hammersley; do
+	hsw-sample -i blob -n 777 --input $s -o "$T/$s.pts"
+	c=$(od -A n -t u8 -j 24 -N 8 "$T/$s.pts" | tr -d ' ')
+	[ "$c" = 777 ] && ok "--input $s: exactly n" || nok "--input $s: exactly n ($c)"
+done
+
+hsw-sample -i blob -n 500 -T -o "$T/t.txt"
+head -n 1 "$T/t.txt" | grep -q '^#pts dims=2 extra=0 count=500' &&
+    [ "$(grep -vc '^#' "$T/t.txt")" = 500 ] &&
+    awk '!/^#/ && (NF != 2 || $1 < 0 || $1 >= 1 || $2 < 0 || $2 >= 1) { bad = 1 }
+        END { exit bad }' "$T/t.txt" &&
+    ok "-T: 500 text lines in [0,1)" || nok "-T: 500 text lines in [0,1)"
+
+hsw-sample -i const -n 500 --pdf -T -o "$T/pdf.txt"
+head -n 1 "$T/pdf.txt" | grep -q 'dims=2 extra=1' && ok "--pdf header" || nok "--pdf header"
+awk '!/^#/ && ($3 < 0.999999 || $3 > 1.000001) { bad = 1 } END { exit bad }' "$T/pdf.txt" &&
+    ok "--pdf of a constant map is 1" || nok "--pdf of a constant map is 1"
+hsw-sample -i blob -n 500 --pdf -T | awk '!/^#/ { s += $3 } END { exit !(s > 500) }' &&
+    ok "--pdf: points go where the density is high" ||
+    nok "--pdf: points go where the density is high"
+
+# A text point file as input: its points, warped by a constant map, back.
+printf '0.25 0.5\n0.75 0.125\n0.5 0.875\n' >"$T/in.txt"
+hsw-sample -i const -s 64x64 -n 3 --input "$T/in.txt" -T -o "$T/f.txt"
+grep -v '^#' "$T/f.txt" | awk '{ printf "%.12f %.12f\n", $1, $2 }' >"$T/f.s"
+awk '{ printf "%.12f %.12f\n", $1, $2 }' "$T/in.txt" >"$T/in.s"
+cmp -s "$T/f.s" "$T/in.s" && ok "--input FILE, constant map: unchanged" ||
+    nok "--input FILE, constant map: unchanged"
+hsw-sample -i blob --input "$T/in.txt" -T -o "$T/f2.txt"
+[ "$(grep -vc '^#' "$T/f2.txt")" = 3 ] && ok "--input FILE without -n: all its points" ||
+    nok "--input FILE without -n: all its points"
+
+hsw-sample -i blob -n 20000 -j 1 -o "$T/j1.pts"
+hsw-sample -i blob -n 20000 -j 2 -o "$T/j2.pts"
+cmp -s "$T/j1.pts" "$T/j2.pts" && ok "-j 1 and -j 2 give the same bytes" ||
+    nok "-j 1 and -j 2 give the same bytes"
+hsw-sample -i blob -n 100 --input random -S 2 -o "$T/s2.pts"
+hsw-sample -i blob -n 100 --input random -S 3 -o "$T/s3.pts"
+cmp -s "$T/s2.pts" "$T/s3.pts" && nok "-S changes random input" || ok "-S changes random input"
+
+# Non-power-of-two map: points stay in the map.
+check "100x60 map" hsw-sample -i blob -s 100x60 -n 1000 -T -o "$T/np.txt"
+hsw-sample -i blob -s 100x60 -n 1000 -v -o /dev/null 2>"$T/v"
+grep -q 'padded to 128x128' "$T/v" && grep -q 'warping' "$T/v" &&
+    ok "-v: padding and warping time" || nok "-v: padding and warping time"
+
+# Bad input.
+expect_fail "all-zero map" 1 "zero everywhere" "$T/z.pts" \
+    hsw-sample -i const:0 -n 10 -o "$T/z.pts"
+expect_fail "-n 0" 2 "-n" "$T/n0.pts" hsw-sample -i blob -n 0 -o "$T/n0.pts"
+expect_fail "missing -n" 2 "-n COUNT" - hsw-sample -i blob
+expect_fail "missing -i" 2 "-i IMPORTANCE" - hsw-sample -n 10
+expect_fail "unknown --input" 2 "sobol" "$T/u.pts" \
+    hsw-sample -i blob -n 10 --input sobol -o "$T/u.pts"
+expect_fail "missing input file" 1 "nonexistent.pts" "$T/m.pts" \
+    hsw-sample -i blob -n 10 --input "$T/nonexistent.pts" -o "$T/m.pts"
+expect_fail "input file too short" 1 "need 10" "$T/short.pts" \
+    hsw-sample -i blob -n 10 --input "$T/in.txt" -o "$T/short.pts"
+printf '0.5 1.5\n' >"$T/bad.txt"
+expect_fail "input point outside the square" 1 "outside" - \
+    hsw-sample -i blob --input "$T/bad.txt" -o /dev/null
+expect_fail "missing map" 1 "nosuchmap" - hsw-sample -i "$T/nosuchmap.png" -n 10
+expect_fail "write to /dev/full" 1 "/dev/full" - \
+    hsw-sample -i blob -n 100000 -o /dev/full

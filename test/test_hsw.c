@@ -1,0 +1,273 @@
+/* Hierarchical Sample Warping against independent oracles: identity on a
+ * constant map, moments of the warped set against the map's, points only
+ * where the importance is positive, padding, exact counts, thread
+ * independence. */
+#include "testutil.h"
+#include "hsw.h"
+#include "imap.h"
+#include "par.h"
+
+/* n halton points warped by map m into a new array. */
+static double *warp(const struct frs_imap *m, uint64_t n, enum hsw_input in)
+{
+	struct hsw_tree t;
+	double *p = malloc(2 * n * sizeof *p);
+
+	assert_non_null(p);
+	assert_int_equal(hsw_build(&t, m), 0);
+	hsw_input_make(in, n, 1, p);
+	assert_int_equal(hsw_warp_points(&t, p, p, n), 0);
+	hsw_free(&t);
+	for (uint64_t i = 0; i < 2 * n; i++) {
+		assert_true(p[i] >= 0.0);
+		assert_true(p[i] < 1.0);
+	}
+	return p;
+}
+
+static double pix(const struct frs_imap *m, double x, double y)
+{
+	uint32_t i = (uint32_t)(x * m->w), j = (uint32_t)(y * m->h);
+	assert_true(i < m->w && j < m->h);
+	return m->v[(uint64_t)j * m->w + i];
+}
+
+static void test_identity(void **state)
+{
+	struct frs_imap m;
+	uint64_t n = 20000;
+	double *in = malloc(2 * n * sizeof *in), *out;
+
+	(void)state;
+	assert_int_equal(imap_load("const", 64, 64, 0, &m), 0);
+	for (int k = HSW_RANDOM; k <= HSW_HAMMERSLEY; k++) {
+		out = warp(&m, n, (enum hsw_input)k);
+		hsw_input_make((enum hsw_input)k, n, 1, in);
+		for (uint64_t i = 0; i < 2 * n; i++)
+			assert_near(out[i], in[i], 1e-12);
+		free(out);
+	}
+	free(in);
+	imap_free(&m);
+}
+
+/* Centroid within 0.1 pixel and standard deviation within 1%. */
+static void moments(const char *spec)
+{
+	struct frs_imap map;
+	double mw = 0, mx = 0, my = 0, mxx = 0, myy = 0;
+	double sx = 0, sy = 0, sxx = 0, syy = 0, *p;
+	uint64_t n = 100000;
+
+	assert_int_equal(imap_load(spec, 128, 128, 0, &map), 0);
+	for (uint32_t j = 0; j < 128; j++)
+		for (uint32_t i = 0; i < 128; i++) {
+			double v = map.v[j * 128 + i], x = (i + 0.5) / 128,
+			    y = (j + 0.5) / 128;
+			mw += v;
+			mx += v * x;
+			my += v * y;
+			mxx += v * (x * x + 1.0 / (12 * 128 * 128));
+			myy += v * (y * y + 1.0 / (12 * 128 * 128));
+		}
+	p = warp(&map, n, HSW_HALTON);
+	for (uint64_t i = 0; i < n; i++) {
+		double x = p[2 * i], y = p[2 * i + 1];
+		sx += x;
+		sy += y;
+		sxx += x * x;
+		syy += y * y;
+	}
+	{
+		double cx = sx / n, cy = sy / n, ex = mx / mw, ey = my / mw;
+		double dx = sqrt(sxx / n - cx * cx), dy = sqrt(syy / n - cy * cy);
+		double wx = sqrt(mxx / mw - ex * ex), wy = sqrt(myy / mw - ey * ey);
+		assert_near(cx, ex, 0.1 / 128);
+		assert_near(cy, ey, 0.1 / 128);
+		assert_near(dx, wx, 0.01 * wx);
+		assert_near(dy, wy, 0.01 * wy);
+	}
+	free(p);
+	imap_free(&map);
+}
+
+static void test_moments_blob(void **state)
+{
+	(void)state;
+	moments("blob:x=0.35,y=0.6,sigma=0.12");
+}
+
+static void test_moments_ramp(void **state)
+{
+	(void)state;
+	moments("ramp:angle=30");
+}
+
+static void test_hot_pixel(void **state)
+{
+	struct frs_imap m;
+	uint64_t n = 10000;
+	double *p;
+
+	(void)state;
+	assert_int_equal(imap_alloc(&m, 32, 32), 0);
+	memset(m.v, 0, 32 * 32 * sizeof *m.v);
+	m.v[17 * 32 + 5] = 3.0;
+	for (int k = HSW_RANDOM; k <= HSW_HAMMERSLEY; k++) {
+		p = warp(&m, n, (enum hsw_input)k);
+		for (uint64_t i = 0; i < n; i++) {
+			assert_int_equal((int)(p[2 * i] * 32), 5);
+			assert_int_equal((int)(p[2 * i + 1] * 32), 17);
+		}
+		free(p);
+	}
+	imap_free(&m);
+}
+
+/* Zero rows and columns: a left half of zeros, and stripes. */
+static void test_zero_regions(void **state)
+{
+	struct frs_imap m;
+	uint64_t n = 50000;
+	double *p;
+
+	(void)state;
+	assert_int_equal(imap_alloc(&m, 64, 64), 0);
+	for (uint32_t j = 0; j < 64; j++)
+		for (uint32_t i = 0; i < 64; i++)
+			m.v[j * 64 + i] = i < 32 ? 0.0 : 1.0 + (i + j) % 5;
+	p = warp(&m, n, HSW_HALTON);
+	for (uint64_t i = 0; i < n; i++)
+		assert_true(pix(&m, p[2 * i], p[2 * i + 1]) > 0);
+	free(p);
+	/* every third row and every fourth column empty, one dim pixel */
+	for (uint32_t j = 0; j < 64; j++)
+		for (uint32_t i = 0; i < 64; i++)
+			m.v[j * 64 + i] = (j % 3 == 0 || i % 4 == 1) ? 0.0 : 1.0;
+	m.v[2 * 64 + 2] = 1e-300;
+	p = warp(&m, n, HSW_RANDOM);
+	for (uint64_t i = 0; i < n; i++)
+		assert_true(pix(&m, p[2 * i], p[2 * i + 1]) > 0);
+	free(p);
+	imap_free(&m);
+}
+
+/* 100x60 pads to 128x128: points only in the map, proportional. */
+static void test_padding(void **state)
+{
+	struct frs_imap m;
+	struct hsw_tree t;
+	uint64_t n = 100000, left = 0, top = 0;
+	double wl = 0, wt = 0, w = 0, *p;
+
+	(void)state;
+	assert_int_equal(imap_alloc(&m, 100, 60), 0);
+	for (uint32_t j = 0; j < 60; j++)
+		for (uint32_t i = 0; i < 100; i++) {
+			double v = 1.0 + i * 0.05 + (j < 20 ? 2.0 : 0.0);
+			m.v[j * 100 + i] = v;
+			w += v;
+			wl += i < 50 ? v : 0;
+			wt += j < 30 ? v : 0;
+		}
+	assert_int_equal(hsw_build(&t, &m), 0);
+	assert_int_equal(t.size, 128);
+	assert_int_equal(t.levels, 7);
+	hsw_free(&t);
+	p = warp(&m, n, HSW_HALTON);
+	for (uint64_t i = 0; i < n; i++) {
+		assert_true(pix(&m, p[2 * i], p[2 * i + 1]) > 0);
+		left += p[2 * i] < 0.5;
+		top += p[2 * i + 1] < 0.5;
+	}
+	assert_near((double)left / n, wl / w, 0.02 * wl / w);
+	assert_near((double)top / n, wt / w, 0.02 * wt / w);
+	free(p);
+	imap_free(&m);
+}
+
+static void test_count_and_threads(void **state)
+{
+	struct frs_imap m;
+	uint64_t n = 123457;
+	double *a, *b;
+
+	(void)state;
+	assert_int_equal(imap_load("blob", 128, 128, 0, &m), 0);
+	frs_set_threads(1);
+	a = warp(&m, n, HSW_JITTERED);
+	frs_set_threads(4);
+	b = warp(&m, n, HSW_JITTERED);
+	assert_memory_equal(a, b, 2 * n * sizeof *a);
+	/* one point at a time gives the same (the grouped path and the
+	 * single path agree) */
+	{
+		struct hsw_tree t;
+		double *c = malloc(2 * n * sizeof *c);
+		assert_int_equal(hsw_build(&t, &m), 0);
+		hsw_input_make(HSW_JITTERED, n, 1, c);
+		for (uint64_t i = 0; i < n; i++) {
+			double x = c[2 * i], y = c[2 * i + 1];
+			uint64_t k = hsw_warp(&t, &x, &y);
+			assert_true(x == a[2 * i] && y == a[2 * i + 1]);
+			assert_int_equal(k, (uint64_t)(y * 128) * 128 +
+			    (uint64_t)(x * 128));
+		}
+		hsw_free(&t);
+		free(c);
+	}
+	free(a);
+	free(b);
+	imap_free(&m);
+}
+
+static void test_inputs(void **state)
+{
+	double p[2 * 10];
+
+	(void)state;
+	assert_int_equal(hsw_input_parse("halton"), HSW_HALTON);
+	assert_int_equal(hsw_input_parse("hammersley"), HSW_HAMMERSLEY);
+	assert_int_equal(hsw_input_parse("sobol"), -1);
+	assert_near(hsw_radical_inverse(1, 2), 0.5, 0);
+	assert_near(hsw_radical_inverse(6, 2), 0.375, 0);
+	assert_near(hsw_radical_inverse(5, 3), 2.0 / 3 + 1.0 / 9, 1e-15);
+	/* regular: a 4x4 grid for 10 points, row order */
+	hsw_input_make(HSW_REGULAR, 10, 1, p);
+	assert_near(p[0], 0.125, 0);
+	assert_near(p[1], 0.125, 0);
+	assert_near(p[2 * 5], 0.375, 0);
+	assert_near(p[2 * 5 + 1], 0.375, 0);
+	hsw_input_make(HSW_HAMMERSLEY, 4, 1, p);
+	assert_near(p[2 * 3], 3.5 / 4, 0);
+	assert_near(p[2 * 3 + 1], 0.75, 0);
+}
+
+static void test_all_zero(void **state)
+{
+	struct frs_imap m;
+	struct hsw_tree t;
+
+	(void)state;
+	assert_int_equal(imap_alloc(&m, 8, 8), 0);
+	memset(m.v, 0, 64 * sizeof *m.v);
+	assert_int_equal(hsw_build(&t, &m), -1);
+	assert_err_has("zero everywhere");
+	imap_free(&m);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_identity),
+		cmocka_unit_test(test_moments_blob),
+		cmocka_unit_test(test_moments_ramp),
+		cmocka_unit_test(test_hot_pixel),
+		cmocka_unit_test(test_zero_regions),
+		cmocka_unit_test(test_padding),
+		cmocka_unit_test(test_count_and_threads),
+		cmocka_unit_test(test_inputs),
+		cmocka_unit_test(test_all_zero),
+	};
+	return cmocka_run_group_tests(tests, NULL, tu_teardown);
+}
