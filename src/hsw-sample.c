@@ -16,6 +16,7 @@
 #include "par.h"
 #include "progress.h"
 #include "ptsio.h"
+#include "refsamp.h"
 
 static const char usage[] =
     "usage: hsw-sample -i IMPORTANCE -n COUNT [--input SET|FILE] [--pdf]\n"
@@ -25,12 +26,14 @@ static const char usage[] =
     "  -n, --count N        points to make (exactly; with --input FILE at\n"
     "                       most the file's count, default all of it)\n"
     "      --input SET      points to warp: random, regular, jittered,\n"
-    "                       halton (default), hammersley, or a .pts FILE\n"
-    "                       (its first two coordinates)\n"
+    "                       halton (default), hammersley, dart (uniform\n"
+    "                       dart throwing of ref-sample -k dart, same\n"
+    "                       seed), or a .pts FILE (its first two\n"
+    "                       coordinates)\n"
     "      --pdf            add a column: I / mean I of each point's pixel\n"
     "  -s, --size WxH       size at which procedural maps are evaluated\n"
     "                       (default 128x128), or files resampled\n"
-    "  -S, --seed N         seed of random and jittered (default 1)\n"
+    "  -S, --seed N         seed of random, jittered and dart (default 1)\n"
     "  -j, --threads N      threads (default all); same points for any N\n"
     "  -T, --text           text output\n"
     "  -v, --verbose        setup and warping time on standard error\n"
@@ -51,9 +54,12 @@ static const struct option longopts[] = {
 	{ NULL, 0, NULL, 0 }
 };
 
+/* --input dart: not an enum hsw_input; ref-sample's dart throwing. */
+#define INPUT_DART 100
+
 struct opts {
 	const char *imp, *file;
-	int input;		/* enum hsw_input, or -1 for file */
+	int input;		/* enum hsw_input, INPUT_DART, or -1 for file */
 	uint64_t n;
 	int have_n, pdf, verbose;
 	uint32_t w, h;
@@ -77,6 +83,8 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		case OPT_INPUT:
 			o->input = hsw_input_parse(optarg);
 			o->file = NULL;
+			if (strcmp(optarg, "dart") == 0)
+				o->input = INPUT_DART;
 			if (o->input >= 0)
 				break;
 			/* A file: a path with '/' or '.', "-", or one that
@@ -86,7 +94,8 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 				o->file = optarg;
 			else
 				cli_usage_error("--input: '%s' is not random, regular, "
-				    "jittered, halton, hammersley or a file", optarg);
+				    "jittered, halton, hammersley, dart or a file",
+				    optarg);
 			break;
 		case OPT_PDF: o->pdf = 1; break;
 		case 'v': o->verbose = 1; break;
@@ -147,6 +156,28 @@ static double *make_input(struct opts *o)
 	pts = malloc((size_t)o->n * 2 * sizeof *pts);
 	if (pts == NULL)
 		cli_die("-n %llu: out of memory", (unsigned long long)o->n);
+	if (o->input == INPUT_DART) {
+		uint64_t placed;
+		if (o->n > REFSAMP_MAX_N) {
+			free(pts);
+			cli_die("--input dart: -n %llu is over %llu",
+			    (unsigned long long)o->n,
+			    (unsigned long long)REFSAMP_MAX_N);
+		}
+		if (refsamp_gen(REFSAMP_DART, o->n, cli.seed,
+		    REFSAMP_DART_FAILURES, pts, &placed) < 0) {
+			free(pts);
+			cli_die("--input dart: %s", frs_errmsg());
+		}
+		if (placed < o->n) {
+			fprintf(stderr, "hsw-sample: --input dart placed %llu of "
+			    "%llu points; warping those\n",
+			    (unsigned long long)placed,
+			    (unsigned long long)o->n);
+			o->n = placed;
+		}
+		return pts;
+	}
 	hsw_input_make((enum hsw_input)o->input, o->n, cli.seed, pts);
 	return pts;
 }
@@ -211,7 +242,8 @@ int main(int argc, char **argv)
 		    "(%u levels), mean %.6g; input %s, %llu points, %d "
 		    "threads\n", map.w, map.h, t.size, t.size, t.levels,
 		    t.total / ((double)map.w * (double)map.h),
-		    o.file ? o.file : names[o.input], (unsigned long long)o.n,
+		    o.file ? o.file : o.input == INPUT_DART ? "dart" :
+		    names[o.input], (unsigned long long)o.n,
 		    frs_threads());
 		fprintf(stderr, "hsw-sample: setup %.6f s, warping %.6f s, "
 		    "output %.6f s\n", t1 - t0, t2 - t1, t3 - t2);

@@ -54,6 +54,15 @@ hsw-sample -i blob -s 100x60 -n 1000 -v -o /dev/null 2>"$T/v"
 grep -q 'padded to 128x128' "$T/v" && grep -q 'warping' "$T/v" &&
     ok "-v: padding and warping time" || nok "-v: padding and warping time"
 
+# --input dart: ref-sample's dart throwing, warped.
+if hsw-sample -i blob -n 500 --input dart -S 3 -o "$T/dart.pts" 2>"$T/err" &&
+    [ "$(od -A n -t u8 -j 24 -N 8 "$T/dart.pts" | tr -d ' ')" = 500 ]; then
+	ok "--input dart: 500 points"
+else
+	nok "--input dart: 500 points"
+	sed 's/^/# /' "$T/err"
+fi
+
 # Bad input.
 expect_fail "all-zero map" 1 "zero everywhere" "$T/z.pts" \
     hsw-sample -i const:0 -n 10 -o "$T/z.pts"

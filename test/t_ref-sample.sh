@@ -75,3 +75,14 @@ expect_fail "bad --max-failures" 2 "--max-failures" "$T/o.pts" \
 expect_fail "stray argument" 2 "unexpected argument" "$T/o.pts" ref-sample -n 10 extra -o "$T/o.pts"
 expect_fail "missing directory" 1 "cannot create" "$T/no/o.pts" ref-sample -n 10 -o "$T/no/o.pts"
 expect_fail "full disk" 1 "No space left" - ref-sample -n 10 -o /dev/full
+
+# Relaxed dart throwing by an importance map.
+if ref-sample -k relaxed-dart -n 500 -i blob -s 64x64 -q -o "$T/rd.pts" 2>"$T/err" &&
+    [ "$(count "$T/rd.pts")" = 500 ]; then
+	ok "-k relaxed-dart -i blob: 500 points"
+else
+	nok "-k relaxed-dart -i blob: 500 points"
+	sed 's/^/# /' "$T/err"
+fi
+expect_fail "relaxed-dart: bad -i file" 1 "nosuchmap" "$T/rdbad.pts" \
+    ref-sample -k relaxed-dart -n 10 -i "$T/nosuchmap.png" -o "$T/rdbad.pts"

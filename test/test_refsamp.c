@@ -2,6 +2,7 @@
  * classical Halton/Hammersley/Sobol' values, the (0,2)-net property of
  * scrambled Sobol', strata, Poisson-disk distance and density. */
 #include "testutil.h"
+#include "imap.h"
 #include "refsamp.h"
 #include "rng.h"
 
@@ -264,6 +265,77 @@ static void names(void **state)
 	}
 }
 
+/* A w x h map: left half a, right half b. */
+static void halves(struct frs_imap *m, uint32_t w, uint32_t h, double a,
+    double b)
+{
+	assert_int_equal(imap_alloc(m, w, h), 0);
+	for (uint32_t j = 0; j < h; j++)
+		for (uint32_t i = 0; i < w; i++)
+			m->v[(uint64_t)j * w + i] = i < w / 2 ? a : b;
+}
+
+static void relaxed_dart(void **state)
+{
+	struct frs_imap m;
+	uint64_t n = 2000, left = 0;
+	double *xy = malloc(2 * n * sizeof *xy), *xy2 = malloc(2 * n *
+	    sizeof *xy2), r0, mean = 2.5, frac;
+	(void)state;
+	assert_non_null(xy);
+	assert_non_null(xy2);
+	/* Zero on the left: no point there. */
+	halves(&m, 16, 16, 0.0, 1.0);
+	assert_int_equal(refsamp_relaxed_dart(n, 3, REFSAMP_RELAXED_FAILURES,
+	    &m, xy, &r0), 0);
+	in_unit(xy, n);
+	for (uint64_t i = 0; i < n; i++)
+		assert_true(xy[2 * i] >= 0.5);
+	imap_free(&m);
+	/* 1 left, 4 right: 1/5 and 4/5 of the points, within 10%. */
+	halves(&m, 16, 16, 1.0, 4.0);
+	assert_int_equal(refsamp_relaxed_dart(n, 5, REFSAMP_RELAXED_FAILURES,
+	    &m, xy, &r0), 0);
+	in_unit(xy, n);
+	for (uint64_t i = 0; i < n; i++)
+		left += xy[2 * i] < 0.5;
+	frac = (double)left / (double)n;
+	assert_true(frac > 0.2 * 0.9 && frac < 0.2 * 1.1);
+	/* The conflict rule at the final r0, all pairs. */
+	for (uint64_t i = 0; i < n; i++)
+		for (uint64_t k = i + 1; k < n; k++) {
+			double fi = sqrt(mean / (xy[2 * i] < 0.5 ? 1.0 : 4.0));
+			double fk = sqrt(mean / (xy[2 * k] < 0.5 ? 1.0 : 4.0));
+			double r = r0 * (fi > fk ? fi : fk);
+			double dx = xy[2 * i] - xy[2 * k];
+			double dy = xy[2 * i + 1] - xy[2 * k + 1];
+			assert_true(dx * dx + dy * dy >= r * r);
+		}
+	/* The same bytes for the same seed, others for another. */
+	assert_int_equal(refsamp_relaxed_dart(n, 5, REFSAMP_RELAXED_FAILURES,
+	    &m, xy2, NULL), 0);
+	assert_memory_equal(xy, xy2, 2 * n * sizeof *xy);
+	assert_int_equal(refsamp_relaxed_dart(n, 6, REFSAMP_RELAXED_FAILURES,
+	    &m, xy2, NULL), 0);
+	assert_true(memcmp(xy, xy2, 2 * n * sizeof *xy) != 0);
+	imap_free(&m);
+	/* All zero: an error. */
+	halves(&m, 4, 4, 0.0, 0.0);
+	assert_int_equal(refsamp_relaxed_dart(10, 1, 10, &m, xy, NULL), -1);
+	assert_err_has("zero", "zero everywhere");
+	imap_free(&m);
+	/* Through refsamp_gen: constant importance, exactly n. */
+	{
+		uint64_t placed;
+		assert_int_equal(refsamp_gen(REFSAMP_RELAXED_DART, 500, 1,
+		    REFSAMP_RELAXED_FAILURES, xy, &placed), 0);
+		assert_int_equal(placed, 500);
+		in_unit(xy, 500);
+	}
+	free(xy);
+	free(xy2);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -276,6 +348,7 @@ int main(void)
 		cmocka_unit_test(random_uniform),
 		cmocka_unit_test(deterministic),
 		cmocka_unit_test(names),
+		cmocka_unit_test(relaxed_dart),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -10,10 +10,11 @@
 #include <string.h>
 
 #include "err.h"
+#include "imap.h"
 #include "rng.h"
 
 static const char *const names[] = { "random", "regular", "jittered",
-    "halton", "hammersley", "sobol", "dart" };
+    "halton", "hammersley", "sobol", "dart", "relaxed-dart" };
 
 int refsamp_parse(const char *name, enum refsamp_kind *k)
 {
@@ -23,7 +24,7 @@ int refsamp_parse(const char *name, enum refsamp_kind *k)
 			return 0;
 		}
 	return frs_fail("unknown kind '%s' (random, regular, jittered, halton, "
-	    "hammersley, sobol or dart)", name);
+	    "hammersley, sobol, dart or relaxed-dart)", name);
 }
 
 const char *refsamp_name(enum refsamp_kind k)
@@ -218,6 +219,240 @@ static int gen_dart(uint64_t n, uint64_t seed, uint64_t max_failures,
 	return 0;
 }
 
+/* Relaxed dart throwing state.  Accepted points are kept by level of
+ * their radius factor f = r / r0: level L holds f in [fmin 2^L,
+ * fmin 2^(L+1)), each level a grid of linked lists (head per cell, next
+ * per point) with cells about its largest radius, so that a candidate
+ * looks at few cells of each level. */
+#define RELAX_LEVELS 64
+
+struct relax {
+	const double *v;	/* importance */
+	uint32_t w, h;
+	double mean, fmin;
+	double *xy, *f;		/* points; f: r / r0 of each point */
+	uint64_t got;
+	int64_t *head, *next;
+	unsigned nl;		/* levels */
+	uint64_t off[RELAX_LEVELS], cap[RELAX_LEVELS], g[RELAX_LEVELS];
+	uint64_t cnt[RELAX_LEVELS];
+	double fmax[RELAX_LEVELS];	/* largest f placed in each level */
+};
+
+static unsigned relax_level(const struct relax *s, double f)
+{
+	double q = f / s->fmin;
+	unsigned l = 0;
+
+	while (l + 1 < s->nl && q >= 2.0) {
+		q *= 0.5;
+		l++;
+	}
+	return l;
+}
+
+static void relax_insert(struct relax *s, uint64_t i)
+{
+	unsigned l = relax_level(s, s->f[i]);
+	uint64_t g = s->g[l];
+	uint64_t cx = (uint64_t)(s->xy[2 * i] * (double)g);
+	uint64_t cy = (uint64_t)(s->xy[2 * i + 1] * (double)g);
+	uint64_t c;
+
+	if (cx >= g)
+		cx = g - 1;
+	if (cy >= g)
+		cy = g - 1;
+	c = s->off[l] + cy * g + cx;
+	s->next[i] = s->head[c];
+	s->head[c] = (int64_t)i;
+}
+
+/* (Re)build the grids for r0. */
+static void relax_grid(struct relax *s, double r0)
+{
+	double cell = r0 * s->fmin * 2.0;
+
+	for (unsigned l = 0; l < s->nl; l++, cell *= 2.0) {
+		double gd = ceil(1.0 / cell);
+		uint64_t g = gd < (double)s->cap[l] ? (uint64_t)gd : s->cap[l];
+		if (g < 1)
+			g = 1;
+		s->g[l] = g;
+		for (uint64_t c = 0; c < g * g; c++)
+			s->head[s->off[l] + c] = -1;
+	}
+	for (uint64_t i = 0; i < s->got; i++)
+		relax_insert(s, i);
+}
+
+/* Whether x, y with radius factor fx conflicts with an accepted point
+ * under r0. */
+static int relax_conflict(const struct relax *s, double x, double y,
+    double fx, double r0)
+{
+	for (unsigned l = 0; l < s->nl; l++) {
+		double reach, gd = (double)s->g[l];
+		int64_t x0, x1, y0, y1, gm = (int64_t)s->g[l] - 1;
+
+		if (s->cnt[l] == 0)
+			continue;
+		reach = r0 * (fx > s->fmax[l] ? fx : s->fmax[l]);
+		x0 = (int64_t)floor(fmax(x - reach, 0.0) * gd);
+		x1 = (int64_t)floor(fmin(x + reach, 1.0) * gd);
+		y0 = (int64_t)floor(fmax(y - reach, 0.0) * gd);
+		y1 = (int64_t)floor(fmin(y + reach, 1.0) * gd);
+		if (x1 > gm)
+			x1 = gm;
+		if (y1 > gm)
+			y1 = gm;
+		for (int64_t cy = y0; cy <= y1; cy++)
+			for (int64_t cx = x0; cx <= x1; cx++)
+				for (int64_t p = s->head[s->off[l] +
+				    (uint64_t)cy * s->g[l] + (uint64_t)cx];
+				    p >= 0; p = s->next[p]) {
+					double dx = s->xy[2 * p] - x;
+					double dy = s->xy[2 * p + 1] - y;
+					double fq = s->f[p];
+					double r = r0 * (fx > fq ? fx : fq);
+					if (dx * dx + dy * dy < r * r)
+						return 1;
+				}
+	}
+	return 0;
+}
+
+int refsamp_relaxed_dart(uint64_t n, uint64_t seed, uint64_t max_failures,
+    const struct frs_imap *map, double *xy, double *r0_out)
+{
+	static const double one = 1.0;
+	struct relax s;
+	double *cdf, total = 0, r0, imax = 0, iminp = 0, fmaxall;
+	uint64_t np, fails = 0, t = 0, gcap, cells = 0;
+
+	if (n < 1 || n > REFSAMP_MAX_N)
+		return frs_fail("count %llu is not in 1 to %llu",
+		    (unsigned long long)n, (unsigned long long)REFSAMP_MAX_N);
+	if (max_failures < 1)
+		return frs_fail("relaxed dart: max failures must be at least 1");
+	memset(&s, 0, sizeof s);
+	if (map != NULL) {
+		s.v = map->v;
+		s.w = map->w;
+		s.h = map->h;
+	} else {
+		s.v = &one;
+		s.w = s.h = 1;
+	}
+	np = (uint64_t)s.w * s.h;
+	if (np == 0)
+		return frs_fail("relaxed dart: empty importance map");
+	if ((cdf = malloc(np * sizeof *cdf)) == NULL)
+		return frs_fail("relaxed dart: no memory for %llu pixels",
+		    (unsigned long long)np);
+	for (uint64_t i = 0; i < np; i++) {
+		double v = s.v[i];
+		if (!isfinite(v) || v < 0) {
+			free(cdf);
+			return frs_fail("relaxed dart: importance %g at pixel "
+			    "%llu is not finite and non-negative", v,
+			    (unsigned long long)i);
+		}
+		total += v;
+		cdf[i] = total;
+		if (v > imax)
+			imax = v;
+		if (v > 0 && (iminp == 0 || v < iminp))
+			iminp = v;
+	}
+	if (!(total > 0) || !isfinite(total)) {
+		free(cdf);
+		return frs_fail("relaxed dart: the importance map is zero "
+		    "everywhere");
+	}
+	s.mean = total / (double)np;
+	s.fmin = sqrt(s.mean / imax);
+	fmaxall = sqrt(s.mean / iminp);
+	s.nl = 1;
+	for (double q = fmaxall / s.fmin; q >= 2.0 && s.nl < RELAX_LEVELS;
+	    q *= 0.5)
+		s.nl++;
+	/* Grid side: level 0 at most about 2 sqrt(n) + 1 cells and 4096,
+	 * halved at each level up. */
+	gcap = (uint64_t)ceil(2.0 * sqrt((double)n)) + 1;
+	if (gcap > 4096)
+		gcap = 4096;
+	for (unsigned l = 0; l < s.nl; l++) {
+		s.cap[l] = l < 63 ? (gcap + ((uint64_t)1 << l) - 1) >> l : 1;
+		s.off[l] = cells;
+		cells += s.cap[l] * s.cap[l];
+	}
+	s.xy = xy;
+	s.f = malloc(n * sizeof *s.f);
+	s.next = malloc(n * sizeof *s.next);
+	s.head = malloc(cells * sizeof *s.head);
+	if (s.f == NULL || s.next == NULL || s.head == NULL) {
+		free(cdf);
+		free(s.f);
+		free(s.next);
+		free(s.head);
+		return frs_fail("relaxed dart: no memory for %llu points",
+		    (unsigned long long)n);
+	}
+	r0 = 2.0 * refsamp_dart_radius(n);
+	relax_grid(&s, r0);
+	while (s.got < n) {
+		double u = frs_rand01(seed, FRS_STREAM_REF, 3 * t);
+		double ux = frs_rand01(seed, FRS_STREAM_REF, 3 * t + 1);
+		double uy = frs_rand01(seed, FRS_STREAM_REF, 3 * t + 2);
+		double target = u * total, x, y, fx;
+		uint64_t lo = 0, hi = np - 1, pix;
+		unsigned l;
+
+		t++;
+		/* The first pixel whose cumulative sum exceeds target:
+		 * never a zero-importance pixel. */
+		while (lo < hi) {
+			uint64_t mid = lo + (hi - lo) / 2;
+			if (cdf[mid] > target)
+				hi = mid;
+			else
+				lo = mid + 1;
+		}
+		pix = lo;
+		if (!(s.v[pix] > 0))
+			continue;	/* rounding at the top end */
+		x = below1(((double)(pix % s.w) + ux) / (double)s.w);
+		y = below1(((double)(pix / s.w) + uy) / (double)s.h);
+		fx = sqrt(s.mean / s.v[pix]);
+		if (relax_conflict(&s, x, y, fx, r0)) {
+			if (++fails >= max_failures) {
+				fails = 0;
+				r0 *= REFSAMP_RELAX_FACTOR;
+				relax_grid(&s, r0);
+			}
+			continue;
+		}
+		fails = 0;
+		xy[2 * s.got] = x;
+		xy[2 * s.got + 1] = y;
+		s.f[s.got] = fx;
+		l = relax_level(&s, fx);
+		s.cnt[l]++;
+		if (fx > s.fmax[l])
+			s.fmax[l] = fx;
+		relax_insert(&s, s.got);
+		s.got++;
+	}
+	if (r0_out != NULL)
+		*r0_out = r0;
+	free(cdf);
+	free(s.f);
+	free(s.next);
+	free(s.head);
+	return 0;
+}
+
 int refsamp_gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
     uint64_t max_failures, double *xy, uint64_t *placed)
 {
@@ -277,6 +512,9 @@ int refsamp_gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
 	}
 	case REFSAMP_DART:
 		return gen_dart(n, seed, max_failures, xy, placed);
+	case REFSAMP_RELAXED_DART:
+		return refsamp_relaxed_dart(n, seed, max_failures, NULL, xy,
+		    NULL);
 	}
 	return frs_fail("unknown kind %d", (int)k);
 }

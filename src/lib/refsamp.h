@@ -18,12 +18,19 @@ enum refsamp_kind {
 	REFSAMP_HALTON,
 	REFSAMP_HAMMERSLEY,
 	REFSAMP_SOBOL,
-	REFSAMP_DART
+	REFSAMP_DART,
+	REFSAMP_RELAXED_DART	/* adaptive, by an importance map */
 };
+
+struct frs_imap;
 
 /* Largest n accepted by refsamp_gen (Sobol' uses 32-bit indices). */
 #define REFSAMP_MAX_N ((uint64_t)1 << 32)
 #define REFSAMP_DART_FAILURES 100000
+/* Relaxed dart: consecutive failures before the radius shrinks. */
+#define REFSAMP_RELAXED_FAILURES 1000
+/* Relaxed dart: the factor r0 is multiplied by at each relaxation. */
+#define REFSAMP_RELAX_FACTOR 0.9
 
 /* Name to kind; -1 with a message for an unknown name. */
 int refsamp_parse(const char *name, enum refsamp_kind *k);
@@ -52,5 +59,22 @@ void refsamp_sobol32(uint32_t i, uint32_t key_x, uint32_t key_y,
  * bad arguments or no memory. */
 int refsamp_gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
     uint64_t max_failures, double *xy, uint64_t *placed);
+
+/*
+ * Adaptive Poisson disk sampling by relaxation dart throwing (McCool and
+ * Fiume, Graphics Interface 1992).  Candidates are drawn with density
+ * proportional to the importance of map (NULL: constant): a pixel by
+ * inverse CDF, then a uniform point inside it.  The local radius is
+ * r(x) = r0 / sqrt(I(x) / mean I), I(x) the importance of x's pixel; a
+ * candidate x is accepted when dist(x, q) >= max(r(x), r(q)) for every
+ * accepted q (plain, non-toroidal distance).  r0 starts at twice
+ * refsamp_dart_radius(n) and is multiplied by REFSAMP_RELAX_FACTOR after
+ * max_failures consecutive rejections; exactly n points are made.
+ * Zero-importance pixels get no points.  *r0_out (may be NULL) gets the
+ * final r0.  -1 with a message on bad arguments, an all-zero or
+ * non-finite map, or no memory.
+ */
+int refsamp_relaxed_dart(uint64_t n, uint64_t seed, uint64_t max_failures,
+    const struct frs_imap *map, double *xy, double *r0_out);
 
 #endif
