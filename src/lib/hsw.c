@@ -87,11 +87,14 @@ void hsw_free(struct hsw_tree *t)
  * b = 0 keeps to the first, a = 0 gives u (a + b) >= a always. */
 static inline unsigned split(double a, double b, double *u)
 {
-	double t = *u * (a + b), num, den, v;
+	double t = *u * (a + b), num, den, v, f;
 	unsigned c = (t >= a) & (b > 0);
 
-	num = c ? t - a : t;
-	den = c ? b : a;
+	/* Arithmetic, not branches: the processor cannot predict the coin.
+	 * 1 * x + 0 * y is exactly x for finite x and y. */
+	f = (double)c;
+	num = t - f * a;
+	den = f * b + (1.0 - f) * a;
 	v = num / den;
 	*u = v < BELOW_ONE ? v : BELOW_ONE;
 	return c;
