@@ -7,6 +7,7 @@
 #include "frdio.h"
 #include "frs.h"
 #include "imap.h"
+#include "moments.h"
 
 static struct frs_matrix M;
 
@@ -67,51 +68,25 @@ static void free_preps(void)
 			frs_prep_free(&preps[l]);
 }
 
-/* Sample moments against the map's (piecewise-constant density). */
+/* Sample moments against the map's (see moments.h). */
 static void moments(const char *spec)
 {
 	struct frs_imap map;
 	struct frs_setup s;
 	struct frs_result r;
-	double mw = 0, mx = 0, my = 0, mxx = 0, myy = 0;
-	double sx = 0, sy = 0, sxx = 0, syy = 0;
-	uint64_t cnt = 0;
+	struct moments m = { 0 };
 
 	assert_int_equal(imap_load(spec, 128, 128, 0, &map), 0);
-	for (uint32_t j = 0; j < 128; j++)
-		for (uint32_t i = 0; i < 128; i++) {
-			double v = map.v[j * 128 + i], x = (i + 0.5) / 128,
-			    y = (j + 0.5) / 128;
-			mw += v;
-			mx += v * x;
-			my += v * y;
-			/* + the variance of a uniform pixel */
-			mxx += v * (x * x + 1.0 / (12 * 128 * 128));
-			myy += v * (y * y + 1.0 / (12 * 128 * 128));
-		}
 	sample(&map, 100000, FRS_UNBIASED, 5, FRS_SORTED, &s, &r);
 	s.jitter = FRS_JITTER_RANDOM;
 	for (uint64_t c = 0; c < r.nchunk; c++)
 		for (uint64_t i = 0; i < r.chunk[c].n; i++) {
 			double x, y;
 			frs_point(&s, &r.chunk[c].e[i], &x, &y);
-			sx += x;
-			sy += y;
-			sxx += x * x;
-			syy += y * y;
-			cnt++;
+			mom_add(&m, x, y);
 		}
-	{
-		double cx = sx / cnt, cy = sy / cnt, ex = mx / mw, ey = my / mw;
-		double dx = sqrt(sxx / cnt - cx * cx), dy = sqrt(syy / cnt - cy * cy);
-		double wx = sqrt(mxx / mw - ex * ex), wy = sqrt(myy / mw - ey * ey);
-		print_message("%s: n %llu centroid (%.5f %.5f) map (%.5f %.5f), "
-		    "sd (%.5f %.5f) map (%.5f %.5f)\n", spec,
-		    (unsigned long long)cnt, cx, cy, ex, ey, dx, dy, wx, wy);
-		assert_true(fabs(cx - ex) < 0.1 / 128 && fabs(cy - ey) < 0.1 / 128);
-		assert_true(fabs(dx / wx - 1) < 0.01 && fabs(dy / wy - 1) < 0.01);
-		assert_true(fabs((double)cnt / 100000 - 1) < 0.01);
-	}
+	mom_check(&map, &m, spec);
+	assert_true(fabs(m.n / 100000 - 1) < 0.01);
 	frs_result_free(&r);
 	imap_free(&map);
 }
