@@ -1,0 +1,295 @@
+/*
+ * discrepancy: D2 and Dinf of 2-D point sets for the shape classes of
+ * the thesis (Sec. 6.2), one table row per point count (Eq. 6.3).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "disc.h"
+#include "outfile.h"
+#include "par.h"
+#include "progress.h"
+#include "ptsio.h"
+
+static const char usage[] =
+    "usage: discrepancy [-c CLASS] [--grid S] [--shapes K] [--exact]\n"
+    "                   [--sets N] [--per-set] [-S SEED] [-j N] [-q]\n"
+    "                   [-o FILE] FILE...\n"
+    "\n"
+    "  -c, --class C     star (default), rect, quad, half or circle\n"
+    "      --grid S      grid size: star 3000, rect 500, half 3000 border\n"
+    "                    points per side (thesis); with --exact, Dinf on\n"
+    "                    this grid instead of the exact Dinf\n"
+    "      --shapes K    random shapes per set for quad and circle\n"
+    "                    (default 9000000)\n"
+    "      --exact       closed-form D2 (star: Warnock; rect: all boxes)\n"
+    "                    and exact star Dinf over the critical boxes\n"
+    "      --sets N      split every file into sets of N points\n"
+    "      --per-set     a row per set instead of one per point count\n"
+    "  -S, --seed N      seed of the random shapes (default 1)\n"
+    "  -j, --threads N   threads (default: all cores)\n"
+    "  -o, --output F    output (default standard output)\n"
+    "  -q, --quiet       no notes;  --progress  a progress bar\n"
+    "  -h, --help        this help;  --version  the version\n";
+
+enum { OPT_GRID = OPT_FIRST_PRIVATE, OPT_SHAPES, OPT_EXACT, OPT_SETS,
+    OPT_PER_SET };
+
+static const struct option longopts[] = {
+	{ "class", required_argument, NULL, 'c' },
+	{ "grid", required_argument, NULL, OPT_GRID },
+	{ "shapes", required_argument, NULL, OPT_SHAPES },
+	{ "exact", no_argument, NULL, OPT_EXACT },
+	{ "sets", required_argument, NULL, OPT_SETS },
+	{ "per-set", no_argument, NULL, OPT_PER_SET },
+	CLI_COMMON_LONGOPTS,
+	{ NULL, 0, NULL, 0 }
+};
+
+struct set {
+	const double *xy;
+	size_t n;
+	const char *file;
+};
+
+struct run {
+	struct disc_ctx *ctx;
+	const struct set *sets;
+	struct disc_result *res;
+};
+
+static int one_set(void *arg, uint64_t b, uint64_t e)
+{
+	struct run *r = arg;
+	for (uint64_t i = b; i < e; i++)
+		if (disc_set(r->ctx, r->sets[i].xy, r->sets[i].n, 0,
+		    &r->res[i]) < 0)
+			return frs_fail_context(r->sets[i].file);
+	return 0;
+}
+
+/* Load FILE as 2-D coordinates, packed; split into sets of per (0: one
+ * set).  Appends to *sets. */
+static void load(const char *path, size_t per, struct set **sets,
+    size_t *nsets, double ***bufs, size_t *nbufs)
+{
+	struct frs_points p;
+	double *xy;
+	size_t k, stride;
+
+	if (pts_read(path, &p) < 0)
+		cli_die_lib();
+	if (p.dims != 2)
+		cli_die("%s: %u-dimensional points; discrepancy needs 2",
+		    path, p.dims);
+	if (p.n == 0)
+		cli_die("%s: no points", path);
+	if (per && p.n % per != 0)
+		cli_die("%s: %zu points are not a whole number of sets of %zu",
+		    path, p.n, per);
+	stride = 2 + p.extra;
+	xy = p.x;
+	if (p.extra)
+		for (size_t i = 0; i < p.n; i++)
+			xy[2 * i] = p.x[stride * i],
+			xy[2 * i + 1] = p.x[stride * i + 1];
+	k = per ? p.n / per : 1;
+	per = per ? per : p.n;
+	*sets = realloc(*sets, (*nsets + k) * sizeof **sets);
+	*bufs = realloc(*bufs, (*nbufs + 1) * sizeof **bufs);
+	if (*sets == NULL || *bufs == NULL)
+		cli_die("no memory for %zu sets", *nsets + k);
+	(*bufs)[(*nbufs)++] = xy;
+	for (size_t i = 0; i < k; i++) {
+		struct set *s = &(*sets)[(*nsets)++];
+		s->xy = xy + 2 * per * i;
+		s->n = per;
+		s->file = path;
+	}
+}
+
+static void method(const struct disc_opts *o, char *buf, size_t len)
+{
+	if (o->cls == DISC_QUAD || o->cls == DISC_CIRCLE)
+		snprintf(buf, len, "random%llu",
+		    (unsigned long long)o->shapes);
+	else if (o->cls == DISC_HALF)
+		snprintf(buf, len, "border%u", o->grid);
+	else if (o->exact_d2 && o->exact_dinf)
+		snprintf(buf, len, "exact");
+	else if (o->exact_d2)
+		snprintf(buf, len, "exact+grid%u", o->grid);
+	else
+		snprintf(buf, len, "grid%u", o->grid);
+}
+
+/* File names in a table: tabs and newlines would break its columns. */
+static void put_name(FILE *fp, const char *s)
+{
+	for (; *s; s++)
+		fputc(*s == '\t' || *s == '\n' ? '?' : *s, fp);
+}
+
+static void per_set_rows(FILE *fp, const struct disc_opts *o,
+    const struct set *sets, const struct disc_result *res, size_t nsets,
+    const char *meth, double tests)
+{
+	fprintf(fp, "class\tn\tset\tD2\tDinf\tshapes\tmethod\tfile\n");
+	for (size_t i = 0; i < nsets; i++) {
+		fprintf(fp, "%s\t%zu\t%zu\t%.9g\t%.9g\t%.17g\t%s\t",
+		    disc_class_name(o->cls), sets[i].n, i, res[i].d2,
+		    res[i].dinf, tests, meth);
+		put_name(fp, sets[i].file);
+		fputc('\n', fp);
+	}
+}
+
+/* One row per point count, in order of first appearance (Eq. 6.3). */
+static void group_rows(FILE *fp, const struct disc_opts *o,
+    const struct set *sets, const struct disc_result *res, size_t nsets,
+    const char *meth, double tests)
+{
+	char *done = calloc(nsets, 1);
+
+	if (done == NULL)
+		cli_die("no memory");
+	fprintf(fp, "class\tn\tsets\tD2\tD2_se\tDinf\tDinf_mean\tshapes\t"
+	    "method\n");
+	for (size_t i = 0; i < nsets; i++) {
+		double s1 = 0, c1 = 0, smax = 0, sinf = 0, m = 0, var = 0;
+		if (done[i])
+			continue;
+		for (size_t j = i; j < nsets; j++)
+			if (sets[j].n == sets[i].n) {
+				s1 += res[j].d2, sinf += res[j].dinf, m++;
+				smax = res[j].dinf > smax ? res[j].dinf : smax;
+			}
+		s1 /= m;
+		for (size_t j = i; j < nsets; j++)
+			if (sets[j].n == sets[i].n) {
+				c1 = res[j].d2 - s1;
+				var += c1 * c1;
+				done[j] = 1;
+			}
+		fprintf(fp, "%s\t%zu\t%.0f\t%.9g\t", disc_class_name(o->cls),
+		    sets[i].n, m, s1);
+		if (m > 1)
+			fprintf(fp, "%.3g", sqrt(var / (m - 1) / m));
+		else
+			fputc('-', fp);
+		fprintf(fp, "\t%.9g\t%.9g\t%.17g\t%s\n", smax, sinf / m,
+		    tests, meth);
+	}
+	free(done);
+}
+
+int main(int argc, char **argv)
+{
+	struct disc_opts o = { .cls = DISC_STAR };
+	int c, have_grid = 0, have_shapes = 0, per_set = 0;
+	size_t per = 0, nsets = 0, nbufs = 0;
+	struct set *sets = NULL;
+	double **bufs = NULL, tests;
+	struct disc_result *res;
+	struct run run;
+	struct progress pr;
+	struct outfile of;
+	char meth[64];
+
+	cli_init("discrepancy", usage);
+	while ((c = getopt_long(argc, argv, "c:" CLI_COMMON_SHORTOPTS,
+	    longopts, NULL)) != -1) {
+		switch (c) {
+		case 'c':
+			if (disc_parse_class(optarg, &o.cls) < 0)
+				cli_usage_error("-c: %s", frs_errmsg());
+			break;
+		case OPT_GRID:
+			o.grid = (uint32_t)cli_u64("--grid", optarg, 2,
+			    DISC_MAX_GRID);
+			have_grid = 1;
+			break;
+		case OPT_SHAPES:
+			o.shapes = cli_u64("--shapes", optarg, 1,
+			    (uint64_t)1 << 40);
+			have_shapes = 1;
+			break;
+		case OPT_EXACT: o.exact_d2 = 1; break;
+		case OPT_SETS:
+			per = (size_t)cli_u64("--sets", optarg, 1,
+			    (uint64_t)1 << 40);
+			break;
+		case OPT_PER_SET: per_set = 1; break;
+		default:
+			if (!cli_common_opt(c, optarg))
+				cli_usage(2);
+		}
+	}
+	if (optind == argc)
+		cli_usage_error("no point files");
+	if (o.exact_d2 && !disc_has_exact_d2(o.cls))
+		cli_usage_error("--exact: no closed form for class %s; use "
+		    "--shapes or --grid", disc_class_name(o.cls));
+	if (have_shapes && o.cls != DISC_QUAD && o.cls != DISC_CIRCLE)
+		cli_usage_error("--shapes: class %s tests a grid; use --grid",
+		    disc_class_name(o.cls));
+	if (have_grid && (o.cls == DISC_QUAD || o.cls == DISC_CIRCLE))
+		cli_usage_error("--grid: class %s tests random shapes; use "
+		    "--shapes", disc_class_name(o.cls));
+	if (o.cls == DISC_RECT && have_grid && o.grid > DISC_MAX_RECT_GRID)
+		cli_usage_error("--grid: at most %d for rect",
+		    DISC_MAX_RECT_GRID);
+	o.exact_dinf = o.exact_d2 && !have_grid && disc_has_exact_dinf(o.cls);
+	if (!have_grid)
+		o.grid = o.cls == DISC_RECT ? DISC_RECT_GRID :
+		    o.cls == DISC_HALF ? DISC_HALF_GRID : DISC_STAR_GRID;
+	if (!have_shapes)
+		o.shapes = DISC_SHAPES;
+	o.seed = cli.seed;
+	if (o.exact_d2 && o.cls == DISC_RECT && !have_grid)
+		cli_note("rect: exact D2; Dinf on the %u grid (--grid S to "
+		    "choose)", o.grid);
+
+	for (int i = optind; i < argc; i++)
+		load(argv[i], per, &sets, &nsets, &bufs, &nbufs);
+	if ((res = calloc(nsets, sizeof *res)) == NULL)
+		cli_die("no memory for %zu sets", nsets);
+	if ((run.ctx = disc_ctx_new(&o)) == NULL)
+		cli_die_lib();
+	run.sets = sets, run.res = res;
+	if (nsets > 1) {
+		progress_begin(&pr, "sets", nsets);
+		if (frs_parallel(nsets, 1, one_set, &run, &pr) < 0)
+			cli_die_lib();
+		progress_end(&pr);
+	} else {
+		pr.label = "discrepancy";
+		disc_set_progress(&pr);
+		if (disc_set(run.ctx, sets[0].xy, sets[0].n, 1, &res[0]) < 0) {
+			frs_fail_context(sets[0].file);
+			cli_die_lib();
+		}
+		disc_set_progress(NULL);
+	}
+	disc_ctx_free(run.ctx);
+
+	method(&o, meth, sizeof meth);
+	tests = o.exact_d2 && o.exact_dinf ? 0.0 : disc_tests(&o);
+	if (outfile_open(&of, cli.out, 0) < 0)
+		cli_die_lib();
+	if (per_set)
+		per_set_rows(of.fp, &o, sets, res, nsets, meth, tests);
+	else
+		group_rows(of.fp, &o, sets, res, nsets, meth, tests);
+	if (outfile_commit(&of) < 0)
+		cli_die_lib();
+	for (size_t i = 0; i < nbufs; i++)
+		free(bufs[i]);
+	free(bufs), free(sets), free(res);
+	return 0;
+}

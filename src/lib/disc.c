@@ -1,0 +1,408 @@
+/*
+ * Discrepancy: the driver, the star and rectangle classes.
+ *
+ * D2 of star and rect, on a grid or over the continuum, expands the mean
+ * of (C/n - area)^2 into three sums (Warnock 1972; the same algebra on the
+ * grid): sum of C^2 over the shapes, which is a sum over point pairs of
+ * the number of shapes holding both; sum of C * area, one term per point;
+ * and sum of area^2, a constant.  The pair sum has the form
+ *   sum_{i,j} ux(min x) vx(max x) uy(min y) vy(max y)
+ * and takes O(n log n) with a sweep in x and Fenwick trees over y ranks.
+ * The three sums are O(1) each and cancel to O(1/n), so they are carried
+ * in double-double.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "disc.h"
+#include "discint.h"
+#include "discshape.h"
+#include "err.h"
+#include "geom.h"
+#include "progress.h"
+
+static const char *const names[] = { "star", "rect", "quad", "half",
+    "circle" };
+
+int disc_parse_class(const char *s, enum disc_class *c)
+{
+	for (int i = 0; i < 5; i++)
+		if (strcmp(s, names[i]) == 0) {
+			*c = (enum disc_class)i;
+			return 0;
+		}
+	if (strcmp(s, "rectangle") == 0 || strcmp(s, "quadrilateral") == 0 ||
+	    strcmp(s, "halfspace") == 0) {
+		*c = s[0] == 'r' ? DISC_RECT : s[0] == 'q' ? DISC_QUAD :
+		    DISC_HALF;
+		return 0;
+	}
+	return frs_fail("unknown class '%s' (star, rect, quad, half or "
+	    "circle)", s);
+}
+
+const char *disc_class_name(enum disc_class c)
+{
+	return names[c];
+}
+
+int disc_has_exact_d2(enum disc_class c)
+{
+	return c == DISC_STAR || c == DISC_RECT;
+}
+
+int disc_has_exact_dinf(enum disc_class c)
+{
+	return c == DISC_STAR;
+}
+
+double disc_tests(const struct disc_opts *o)
+{
+	double s = o->grid;
+
+	switch (o->cls) {
+	case DISC_STAR: return s * s;
+	case DISC_RECT: return (s * (s - 1) / 2) * (s * (s - 1) / 2);
+	case DISC_HALF: return 6 * s * s;
+	default: return (double)o->shapes;
+	}
+}
+
+static struct progress *disc_pr;
+
+void disc_set_progress(struct progress *pr)
+{
+	disc_pr = pr;
+}
+
+int disc_run_chunks(uint64_t n, uint64_t chunk,
+    int (*fn)(void *, uint64_t, uint64_t), void *ctx, int par)
+{
+	if (par) {
+		int rc;
+		if (disc_pr != NULL)
+			progress_begin(disc_pr, disc_pr->label, n);
+		rc = frs_parallel(n, chunk, fn, ctx, disc_pr);
+		if (disc_pr != NULL)
+			progress_end(disc_pr);
+		return rc;
+	}
+	for (uint64_t b = 0; b < n; b += chunk)
+		if (fn(ctx, b, b + chunk < n ? b + chunk : n) < 0)
+			return -1;
+	return 0;
+}
+
+/* Neumaier's compensated sum of v[0..k-1], in order. */
+double disc_sum(const double *v, size_t k)
+{
+	double s = 0.0, c = 0.0;
+
+	for (size_t i = 0; i < k; i++) {
+		double t = s + v[i];
+		c += fabs(s) >= fabs(v[i]) ? (s - t) + v[i] : (v[i] - t) + s;
+		s = t;
+	}
+	return s + c;
+}
+
+struct key {
+	double v;
+	uint32_t i;
+};
+
+static int key_cmp(const void *a, const void *b)
+{
+	const struct key *p = a, *q = b;
+	if (p->v != q->v)
+		return p->v < q->v ? -1 : 1;
+	return (p->i > q->i) - (p->i < q->i);
+}
+
+/* Order of the points by coordinate c (ties by index). */
+static struct key *sorted(const double *xy, size_t n, int c)
+{
+	struct key *k = malloc(n * sizeof *k);
+	if (k == NULL) {
+		frs_fail("no memory for %zu points", n);
+		return NULL;
+	}
+	for (size_t i = 0; i < n; i++) {
+		k[i].v = xy[2 * i + (size_t)c];
+		k[i].i = (uint32_t)i;
+	}
+	qsort(k, n, sizeof *k, key_cmp);
+	return k;
+}
+
+static struct dd fen_prefix(const struct dd *f, size_t r)
+{
+	struct dd s = dd_from(0.0);
+	for (; r > 0; r &= r - 1)
+		s = dd_add(s, f[r]);
+	return s;
+}
+
+static void fen_add(struct dd *f, size_t n, size_t r, double v)
+{
+	for (r++; r <= n; r += r & (~r + 1))
+		f[r] = dd_add_d(f[r], v);
+}
+
+/* The pair sum of the file comment; u, v hold ux, vx, uy, vy for each
+ * point, 4 per point. */
+static int pair_sum(const double *xy, size_t n, const double *u,
+    struct dd *out)
+{
+	struct key *kx = sorted(xy, n, 0), *ky = sorted(xy, n, 1);
+	uint32_t *rank = malloc(n * sizeof *rank);
+	struct dd *f = calloc(2 * (n + 1), sizeof *f), *g, tot, diag;
+
+	if (kx == NULL || ky == NULL || rank == NULL || f == NULL) {
+		free(kx), free(ky), free(rank), free(f);
+		return frs_fail("no memory for %zu points", n);
+	}
+	g = f + n + 1;
+	for (size_t r = 0; r < n; r++)
+		rank[ky[r].i] = (uint32_t)r;
+	tot = diag = dd_from(0.0);
+	for (size_t k = 0; k < n; k++) {
+		const double *w = u + 4 * (size_t)kx[k].i;
+		size_t r = rank[kx[k].i];
+		struct dd below = fen_prefix(f, r);
+		struct dd above = dd_add(fen_prefix(g, n),
+		    dd_mul_d(fen_prefix(g, r), -1.0));
+		struct dd t = dd_add(dd_mul_d(below, w[3]),
+		    dd_mul_d(above, w[2]));
+		tot = dd_add(tot, dd_mul_d(t, w[1]));
+		diag = dd_add(diag, dd_mul_d(dd_prod(w[0] * w[1], w[2]),
+		    w[3]));
+		fen_add(f, n, r, w[0] * w[2]);
+		fen_add(g, n, r, w[0] * w[3]);
+	}
+	*out = dd_add(dd_mul_d(tot, 2.0), diag);
+	free(kx), free(ky), free(rank), free(f);
+	return 0;
+}
+
+/* sqrt((pairs/n^2 - 2 single/n + cnst) / shapes), never negative. */
+static double l2_combine(struct dd pairs, struct dd single, struct dd cnst,
+    double shapes, size_t n)
+{
+	double nn = (double)n;
+	struct dd t = dd_div_d(dd_div_d(pairs, nn), nn);
+
+	t = dd_add(t, dd_mul_d(dd_div_d(single, nn), -2.0));
+	t = dd_add(t, cnst);
+	double v = dd_value(t) / shapes;
+	return v > 0.0 ? sqrt(v) : 0.0;
+}
+
+double disc_star_line(uint32_t i, uint32_t s)
+{
+	return (double)i / (double)s;
+}
+
+double disc_rect_line(uint32_t a, uint32_t s)
+{
+	return (double)a / (double)(s - 1);
+}
+
+/* Number of lines line(i), i = lo..hi, at or below v (lines increase). */
+static uint32_t lines_le(double v, uint32_t lo, uint32_t hi, uint32_t s,
+    double (*line)(uint32_t, uint32_t), double scale)
+{
+	double f = floor(v * scale);
+	int64_t k = f < (double)lo ? (int64_t)lo - 1 :
+	    f > (double)hi ? (int64_t)hi : (int64_t)f;
+
+	while (k + 1 <= (int64_t)hi && line((uint32_t)(k + 1), s) <= v)
+		k++;
+	while (k >= (int64_t)lo && line((uint32_t)k, s) > v)
+		k--;
+	return (uint32_t)(k - (int64_t)lo + 1);
+}
+
+uint32_t disc_star_bin(double v, uint32_t s)
+{
+	return lines_le(v, 1, s, s, disc_star_line, (double)s);
+}
+
+uint32_t disc_rect_bin(double v, uint32_t s)
+{
+	return lines_le(v, 0, s - 1, s, disc_rect_line, (double)(s - 1)) - 1;
+}
+
+double disc_star_l2_exact(const double *xy, size_t n)
+{
+	double *u = malloc(4 * n * sizeof *u);
+	struct dd pairs, single = dd_from(0.0);
+
+	if (u == NULL)
+		return frs_fail("no memory for %zu points", n), -1.0;
+	for (size_t i = 0; i < n; i++) {
+		double x = xy[2 * i], y = xy[2 * i + 1];
+		u[4 * i] = 1.0, u[4 * i + 1] = 1.0 - x;
+		u[4 * i + 2] = 1.0, u[4 * i + 3] = 1.0 - y;
+		single = dd_add(single, dd_mul_d(dd_prod(1.0 - x * x,
+		    1.0 - y * y), 0.25));
+	}
+	if (pair_sum(xy, n, u, &pairs) < 0) {
+		free(u);
+		return -1.0;
+	}
+	free(u);
+	return l2_combine(pairs, single, dd_div_d(dd_from(1.0), 9.0), 1.0, n);
+}
+
+double disc_rect_l2_exact(const double *xy, size_t n)
+{
+	double *u = malloc(4 * n * sizeof *u);
+	struct dd pairs, single = dd_from(0.0);
+
+	if (u == NULL)
+		return frs_fail("no memory for %zu points", n), -1.0;
+	for (size_t i = 0; i < n; i++) {
+		double x = xy[2 * i], y = xy[2 * i + 1];
+		u[4 * i] = 2.0 * x, u[4 * i + 1] = 1.0 - x;
+		u[4 * i + 2] = 2.0 * y, u[4 * i + 3] = 1.0 - y;
+		single = dd_add(single, dd_prod(x * (1.0 - x), y * (1.0 - y)));
+	}
+	if (pair_sum(xy, n, u, &pairs) < 0) {
+		free(u);
+		return -1.0;
+	}
+	free(u);
+	/* E[area^2] = (E|u - v|^2)^2 = 1/36 */
+	return l2_combine(pairs, single, dd_div_d(dd_from(1.0), 36.0), 1.0, n);
+}
+
+/* Grid star: a point at bin k (lines 1..k at or below it) lies in the
+ * boxes with corner index i > k: s - k of them per axis, and the sum of
+ * their corner coordinates is (s(s+1)/2 - k(k+1)/2)/s. */
+double disc_star_l2_grid(const double *xy, size_t n, uint32_t s)
+{
+	double *u = malloc(4 * n * sizeof *u), ds = (double)s;
+	struct dd pairs, single = dd_from(0.0), sq = dd_from(0.0);
+
+	if (u == NULL)
+		return frs_fail("no memory for %zu points", n), -1.0;
+	for (size_t i = 0; i < n; i++) {
+		double kx = disc_star_bin(xy[2 * i], s);
+		double ky = disc_star_bin(xy[2 * i + 1], s);
+		double gx = (ds * (ds + 1) - kx * (kx + 1)) / 2;
+		double gy = (ds * (ds + 1) - ky * (ky + 1)) / 2;
+		u[4 * i] = 1.0, u[4 * i + 1] = ds - kx;
+		u[4 * i + 2] = 1.0, u[4 * i + 3] = ds - ky;
+		single = dd_add(single, dd_prod(gx, gy));	/* times s^2 */
+	}
+	if (pair_sum(xy, n, u, &pairs) < 0) {
+		free(u);
+		return -1.0;
+	}
+	free(u);
+	single = dd_div_d(dd_div_d(single, ds), ds);
+	/* (sum of (i/s)^2)^2, i = 1..s */
+	sq = dd_from(ds * (ds + 1) * (2 * ds + 1) / 6);
+	sq = dd_div_d(dd_div_d(sq, ds), ds);
+	sq = dd_mul(sq, sq);
+	return l2_combine(pairs, single, sq, ds * ds, n);
+}
+
+/* Grid rect: lines 0..l-1 lie at or below the point (l >= 1), l..s-1
+ * above; the boxes holding it per axis: l (s - l), and the sum of their
+ * widths times (s-1): l (sum of b >= l) - (s - l)(sum of a < l). */
+double disc_rect_l2_grid(const double *xy, size_t n, uint32_t s)
+{
+	double *u = malloc(4 * n * sizeof *u), ds = (double)s, m = ds - 1;
+	struct dd pairs, single = dd_from(0.0), sq = dd_from(0.0);
+
+	if (u == NULL)
+		return frs_fail("no memory for %zu points", n), -1.0;
+	for (size_t i = 0; i < n; i++) {
+		double w[2];
+		for (int c = 0; c < 2; c++) {
+			double l = disc_rect_bin(xy[2 * i + (size_t)c], s) + 1;
+			double lo = l * (l - 1) / 2, hi = ds * m / 2 - lo;
+			w[c] = l * hi - (ds - l) * lo;
+			u[4 * i + 2 * (size_t)c] = l;
+			u[4 * i + 2 * (size_t)c + 1] = ds - l;
+		}
+		single = dd_add(single, dd_prod(w[0], w[1]));
+	}
+	if (pair_sum(xy, n, u, &pairs) < 0) {
+		free(u);
+		return -1.0;
+	}
+	free(u);
+	single = dd_div_d(dd_div_d(single, m), m);
+	/* sum over a < b of (b - a)^2 = sum_d (s - d) d^2, exact in double
+	 * for s <= DISC_MAX_RECT_GRID */
+	for (uint32_t d = 1; d < s; d++)
+		sq = dd_add(sq, dd_prod((double)(s - d), (double)d * d));
+	sq = dd_div_d(sq, m * m);
+	sq = dd_mul(sq, sq);
+	return l2_combine(pairs, single, sq,
+	    (ds * m / 2) * (ds * m / 2), n);
+}
+
+struct disc_ctx {
+	struct disc_opts o;
+	struct disc_shapes *sh;
+};
+
+struct disc_ctx *disc_ctx_new(const struct disc_opts *o)
+{
+	struct disc_ctx *c = calloc(1, sizeof *c);
+
+	if (c == NULL) {
+		frs_fail("no memory");
+		return NULL;
+	}
+	c->o = *o;
+	if (o->cls == DISC_QUAD || o->cls == DISC_CIRCLE) {
+		c->sh = disc_shapes_new(o->cls, o->shapes, o->seed);
+		if (c->sh == NULL) {
+			free(c);
+			return NULL;
+		}
+	}
+	return c;
+}
+
+void disc_ctx_free(struct disc_ctx *c)
+{
+	if (c != NULL)
+		disc_shapes_free(c->sh);
+	free(c);
+}
+
+int disc_set(struct disc_ctx *c, const double *xy, size_t n, int par,
+    struct disc_result *r)
+{
+	const struct disc_opts *o = &c->o;
+
+	if (n == 0)
+		return frs_fail("no points");
+	switch (o->cls) {
+	case DISC_STAR:
+		r->d2 = o->exact_d2 ? disc_star_l2_exact(xy, n) :
+		    disc_star_l2_grid(xy, n, o->grid);
+		if (r->d2 < 0)
+			return -1;
+		return o->exact_dinf ? disc_star_dinf_exact(xy, n, &r->dinf) :
+		    disc_star_dinf_grid(xy, n, o->grid, par, &r->dinf);
+	case DISC_RECT:
+		r->d2 = o->exact_d2 ? disc_rect_l2_exact(xy, n) :
+		    disc_rect_l2_grid(xy, n, o->grid);
+		if (r->d2 < 0)
+			return -1;
+		return disc_rect_dinf_grid(xy, n, o->grid, par, &r->dinf);
+	case DISC_HALF:
+		return disc_half(xy, n, o->grid, par, r);
+	default:
+		return disc_shapes_run(c->sh, xy, n, par, r);
+	}
+}
