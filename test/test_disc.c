@@ -301,6 +301,40 @@ static double star_dinf_brute(const double *xy, size_t n)
 	return best;
 }
 
+/* The plain O(n^2) sweep: y of the swept points kept sorted. */
+static int dcmp(const void *a, const void *b)
+{
+	double p = *(const double *)a, q = *(const double *)b;
+	return (p > q) - (p < q);
+}
+
+static double star_dinf_sweep(const double *xy, size_t n)
+{
+	double (*pt)[2] = malloc(n * sizeof *pt), *y = malloc(n * sizeof *y);
+	double best = 0;
+	size_t m = 0, k = 0;
+	memcpy(pt, xy, n * sizeof *pt);
+	qsort(pt, n, sizeof *pt, dcmp);
+	while (k < n) {
+		double a = pt[k][0];
+		best = fmax(best, a - (double)m / n);
+		for (size_t j = 0; j < m; j++)
+			best = fmax(best, a * y[j] - (double)j / n);
+		for (; k < n && pt[k][0] == a; k++) {
+			size_t at = m++;
+			while (at > 0 && y[at - 1] > pt[k][1])
+				y[at] = y[at - 1], at--;
+			y[at] = pt[k][1];
+		}
+		for (size_t j = 0; j < m; j++)
+			best = fmax(best, (double)(j + 1) / n - a * y[j]);
+	}
+	for (size_t j = 0; j < m; j++)
+		best = fmax(best, y[j] - (double)j / n);
+	free(pt), free(y);
+	return best;
+}
+
 static void star_dinf(void **state)
 {
 	static const double one[][2] = { { 0, 0 }, { 0.5, 0.5 }, { 0.9, 0.2 },
@@ -324,6 +358,21 @@ static void star_dinf(void **state)
 			    &g), 0);
 			assert_true(g <= v + 1e-15);
 		}
+		free(xy);
+	}
+	/* many blocks of lines: against the plain sweep */
+	for (size_t n = 500; n <= 4000; n *= 8) {
+		double *xy = hard_points(n, 37, 450 + n);
+		for (size_t i = 0; i < n; i += 7)	/* rounded: ties */
+			xy[2 * i + 1] = floor(xy[2 * i + 1] * 64) / 64;
+		assert_int_equal(disc_star_dinf_exact(xy, n, &v), 0);
+		assert_near(v, star_dinf_sweep(xy, n), 1e-15);
+		free(xy);
+	}
+	{
+		double *xy = regular(30);
+		assert_int_equal(disc_star_dinf_exact(xy, 900, &v), 0);
+		assert_near(v, star_dinf_sweep(xy, 900), 1e-15);
 		free(xy);
 	}
 }

@@ -50,79 +50,168 @@ static int dcmp(const void *a, const void *b)
  * half-open boxes [0,a) x [0,b) of count/n - ab is reached by closed boxes
  * whose corner coordinates are point coordinates; too few: by open boxes
  * whose corner coordinates are point coordinates or 1.  Sweep a over the
- * x coordinates, keeping the y coordinates of the points left of the
- * sweep sorted (Y); the j-th smallest gives both kinds of box.  With ties,
- * the maximum over j still picks the right count: the last of equal
- * values for the excess, the first for the deficit.  O(n^2).
+ * x coordinates.  With the y coordinates sorted (y_j), the box up to y_j
+ * has c_j points (y <= y_j, closed) or c'_j (y < y_j, open), and
+ *   excess  = max_j c_j/n - a y_j,   deficit = max_j a y_j - c'_j/n:
+ * the maximum of lines in a.  Inserting a point adds 1 to c on a suffix
+ * of j.  The lines are kept in blocks of about sqrt(n), each with its
+ * upper hull and a pending add for the whole block; a grows, so each
+ * hull is walked forward.  O(n^1.5) instead of O(n^2).  A y_j of a point
+ * not yet swept gives a real box too, so no line needs to be left out.
  */
-static double deficit(const double *y, size_t m, double a, double n)
+struct lines {
+	const double *y;	/* sorted */
+	double sy, sc, n;	/* line j: sc c_j / n + sy y_j a */
+	uint32_t *c, *hull, *ptr, *h, *add;
+	unsigned char *dirty;
+	size_t cnt, bsz, nb;
+};
+
+static double line_at(const struct lines *l, size_t j, uint32_t add, double a)
 {
-	double best = a - (double)m / n;
-	for (size_t j = 0; j < m; j++) {
-		double v = a * y[j] - (double)j / n;
+	return l->sc * (double)(l->c[j] + add) / l->n + l->sy * l->y[j] * a;
+}
+
+static void hull_build(struct lines *l, size_t b)
+{
+	size_t lo = b * l->bsz, hi = lo + l->bsz < l->cnt ? lo + l->bsz :
+	    l->cnt, k = hi - lo;
+	uint32_t *h = l->hull + lo, m = 0;
+
+	for (size_t t = 0; t < k; t++) {
+		/* by slope sy * y ascending */
+		uint32_t j = (uint32_t)(l->sy > 0 ? lo + t : hi - 1 - t);
+		double mj = l->sy * l->y[j], bj = l->sc * l->c[j];
+		while (m > 0) {
+			uint32_t p = h[m - 1];
+			double mp = l->sy * l->y[p], bp = l->sc * l->c[p];
+			if (mp == mj) {
+				if (bp >= bj)
+					goto skip;
+				m--;
+				continue;
+			}
+			if (m >= 2) {
+				uint32_t q = h[m - 2];
+				double mq = l->sy * l->y[q], bq = l->sc * l->c[q];
+				/* p is never above both q and j */
+				if ((bq - bj) * (mp - mq) <= (bq - bp) * (mj - mq)) {
+					m--;
+					continue;
+				}
+			}
+			break;
+		}
+		h[m++] = j;
+skip:		;
+	}
+	l->h[b] = m;
+	l->ptr[b] = 0;
+	l->dirty[b] = 0;
+}
+
+/* c_j += 1 for j >= from. */
+static void lines_add(struct lines *l, size_t from)
+{
+	size_t b = from / l->bsz, end = (b + 1) * l->bsz;
+	for (size_t j = from; j < end && j < l->cnt; j++)
+		l->c[j]++;
+	l->dirty[b] = 1;
+	for (b++; b < l->nb; b++)
+		l->add[b]++;
+}
+
+static double lines_max(struct lines *l, double a)
+{
+	double best = -1.0;
+	for (size_t b = 0; b < l->nb; b++) {
+		const uint32_t *h = l->hull + b * l->bsz;
+		uint32_t p;
+		double v;
+		if (l->dirty[b])
+			hull_build(l, b);
+		p = l->ptr[b];
+		v = line_at(l, h[p], l->add[b], a);
+		while (p + 1 < l->h[b]) {
+			double w = line_at(l, h[p + 1], l->add[b], a);
+			if (w < v)
+				break;
+			v = w, p++;
+		}
+		l->ptr[b] = p;
 		best = v > best ? v : best;
 	}
 	return best;
 }
 
-static double excess(const double *y, size_t m, double a, double n)
+static int lines_init(struct lines *l, const double *y, size_t n, double sy)
 {
-	double best = 0.0;
-	for (size_t j = 0; j < m; j++) {
-		double v = (double)(j + 1) / n - a * y[j];
-		best = v > best ? v : best;
+	l->y = y, l->cnt = n, l->n = (double)n, l->sy = sy, l->sc = -sy;
+	l->bsz = (size_t)sqrt((double)n) + 1;
+	l->nb = (n + l->bsz - 1) / l->bsz;
+	l->c = calloc(2 * n + 3 * l->nb, sizeof *l->c);
+	l->dirty = malloc(l->nb);
+	if (l->c == NULL || l->dirty == NULL) {
+		free(l->c), free(l->dirty);
+		return frs_fail("no memory for %zu points", n);
 	}
-	return best;
+	l->hull = l->c + n, l->ptr = l->hull + n;
+	l->h = l->ptr + l->nb, l->add = l->h + l->nb;
+	memset(l->dirty, 1, l->nb);
+	return 0;
+}
+
+static size_t bound(const double *y, size_t n, double v, int upper)
+{
+	size_t lo = 0, hi = n;
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+		if (y[mid] < v || (upper && y[mid] == v))
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo;
 }
 
 int disc_star_dinf_exact(const double *xy, size_t n, double *dinf)
 {
-	double *x = malloc(2 * n * sizeof *x), *y, best = 0.0, nn = (double)n;
-	size_t m = 0;
+	double (*pt)[2] = malloc(n * sizeof *pt), *y = malloc(n * sizeof *y);
+	double best = 0.0, nn = (double)n;
+	struct lines ex, de;
+	size_t k = 0;
 
-	if (x == NULL)
+	if (pt == NULL || y == NULL) {
+		free(pt), free(y);
 		return frs_fail("no memory for %zu points", n);
-	y = x + n;
-	{
-		/* the points sorted by x (dcmp looks at the first double) */
-		double (*pt)[2] = malloc(n * sizeof *pt);
-		if (pt == NULL) {
-			free(x);
-			return frs_fail("no memory for %zu points", n);
-		}
-		memcpy(pt, xy, n * sizeof *pt);
-		qsort(pt, n, sizeof *pt, dcmp);
-		for (size_t i = 0; i < n; i++)
-			x[i] = pt[i][0];
-		for (size_t k = 0; k < n;) {
-			double a = x[k], v;
-			v = deficit(y, m, a, nn);
-			best = v > best ? v : best;
-			for (; k < n && x[k] == a; k++) {
-				double py = pt[k][1];
-				size_t lo = 0, hi = m;
-				while (lo < hi) {
-					size_t mid = (lo + hi) / 2;
-					if (y[mid] <= py)
-						lo = mid + 1;
-					else
-						hi = mid;
-				}
-				memmove(y + lo + 1, y + lo,
-				    (m - lo) * sizeof *y);
-				y[lo] = py;
-				m++;
-			}
-			v = excess(y, m, a, nn);
-			best = v > best ? v : best;
-		}
-		free(pt);
 	}
-	{
-		double v = deficit(y, m, 1.0, nn);
+	memcpy(pt, xy, n * sizeof *pt);
+	qsort(pt, n, sizeof *pt, dcmp);	/* by x: dcmp reads the first */
+	for (size_t i = 0; i < n; i++)
+		y[i] = pt[i][1];
+	qsort(y, n, sizeof *y, dcmp);
+	if (lines_init(&ex, y, n, -1.0) < 0) {
+		free(pt), free(y);
+		return -1;
+	}
+	if (lines_init(&de, y, n, 1.0) < 0) {
+		free(ex.c), free(ex.dirty), free(pt), free(y);
+		return -1;
+	}
+	while (k < n) {
+		double a = pt[k][0], v;
+		v = fmax(lines_max(&de, a), a - (double)k / nn);
+		best = v > best ? v : best;
+		for (; k < n && pt[k][0] == a; k++) {
+			lines_add(&ex, bound(y, n, pt[k][1], 0));
+			lines_add(&de, bound(y, n, pt[k][1], 1));
+		}
+		v = lines_max(&ex, a);
 		best = v > best ? v : best;
 	}
-	free(x);
+	best = fmax(best, lines_max(&de, 1.0));
+	free(ex.c), free(ex.dirty), free(de.c), free(de.dirty);
+	free(pt), free(y);
 	*dinf = best;
 	return 0;
 }
