@@ -12,7 +12,7 @@
  *                 D2 over the grid in O(n log n) by expanding the square,
  *                 Dinf from a summed-area sweep in O(s^2).
  *           exact: Warnock's closed form for D2 in O(n log n); Dinf over
- *                 the critical boxes in O(n^2).
+ *                 the critical boxes in O(n^1.5).
  *   rect    grid: lines a/(s-1), a = 0..s-1, every box with a < b, c < d,
  *                 (s(s-1)/2)^2 boxes; D2 in O(n log n), Dinf in
  *                 O(s^2 min(s, n)).
