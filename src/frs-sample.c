@@ -20,8 +20,8 @@ static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
     "                  [--sigma S] [--jitter none|halton|random] [--pdf]\n"
     "                  [--progressive N1,N2,...] [--threshold unbiased|thesis]\n"
-    "                  [--count-only] [-s WxH] [-S SEED] [-j N] [-T] [-v]\n"
-    "                  [-o FILE]\n"
+    "                  [--count-only] [--sets M] [-s WxH] [-S SEED] [-j N]\n"
+    "                  [-T] [-v] [-o FILE]\n"
     "\n"
     "  -n, --count N        samples to make (about; see frs-sample(1))\n"
     "  -i, --importance M   map: PNG, OpenEXR or a spec such as blob\n"
@@ -38,6 +38,9 @@ static const char usage[] =
     "                       step in turn, with a column giving the step\n"
     "      --threshold R    unbiased (default) or thesis (Eq. 4.14)\n"
     "      --count-only     print the count, make no points\n"
+    "      --sets M         write M sets one after another, set i made\n"
+    "                       with seed S+i (default 1; not with\n"
+    "                       --progressive)\n"
     "  -s, --size WxH       size at which procedural maps are evaluated\n"
     "                       (default 128x128), or files resampled\n"
     "      --equirect       weight map rows by sin(theta)\n"
@@ -52,8 +55,12 @@ static const char usage[] =
 
 enum {
 	OPT_SIGMA = OPT_FIRST_PRIVATE, OPT_JITTER, OPT_PDF, OPT_PROG,
-	OPT_THRESHOLD, OPT_COUNT_ONLY, OPT_EQUIRECT, OPT_STRICT
+	OPT_THRESHOLD, OPT_COUNT_ONLY, OPT_EQUIRECT, OPT_STRICT, OPT_SETS
 };
+
+/* Most samples asked for in all the sets of one file (M * n): far inside
+ * a 64-bit file offset at 32 bytes a record. */
+#define SETS_MAX_TOTAL ((uint64_t)1 << 56)
 
 static const struct option longopts[] = {
 	{ "count", required_argument, NULL, 'n' },
@@ -69,6 +76,7 @@ static const struct option longopts[] = {
 	{ "count-only", no_argument, NULL, OPT_COUNT_ONLY },
 	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
 	{ "strict", no_argument, NULL, OPT_STRICT },
+	{ "sets", required_argument, NULL, OPT_SETS },
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
@@ -84,6 +92,7 @@ struct opts {
 	enum frs_rule rule;
 	int pdf, count_only, verbose, flags;
 	uint32_t w, h;
+	uint64_t sets;		/* --sets, default 1 */
 };
 
 static void parse_steps(struct opts *o, const char *s)
@@ -157,6 +166,9 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		case OPT_COUNT_ONLY: o->count_only = 1; break;
 		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
 		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
+		case OPT_SETS:
+			o->sets = cli_u64("--sets", optarg, 1, SETS_MAX_TOTAL);
+			break;
 		case 'v': o->verbose = 1; break;
 		default:
 			if (!cli_common_opt(c, optarg))
@@ -173,7 +185,19 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 	} else if (have_n && n != o->steps[o->nsteps - 1]) {
 		cli_usage_error("-n %llu differs from the last progressive count",
 		    (unsigned long long)n);
+	} else if (o->sets > 1) {
+		cli_usage_error("--sets and --progressive cannot be combined "
+		    "(the step column would not tell the sets apart)");
 	}
+	n = o->steps[o->nsteps - 1];
+	if (o->sets > SETS_MAX_TOTAL / n)
+		cli_usage_error("--sets %llu: %llu sets of %llu samples exceed "
+		    "the 2^56 one file can hold", (unsigned long long)o->sets,
+		    (unsigned long long)o->sets, (unsigned long long)n);
+	if (o->sets - 1 > UINT64_MAX - cli.seed)
+		cli_usage_error("--sets %llu: the seeds from -S %llu would pass "
+		    "2^64-1", (unsigned long long)o->sets,
+		    (unsigned long long)cli.seed);
 }
 
 /* The default matrix: $FRS_MATRIX, the source tree, the installed one. */
@@ -220,44 +244,18 @@ static int put_elem(struct pts_writer *w, const struct opts *o,
 	return pts_writer_put(w, rec);
 }
 
-static void write_points(const struct opts *o, const struct frs_setup *s,
-    const struct frs_imap *map, const struct frs_result *r)
+/* Write one set's points: progressive steps in turn, each in map order. */
+static int put_set(struct pts_writer *w, const struct opts *o,
+    const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_result *r)
 {
-	struct outfile of;
-	struct pts_writer w;
-	unsigned extra = (unsigned)o->pdf + (o->nsteps > 1);
-
-	if (outfile_open(&of, cli.out, !cli.text) < 0)
-		cli_die_lib();
-	if (pts_writer_begin(&w, of.fp, of.name, 2, extra, r->count,
-	    cli.text) < 0)
-		goto fail;
-	/* Progressive steps in turn, each in map order. */
 	for (uint32_t step = 0; step < o->nsteps; step++)
 		for (uint64_t c = 0; c < r->nchunk; c++)
 			for (uint64_t i = 0; i < r->chunk[c].n; i++)
 				if (r->chunk[c].e[i].step == step &&
-				    put_elem(&w, o, s, map, &r->chunk[c].e[i]) < 0)
-					goto fail;
-	if (pts_writer_end(&w) < 0)
-		goto fail;
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
-	return;
-fail:
-	outfile_abort(&of);
-	cli_die_lib();
-}
-
-static void write_count(uint64_t count)
-{
-	struct outfile of;
-
-	if (outfile_open(&of, cli.out, 0) < 0)
-		cli_die_lib();
-	fprintf(of.fp, "%llu\n", (unsigned long long)count);
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
+				    put_elem(w, o, s, map, &r->chunk[c].e[i]) < 0)
+					return -1;
+	return 0;
 }
 
 /* Refuse counts whose elements could not be stored (12 bytes each, and
@@ -374,16 +372,35 @@ static void load_matrix(const struct opts *o, const struct frs_imap *map,
 	prep->m = mat;
 }
 
+/* The setup of set "set": the first one's with the seed S + set (only
+ * the window offset and the seed of jitter and coins change). */
+static void reseed(const struct opts *o, const struct frs_imap *map,
+    struct frs_setup *s, uint64_t set)
+{
+	struct frs_matrix shape = { 2, s->mw, s->mh, 1, 0, NULL, NULL };
+
+	shape.n = (size_t)s->mw * s->mh;
+	if (frs_setup(s, map, &shape, o->steps[o->nsteps - 1], o->sigma,
+	    cli.seed + set) < 0)
+		cli_die("%s", frs_errmsg());
+	s->rule = o->rule;
+	s->jitter = o->jitter;
+}
+
 int main(int argc, char **argv)
 {
 	struct opts o = { NULL, NULL, { 0 }, 0, FRS_SORTED, 8.0,
-	    FRS_JITTER_NONE, FRS_UNBIASED, 0, 0, 0, 0, 0, 0 };
+	    FRS_JITTER_NONE, FRS_UNBIASED, 0, 0, 0, 0, 0, 0, 1 };
 	struct frs_matrix mat;
 	struct frs_imap map;
-	struct frs_setup s;
+	struct frs_setup s, s0;
 	struct frs_prep prep;
 	struct frs_result r;
-	double t0, t1, t2, t3;
+	struct outfile of = { NULL, NULL, NULL, NULL };
+	struct pts_writer w;
+	struct progress pr;
+	uint64_t total = 0;
+	double t0, t1, t2, tsetup, tthr = 0.0, tout = 0.0;
 
 	cli_init("frs-sample", usage);
 	parse_opts(argc, argv, &o);
@@ -394,31 +411,77 @@ int main(int argc, char **argv)
 		cli_die_lib();
 	t0 = progress_now();
 	load_matrix(&o, &map, &mat, &prep, &s);
+	s0 = s;
 	if ((double)s.n > frs_unique(&s))
 		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.0f without repetition, thesis "
 		    "Table 4.1)", (unsigned long long)s.n, s.mw, s.mh, s.sigma,
 		    frs_unique(&s));
 	t1 = progress_now();
-	if (frs_sample(&s, &map, &prep, o.algo, o.steps, o.nsteps, o.count_only,
-	    &r) < 0)
-		cli_die("%s", frs_errmsg());
+	tsetup = t1 - t0;
+	/* Set 0 before the output opens: with one set its count goes into
+	 * the header, as without --sets.  More sets announce 0 (unknown),
+	 * which the writer replaces by the total when the output can seek. */
+	progress_begin(&pr, "sets", o.sets);
+	for (uint64_t set = 0; set < o.sets; set++) {
+		if (set > 0) {
+			t1 = progress_now();
+			reseed(&o, &map, &s, set);
+			t2 = progress_now();
+			tsetup += t2 - t1;
+			t1 = t2;
+		}
+		if (frs_sample(&s, &map, &prep, o.algo, o.steps, o.nsteps,
+		    o.count_only, &r) < 0) {
+			if (set > 0)
+				outfile_abort(&of);
+			cli_die("%s", frs_errmsg());
+		}
+		t2 = progress_now();
+		tthr += t2 - t1;
+		if (set == 0) {
+			if (outfile_open(&of, cli.out, !o.count_only && !cli.text) < 0)
+				cli_die_lib();
+			if (!o.count_only && pts_writer_begin(&w, of.fp, of.name, 2,
+			    (unsigned)o.pdf + (o.nsteps > 1),
+			    o.sets == 1 ? r.count : 0, cli.text) < 0)
+				goto fail;
+		}
+		if (o.count_only) {
+			if (fprintf(of.fp, "%llu\n", (unsigned long long)r.count) < 0)
+				goto fail;
+		} else if (put_set(&w, &o, &s, &map, &r) < 0) {
+			goto fail;
+		}
+		total += r.count;
+		frs_result_free(&r);
+		tout += progress_now() - t2;
+		progress_update(&pr, set + 1);
+	}
+	progress_end(&pr);
 	t2 = progress_now();
-	if (o.count_only)
-		write_count(r.count);
-	else
-		write_points(&o, &s, &map, &r);
-	t3 = progress_now();
+	if (!o.count_only && pts_writer_end(&w) < 0)
+		goto fail;
+	if (outfile_commit(&of) < 0)
+		cli_die_lib();
+	tout += progress_now() - t2;
 	if (o.verbose) {
-		print_setup(&s, o.matrix);
+		print_setup(&s0, o.matrix);
+		if (o.sets > 1)
+			fprintf(stderr, "frs-sample: %llu sets, seeds %llu to %llu\n",
+			    (unsigned long long)o.sets,
+			    (unsigned long long)cli.seed,
+			    (unsigned long long)(cli.seed + o.sets - 1));
 		fprintf(stderr, "frs-sample: %llu samples (%s); setup %.6f s, "
 		    "thresholding %.6f s, output %.6f s\n",
-		    (unsigned long long)r.count, frs_algo_name(o.algo), t1 - t0,
-		    t2 - t1, t3 - t2);
+		    (unsigned long long)total, frs_algo_name(o.algo), tsetup,
+		    tthr, tout);
 	}
-	frs_result_free(&r);
 	frs_prep_free(&prep);
 	frd_free(&mat);
 	imap_free(&map);
 	return 0;
+fail:
+	outfile_abort(&of);
+	cli_die_lib();
 }

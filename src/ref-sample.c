@@ -12,16 +12,19 @@
 #include "cli.h"
 #include "imap.h"
 #include "outfile.h"
+#include "progress.h"
 #include "ptsio.h"
 #include "refsamp.h"
 
 static const char usage[] =
     "usage: ref-sample -n COUNT [-k KIND] [-i IMPORTANCE] [-s WxH] [--strict]\n"
     "                  [--equirect] [--max-failures F] [-S SEED] [-T] [-q]\n"
-    "                  [-o FILE]\n"
+    "                  [--sets M] [-o FILE]\n"
     "\n"
     "  -n, --count N        points to make (regular and jittered: the\n"
     "                       nearest square, round(sqrt N)^2)\n"
+    "      --sets M         write M sets one after another, set i made\n"
+    "                       with seed S+i (default 1)\n"
     "  -k, --kind K         random (default), regular, jittered, halton,\n"
     "                       hammersley, sobol, dart or relaxed-dart\n"
     "  -i, --importance M   relaxed-dart: map, PNG, OpenEXR or a spec such\n"
@@ -41,7 +44,15 @@ static const char usage[] =
     "  -q, --quiet          no notes\n"
     "  -h, --help           this help;  --version  the version\n";
 
-enum { OPT_MAX_FAILURES = OPT_FIRST_PRIVATE, OPT_STRICT, OPT_EQUIRECT };
+enum {
+	OPT_MAX_FAILURES = OPT_FIRST_PRIVATE, OPT_STRICT, OPT_EQUIRECT,
+	OPT_SETS
+};
+
+/* Most points in all the sets of one file: M * count records of 16
+ * bytes (up to 4 columns of 8 bytes elsewhere) stay far inside a 64-bit
+ * file offset. */
+#define SETS_MAX_TOTAL ((uint64_t)1 << 56)
 
 static const struct option longopts[] = {
 	{ "count", required_argument, NULL, 'n' },
@@ -51,20 +62,37 @@ static const struct option longopts[] = {
 	{ "size", required_argument, NULL, 's' },
 	{ "strict", no_argument, NULL, OPT_STRICT },
 	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
+	{ "sets", required_argument, NULL, OPT_SETS },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
 
+/* One set with the given seed into xy; *placed gets its size. */
+static int make_set(enum refsamp_kind kind, uint64_t n, uint64_t seed,
+    uint64_t maxf, const struct frs_imap *map, double *xy, uint64_t *placed)
+{
+	if (kind == REFSAMP_RELAXED_DART) {
+		if (refsamp_relaxed_dart(n, seed, maxf, map, xy, NULL) < 0)
+			return -1;
+		*placed = n;
+		return 0;
+	}
+	return refsamp_gen(kind, n, seed, maxf, xy, placed);
+}
+
 int main(int argc, char **argv)
 {
 	enum refsamp_kind kind = REFSAMP_RANDOM;
-	uint64_t n = 0, maxf = 0, count, placed;
+	uint64_t n = 0, maxf = 0, count, placed, sets = 1;
 	int c, have_n = 0, flags = 0;
 	const char *imp = NULL;
 	uint32_t mw = 0, mh = 0;
 	double *xy;
+	struct frs_imap map;
+	int have_map = 0;
 	struct outfile of;
 	struct pts_writer w;
+	struct progress pr;
 
 	cli_init("ref-sample", usage);
 	while ((c = getopt_long(argc, argv, "n:k:i:s:" CLI_COMMON_SHORTOPTS,
@@ -88,6 +116,9 @@ int main(int argc, char **argv)
 			break;
 		case OPT_STRICT: flags |= IMAP_STRICT; break;
 		case OPT_EQUIRECT: flags |= IMAP_EQUIRECT; break;
+		case OPT_SETS:
+			sets = cli_u64("--sets", optarg, 1, SETS_MAX_TOTAL);
+			break;
 		default:
 			if (!cli_common_opt(c, optarg))
 				cli_usage(2);
@@ -101,6 +132,15 @@ int main(int argc, char **argv)
 		maxf = kind == REFSAMP_RELAXED_DART ? REFSAMP_RELAXED_FAILURES :
 		    REFSAMP_DART_FAILURES;
 	count = refsamp_count(kind, n);
+	if (sets > SETS_MAX_TOTAL / count)
+		cli_usage_error("--sets %llu: %llu sets of %llu points exceed "
+		    "the 2^56 points one file can hold",
+		    (unsigned long long)sets, (unsigned long long)sets,
+		    (unsigned long long)count);
+	if (sets - 1 > UINT64_MAX - cli.seed)
+		cli_usage_error("--sets %llu: the seeds from -S %llu would pass "
+		    "2^64-1", (unsigned long long)sets,
+		    (unsigned long long)cli.seed);
 	if (count != n)
 		cli_note("%s: %llu points, the nearest square grid (%llux%llu) "
 		    "to %llu", refsamp_name(kind), (unsigned long long)count,
@@ -110,36 +150,71 @@ int main(int argc, char **argv)
 	if ((xy = malloc(2 * count * sizeof *xy)) == NULL)
 		cli_die("no memory for %llu points", (unsigned long long)count);
 	if (kind == REFSAMP_RELAXED_DART) {
-		struct frs_imap map;
 		if (imap_load(imp ? imp : "const", mw, mh, flags, &map) < 0) {
 			free(xy);
 			cli_die_lib();
 		}
-		if (refsamp_relaxed_dart(n, cli.seed, maxf, &map, xy,
-		    NULL) < 0) {
+		have_map = 1;
+	}
+	/* Set 0 before the output opens: with one set its size goes into
+	 * the header, as without --sets. */
+	if (make_set(kind, n, cli.seed, maxf, have_map ? &map : NULL, xy,
+	    &placed) < 0) {
+		if (have_map)
 			imap_free(&map);
-			free(xy);
-			cli_die("%s", frs_errmsg());
-		}
-		imap_free(&map);
-		placed = n;
-	} else if (refsamp_gen(kind, n, cli.seed, maxf, xy, &placed) < 0)
+		free(xy);
 		cli_die("%s", frs_errmsg());
-	if (placed < count)
+	}
+	if (placed < count) {
+		if (sets > 1)
+			cli_die("dart, seed %llu: placed only %llu of %llu points "
+			    "(%llu candidates in a row rejected); with --sets "
+			    "every set needs them all: raise --max-failures or "
+			    "lower -n", (unsigned long long)cli.seed,
+			    (unsigned long long)placed, (unsigned long long)count,
+			    (unsigned long long)maxf);
 		cli_note("dart: placed %llu of %llu points (%llu candidates in a "
 		    "row rejected)", (unsigned long long)placed,
 		    (unsigned long long)count, (unsigned long long)maxf);
+	}
 	if (outfile_open(&of, cli.out, !cli.text) < 0)
 		cli_die_lib();
-	if (pts_writer_begin(&w, of.fp, of.name, 2, 0, placed, cli.text) < 0)
+	if (pts_writer_begin(&w, of.fp, of.name, 2, 0,
+	    sets > 1 ? sets * count : placed, cli.text) < 0)
 		goto fail;
-	for (uint64_t i = 0; i < placed; i++)
-		if (pts_writer_put(&w, xy + 2 * i) < 0)
-			goto fail;
+	progress_begin(&pr, "sets", sets);
+	for (uint64_t set = 0; set < sets; set++) {
+		if (set > 0) {
+			uint64_t seed = cli.seed + set;
+			if (make_set(kind, n, seed, maxf, have_map ? &map : NULL,
+			    xy, &placed) < 0) {
+				outfile_abort(&of);
+				cli_die("%s", frs_errmsg());
+			}
+			if (placed < count) {
+				outfile_abort(&of);
+				cli_die("dart, seed %llu: placed only %llu of %llu "
+				    "points (%llu candidates in a row rejected); "
+				    "with --sets every set needs them all: raise "
+				    "--max-failures or lower -n",
+				    (unsigned long long)seed,
+				    (unsigned long long)placed,
+				    (unsigned long long)count,
+				    (unsigned long long)maxf);
+			}
+		}
+		for (uint64_t i = 0; i < placed; i++)
+			if (pts_writer_put(&w, xy + 2 * i) < 0)
+				goto fail;
+		progress_update(&pr, set + 1);
+	}
+	progress_end(&pr);
 	if (pts_writer_end(&w) < 0)
 		goto fail;
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
+	if (have_map)
+		imap_free(&map);
 	free(xy);
 	return 0;
 fail:

@@ -72,6 +72,58 @@ frs-sample -m "$T/m2.frd" -i blob -n 100 -o /dev/null 2>"$T/warn"
 grep -q 'stale' "$T/warn" && ok "a stale .frp beside the matrix is refused" ||
     nok "a stale .frp beside the matrix is refused"
 
+# --sets M: set i is the set of -S S+i; one header counts them all.
+cnt() { od -A n -t u8 -j 24 -N 8 "$1" | tr -d ' '; }
+for opts in "-i blob" "-i blob --pdf --jitter random -a level1" "-m $T/m.frp -i ramp"; do
+	# shellcheck disable=SC2086
+	frs-sample -m "$M" $opts -n 800 -S 5 --sets 3 -q -o "$T/sets.pts"
+	: >"$T/cat.bin"
+	tot=0
+	for s in 5 6 7; do
+		# shellcheck disable=SC2086
+		frs-sample -m "$M" $opts -n 800 -S $s -q -o "$T/one.pts"
+		tail -c +33 "$T/one.pts" >>"$T/cat.bin"
+		tot=$((tot + $(cnt "$T/one.pts")))
+	done
+	if tail -c +33 "$T/sets.pts" | cmp -s - "$T/cat.bin" &&
+	    [ "$(cnt "$T/sets.pts")" = "$tot" ] &&
+	    [ "$(head -c 24 "$T/sets.pts" | od -A n -t x1)" = \
+	      "$(head -c 24 "$T/one.pts" | od -A n -t x1)" ]; then
+		ok "$opts --sets 3 -S 5: the sets of -S 5, 6, 7, count $tot"
+	else
+		nok "$opts --sets 3 -S 5: the sets of -S 5, 6, 7, count $tot"
+	fi
+done
+frs-sample -m "$M" -i blob -n 300 -S 2 --sets 2 -T -o "$T/sets.txt"
+{ frs-sample -m "$M" -i blob -n 300 -S 2 -T; frs-sample -m "$M" -i blob -n 300 -S 3 -T; } |
+    grep -v '^#' >"$T/cat.txt"
+grep -v '^#' "$T/sets.txt" | cmp -s - "$T/cat.txt" &&
+    ok "--sets 2 -T: the records of -S 2 and 3" || nok "--sets 2 -T: the records of -S 2 and 3"
+frs-sample -m "$M" -i blob -n 300 -S 2 --sets 2 | tail -c +33 >"$T/pipe.bin"
+frs-sample -m "$M" -i blob -n 300 -S 2 --sets 2 -o "$T/sets2.pts"
+tail -c +33 "$T/sets2.pts" | cmp -s - "$T/pipe.bin" &&
+    ok "--sets 2 to a pipe: the same records" || nok "--sets 2 to a pipe: the same records"
+frs-sample -m "$M" -i blob -n 800 -S 5 --sets 3 --count-only -o "$T/counts.txt"
+for s in 5 6 7; do frs-sample -m "$M" -i blob -n 800 -S $s --count-only; done >"$T/counts1.txt"
+cmp -s "$T/counts.txt" "$T/counts1.txt" && ok "--sets 3 --count-only: a line per set" ||
+    nok "--sets 3 --count-only: a line per set"
+for a in "-i blob" "-i blob --pdf -T" "--progressive 100,400 -i blob" "-i const --jitter halton -S 0"; do
+	# shellcheck disable=SC2086
+	frs-sample -m "$M" $a -n 400 -q -o "$T/a.pts"
+	# shellcheck disable=SC2086
+	frs-sample -m "$M" $a -n 400 -q --sets 1 -o "$T/b.pts"
+	cmp -s "$T/a.pts" "$T/b.pts" && ok "$a: --sets 1 gives the same bytes" ||
+	    nok "$a: --sets 1 gives the same bytes"
+done
+expect_fail "--sets 0" 2 "--sets" "$T/o.pts" frs-sample -m "$M" -n 10 --sets 0 -o "$T/o.pts"
+expect_fail "junk --sets" 2 "--sets" "$T/o.pts" frs-sample -m "$M" -n 10 --sets ten -o "$T/o.pts"
+expect_fail "--sets with --progressive" 2 "cannot be combined" "$T/o.pts" \
+    frs-sample -m "$M" --progressive 10,20 --sets 2 -o "$T/o.pts"
+expect_fail "--sets past 2^56 samples in all (64-bit product)" 2 "2^56" "$T/o.pts" \
+    frs-sample -m "$M" -n 1099511627776 --sets 65537 -o "$T/o.pts"
+expect_fail "--sets past seed 2^64-1" 2 "2^64-1" "$T/o.pts" \
+    frs-sample -m "$M" -n 10 -S 18446744073709551615 --sets 2 -o "$T/o.pts"
+
 # Hard maps: negative values clamped with a warning or refused, a real
 # HDR map, a map of one row.
 frs-sample -m "$M" -i "$SHARED/data/env/interior.exr" -s 128x64 -n 1000 -o "$T/int.pts" 2>"$T/warn"

@@ -76,6 +76,57 @@ expect_fail "stray argument" 2 "unexpected argument" "$T/o.pts" ref-sample -n 10
 expect_fail "missing directory" 1 "cannot create" "$T/no/o.pts" ref-sample -n 10 -o "$T/no/o.pts"
 expect_fail "full disk" 1 "No space left" - ref-sample -n 10 -o /dev/full
 
+# --sets M: set i is the set of -S S+i, the records one after another
+# under one header that counts them all.
+for k in random jittered halton sobol dart relaxed-dart; do
+	case $k in jittered) per=81 ;; *) per=90 ;; esac  # round(sqrt 90)^2
+	case $k in relaxed-dart) imp="-i blob -s 32x32" ;; *) imp="" ;; esac
+	# shellcheck disable=SC2086
+	ref-sample -k $k $imp -n 90 -S 5 --sets 3 -q -o "$T/sets.pts"
+	: >"$T/cat.bin"
+	for s in 5 6 7; do
+		# shellcheck disable=SC2086
+		ref-sample -k $k $imp -n 90 -S $s -q -o "$T/one.pts"
+		tail -c +33 "$T/one.pts" >>"$T/cat.bin"
+	done
+	if tail -c +33 "$T/sets.pts" | cmp -s - "$T/cat.bin" &&
+	    [ "$(count "$T/sets.pts")" = $((3 * per)) ] &&
+	    [ "$(head -c 24 "$T/sets.pts" | od -A n -t x1)" = \
+	      "$(head -c 24 "$T/one.pts" | od -A n -t x1)" ]; then
+		ok "-k $k --sets 3 -S 5: the sets of -S 5, 6, 7, count $((3 * per))"
+	else
+		nok "-k $k --sets 3 -S 5: the sets of -S 5, 6, 7, count $((3 * per))"
+	fi
+done
+ref-sample -k sobol -n 50 -S 2 --sets 2 -T -o "$T/sets.txt"
+{ ref-sample -k sobol -n 50 -S 2 -T; ref-sample -k sobol -n 50 -S 3 -T; } |
+    grep -v '^#' >"$T/cat.txt"
+head -n 1 "$T/sets.txt" | grep -q '^#pts dims=2 extra=0 count=100$' &&
+    grep -v '^#' "$T/sets.txt" | cmp -s - "$T/cat.txt" &&
+    ok "--sets 2 -T: one header, count 100, the records of -S 2 and 3" ||
+    nok "--sets 2 -T: one header, count 100, the records of -S 2 and 3"
+for a in "-k random -n 100" "-k regular -n 90" "-k hammersley -n 64 -S 0" \
+    "-k dart -n 5000 --max-failures 1"; do
+	# shellcheck disable=SC2086
+	ref-sample $a -q -o "$T/a.pts"
+	# shellcheck disable=SC2086
+	ref-sample $a -q --sets 1 -o "$T/b.pts"
+	cmp -s "$T/a.pts" "$T/b.pts" && ok "$a: --sets 1 gives the same bytes" ||
+	    nok "$a: --sets 1 gives the same bytes"
+done
+expect_fail "--sets 0" 2 "--sets" "$T/o.pts" ref-sample -n 10 --sets 0 -o "$T/o.pts"
+expect_fail "junk --sets" 2 "--sets" "$T/o.pts" ref-sample -n 10 --sets 3x -o "$T/o.pts"
+expect_fail "negative --sets" 2 "--sets" "$T/o.pts" ref-sample -n 10 --sets -2 -o "$T/o.pts"
+expect_fail "--sets past 2^56 points in all (64-bit product)" 2 "2^56" "$T/o.pts" \
+    ref-sample -k sobol -n 4294967296 --sets 33554432 -o "$T/o.pts"
+expect_fail "--sets past seed 2^64-1" 2 "2^64-1" "$T/o.pts" \
+    ref-sample -n 10 -S 18446744073709551614 --sets 3 -o "$T/o.pts"
+check "--sets up to seed 2^64-1" \
+    ref-sample -n 10 -S 18446744073709551614 --sets 2 -o "$T/o.pts"
+rm -f "$T/o.pts"
+expect_fail "--sets: a short dart set is an error" 1 "placed only" "$T/o.pts" \
+    ref-sample -k dart -n 5000 --max-failures 1 --sets 2 -o "$T/o.pts"
+
 # Relaxed dart throwing by an importance map.
 if ref-sample -k relaxed-dart -n 500 -i blob -s 64x64 -q -o "$T/rd.pts" 2>"$T/err" &&
     [ "$(count "$T/rd.pts")" = 500 ]; then
