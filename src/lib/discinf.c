@@ -114,6 +114,8 @@ skip:		;
 static void lines_add(struct lines *l, size_t from)
 {
 	size_t b = from / l->bsz, end = (b + 1) * l->bsz;
+	if (from >= l->cnt)	/* the suffix is empty */
+		return;
 	for (size_t j = from; j < end && j < l->cnt; j++)
 		l->c[j]++;
 	l->dirty[b] = 1;

@@ -1,0 +1,333 @@
+#!/bin/sh
+# discrepancy: what accuracy costs.  (a) the exact L2 star discrepancy
+# against the brute-force reference (test/ref_disc) and scipy's published
+# timings, and the star grid against the reference's summed-area table,
+# (b) per class D2 and Dinf against seconds per set, at the
+# thesis parameters and cheaper ones, (c) the Fig. 6.3 sweep (star, 6
+# distributions, n = 2^2..2^13, 1000 sets), (d) what the sweeps of
+# Figs. 6.3-6.8 cost at the thesis parameters.
+#   scripts/bench-discrepancy.sh [BUILD]
+#   BENCH_QUICK=1: no 2^20 in (a); in (b) sets predicted to take over 3 s
+#   are estimated from a cheaper setting; 50 sets in (c), scaled to 1000.
+set -eu
+BUILD=${1:-build/bench}
+DISC=$BUILD/bin/discrepancy
+GEN=$BUILD/bin/ref-sample
+REF=$BUILD/test/ref_disc
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+NCPU=$(nproc)
+for p in "$DISC" "$GEN" "$REF"; do
+	[ -x "$p" ] || { echo "bench-discrepancy: $p: missing"; exit 1; }
+done
+if [ -n "${BENCH_QUICK:-}" ]; then
+	AN="10 13 16" LIM=3 M=50
+else
+	AN="10 13 16 20" LIM=1000000 M=1000
+fi
+REFLIM=60	# (a): the reference only where it takes up to REFLIM s
+DTOL=10		# (c): grid Dinf error allowed at n = 8192, per cent
+
+now() { date +%s.%N; }
+
+# timed OUT CMD...: run CMD once, standard output to OUT; seconds in SEC.
+timed() {
+	out=$1
+	shift
+	t0=$(now)
+	"$@" >"$out"
+	t1=$(now)
+	SEC=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.6f", b - a }')
+}
+
+# timerep OUT CMD...: as timed, repeated to fill about 0.5 s (at most
+# 20 runs, timed together); SEC is the mean per run.
+timerep() {
+	timed "$@"
+	reps=$(awk -v s="$SEC" 'BEGIN { r = int(0.5 / (s + 1e-6)); print (r > 20 ? 20 : r) }')
+	if [ "$reps" -gt 1 ]; then
+		out=$1
+		shift
+		i=0
+		t0=$(now)
+		while [ $i -lt "$reps" ]; do
+			"$@" >"$out"
+			i=$((i + 1))
+		done
+		t1=$(now)
+		SEC=$(awk -v a="$t0" -v b="$t1" -v r="$reps" \
+		    'BEGIN { printf "%.6f", (b - a) / r }')
+	fi
+}
+
+# The last row's column C of a discrepancy table.
+field() { tail -n 1 "$1" | cut -f "$2"; }
+# Points in one of M sets of FILE (regular and jittered round n).
+perset() { echo $(( ($(wc -c <"$1") - 32) / 16 / $2 )); }
+
+# ---------------------------------------------------------------- (a)
+echo "discrepancy: exact L2 star discrepancy (Warnock), one thread, halton points"
+echo "(ours: -c star --exact --grid 2 -j 1, D2 alone, O(n log n); ref: ref_disc"
+echo " warnock, the O(n^2) double loop; scipy: qmc.discrepancy L2-star, published)"
+printf '%-8s %10s %10s %9s %9s %8s %9s %-6s %10s\n' n ours_s ref_s speedup \
+    scipy_s target vs_scipy result D2_reldiff
+rprev="" nprev=""
+for e in $AN; do
+	n=$((1 << e))
+	f=$T/a.pts
+	"$GEN" -q -k halton -n $n -S 1 -o "$f"
+	timerep "$T/o" "$DISC" -q -j 1 -c star --exact --grid 2 "$f"
+	ours=$SEC
+	d2=$(field "$T/o" 4)
+	# The reference is O(n^2): predict it from the last size run.
+	pred=$(awk -v r="$rprev" -v a="$nprev" -v n=$n \
+	    'BEGIN { print r == "" ? 0 : r * (n / a) ^ 2 }')
+	if awk -v p="$pred" -v l=$REFLIM 'BEGIN { exit !(p <= l) }'; then
+		timerep "$T/r" "$REF" warnock "$f"
+		ref=$SEC est=""
+		rd2=$(awk '$1 == "D2" { print $2 }' "$T/r")
+		rprev=$ref nprev=$n
+	else
+		ref=$pred est="~" rd2=""
+	fi
+	case $n in
+	8192) sp=0.116 tg=0.05 ;;
+	65536) sp=9.7 tg=1 ;;
+	*) sp="" tg="" ;;
+	esac
+	awk -v n=$n -v o="$ours" -v r="$ref" -v est="$est" -v sp="$sp" \
+	    -v tg="$tg" -v d="$d2" -v rd="$rd2" 'BEGIN {
+		rs = sprintf("%s%.3f", est, r)
+		sx = sprintf("%s%.0f", est, r / o)
+		if (sp == "") { sps = "-"; tgs = "-"; vs = "-"; res = "-" }
+		else {
+			sps = sp; tgs = "<=" tg; vs = sprintf("%.1f", sp / o)
+			res = o <= tg ? "PASS" : "MISS"
+		}
+		rel = rd == "" ? "-" : sprintf("%.1e", (d - rd) / rd)
+		if (rel == "-0.0e+00") rel = "0"
+		printf "%-8d %10.4f %10s %9s %9s %8s %9s %-6s %10s\n", n, o, rs, sx, sps, tgs, vs, res, rel
+	}'
+done
+echo "(~: estimated from the last reference run, n^2; D2_reldiff: ours (9 digits)"
+echo " against the reference; vs_scipy: how many times faster than scipy)"
+
+echo
+echo "discrepancy: star grid (D2 and Dinf over the s^2 corners), one thread, halton"
+echo "(ours: -c star --grid S -j 1; ref: ref_disc stargrid, a full s x s"
+echo " summed-area table; rel: largest relative difference of D2 and Dinf)"
+printf '%-6s %6s %10s %10s %9s %10s\n' n S ours_s ref_s speedup rel
+for n in 256 8192; do
+	"$GEN" -q -k halton -n $n -S 1 -o "$T/a.pts"
+	for s in 1000 3000; do
+		timerep "$T/o" "$DISC" -q -j 1 -c star --grid $s "$T/a.pts"
+		ours=$SEC
+		timerep "$T/r" "$REF" stargrid $s "$T/a.pts"
+		awk -v n=$n -v s=$s -v o="$ours" -v r="$SEC" \
+		    -v d="$(field "$T/o" 4)" -v i="$(field "$T/o" 6)" '
+			$1 == "D2" { rd = $2 } $1 == "Dinf" { ri = $2 }
+			function rel(a, b) { a = (a - b) / b; return a < 0 ? -a : a }
+			END {
+				x = rel(d, rd); y = rel(i, ri); if (y > x) x = y
+				printf "%-6d %6d %10.4f %10.4f %9.1f %10.1e\n", n, s, o, r, r / o, x
+			}' "$T/r"
+	done
+done
+
+# ---------------------------------------------------------------- (b)
+# cost CLASS SETTING N: relative work of one set, to predict a setting's
+# time from a cheaper one of the same class.
+cost() {
+	awk -v c=$1 -v s=$2 -v n=$3 'BEGIN {
+		if (c == "star") print s * s + n
+		else if (c == "rect") print s * s * (s < n ? s : n) + n
+		else if (c == "half") print s * log(s) * n
+		else print s * n
+	}'
+}
+# args CLASS SETTING: the discrepancy options of a setting.
+args() {
+	case $1:$2 in
+	star:exact) echo "--exact" ;;
+	rect:exact) echo "--exact" ;;
+	star:* | rect:* | half:*) echo "--grid $2" ;;
+	*) echo "--shapes $2" ;;
+	esac
+}
+
+echo
+echo "discrepancy: accuracy against time per class, seconds per set on one thread"
+echo "(* thesis parameters; err: against the exact value, per cent; ~: estimated"
+echo " from the last timed setting, linear in the work, not run)"
+printf '%-6s %5s %-7s %-10s %10s %12s %8s %12s %8s\n' class n points \
+    setting s/set D2 D2_err% Dinf Dinf_err%
+for n in 16 256 8192; do
+	for k in halton random; do
+		"$GEN" -q -k $k -n $n -S 1 -o "$T/b_${k}_$n.pts"
+	done
+done
+: >"$T/thesis"
+: >"$T/starinf"
+for cls in star rect half quad circle; do
+	case $cls in
+	star) sets="exact 250 1000 3000" th=3000 ;;
+	rect) sets="exact 100 250 500" th=500 ;;
+	half) sets="100 300 1000 3000" th=3000 ;;
+	*) sets="10000 100000 1000000 9000000" th=9000000 ;;
+	esac
+	for n in 16 256 8192; do
+		for k in halton random; do
+			f=$T/b_${k}_$n.pts
+			ed2="" edinf="" last="" lastc=""
+			for s in $sets; do
+				c=$(cost $cls $s $n)
+				pred=$(awk -v t="$last" -v a="$lastc" -v c="$c" \
+				    'BEGIN { print t == "" ? 0 : t * c / a }')
+				if awk -v p="$pred" -v l=$LIM 'BEGIN { exit !(p <= l) }'; then
+					# shellcheck disable=SC2046
+					timed "$T/o" "$DISC" -q -j 1 -c $cls $(args $cls $s) "$f"
+					t=$SEC est="" last=$SEC lastc=$c
+					d2=$(field "$T/o" 4) dinf=$(field "$T/o" 6)
+				else
+					t=$pred est="~" d2="" dinf=""
+				fi
+				if [ $s = exact ]; then
+					# the grids' times are not predicted from it
+					ed2=$d2 last="" lastc=""
+					if [ $cls = star ]; then edinf=$dinf; fi
+				fi
+				if [ $s = $th ]; then
+					echo "$cls $n $k $t $est" >>"$T/thesis"
+					name="${s}*"
+				else
+					name=$s
+				fi
+				if [ $cls = star ] && [ $n = 8192 ] && [ -n "$dinf" ] &&
+				    [ $s != exact ]; then
+					echo "$s $k $dinf $edinf" >>"$T/starinf"
+				fi
+				if [ $s = exact ] && [ $cls = star ]; then
+					name="exact"
+				elif [ $s = exact ]; then
+					name="exact+500"
+				fi
+				awk -v c=$cls -v n=$n -v k=$k -v s="$name" -v t="$t" \
+				    -v est="$est" -v d2="$d2" -v di="$dinf" -v e2="$ed2" \
+				    -v ei="$edinf" 'BEGIN {
+					ts = sprintf("%s%.3f", est, t)
+					if (t >= 100) ts = sprintf("%s%.0f", est, t)
+					d2s = d2 == "" ? "-" : d2; dis = di == "" ? "-" : di
+					er2 = (d2 == "" || e2 == "") ? "-" : sprintf("%+.2f", 100 * (d2 - e2) / e2)
+					eri = (di == "" || ei == "") ? "-" : sprintf("%+.2f", 100 * (di - ei) / ei)
+					printf "%-6s %5d %-7s %-10s %10s %12s %8s %12s %8s\n", c, n, k, s, ts, d2s, er2, dis, eri
+				}'
+			done
+		done
+	done
+done
+echo "(star exact: Warnock D2 and Dinf over the critical boxes, O(n^1.5); rect"
+echo " exact+500: closed-form D2, Dinf on the 500 grid; half S: S border points"
+echo " per side; quad, circle K: random shapes; grid Dinf is a lower bound)"
+
+# ---------------------------------------------------------------- (c)
+# The grid for the sweep: the cheapest star grid of (b) whose Dinf at
+# n = 8192 is within DTOL per cent of the exact Dinf for both sets.
+S=$(awk -v tol=$DTOL '
+	{ e = 100 * ($4 - $3) / $4; if (!($1 in m) || e > m[$1]) m[$1] = e }
+	END {
+		best = ""
+		for (s in m) if (m[s] <= tol && (best == "" || s + 0 < best + 0)) best = s
+		print best == "" ? 3000 : best
+	}' "$T/starinf")
+echo
+echo "discrepancy: the Fig. 6.3 sweep, star, 6 distributions x n = 2^2..2^13"
+echo "x 1000 sets, $NCPU threads, load average $(cut -d ' ' -f 1 /proc/loadavg) at the start;"
+echo "target <= 600 s"
+awk -v s="$S" -v tol=$DTOL '
+	{ e = 100 * ($4 - $3) / $4; if (!($1 in m) || e > m[$1]) m[$1] = e }
+	END {
+		printf "(S = %s: the cheapest star grid of (b) whose Dinf at n = 8192 is", s
+		printf " within\n %s %% of the exact Dinf for halton and random (", tol
+		split("250 1000 3000", gs, " ")
+		for (i = 1; i <= 3; i++)
+			if (gs[i] in m) printf "%s%s: %.1f %%", (i > 1 ? ", " : ""), gs[i], m[gs[i]]
+		printf ");\n %s %% is %.2f decades on the log-log axes of Fig. 6.3", tol, log(1 + tol / 100) / log(10)
+		if (s == 3000) printf "; the thesis grid"
+		printf ")\n" }' "$T/starinf"
+METHODS="exact+grid$S exact"
+if [ "$S" != 1000 ]; then METHODS="exact+grid1000 $METHODS"; fi
+gen=0
+for meth in $METHODS; do echo 0 >"$T/sw_$meth"; done
+for k in random regular jittered halton sobol dart; do
+	for e in 2 3 4 5 6 7 8 9 10 11 12 13; do
+		n=$((1 << e))
+		f=$T/sw.pts
+		timed /dev/null "$GEN" -q -k $k -n $n --sets $M -S 1 -o "$f"
+		gen=$(awk -v a=$gen -v b=$SEC 'BEGIN { print a + b }')
+		per=$(perset "$f" $M)
+		for meth in $METHODS; do
+			case $meth in
+			exact) a="" ;;
+			*) a="--grid ${meth#exact+grid}" ;;
+			esac
+			# shellcheck disable=SC2086
+			timed "$T/o" "$DISC" -q -c star --exact $a --sets $per "$f"
+			awk -v a="$(cat "$T/sw_$meth")" -v b=$SEC \
+			    'BEGIN { print a + b }' >"$T/sw_$meth.new"
+			mv "$T/sw_$meth.new" "$T/sw_$meth"
+			if [ $e = 13 ]; then
+				echo "$k $(field "$T/o" 7)" >>"$T/inf_$meth"
+			fi
+		done
+		rm -f "$f"
+	done
+done
+printf '%-15s %5s %10s %12s %7s %-6s %18s\n' method m seconds s_1000_sets \
+    target result Dinf_err%@8192
+for meth in $METHODS; do
+	awk -v m=$M -v meth=$meth -v t="$(cat "$T/sw_$meth")" '
+		FNR == NR { ex[$1] = $2; next }
+		{ e = 100 * (ex[$1] - $2) / ex[$1]; s += e; if (e > mx) mx = e; c++ }
+		END {
+			full = t * 1000 / m
+			fs = sprintf("%s%.1f", m == 1000 ? "" : "~", full)
+			es = sprintf("%.1f / %.1f", s / c, mx)
+			printf "%-15s %5d %10.1f %12s %7s %-6s %18s\n", meth, m, t, fs, "600", full <= 600 ? "PASS" : "MISS", es
+		}' "$T/inf_exact" "$T/inf_$meth"
+done
+awk -v m=$M -v g=$gen 'BEGIN {
+	printf "generation (ref-sample --sets %d): %.1f s", m, g
+	if (m != 1000) printf ", ~%.1f s for 1000 sets", g * 1000 / m
+	printf "\n" }'
+echo "(~: measured with $M sets and scaled to 1000; Dinf_err: mean / worst over the"
+echo " 6 distributions of the mean Dinf at n = 8192 against the exact method;"
+echo " the sweep to use is exact: exact D2 and the exact Dinf over the critical"
+echo " boxes, O(n^1.5), no grid error and no slower than the grid S)"
+
+# ---------------------------------------------------------------- (d)
+echo
+echo "discrepancy: the sweeps of Figs. 6.3-6.8 at the thesis parameters, 6"
+echo "distributions x n = 2^2..2^13 x 1000 sets, from the seconds per set of (b)"
+echo "(mean of halton and random, linear in n between 16, 256 and 8192)"
+printf '%-7s %-14s %9s %9s %9s %11s %11s\n' class parameters s@16 s@256 \
+    s@8192 cpu_hours "wall_h($NCPU)"
+awk -v ncpu=$NCPU '
+	{ t[$1, $2] += $4 / 2; if ($5 == "~") est[$1] = 1 }
+	function at(c, n) {
+		if (n <= 16) return t[c, 16]
+		if (n <= 256) return t[c, 16] + (t[c, 256] - t[c, 16]) * (n - 16) / 240
+		return t[c, 256] + (t[c, 8192] - t[c, 256]) * (n - 256) / 7936
+	}
+	END {
+		split("star rect half quad circle", cl, " ")
+		split("grid 3000|grid 500|3000/side|9e6 shapes|9e6 shapes", pa, "|")
+		for (i = 1; i <= 5; i++) {
+			c = cl[i]; sum = 0
+			for (e = 2; e <= 13; e++) sum += at(c, 2 ^ e)
+			h = sum * 6 * 1000 / 3600
+			mk = est[c] ? "~" : ""
+			printf "%-7s %-14s %9.3f %9.3f %9.3f %11s %11s\n", c, pa[i], t[c, 16], t[c, 256], t[c, 8192], sprintf("%s%.2f", mk, h), sprintf("%s%.2f", mk, h / ncpu)
+		}
+	}' "$T/thesis"
+echo "(~: some sets estimated in (b); wall hours assume the sets spread evenly"
+echo " over $NCPU cores, as discrepancy --sets does)"
