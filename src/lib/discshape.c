@@ -5,8 +5,10 @@
  * uniform corners E, F, G, H and is kept when its diagonals EG and FH
  * cross properly (a convex quadrilateral in that order); a clockwise one
  * is turned around.  Points are counted with the exact predicates of
- * geom.h.  The points of a set are kept in columns sorted by y, and a
- * shape only tests the points in its bounding box.
+ * geom.h.  The points of a set are kept by cell of a grid; a shape
+ * counts the cells that lie wholly inside it by their totals and tests
+ * only the points of the cells its boundary crosses: O(sqrt n) tests per
+ * shape instead of O(n area).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -88,17 +90,18 @@ double disc_quad_area(const double q[8])
 	return 0.5 * (fabs(e0 * f1 - f0 * e1) + fabs(f0 * g1 - g0 * f1));
 }
 
-/* Columns of points sorted by y. */
+/* Points by cell of a g x g grid, row by row: the cells of one row are
+ * contiguous, so a run of cells counts its points by two lookups. */
 struct cpt {
-	uint32_t col;
+	uint32_t cell;
 	double x, y;
 };
 
 static int cpt_cmp(const void *a, const void *b)
 {
 	const struct cpt *p = a, *q = b;
-	if (p->col != q->col)
-		return p->col < q->col ? -1 : 1;
+	if (p->cell != q->cell)
+		return p->cell < q->cell ? -1 : 1;
 	if (p->y != q->y)
 		return p->y < q->y ? -1 : 1;
 	return (p->x > q->x) - (p->x < q->x);
@@ -107,10 +110,13 @@ static int cpt_cmp(const void *a, const void *b)
 int disc_cols_make(struct disc_cols *c, const double *xy, size_t n)
 {
 	struct cpt *p = malloc(n * sizeof *p);
+	size_t ncell;
 
-	c->g = (uint32_t)sqrt((double)n);
+	/* about two points a cell */
+	c->g = (uint32_t)sqrt((double)n / 2);
 	c->g = c->g ? c->g : 1;
-	c->start = calloc((size_t)c->g + 1, sizeof *c->start);
+	ncell = (size_t)c->g * c->g;
+	c->start = calloc(ncell + 1, sizeof *c->start);
 	c->x = malloc(2 * n * sizeof *c->x);
 	if (p == NULL || c->start == NULL || c->x == NULL) {
 		free(p), free(c->start), free(c->x);
@@ -119,12 +125,12 @@ int disc_cols_make(struct disc_cols *c, const double *xy, size_t n)
 	c->y = c->x + n;
 	for (size_t i = 0; i < n; i++) {
 		p[i].x = xy[2 * i], p[i].y = xy[2 * i + 1];
-		p[i].col = disc_col(c, p[i].x);
-		c->start[p[i].col + 1]++;
+		p[i].cell = disc_col(c, p[i].y) * c->g + disc_col(c, p[i].x);
+		c->start[p[i].cell + 1]++;
 	}
 	qsort(p, n, sizeof *p, cpt_cmp);
-	for (uint32_t b = 0; b < c->g; b++)
-		c->start[b + 1] += c->start[b];
+	for (size_t k = 0; k < ncell; k++)
+		c->start[k + 1] += c->start[k];
 	for (size_t i = 0; i < n; i++)
 		c->x[i] = p[i].x, c->y[i] = p[i].y;
 	free(p);
@@ -139,49 +145,137 @@ void disc_cols_free(struct disc_cols *c)
 	c->x = c->y = NULL;
 }
 
-/* First index in [lo, hi) with y >= v. */
-uint32_t disc_lower(const double *y, uint32_t lo, uint32_t hi, double v)
+/* Cells judged wholly inside keep this distance from the boundary, far
+ * more than the rounding of the chords below; every other point is
+ * decided by the exact predicates. */
+#define CELL_MARGIN 1e-9
+
+/* The x extent of the convex quadrilateral on the line at height y. */
+static int chord(const double q[8], double y, double *l, double *r)
 {
-	while (lo < hi) {
-		uint32_t mid = lo + (hi - lo) / 2;
-		if (y[mid] < v)
-			lo = mid + 1;
-		else
-			hi = mid;
+	int found = 0;
+	for (int i = 0; i < 4; i++) {
+		int j = (i + 1) & 3;
+		double ax = q[2 * i], ay = q[2 * i + 1];
+		double bx = q[2 * j], by = q[2 * j + 1], x;
+		if ((y < ay && y < by) || (y > ay && y > by))
+			continue;
+		x = ay == by ? (ax < bx ? ax : bx) : ax + (y - ay) * (bx - ax) /
+		    (by - ay);
+		if (!found || x < *l)
+			*l = x;
+		x = ay == by ? (ax > bx ? ax : bx) : x;
+		if (!found || x > *r)
+			*r = x;
+		found = 1;
 	}
-	return lo;
+	return found;
+}
+
+/* Cells [fl, fr) of a row whose x range lies in [lo, hi]. */
+static void full_cells(const struct disc_cols *c, double lo, double hi,
+    uint32_t *fl, uint32_t *fr)
+{
+	double a = ceil(lo * c->g), b = floor(hi * c->g);
+	*fl = *fr = 0;
+	if (!(a < b))
+		return;
+	*fl = a < 0 ? 0 : (uint32_t)a;
+	*fr = b > c->g ? c->g : (uint32_t)b;
+	if (*fl > *fr)
+		*fl = *fr;
+}
+
+/* Points of row r in columns [c0, c1], those in [fl, fr) counted whole,
+ * the others by the membership test. */
+#define ROW_COUNT(c, r, c0, c1, fl, fr, test) do {			\
+	const uint32_t *st_ = (c)->start + (size_t)(r) * (c)->g;	\
+	if ((fl) < (fr))						\
+		cnt += st_[fr] - st_[fl];				\
+	for (uint32_t b_ = (c0); b_ <= (c1); b_++) {			\
+		if (b_ >= (fl) && b_ < (fr))				\
+			continue;					\
+		for (uint32_t i_ = st_[b_]; i_ < st_[b_ + 1]; i_++)	\
+			cnt += (uint64_t)(test);			\
+	}								\
+} while (0)
+
+/* Columns [*c0, *c1] that may hold points inside x in [lo, hi]. */
+static void outer_cells(const struct disc_cols *c, double lo, double hi,
+    uint32_t *c0, uint32_t *c1)
+{
+	*c0 = disc_col(c, lo - CELL_MARGIN);
+	*c1 = disc_col(c, hi + CELL_MARGIN);
+}
+
+static inline double dmin(double a, double b)
+{
+	return a < b ? a : b;
+}
+
+static inline double dmax(double a, double b)
+{
+	return a > b ? a : b;
 }
 
 uint64_t disc_count_quad(const struct disc_cols *c, const double q[8])
 {
-	double x0 = fmin(fmin(q[0], q[2]), fmin(q[4], q[6]));
-	double x1 = fmax(fmax(q[0], q[2]), fmax(q[4], q[6]));
-	double y0 = fmin(fmin(q[1], q[3]), fmin(q[5], q[7]));
-	double y1 = fmax(fmax(q[1], q[3]), fmax(q[5], q[7]));
-	uint32_t c0 = disc_col(c, x0), c1 = disc_col(c, x1);
+	double y0 = dmin(dmin(q[1], q[3]), dmin(q[5], q[7]));
+	double y1 = dmax(dmax(q[1], q[3]), dmax(q[5], q[7]));
+	uint32_t r0 = disc_col(c, y0), r1 = disc_col(c, y1);
 	uint64_t cnt = 0;
+	double l0, h0, l1, h1;
+	int a = chord(q, (double)r0 / c->g, &l0, &h0), b;
 
-	for (uint32_t b = c0; b <= c1; b++) {
-		uint32_t i = disc_lower(c->y, c->start[b], c->start[b + 1], y0);
-		for (; i < c->start[b + 1] && c->y[i] <= y1; i++)
-			cnt += (uint64_t)disc_in_quad(q, c->x[i], c->y[i]);
+	for (uint32_t r = r0; r <= r1; r++, a = b, l0 = l1, h0 = h1) {
+		double ylo = (double)r / c->g, yhi = (double)(r + 1) / c->g;
+		double ol = 2, oh = -1;
+		uint32_t fl = 0, fr = 0, c0, c1;
+		b = chord(q, yhi, &l1, &h1);
+		if (a && b)
+			full_cells(c, dmax(l0, l1) + CELL_MARGIN,
+			    dmin(h0, h1) - CELL_MARGIN, &fl, &fr);
+		/* the quadrilateral's extent within the row */
+		if (a)
+			ol = l0, oh = h0;
+		if (b)
+			ol = dmin(ol, l1), oh = dmax(oh, h1);
+		for (int v = 0; v < 4; v++)
+			if (q[2 * v + 1] >= ylo && q[2 * v + 1] <= yhi)
+				ol = dmin(ol, q[2 * v]), oh = dmax(oh, q[2 * v]);
+		if (ol > oh)
+			continue;
+		outer_cells(c, ol, oh, &c0, &c1);
+		ROW_COUNT(c, r, c0, c1, fl, fr,
+		    disc_in_quad(q, c->x[i_], c->y[i_]));
 	}
 	return cnt;
 }
 
 uint64_t disc_count_circle(const struct disc_cols *c, const double e[3])
 {
-	/* the box widened by more than the rounding of e +- r */
+	/* rows widened by more than the rounding of e +- r */
 	double pad = e[2] + 0x1p-50;
-	uint32_t c0 = disc_col(c, e[0] - pad), c1 = disc_col(c, e[0] + pad);
+	uint32_t r0 = disc_col(c, e[1] - pad), r1 = disc_col(c, e[1] + pad);
 	uint64_t cnt = 0;
 
-	for (uint32_t b = c0; b <= c1; b++) {
-		uint32_t i = disc_lower(c->y, c->start[b], c->start[b + 1],
-		    e[1] - pad);
-		for (; i < c->start[b + 1] && c->y[i] <= e[1] + pad; i++)
-			cnt += (uint64_t)geom_in_circle(e[0], e[1], e[2],
-			    c->x[i], c->y[i]);
+	for (uint32_t r = r0; r <= r1; r++) {
+		double ylo = (double)r / c->g, yhi = (double)(r + 1) / c->g;
+		double far = fmax(fabs(ylo - e[1]), fabs(yhi - e[1]));
+		double near = ylo <= e[1] && e[1] <= yhi ? 0.0 :
+		    fmin(fabs(ylo - e[1]), fabs(yhi - e[1]));
+		uint32_t fl = 0, fr = 0, c0, c1;
+		double w;
+		if (far < e[2]) {
+			w = sqrt(e[2] * e[2] - far * far) - CELL_MARGIN;
+			full_cells(c, e[0] - w, e[0] + w, &fl, &fr);
+		}
+		if (near > pad)
+			continue;
+		w = near < e[2] ? sqrt(e[2] * e[2] - near * near) : 0.0;
+		outer_cells(c, e[0] - w, e[0] + w, &c0, &c1);
+		ROW_COUNT(c, r, c0, c1, fl, fr,
+		    geom_in_circle(e[0], e[1], e[2], c->x[i_], c->y[i_]));
 	}
 	return cnt;
 }

@@ -1,4 +1,4 @@
-/* Internal: points in columns for the random-shape classes. */
+/* Internal: points in cells for the random-shape classes. */
 #ifndef FRS_DISCSHAPE_H
 #define FRS_DISCSHAPE_H
 
@@ -8,9 +8,10 @@
 #include "disc.h"
 
 struct disc_cols {
-	uint32_t g;		/* columns of width 1/g */
-	uint32_t *start;	/* column b: [start[b], start[b+1]) */
-	double *x, *y;		/* points by column, then y */
+	uint32_t g;		/* g x g cells of side 1/g */
+	uint32_t *start;	/* cell (row r, column b): points
+				 * [start[r g + b], start[r g + b + 1]) */
+	double *x, *y;		/* points by cell, row by row */
 };
 
 static inline uint32_t disc_col(const struct disc_cols *c, double v)
@@ -23,7 +24,6 @@ static inline uint32_t disc_col(const struct disc_cols *c, double v)
 
 int disc_cols_make(struct disc_cols *c, const double *xy, size_t n);
 void disc_cols_free(struct disc_cols *c);
-uint32_t disc_lower(const double *y, uint32_t lo, uint32_t hi, double v);
 uint64_t disc_count_quad(const struct disc_cols *c, const double q[8]);
 uint64_t disc_count_circle(const struct disc_cols *c, const double e[3]);
 
