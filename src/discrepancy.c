@@ -18,7 +18,8 @@
 
 static const char usage[] =
     "usage: discrepancy [-c CLASS] [--grid S] [--shapes K] [--exact]\n"
-    "                   [--sets N] [--per-set] [-S SEED] [-j N] [-q]\n"
+    "                   [--sets N] [--per-set | --group n|file|all]\n"
+    "                   [-S SEED] [-j N] [-q]\n"
     "                   [-o FILE] FILE...\n"
     "\n"
     "  -c, --class C     star (default), rect, quad, half or circle\n"
@@ -31,6 +32,9 @@ static const char usage[] =
     "                    and exact star Dinf over the critical boxes\n"
     "      --sets N      split every file into sets of N points\n"
     "      --per-set     a row per set instead of one per point count\n"
+    "      --group G     a row per point count (n, default), per input\n"
+    "                    file (file) or for all sets (all); n is then\n"
+    "                    the mean point count, e.g. of frs-sample sets\n"
     "  -S, --seed N      seed of the random shapes (default 1)\n"
     "  -j, --threads N   threads (default: all cores)\n"
     "  -o, --output F    output (default standard output)\n"
@@ -38,7 +42,7 @@ static const char usage[] =
     "  -h, --help        this help;  --version  the version\n";
 
 enum { OPT_GRID = OPT_FIRST_PRIVATE, OPT_SHAPES, OPT_EXACT, OPT_SETS,
-    OPT_PER_SET };
+    OPT_PER_SET, OPT_GROUP };
 
 static const struct option longopts[] = {
 	{ "class", required_argument, NULL, 'c' },
@@ -47,6 +51,7 @@ static const struct option longopts[] = {
 	{ "exact", no_argument, NULL, OPT_EXACT },
 	{ "sets", required_argument, NULL, OPT_SETS },
 	{ "per-set", no_argument, NULL, OPT_PER_SET },
+	{ "group", required_argument, NULL, OPT_GROUP },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
@@ -149,8 +154,20 @@ static void per_set_rows(FILE *fp, const struct disc_opts *o,
 	}
 }
 
-/* One row per point count, in order of first appearance (Eq. 6.3). */
-static void group_rows(FILE *fp, const struct disc_opts *o,
+enum group { GROUP_N, GROUP_FILE, GROUP_ALL };
+
+static int same_group(enum group g, const struct set *a, const struct set *b)
+{
+	switch (g) {
+	case GROUP_N: return a->n == b->n;
+	case GROUP_FILE: return a->file == b->file;
+	default: return 1;
+	}
+}
+
+/* One row per group of sets (Eq. 6.3), in order of first appearance;
+ * n is the mean point count of the group. */
+static void group_rows(FILE *fp, const struct disc_opts *o, enum group g,
     const struct set *sets, const struct disc_result *res, size_t nsets,
     const char *meth, double tests)
 {
@@ -162,22 +179,24 @@ static void group_rows(FILE *fp, const struct disc_opts *o,
 	    "method\n");
 	for (size_t i = 0; i < nsets; i++) {
 		double s1 = 0, c1 = 0, smax = 0, sinf = 0, m = 0, var = 0;
+		double sn = 0;
 		if (done[i])
 			continue;
 		for (size_t j = i; j < nsets; j++)
-			if (sets[j].n == sets[i].n) {
+			if (same_group(g, &sets[i], &sets[j])) {
 				s1 += res[j].d2, sinf += res[j].dinf, m++;
+				sn += (double)sets[j].n;
 				smax = res[j].dinf > smax ? res[j].dinf : smax;
 			}
 		s1 /= m;
 		for (size_t j = i; j < nsets; j++)
-			if (sets[j].n == sets[i].n) {
+			if (same_group(g, &sets[i], &sets[j])) {
 				c1 = res[j].d2 - s1;
 				var += c1 * c1;
 				done[j] = 1;
 			}
-		fprintf(fp, "%s\t%zu\t%.0f\t%.9g\t", disc_class_name(o->cls),
-		    sets[i].n, m, s1);
+		fprintf(fp, "%s\t%.10g\t%.0f\t%.9g\t", disc_class_name(o->cls),
+		    sn / m, m, s1);
 		if (m > 1)
 			fprintf(fp, "%.3g", sqrt(var / (m - 1) / m));
 		else
@@ -192,6 +211,7 @@ int main(int argc, char **argv)
 {
 	struct disc_opts o = { .cls = DISC_STAR };
 	int c, have_grid = 0, have_shapes = 0, per_set = 0;
+	enum group group = GROUP_N;
 	size_t per = 0, nsets = 0, nbufs = 0;
 	struct set *sets = NULL;
 	double **bufs = NULL, tests;
@@ -225,6 +245,17 @@ int main(int argc, char **argv)
 			    (uint64_t)1 << 40);
 			break;
 		case OPT_PER_SET: per_set = 1; break;
+		case OPT_GROUP:
+			if (strcmp(optarg, "n") == 0)
+				group = GROUP_N;
+			else if (strcmp(optarg, "file") == 0)
+				group = GROUP_FILE;
+			else if (strcmp(optarg, "all") == 0)
+				group = GROUP_ALL;
+			else
+				cli_usage_error("--group: '%s' is not n, file "
+				    "or all", optarg);
+			break;
 		default:
 			if (!cli_common_opt(c, optarg))
 				cli_usage(2);
@@ -285,7 +316,7 @@ int main(int argc, char **argv)
 	if (per_set)
 		per_set_rows(of.fp, &o, sets, res, nsets, meth, tests);
 	else
-		group_rows(of.fp, &o, sets, res, nsets, meth, tests);
+		group_rows(of.fp, &o, group, sets, res, nsets, meth, tests);
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
 	for (size_t i = 0; i < nbufs; i++)

@@ -39,6 +39,17 @@ discrepancy -c star --exact "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/g"
 [ "$(col method "$T/g")" = exact ] && [ "$(col shapes "$T/g")" = 0 ] &&
     ok "--exact: method exact, 0 shapes" || nok "--exact method"
 
+# --group: all sets in one row (n the mean), or a row per file.
+discrepancy -c star --exact --group all "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/ga"
+[ "$(wc -l <"$T/ga")" -eq 2 ] && [ "$(col sets "$T/ga")" = 3 ] && [ "$(col n "$T/ga")" = 192 ] &&
+    ok "--group all: one row, n the mean" || nok "--group all: $(cat "$T/ga")"
+discrepancy -c star --exact --per-set "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/gp"
+m=$(awk -F '\t' 'NR > 1 { s += $4 } END { printf "%.9g", s / 3 }' "$T/gp")
+near "$m" "$(col D2 "$T/ga")" 1e-8 && ok "--group all: D2 the mean of the sets" ||
+    nok "--group all: D2 $(col D2 "$T/ga"), mean $m"
+discrepancy -c star --exact --group file "$T/r1.pts" "$T/r2.pts" >"$T/gf"
+[ "$(wc -l <"$T/gf")" -eq 3 ] && ok "--group file: a row per file" || nok "--group file"
+
 # --sets N equals separate files, byte for byte.
 cat "$T/r1.pts" >"$T/both.pts"
 tail -c +33 "$T/r2.pts" >>"$T/both.pts"
@@ -113,3 +124,5 @@ expect_fail "unknown class" 2 "unknown class 'cube'" - \
     discrepancy -c cube "$T/h.pts"
 expect_fail "--grid 1" 2 "--grid" - discrepancy --grid 1 "$T/h.pts"
 expect_fail "no files" 2 "no point files" - discrepancy -c star
+expect_fail "--group bad" 2 "--group: 'x' is not" - \
+    discrepancy --group x "$T/h.pts"
