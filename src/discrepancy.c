@@ -29,7 +29,8 @@ static const char usage[] =
     "      --shapes K    random shapes per set for quad and circle\n"
     "                    (default 9000000)\n"
     "      --exact       closed-form D2 (star: Warnock; rect: all boxes)\n"
-    "                    and exact star Dinf over the critical boxes\n"
+    "                    and exact Dinf over the critical boxes (star\n"
+    "                    O(n^1.5), rect O(n^3))\n"
     "      --sets N      split every file into sets of N points\n"
     "      --per-set     a row per set instead of one per point count\n"
     "      --group G     a row per point count (n, default), per input\n"
@@ -282,9 +283,6 @@ int main(int argc, char **argv)
 	if (!have_shapes)
 		o.shapes = DISC_SHAPES;
 	o.seed = cli.seed;
-	if (o.exact_d2 && o.cls == DISC_RECT && !have_grid)
-		cli_note("rect: exact D2; Dinf on the %u grid (--grid S to "
-		    "choose)", o.grid);
 
 	for (int i = optind; i < argc; i++)
 		load(argv[i], per, &sets, &nsets, &bufs, &nbufs);

@@ -377,6 +377,65 @@ static void star_dinf(void **state)
 	}
 }
 
+/* Exact rect Dinf against every box on the critical coordinates (and
+ * the border for the open ones), O(n^5). */
+static double rect_dinf_brute(const double *xy, size_t n)
+{
+	double best = 0, *cx = malloc((n + 2) * sizeof *cx);
+	double *cy = malloc((n + 2) * sizeof *cy);
+	for (size_t i = 0; i < n; i++)
+		cx[i] = xy[2 * i], cy[i] = xy[2 * i + 1];
+	cx[n] = cy[n] = 0, cx[n + 1] = cy[n + 1] = 1;
+	for (size_t a = 0; a < n + 2; a++)
+	for (size_t b = 0; b < n + 2; b++)
+	for (size_t c = 0; c < n + 2; c++)
+	for (size_t d = 0; d < n + 2; d++) {
+		double w = cx[b] - cx[a], h = cy[d] - cy[c];
+		size_t open = 0, closed = 0;
+		if (w < 0 || h < 0)
+			continue;
+		for (size_t k = 0; k < n; k++) {
+			double x = xy[2 * k], y = xy[2 * k + 1];
+			open += x > cx[a] && x < cx[b] && y > cy[c] && y < cy[d];
+			closed += x >= cx[a] && x <= cx[b] && y >= cy[c] &&
+			    y <= cy[d];
+		}
+		best = fmax(best, w * h - (double)open / n);
+		if (a < n && b < n && c < n && d < n)
+			best = fmax(best, (double)closed / n - w * h);
+	}
+	free(cx), free(cy);
+	return best;
+}
+
+static void rect_dinf(void **state)
+{
+	double v, g;
+	(void)state;
+	for (size_t n = 1; n <= 13; n += 4) {
+		double *xy = hard_points(n, 4, 700 + n);
+		for (size_t i = 0; i < n; i += 3)	/* ties */
+			xy[2 * i + 1] = floor(xy[2 * i + 1] * 4) / 4;
+		assert_int_equal(disc_rect_dinf_exact(xy, n, 1, &v), 0);
+		assert_near(v, rect_dinf_brute(xy, n), 1e-15);
+		free(xy);
+	}
+	{
+		/* one point (x, y): the excess 1 of the box [p, p], the
+		 * deficit of the largest box beside it */
+		double p[2] = { 0.3, 0.6 };
+		assert_int_equal(disc_rect_dinf_exact(p, 1, 0, &v), 0);
+		assert_near(v, 1.0, 1e-15);
+	}
+	{
+		double *xy = rnd_points(300, 750);
+		assert_int_equal(disc_rect_dinf_exact(xy, 300, 1, &v), 0);
+		assert_int_equal(disc_rect_dinf_grid(xy, 300, 200, 0, &g), 0);
+		assert_true(g <= v + 1e-15 && g > 0.8 * v);
+		free(xy);
+	}
+}
+
 /* ---- half ---- */
 
 /* Area left of e -> f in the unit square by clipping the square
@@ -725,6 +784,7 @@ int main(void)
 		cmocka_unit_test(grids_brute),
 		cmocka_unit_test(grid_converges),
 		cmocka_unit_test(star_dinf),
+		cmocka_unit_test(rect_dinf),
 		cmocka_unit_test(half_brute),
 		cmocka_unit_test(quad_shapes),
 		cmocka_unit_test(shapes_brute),

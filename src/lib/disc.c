@@ -55,7 +55,7 @@ int disc_has_exact_d2(enum disc_class c)
 
 int disc_has_exact_dinf(enum disc_class c)
 {
-	return c == DISC_STAR;
+	return c == DISC_STAR || c == DISC_RECT;
 }
 
 double disc_tests(const struct disc_opts *o)
@@ -399,7 +399,8 @@ int disc_set(struct disc_ctx *c, const double *xy, size_t n, int par,
 		    disc_rect_l2_grid(xy, n, o->grid);
 		if (r->d2 < 0)
 			return -1;
-		return disc_rect_dinf_grid(xy, n, o->grid, par, &r->dinf);
+		return o->exact_dinf ? disc_rect_dinf_exact(xy, n, par, &r->dinf) :
+		    disc_rect_dinf_grid(xy, n, o->grid, par, &r->dinf);
 	case DISC_HALF:
 		return disc_half(xy, n, o->grid, par, r);
 	default:

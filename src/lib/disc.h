@@ -17,7 +17,7 @@
  *                 (s(s-1)/2)^2 boxes; D2 in O(n log n), Dinf in
  *                 O(s^2 min(s, n)).
  *           exact: D2 over boxes spanned by two uniform corners, closed
- *                 form in O(n log n).
+ *                 form in O(n log n); Dinf over all boxes in O(n^3).
  *   quad    K random convex quadrilaterals (uniform corners, rejection of
  *           non-convex orders, Sec. 6.2).
  *   half    lines through s points per border side, (i + 1/2)/s, between
@@ -44,7 +44,7 @@ enum disc_class { DISC_STAR, DISC_RECT, DISC_QUAD, DISC_HALF, DISC_CIRCLE };
 struct disc_opts {
 	enum disc_class cls;
 	int exact_d2;		/* closed-form D2 (star, rect) */
-	int exact_dinf;		/* Dinf over critical boxes (star) */
+	int exact_dinf;		/* Dinf over critical boxes (star, rect) */
 	uint32_t grid;		/* s of the grid methods */
 	uint64_t shapes;	/* K of the random-shape methods */
 	uint64_t seed;
@@ -86,6 +86,7 @@ int disc_star_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
     double *dinf);
 int disc_rect_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
     double *dinf);
+int disc_rect_dinf_exact(const double *xy, size_t n, int par, double *dinf);
 int disc_half(const double *xy, size_t n, uint32_t s, int par,
     struct disc_result *r);
 

@@ -431,3 +431,141 @@ int disc_rect_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
 	free(bx), free(g), free(c.best);
 	return rc;
 }
+
+/*
+ * Rect Dinf over all boxes, exactly.  As for star, the excess is reached
+ * by closed boxes [a,b] x [c,d] whose sides lie on point coordinates, the
+ * deficit by open boxes (a,b) x (c,d) whose sides lie on point coordinates
+ * or the border.  For each pair of y sides, the points between them,
+ * sorted by x (L), give count - area as a difference of a term of b and
+ * a term of a, maximised by one scan that keeps the best a so far.
+ * O(n^3) in all (Dobkin, Gunopulos and Maass give O(n^2 log n)).
+ */
+struct xlist {
+	double *x;
+	size_t k;
+};
+
+static void xl_insert(struct xlist *l, double v)
+{
+	size_t at = l->k;
+	while (at > 0 && l->x[at - 1] > v) {
+		l->x[at] = l->x[at - 1];
+		at--;
+	}
+	l->x[at] = v;
+	l->k++;
+}
+
+/* max over a <= b of #(a <= x <= b)/n - h (b - a) */
+static double xl_excess(const struct xlist *l, double h, double n)
+{
+	double best = 0.0, mina = INFINITY;
+	size_t q = 0;
+	while (q < l->k) {
+		double v = l->x[q], a = (double)q / n - h * v, b;
+		while (q < l->k && l->x[q] == v)
+			q++;
+		mina = a < mina ? a : mina;
+		b = (double)q / n - h * v - mina;
+		best = b > best ? b : best;
+	}
+	return best;
+}
+
+/* max over a < b, a in {0, x}, b in {x, 1}, of h (b - a) - #(a < x < b)/n */
+static double xl_deficit(const struct xlist *l, double h, double n)
+{
+	double best = 0.0, mina = l->k == 0 || l->x[0] > 0.0 ? 0.0 : INFINITY;
+	size_t q = 0;
+	while (q < l->k) {
+		double v = l->x[q], b = h * v - (double)q / n - mina;
+		best = b > best ? b : best;
+		while (q < l->k && l->x[q] == v)
+			q++;
+		b = h * v - (double)q / n;
+		mina = b < mina ? b : mina;
+	}
+	{
+		double b = h - (double)l->k / n - mina;
+		best = b > best ? b : best;
+	}
+	return best;
+}
+
+static int ycmp(const void *a, const void *b)
+{
+	const double *p = a, *q = b;
+	return (p[1] > q[1]) - (p[1] < q[1]);
+}
+
+struct rexact {
+	const double (*pt)[2];	/* by y */
+	size_t n;
+	double *best;		/* per bottom side */
+};
+
+/* Boxes with the bottom side on the y of point i - 1 (i = 0: the
+ * border), when it is the first point of that y. */
+static int rexact_chunk(void *ctx, uint64_t b, uint64_t e)
+{
+	struct rexact *r = ctx;
+	const double (*pt)[2] = r->pt;
+	size_t n = r->n;
+	double nn = (double)n;
+	struct xlist l = { malloc((n ? n : 1) * sizeof *l.x), 0 };
+
+	if (l.x == NULL)
+		return frs_fail("no memory for %zu points", n);
+	for (uint64_t i = b; i < e; i++) {
+		double c = i == 0 ? 0.0 : pt[i - 1][1], best = 0.0, v;
+		size_t j = 0;
+		r->best[i] = 0.0;
+		if (i >= 2 && pt[i - 1][1] == pt[i - 2][1])
+			continue;
+		/* excess: closed boxes from y = c up */
+		l.k = 0;
+		for (j = i == 0 ? n : i - 1; j < n;) {
+			double d = pt[j][1];
+			for (; j < n && pt[j][1] == d; j++)
+				xl_insert(&l, pt[j][0]);
+			v = xl_excess(&l, d - c, nn);
+			best = v > best ? v : best;
+		}
+		/* deficit: open boxes above c, the top at the next ys and 1 */
+		for (j = 0; j < n && pt[j][1] <= c; j++)
+			;
+		l.k = 0;
+		while (j < n) {
+			double d = pt[j][1];
+			v = xl_deficit(&l, d - c, nn);
+			best = v > best ? v : best;
+			for (; j < n && pt[j][1] == d; j++)
+				xl_insert(&l, pt[j][0]);
+		}
+		v = xl_deficit(&l, 1.0 - c, nn);
+		r->best[i] = v > best ? v : best;
+	}
+	free(l.x);
+	return 0;
+}
+
+int disc_rect_dinf_exact(const double *xy, size_t n, int par, double *dinf)
+{
+	double (*pt)[2] = malloc(n * sizeof *pt);
+	struct rexact r = { NULL, n, calloc(n + 1, sizeof(double)) };
+	int rc;
+
+	if (pt == NULL || r.best == NULL) {
+		free(pt), free(r.best);
+		return frs_fail("no memory for %zu points", n);
+	}
+	memcpy(pt, xy, n * sizeof *pt);
+	qsort(pt, n, sizeof *pt, ycmp);
+	r.pt = (const double (*)[2])pt;
+	rc = disc_run_chunks(n + 1, 4, rexact_chunk, &r, par);
+	if (rc == 0)
+		*dinf = max_of(r.best, n + 1);
+	free(pt), free(r.best);
+	return rc;
+}
