@@ -145,11 +145,13 @@ cost() {
 		else print s * n
 	}'
 }
-# args CLASS SETTING: the discrepancy options of a setting.
+# args CLASS SETTING N: the discrepancy options of a setting (the exact
+# rect Dinf is O(n^3): above 1024 points, Dinf from the 500 grid).
 args() {
 	case $1:$2 in
 	star:exact) echo "--exact" ;;
-	rect:exact) echo "--exact" ;;
+	rect:exact) if [ "$3" -le 1024 ]; then echo "--exact"; else
+		echo "--exact --grid 500"; fi ;;
 	star:* | rect:* | half:*) echo "--grid $2" ;;
 	*) echo "--shapes $2" ;;
 	esac
@@ -185,7 +187,7 @@ for cls in star rect half quad circle; do
 				    'BEGIN { print t == "" ? 0 : t * c / a }')
 				if awk -v p="$pred" -v l=$LIM 'BEGIN { exit !(p <= l) }'; then
 					# shellcheck disable=SC2046
-					timed "$T/o" "$DISC" -q -j 1 -c $cls $(args $cls $s) "$f"
+					timed "$T/o" "$DISC" -q -j 1 -c $cls $(args $cls $s $n) "$f"
 					t=$SEC est="" last=$SEC lastc=$c
 					d2=$(field "$T/o" 4) dinf=$(field "$T/o" 6)
 				else
@@ -194,7 +196,9 @@ for cls in star rect half quad circle; do
 				if [ $s = exact ]; then
 					# the grids' times are not predicted from it
 					ed2=$d2 last="" lastc=""
-					if [ $cls = star ]; then edinf=$dinf; fi
+					if [ $cls = star ] || [ $n -le 1024 ]; then
+						edinf=$dinf
+					fi
 				fi
 				if [ $s = $th ]; then
 					echo "$cls $n $k $t $est" >>"$T/thesis"
@@ -206,9 +210,7 @@ for cls in star rect half quad circle; do
 				    [ $s != exact ]; then
 					echo "$s $k $dinf $edinf" >>"$T/starinf"
 				fi
-				if [ $s = exact ] && [ $cls = star ]; then
-					name="exact"
-				elif [ $s = exact ]; then
+				if [ $s = exact ] && [ $cls = rect ] && [ $n -gt 1024 ]; then
 					name="exact+500"
 				fi
 				awk -v c=$cls -v n=$n -v k=$k -v s="$name" -v t="$t" \
@@ -226,8 +228,9 @@ for cls in star rect half quad circle; do
 	done
 done
 echo "(star exact: Warnock D2 and Dinf over the critical boxes, O(n^1.5); rect"
-echo " exact+500: closed-form D2, Dinf on the 500 grid; half S: S border points"
-echo " per side; quad, circle K: random shapes; grid Dinf is a lower bound)"
+echo " exact: closed-form D2 and Dinf over all boxes, O(n^3); rect exact+500:"
+echo " Dinf on the 500 grid; half S: S border points per side; quad, circle K:"
+echo " random shapes; grid Dinf is a lower bound)"
 
 # ---------------------------------------------------------------- (c)
 # The grid for the sweep: the cheapest star grid of (b) whose Dinf at

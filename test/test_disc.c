@@ -769,6 +769,18 @@ static void huge(void **state)
 	assert_true(di >= e && di < 1e-2);
 	e = disc_rect_l2_exact(xy, n);
 	assert_true(isfinite(e) && e > 0 && e < 1e-4);
+	/* the shape classes: few shapes, all 2^20 points counted */
+	for (int cls = DISC_QUAD; cls <= DISC_CIRCLE; cls++) {
+		struct disc_opts o = { .cls = (enum disc_class)cls, .grid = 3,
+		    .shapes = 200, .seed = 1 };
+		struct disc_ctx *c = disc_ctx_new(&o);
+		struct disc_result r;
+		assert_non_null(c);
+		assert_int_equal(disc_set(c, xy, n, 1, &r), 0);
+		assert_true(isfinite(r.d2) && r.d2 > 0 && r.d2 <= r.dinf);
+		assert_true(r.dinf < 1e-3);	/* jittered: O(n^-3/4) */
+		disc_ctx_free(c);
+	}
 	free(xy);
 }
 
