@@ -14,7 +14,7 @@
 #include "outfile.h"
 #include "par.h"
 #include "progress.h"
-#include "ptsio.h"
+#include "ptsets.h"
 
 static const char usage[] =
     "usage: discrepancy [-c CLASS] [--grid S] [--shapes K] [--exact]\n"
@@ -57,15 +57,9 @@ static const struct option longopts[] = {
 	{ NULL, 0, NULL, 0 }
 };
 
-struct set {
-	const double *xy;
-	size_t n;
-	const char *file;
-};
-
 struct run {
 	struct disc_ctx *ctx;
-	const struct set *sets;
+	const struct pt_set *sets;
 	struct disc_result *res;
 };
 
@@ -77,46 +71,6 @@ static int one_set(void *arg, uint64_t b, uint64_t e)
 		    &r->res[i]) < 0)
 			return frs_fail_context(r->sets[i].file);
 	return 0;
-}
-
-/* Load FILE as 2-D coordinates, packed; split into sets of per (0: one
- * set).  Appends to *sets. */
-static void load(const char *path, size_t per, struct set **sets,
-    size_t *nsets, double ***bufs, size_t *nbufs)
-{
-	struct frs_points p;
-	double *xy;
-	size_t k, stride;
-
-	if (pts_read(path, &p) < 0)
-		cli_die_lib();
-	if (p.dims != 2)
-		cli_die("%s: %u-dimensional points; discrepancy needs 2",
-		    path, p.dims);
-	if (p.n == 0)
-		cli_die("%s: no points", path);
-	if (per && p.n % per != 0)
-		cli_die("%s: %zu points are not a whole number of sets of %zu",
-		    path, p.n, per);
-	stride = 2 + p.extra;
-	xy = p.x;
-	if (p.extra)
-		for (size_t i = 0; i < p.n; i++)
-			xy[2 * i] = p.x[stride * i],
-			xy[2 * i + 1] = p.x[stride * i + 1];
-	k = per ? p.n / per : 1;
-	per = per ? per : p.n;
-	*sets = realloc(*sets, (*nsets + k) * sizeof **sets);
-	*bufs = realloc(*bufs, (*nbufs + 1) * sizeof **bufs);
-	if (*sets == NULL || *bufs == NULL)
-		cli_die("no memory for %zu sets", *nsets + k);
-	(*bufs)[(*nbufs)++] = xy;
-	for (size_t i = 0; i < k; i++) {
-		struct set *s = &(*sets)[(*nsets)++];
-		s->xy = xy + 2 * per * i;
-		s->n = per;
-		s->file = path;
-	}
 }
 
 static void method(const struct disc_opts *o, char *buf, size_t len)
@@ -142,7 +96,7 @@ static void put_name(FILE *fp, const char *s)
 }
 
 static void per_set_rows(FILE *fp, const struct disc_opts *o,
-    const struct set *sets, const struct disc_result *res, size_t nsets,
+    const struct pt_set *sets, const struct disc_result *res, size_t nsets,
     const char *meth, double tests)
 {
 	fprintf(fp, "class\tn\tset\tD2\tDinf\tshapes\tmethod\tfile\n");
@@ -157,7 +111,8 @@ static void per_set_rows(FILE *fp, const struct disc_opts *o,
 
 enum group { GROUP_N, GROUP_FILE, GROUP_ALL };
 
-static int same_group(enum group g, const struct set *a, const struct set *b)
+static int same_group(enum group g, const struct pt_set *a,
+    const struct pt_set *b)
 {
 	switch (g) {
 	case GROUP_N: return a->n == b->n;
@@ -169,7 +124,7 @@ static int same_group(enum group g, const struct set *a, const struct set *b)
 /* One row per group of sets (Eq. 6.3), in order of first appearance;
  * n is the mean point count of the group. */
 static void group_rows(FILE *fp, const struct disc_opts *o, enum group g,
-    const struct set *sets, const struct disc_result *res, size_t nsets,
+    const struct pt_set *sets, const struct disc_result *res, size_t nsets,
     const char *meth, double tests)
 {
 	char *done = calloc(nsets, 1);
@@ -213,9 +168,10 @@ int main(int argc, char **argv)
 	struct disc_opts o = { .cls = DISC_STAR };
 	int c, have_grid = 0, have_shapes = 0, per_set = 0;
 	enum group group = GROUP_N;
-	size_t per = 0, nsets = 0, nbufs = 0;
-	struct set *sets = NULL;
-	double **bufs = NULL, tests;
+	size_t per = 0, nsets;
+	struct pt_sets ps = { 0 };
+	const struct pt_set *sets;
+	double tests;
 	struct disc_result *res;
 	struct run run;
 	struct progress pr;
@@ -285,7 +241,9 @@ int main(int argc, char **argv)
 	o.seed = cli.seed;
 
 	for (int i = optind; i < argc; i++)
-		load(argv[i], per, &sets, &nsets, &bufs, &nbufs);
+		if (pt_sets_add(&ps, argv[i], per) < 0)
+			cli_die_lib();
+	sets = ps.set, nsets = ps.n;
 	if ((res = calloc(nsets, sizeof *res)) == NULL)
 		cli_die("no memory for %zu sets", nsets);
 	if ((run.ctx = disc_ctx_new(&o)) == NULL)
@@ -317,8 +275,7 @@ int main(int argc, char **argv)
 		group_rows(of.fp, &o, group, sets, res, nsets, meth, tests);
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
-	for (size_t i = 0; i < nbufs; i++)
-		free(bufs[i]);
-	free(bufs), free(sets), free(res);
+	pt_sets_free(&ps);
+	free(res);
 	return 0;
 }

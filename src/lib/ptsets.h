@@ -1,0 +1,29 @@
+/*
+ * Point sets for the analysis programs (discrepancy, dda): 2-D point
+ * files read whole, each file one set or cut into sets of a fixed size.
+ */
+#ifndef FRS_PTSETS_H
+#define FRS_PTSETS_H
+
+#include <stddef.h>
+
+struct pt_set {
+	const double *xy;	/* n points, x y packed */
+	size_t n;
+	const char *file;	/* the name given, for messages and tables */
+};
+
+struct pt_sets {
+	struct pt_set *set;
+	size_t n;
+	double **buf;		/* one per file, owning the coordinates */
+	size_t nbuf;
+};
+
+/* Read path ("-": standard input), 2-D points only (extra values are
+ * dropped), and append it as one set, or as sets of per points (per > 0;
+ * the count must be a multiple).  An empty file is an error. */
+int pt_sets_add(struct pt_sets *s, const char *path, size_t per);
+void pt_sets_free(struct pt_sets *s);
+
+#endif
