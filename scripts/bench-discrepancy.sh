@@ -25,20 +25,9 @@ if [ -n "${BENCH_QUICK:-}" ]; then
 else
 	AN="10 13 16 20" LIM=1000000 M=1000
 fi
+. "$(dirname "$0")/benchlib.sh"
 REFLIM=60	# (a): the reference only where it takes up to REFLIM s
 DTOL=10		# (c): grid Dinf error allowed at n = 8192, per cent
-
-now() { date +%s.%N; }
-
-# timed OUT CMD...: run CMD once, standard output to OUT; seconds in SEC.
-timed() {
-	out=$1
-	shift
-	t0=$(now)
-	"$@" >"$out"
-	t1=$(now)
-	SEC=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.6f", b - a }')
-}
 
 # timerep OUT CMD...: as timed, repeated to fill about 0.5 s (at most
 # 20 runs, timed together); SEC is the mean per run.

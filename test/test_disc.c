@@ -12,15 +12,6 @@
 
 #define U52 0x1p-52
 
-static double *rnd_points(size_t n, uint64_t seed)
-{
-	double *xy = malloc(2 * n * sizeof *xy);
-	assert_non_null(xy);
-	for (size_t i = 0; i < 2 * n; i++)
-		xy[i] = frs_rand01(seed, FRS_STREAM_TEST, i);
-	return xy;
-}
-
 /* ---- predicates against exact integer arithmetic ---- */
 
 static int sgn128(__int128 v)
@@ -122,7 +113,7 @@ static void star_warnock(void **state)
 	static const size_t ns[] = { 1, 2, 3, 17, 100, 256 };
 	(void)state;
 	for (size_t k = 0; k < sizeof ns / sizeof *ns; k++) {
-		double *xy = rnd_points(ns[k], 100 + k);
+		double *xy = tu_rnd_points(ns[k], 100 + k);
 		double d = disc_star_l2_exact(xy, ns[k]);
 		double r = warnock_ref(xy, ns[k]);
 		assert_true(fabs(d - r) <= 1e-12 * r);
@@ -132,23 +123,11 @@ static void star_warnock(void **state)
 
 /* Regular k x k grid at the cell centres: T^2 = 1/(18k^2) + 7/(288k^4)
  * (Warnock's sums factor into 1-D sums of (i + 1/2)/k). */
-static double *regular(size_t k)
-{
-	double *xy = malloc(2 * k * k * sizeof *xy);
-	assert_non_null(xy);
-	for (size_t i = 0; i < k; i++)
-		for (size_t j = 0; j < k; j++) {
-			xy[2 * (i * k + j)] = ((double)i + 0.5) / (double)k;
-			xy[2 * (i * k + j) + 1] = ((double)j + 0.5) / (double)k;
-		}
-	return xy;
-}
-
 static void star_regular(void **state)
 {
 	(void)state;
 	for (size_t k = 1; k <= 64; k *= 4) {
-		double *xy = regular(k), kk = (double)(k * k);
+		double *xy = tu_grid_points(k), kk = (double)(k * k);
 		double want = sqrt(1 / (18 * kk) + 7 / (288 * kk * kk));
 		assert_near(disc_star_l2_exact(xy, k * k), want, 1e-13 * want);
 		free(xy);
@@ -160,7 +139,7 @@ static void rect_regular(void **state)
 {
 	(void)state;
 	for (size_t k = 1; k <= 64; k *= 4) {
-		double *xy = regular(k);
+		double *xy = tu_grid_points(k);
 		long double a = 0, p = 0, want;
 		for (size_t i = 0; i < k; i++) {
 			long double x = ((long double)i + 0.5L) / k;
@@ -222,7 +201,7 @@ static void rect_grid_brute(const double *xy, size_t n, uint32_t s,
 /* Points with coordinates on grid lines, repeated, 0 and 1 - ulp. */
 static double *hard_points(size_t n, uint32_t s, uint64_t seed)
 {
-	double *xy = rnd_points(n, seed);
+	double *xy = tu_rnd_points(n, seed);
 	for (size_t i = 0; i < n; i += 3)
 		xy[2 * i] = (double)(i % s) / s;
 	for (size_t i = 1; i < n; i += 5)
@@ -264,7 +243,7 @@ static void grids_brute(void **state)
  * most 2(2/s + points in the cell's strips / n) over a cell). */
 static void grid_converges(void **state)
 {
-	double *xy = rnd_points(500, 300);
+	double *xy = tu_rnd_points(500, 300);
 	double e2 = pow(disc_star_l2_exact(xy, 500), 2);
 	double r2 = pow(disc_rect_l2_exact(xy, 500), 2);
 	double last = 1.0;
@@ -370,7 +349,7 @@ static void star_dinf(void **state)
 		free(xy);
 	}
 	{
-		double *xy = regular(30);
+		double *xy = tu_grid_points(30);
 		assert_int_equal(disc_star_dinf_exact(xy, 900, &v), 0);
 		assert_near(v, star_dinf_sweep(xy, 900), 1e-15);
 		free(xy);
@@ -428,7 +407,7 @@ static void rect_dinf(void **state)
 		assert_near(v, 1.0, 1e-15);
 	}
 	{
-		double *xy = rnd_points(300, 750);
+		double *xy = tu_rnd_points(300, 750);
 		assert_int_equal(disc_rect_dinf_exact(xy, 300, 1, &v), 0);
 		assert_int_equal(disc_rect_dinf_grid(xy, 300, 200, 0, &g), 0);
 		assert_true(g <= v + 1e-15 && g > 0.8 * v);
@@ -470,7 +449,7 @@ static void half_brute(void **state)
 	frs_set_threads(2);
 	for (uint32_t s = 2; s <= 9; s += 7)
 		for (size_t n = 1; n <= 90; n += 89) {
-			double *xy = rnd_points(n, 500 + n), best = 0;
+			double *xy = tu_rnd_points(n, 500 + n), best = 0;
 			long double sum = 0;
 			struct disc_result r;
 			/* points on the border points and on lines */
@@ -545,7 +524,7 @@ static void shapes_brute(void **state)
 		    .shapes = 1500, .seed = 11 };
 		struct disc_ctx *c = disc_ctx_new(&o);
 		size_t n = 3000;	/* 38 x 38 cells, many wholly inside */
-		double *xy = rnd_points(n, 600), best = 0;
+		double *xy = tu_rnd_points(n, 600), best = 0;
 		long double sum = 0;
 		struct disc_result r;
 		/* points on the corners of the first shapes */
@@ -594,7 +573,7 @@ static void expect_class(struct disc_opts *o, double ea, size_t n, int m)
 	double s1 = 0, s2 = 0, mean, se;
 	assert_non_null(c);
 	for (int k = 0; k < m; k++) {
-		double *xy = rnd_points(n, 1000 + (uint64_t)k), v;
+		double *xy = tu_rnd_points(n, 1000 + (uint64_t)k), v;
 		struct disc_result r;
 		assert_int_equal(disc_set(c, xy, n, 0, &r), 0);
 		assert_true(r.d2 <= r.dinf);
@@ -692,7 +671,7 @@ static void run_all(const double *xy, size_t n, int par,
 static void invariants(void **state)
 {
 	size_t n = 700;
-	double *xy = rnd_points(n, 800), *perm = malloc(2 * n * sizeof *perm);
+	double *xy = tu_rnd_points(n, 800), *perm = malloc(2 * n * sizeof *perm);
 	struct disc_result a[7], b[7], c[7];
 	(void)state;
 	assert_non_null(perm);

@@ -15,6 +15,31 @@
 #include <math.h>
 
 #include "err.h"
+#include "rng.h"
+
+/* n uniform random points, x y packed, from (seed, FRS_STREAM_TEST). */
+static inline double *tu_rnd_points(size_t n, uint64_t seed)
+{
+	double *xy = malloc(2 * n * sizeof *xy);
+	assert_non_null(xy);
+	for (size_t i = 0; i < 2 * n; i++)
+		xy[i] = frs_rand01(seed, FRS_STREAM_TEST, i);
+	return xy;
+}
+
+/* The m x m grid of cell centres ((i + 1/2)/m, (j + 1/2)/m), point
+ * i m + j. */
+static inline double *tu_grid_points(size_t m)
+{
+	double *xy = malloc(2 * m * m * sizeof *xy);
+	assert_non_null(xy);
+	for (size_t i = 0; i < m; i++)
+		for (size_t j = 0; j < m; j++) {
+			xy[2 * (i * m + j)] = ((double)i + 0.5) / (double)m;
+			xy[2 * (i * m + j) + 1] = ((double)j + 0.5) / (double)m;
+		}
+	return xy;
+}
 
 /* A fresh temporary directory per test binary. */
 static inline const char *tu_dir(void)

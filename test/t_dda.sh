@@ -1,0 +1,87 @@
+#!/bin/sh
+# dda: spectra, density and RDF from the command line; conventions and
+# bad input.
+. "$(dirname "$0")/lib.sh"
+
+ref-sample -k regular -n 256 -q -o "$T/grid.pts"
+ref-sample -k random -n 512 --sets 10 -q -o "$T/rand.pts"
+ref-sample -k dart -n 256 -q -o "$T/dart.pts"
+
+# at KX KY FILE: the value of a kx ky table at one frequency.
+at() {
+	awk -F '\t' -v x="$1" -v y="$2" 'NR > 1 && $1 == x && $2 == y { print $3 }' "$3"
+}
+
+# A regular 16 x 16 grid: P = n at multiples of 16, 0 elsewhere.
+check "--fourier of a grid" dda --fourier --size 40 -o "$T/f" "$T/grid.pts"
+near "$(at 16 0 "$T/f")" 256 1e-9 && near "$(at 16 -32 "$T/f")" 256 1e-9 &&
+    near "$(at 0 0 "$T/f")" 256 1e-9 && ok "grid: P = n at multiples of m" ||
+    nok "grid: P(16,0) = $(at 16 0 "$T/f")"
+awk -F '\t' 'NR > 1 && ($1 % 16 || $2 % 16) && $3 > 1e-9 { bad = 1 }
+    END { exit bad }' "$T/f" && ok "grid: P = 0 elsewhere" || nok "grid: P != 0"
+[ "$(head -n 1 "$T/f")" = "$(printf 'kx\tky\tpower')" ] &&
+    [ "$(wc -l <"$T/f")" -eq $((81 * 81 + 1)) ] && ok "table: header, (2K+1)^2 rows" ||
+    nok "table layout"
+
+# Random sets: white noise, radial mean 1, anisotropy of 10 sets -10 dB.
+check "--fourier --radial --png" dda --fourier --sets 512 --radial "$T/r" \
+    --png "$T/p.png" -o "$T/f2" "$T/rand.pts"
+[ "$(head -n 1 "$T/r")" = "$(printf 'freq\tpower\taniso_db\tcount')" ] &&
+    ok "--radial header" || nok "--radial header: $(head -n 1 "$T/r")"
+awk -F '\t' 'NR > 3 { p += $2; a += $3; k++ } END {
+	p /= k; a /= k; exit !(p > 0.95 && p < 1.05 && a > -11 && a < -9) }' "$T/r" &&
+    ok "random: radial mean 1, anisotropy -10 dB" ||
+    nok "random: $(awk 'NR > 3' "$T/r" | head -n 3)"
+[ "$(head -c 8 "$T/p.png" | od -A n -t x1 | tr -d ' ')" = 89504e470d0a1a0a ] &&
+    ok "--png writes a PNG" || nok "--png"
+check "--approx" dda --fourier --approx --sets 512 -o "$T/fa" "$T/rand.pts"
+paste "$T/f2" "$T/fa" | awk -F '\t' 'NR > 1 { d = $3 - $6; if (d < 0) d = -d
+    if (d > 1e-3 * ($3 + 1)) bad = 1 } END { exit bad }' &&
+    ok "--approx agrees with the exact sums" || nok "--approx differs"
+
+# Same bytes for any thread count.
+dda --fourier --size 32 --sets 512 -j 1 -o "$T/j1" "$T/rand.pts"
+dda --fourier --size 32 --sets 512 -j 2 -o "$T/j2" "$T/rand.pts"
+cmp -s "$T/j1" "$T/j2" && ok "--fourier: -j 1 = -j 2" || nok "--fourier: -j"
+dda --dda --sets 512 -j 1 -o "$T/d1" "$T/rand.pts"
+dda --dda --sets 512 -j 2 -o "$T/d2" "$T/rand.pts"
+cmp -s "$T/d1" "$T/d2" && ok "--dda: -j 1 = -j 2" || nok "--dda: -j"
+
+# DDA: a constant map is the uniform analysis; random sets give about 1.
+dda --dda --sets 512 -i const -o "$T/d3" "$T/rand.pts"
+cmp -s "$T/d1" "$T/d3" && ok "--dda: constant map = uniform" || nok "--dda: -i const"
+awk -F '\t' 'NR > 1 { r = sqrt($1 * $1 + $2 * $2)
+    if (r > 2 && r < 8) { s += $3; k++ } } END { s /= k; exit !(s > 0.9 && s < 1.1) }' \
+    "$T/d1" && ok "--dda: random sets near 1" || nok "--dda: random level"
+
+# Density: a square grid has rho = sqrt(sqrt(3)/2).
+check "--density" dda --density -o "$T/dn" "$T/grid.pts" "$T/dart.pts"
+[ "$(head -n 1 "$T/dn")" = "$(printf 'set\tn\tdmin\trho\tfile')" ] && ok "--density header" ||
+    nok "--density header"
+near "$(awk -F '\t' 'NR == 2 { print $4 }' "$T/dn")" 0.930604859 1e-8 &&
+    ok "grid: rho = 0.9306" || nok "grid rho: $(sed -n 2p "$T/dn")"
+[ "$(awk -F '\t' 'END { print $1 }' "$T/dn")" = mean ] && ok "--density: a mean row" ||
+    nok "--density mean row"
+
+# RDF of random sets: 1 on average, plain and on the torus.
+for t in "" --torus; do
+	dda --rdf $t --sets 512 --bins 40 -o "$T/g" "$T/rand.pts"
+	awk -F '\t' 'NR > 5 { s += $2; k++ } END { s /= k; exit !(s > 0.93 && s < 1.07) }' \
+	    "$T/g" && ok "--rdf $t: random sets about 1" || nok "--rdf $t: $(sed -n 10p "$T/g")"
+done
+
+# Bad input.
+printf '0.1 0.2\n0.3 1.5\n' >"$T/out.txt"
+expect_fail "two modes" 2 "one of --fourier" - dda --fourier --dda "$T/grid.pts"
+expect_fail "--png with --density" 2 "--png and --radial" - \
+    dda --density --png "$T/x.png" "$T/grid.pts"
+expect_fail "-i with --fourier" 2 "-i:" - dda --fourier -i blob "$T/grid.pts"
+expect_fail "--torus with --dda" 2 "--torus" - dda --dda --torus "$T/grid.pts"
+expect_fail "--db junk" 2 "--db" - dda --db 3 "$T/grid.pts"
+expect_fail "no files" 2 "no point files" - dda --rdf
+expect_fail "missing file" 1 "$T/nope.pts" "$T/o1" dda -o "$T/o1" "$T/nope.pts"
+expect_fail "outside [0,1)" 1 "out.txt" "$T/o2" dda -o "$T/o2" "$T/out.txt"
+expect_fail "--sets not dividing" 1 "not a whole number of sets" "$T/o3" \
+    dda --sets 100 -o "$T/o3" "$T/grid.pts"
+expect_fail "point on zero importance" 1 "grid.pts" "$T/o4" \
+    dda --dda -i blob:sigma=0.01 -o "$T/o4" "$T/grid.pts"
