@@ -61,8 +61,9 @@ ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) $(PATHS) \
 ALL_LDFLAGS = $(VFLAGS) $(LDFLAGS)
 LIBS = $(PKG_LIBS) -lm -lpthread
 
+CLSRC = $(wildcard cl/*.cl)
 LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o) \
-	$(LIBCXXSRC:src/lib/%.cc=$(B)/lib/%.o)
+	$(LIBCXXSRC:src/lib/%.cc=$(B)/lib/%.o) $(B)/gen/clsrc.o
 PROGBIN = $(PROGS:%=$(B)/bin/%)
 TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%)
 REFBIN = $(REFSRC:test/%.c=$(B)/test/%)
@@ -89,6 +90,15 @@ $(B)/libfrs.a: $(LIBOBJ)
 $(B)/lib/%.o: src/lib/%.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+# The OpenCL kernels, embedded so that installed programs need no source
+# tree.
+$(B)/gen/clsrc.c: $(CLSRC) scripts/cl2c.sh
+	@mkdir -p $(@D)
+	sh scripts/cl2c.sh $@ $(CLSRC)
+
+$(B)/gen/clsrc.o: $(B)/gen/clsrc.c
+	$(CC) $(CSTD) $(VFLAGS) $(CFLAGS) -c $< -o $@
 
 $(B)/lib/%.o: src/lib/%.cc
 	@mkdir -p $(@D)

@@ -16,6 +16,8 @@ export FRS_SHARED="${FRS_SHARED:-$top/../shared}"
 # Sanitizer settings: fail hard, and keep LeakSanitizer on.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=0:detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+# The OpenCL runtime leaks inside itself; those leaks are not ours.
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$top/test/lsan.supp}"
 
 pass=0
 fail=0
