@@ -81,9 +81,15 @@ static int devices(cl_device_id *ids, cl_platform_id *plat, unsigned max,
 
 	pocl_cache();
 	err = clGetPlatformIDs(16, p, &np);
-	if (err == CL_PLATFORM_NOT_FOUND_KHR || (err == CL_SUCCESS && np == 0))
+	if (err == CL_PLATFORM_NOT_FOUND_KHR || (err == CL_SUCCESS && np == 0)) {
+		const char *c = getenv("POCL_CACHE_DIR");
+		if (c != NULL && access(c, W_OK) != 0)
+			return frs_fail("OpenCL: no platform found; PoCL needs a "
+			    "writable kernel cache and POCL_CACHE_DIR=%s is "
+			    "not writable", c);
 		return frs_fail("OpenCL: no platform found (is an ICD such as "
 		    "pocl-opencl-icd installed?)");
+	}
 	if (err != CL_SUCCESS)
 		return ocl_fail(err, "clGetPlatformIDs");
 	*n = 0;
@@ -103,8 +109,14 @@ static int devices(cl_device_id *ids, cl_platform_id *plat, unsigned max,
 			*n += nd;
 		}
 	}
-	if (*n == 0)
+	if (*n == 0) {
+		const char *c = getenv("POCL_CACHE_DIR");
+		if (c != NULL && access(c, W_OK) != 0)
+			return frs_fail("OpenCL: no device found; PoCL needs a "
+			    "writable kernel cache and POCL_CACHE_DIR=%s is "
+			    "not writable", c);
 		return frs_fail("OpenCL: no device found");
+	}
 	return 0;
 }
 
