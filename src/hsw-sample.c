@@ -11,7 +11,9 @@
 
 #include "cli.h"
 #include "hsw.h"
+#include "hswcl.h"
 #include "imap.h"
+#include "ocl.h"
 #include "outfile.h"
 #include "par.h"
 #include "progress.h"
@@ -20,7 +22,9 @@
 
 static const char usage[] =
     "usage: hsw-sample -i IMPORTANCE -n COUNT [--input SET|FILE] [--pdf]\n"
-    "                  [-s WxH] [-S SEED] [-j N] [-T] [-v] [-o FILE]\n"
+    "                  [-s WxH] [-S SEED] [-j N] [--device cpu|cl|cl:N]\n"
+    "                  [-T] [-v] [-o FILE]\n"
+    "       hsw-sample --list-devices\n"
     "\n"
     "  -i, --importance M   map: PNG, OpenEXR or a spec such as blob\n"
     "  -n, --count N        points to make (exactly; with --input FILE at\n"
@@ -35,13 +39,16 @@ static const char usage[] =
     "                       (default 128x128), or files resampled\n"
     "  -S, --seed N         seed of random, jittered and dart (default 1)\n"
     "  -j, --threads N      threads (default all); same points for any N\n"
+    "      --device D       cpu (default), cl (the first OpenCL device) or\n"
+    "                       cl:N; the same points on every device\n"
+    "      --list-devices   the OpenCL devices, numbered for cl:N\n"
     "  -T, --text           text output\n"
     "  -v, --verbose        setup and warping time on standard error\n"
     "  -o, --output FILE    output (default standard output)\n"
     "  -q, --quiet          no warnings\n"
     "  -h, --help           this help;  --version  the version\n";
 
-enum { OPT_INPUT = OPT_FIRST_PRIVATE, OPT_PDF };
+enum { OPT_INPUT = OPT_FIRST_PRIVATE, OPT_PDF, OPT_DEVICE, OPT_LIST };
 
 static const struct option longopts[] = {
 	{ "count", required_argument, NULL, 'n' },
@@ -49,6 +56,8 @@ static const struct option longopts[] = {
 	{ "size", required_argument, NULL, 's' },
 	{ "input", required_argument, NULL, OPT_INPUT },
 	{ "pdf", no_argument, NULL, OPT_PDF },
+	{ "device", required_argument, NULL, OPT_DEVICE },
+	{ "list-devices", no_argument, NULL, OPT_LIST },
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
@@ -63,6 +72,8 @@ struct opts {
 	uint64_t n;
 	int have_n, pdf, verbose;
 	uint32_t w, h;
+	int cl, cl_index;	/* --device: OpenCL, and which (-1: first) */
+	int list;		/* --list-devices */
 };
 
 static void parse_opts(int argc, char **argv, struct opts *o)
@@ -98,6 +109,12 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 				    optarg);
 			break;
 		case OPT_PDF: o->pdf = 1; break;
+		case OPT_DEVICE:
+			o->cl = ocl_parse_device(optarg, &o->cl_index);
+			if (o->cl < 0)
+				cli_usage_error("--device: %s", frs_errmsg());
+			break;
+		case OPT_LIST: o->list = 1; break;
 		case 'v': o->verbose = 1; break;
 		default:
 			if (!cli_common_opt(c, optarg))
@@ -106,6 +123,8 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 	}
 	if (optind != argc)
 		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	if (o->list)
+		return;
 	if (o->imp == NULL)
 		cli_usage_error("-i IMPORTANCE is required");
 	if (!o->have_n && o->file == NULL)
@@ -218,21 +237,33 @@ int main(int argc, char **argv)
 {
 	static const char *const names[] = { "random", "regular", "jittered",
 	    "halton", "hammersley" };
-	struct opts o = { NULL, NULL, HSW_HALTON, 0, 0, 0, 0, 0, 0 };
+	struct opts o = { NULL, NULL, HSW_HALTON, 0, 0, 0, 0, 0, 0, 0, -1, 0 };
 	struct frs_imap map;
 	struct hsw_tree t;
+	struct ocl dev;
+	struct hswcl hc;
 	double *pts, t0, t1, t2, t3;
 
 	cli_init("hsw-sample", usage);
 	parse_opts(argc, argv, &o);
+	if (o.list) {
+		if (ocl_list(stdout) < 0 || fflush(stdout) != 0)
+			cli_die_lib();
+		return 0;
+	}
+	if (o.cl && ocl_open(&dev, o.cl_index) < 0)
+		cli_die_lib();
 	if (imap_load(o.imp, o.w, o.h, 0, &map) < 0)
 		cli_die_lib();
 	t0 = progress_now();
 	if (hsw_build(&t, &map) < 0)
 		cli_die("%s: %s", o.imp, frs_errmsg());
+	if (o.cl && hswcl_init(&hc, &dev, &t) < 0)
+		cli_die_lib();
 	pts = make_input(&o);
 	t1 = progress_now();
-	if (hsw_warp_points(&t, pts, pts, o.n) < 0)
+	if ((o.cl ? hswcl_warp_points(&hc, pts, pts, o.n) :
+	    hsw_warp_points(&t, pts, pts, o.n)) < 0)
 		cli_die_lib();
 	t2 = progress_now();
 	write_points(&o, &t, &map, pts);
@@ -247,6 +278,15 @@ int main(int argc, char **argv)
 		    frs_threads());
 		fprintf(stderr, "hsw-sample: setup %.6f s, warping %.6f s, "
 		    "output %.6f s\n", t1 - t0, t2 - t1, t3 - t2);
+		if (o.cl)
+			fprintf(stderr, "hsw-sample: device %s: program and "
+			    "tree %.6f s; points written %.6f s, kernel %.6f "
+			    "s, read %.6f s\n", dev.name, hc.t_setup,
+			    hc.t_write, hc.t_kernel, hc.t_read);
+	}
+	if (o.cl) {
+		hswcl_free(&hc);
+		ocl_close(&dev);
 	}
 	free(pts);
 	hsw_free(&t);
