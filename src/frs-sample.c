@@ -11,6 +11,7 @@
 #include "cli.h"
 #include "frdio.h"
 #include "frs.h"
+#include "frscl.h"
 #include "imap.h"
 #include "outfile.h"
 #include "progress.h"
@@ -21,14 +22,16 @@ static const char usage[] =
     "                  [--sigma S] [--jitter none|halton|random] [--pdf]\n"
     "                  [--progressive N1,N2,...] [--threshold unbiased|thesis]\n"
     "                  [--count-only] [--sets M] [-s WxH] [-S SEED] [-j N]\n"
-    "                  [-T] [-v] [-o FILE]\n"
+    "                  [--device cpu|cl|cl:N] [-T] [-v] [-o FILE]\n"
+    "       frs-sample --list-devices\n"
     "\n"
     "  -n, --count N        samples to make (about; see frs-sample(1))\n"
     "  -i, --importance M   map: PNG, OpenEXR or a spec such as blob\n"
     "                       (default const: uniform sampling)\n"
     "  -m, --matrix FILE    threshold matrix .frd (default: the shipped\n"
     "                       2048x2048 data/default.frd)\n"
-    "  -a, --algo A         naive, stack, level1, level2 or sorted (default)\n"
+    "  -a, --algo A         naive, stack, level1, level2, sorted (default)\n"
+    "                       or flat1 (OpenCL only)\n"
     "      --sigma S        sparsity: one of S^2 window elements passes at\n"
     "                       the maximum importance (default 8)\n"
     "      --jitter J       none (element centres), halton or random offsets\n"
@@ -45,6 +48,9 @@ static const char usage[] =
     "                       (default 128x128), or files resampled\n"
     "      --equirect       weight map rows by sin(theta)\n"
     "      --strict         negative importance is an error\n"
+    "      --device D       cpu (default), cl (the first OpenCL device) or\n"
+    "                       cl:N; the output is the same bytes on all\n"
+    "      --list-devices   list the OpenCL devices as cl:N and exit\n"
     "  -S, --seed N         seed (default 1)\n"
     "  -j, --threads N      threads (default all); same points for any N\n"
     "  -T, --text           text output\n"
@@ -55,7 +61,8 @@ static const char usage[] =
 
 enum {
 	OPT_SIGMA = OPT_FIRST_PRIVATE, OPT_JITTER, OPT_PDF, OPT_PROG,
-	OPT_THRESHOLD, OPT_COUNT_ONLY, OPT_EQUIRECT, OPT_STRICT, OPT_SETS
+	OPT_THRESHOLD, OPT_COUNT_ONLY, OPT_EQUIRECT, OPT_STRICT, OPT_SETS,
+	OPT_DEVICE, OPT_LIST_DEVICES
 };
 
 /* Most samples asked for in all the sets of one file (M * n): far inside
@@ -77,6 +84,8 @@ static const struct option longopts[] = {
 	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
 	{ "strict", no_argument, NULL, OPT_STRICT },
 	{ "sets", required_argument, NULL, OPT_SETS },
+	{ "device", required_argument, NULL, OPT_DEVICE },
+	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
@@ -86,13 +95,14 @@ struct opts {
 	const char *imp, *matrix;
 	uint64_t steps[16];
 	unsigned nsteps;
-	enum frs_algo algo;
+	int algo;		/* enum frs_algo or FRSCL_FLAT1 */
 	double sigma;
 	enum frs_jitter jitter;
 	enum frs_rule rule;
 	int pdf, count_only, verbose, flags;
 	uint32_t w, h;
 	uint64_t sets;		/* --sets, default 1 */
+	int cl, dev;		/* --device: OpenCL, its index (-1 first) */
 };
 
 static void parse_steps(struct opts *o, const char *s)
@@ -132,7 +142,7 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		case 'i': o->imp = optarg; break;
 		case 'm': o->matrix = optarg; break;
 		case 'a':
-			if (frs_algo_parse(optarg, &o->algo) < 0)
+			if (frscl_algo_parse(optarg, &o->algo) < 0)
 				cli_usage_error("%s", frs_errmsg());
 			break;
 		case 's':
@@ -169,6 +179,17 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		case OPT_SETS:
 			o->sets = cli_u64("--sets", optarg, 1, SETS_MAX_TOTAL);
 			break;
+		case OPT_DEVICE:
+			o->cl = ocl_parse_device(optarg, &o->dev);
+			if (o->cl < 0)
+				cli_usage_error("--device: %s", frs_errmsg());
+			break;
+		case OPT_LIST_DEVICES:
+			if (ocl_list(stdout) < 0)
+				cli_die("--list-devices: %s", frs_errmsg());
+			if (fflush(stdout) == EOF || ferror(stdout))
+				cli_die("--list-devices: write error");
+			exit(0);
 		case 'v': o->verbose = 1; break;
 		default:
 			if (!cli_common_opt(c, optarg))
@@ -177,6 +198,8 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 	}
 	if (optind != argc)
 		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	if (o->algo == FRSCL_FLAT1 && !o->cl)
+		cli_usage_error("-a flat1 runs on OpenCL only (--device cl)");
 	if (o->nsteps == 0) {
 		if (!have_n)
 			cli_usage_error("-n COUNT is required");
@@ -273,9 +296,10 @@ static void check_room(const struct opts *o)
 		    (double)pages * (double)psize / (1 << 30));
 }
 
-static int needs_minmap(enum frs_algo a)
+static int needs_minmap(int a)
 {
-	return a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2;
+	return a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2 ||
+	    a == FRSCL_FLAT1;
 }
 
 static uint32_t sorted_block(const struct frs_setup *s)
@@ -390,7 +414,8 @@ static void reseed(const struct opts *o, const struct frs_imap *map,
 int main(int argc, char **argv)
 {
 	struct opts o = { NULL, NULL, { 0 }, 0, FRS_SORTED, 8.0,
-	    FRS_JITTER_NONE, FRS_UNBIASED, 0, 0, 0, 0, 0, 0, 1 };
+	    FRS_JITTER_NONE, FRS_UNBIASED, 0, 0, 0, 0, 0, 0, 1, 0, -1 };
+	struct ocl ocl = { NULL, NULL, NULL, NULL, "", 0 };
 	struct frs_matrix mat;
 	struct frs_imap map;
 	struct frs_setup s, s0;
@@ -401,6 +426,7 @@ int main(int argc, char **argv)
 	struct progress pr;
 	uint64_t total = 0;
 	double t0, t1, t2, tsetup, tthr = 0.0, tout = 0.0;
+	struct frscl_times ctimes = { 0.0, 0.0, 0.0, 0.0 };
 
 	cli_init("frs-sample", usage);
 	parse_opts(argc, argv, &o);
@@ -409,6 +435,8 @@ int main(int argc, char **argv)
 		o.matrix = default_matrix();
 	if (imap_load(o.imp ? o.imp : "const", o.w, o.h, o.flags, &map) < 0)
 		cli_die_lib();
+	if (o.cl && ocl_open(&ocl, o.dev) < 0)
+		cli_die("--device: %s", frs_errmsg());
 	t0 = progress_now();
 	load_matrix(&o, &map, &mat, &prep, &s);
 	s0 = s;
@@ -431,14 +459,24 @@ int main(int argc, char **argv)
 			tsetup += t2 - t1;
 			t1 = t2;
 		}
-		if (frs_sample(&s, &map, &prep, o.algo, o.steps, o.nsteps,
-		    o.count_only, &r) < 0) {
+		if ((o.cl ? frs_sample_cl(&ocl, &s, &map, &prep, o.algo, o.steps,
+		    o.nsteps, o.count_only, &r) : frs_sample(&s, &map, &prep,
+		    (enum frs_algo)o.algo, o.steps, o.nsteps, o.count_only,
+		    &r)) < 0) {
 			if (set > 0)
 				outfile_abort(&of);
 			cli_die("%s", frs_errmsg());
 		}
 		t2 = progress_now();
 		tthr += t2 - t1;
+		if (o.cl) {
+			struct frscl_times ct;
+			frscl_last_times(&ct);
+			ctimes.build += ct.build;
+			ctimes.upload += ct.upload;
+			ctimes.kernel += ct.kernel;
+			ctimes.download += ct.download;
+		}
 		if (set == 0) {
 			if (outfile_open(&of, cli.out, !o.count_only && !cli.text) < 0)
 				cli_die_lib();
@@ -474,8 +512,17 @@ int main(int argc, char **argv)
 			    (unsigned long long)(cli.seed + o.sets - 1));
 		fprintf(stderr, "frs-sample: %llu samples (%s); setup %.6f s, "
 		    "thresholding %.6f s, output %.6f s\n",
-		    (unsigned long long)total, frs_algo_name(o.algo), tsetup,
+		    (unsigned long long)total, frscl_algo_name(o.algo), tsetup,
 		    tthr, tout);
+		if (o.cl)
+			fprintf(stderr, "frs-sample: OpenCL device %s: build %.6f s, "
+			    "to the device %.6f s, kernels %.6f s, back and offsets "
+			    "%.6f s\n", ocl.name, ctimes.build, ctimes.upload,
+			    ctimes.kernel, ctimes.download);
+	}
+	if (o.cl) {
+		frscl_release(&ocl);
+		ocl_close(&ocl);
 	}
 	frs_prep_free(&prep);
 	frd_free(&mat);

@@ -155,3 +155,26 @@ expect_fail "a count too large to store" 1 "--count-only" "$T/big.pts" \
 frs-sample -m "$M" -i blob -n 1000 --count-only -o "$T/count.txt" &&
     [ "$(cat "$T/count.txt")" -gt 900 ] && ok "--count-only writes to -o" ||
     nok "--count-only writes to -o"
+
+# OpenCL (PoCL in make check): the same bytes as the CPU path.
+for opts in "-i blob -n 3000" "-i ramp -n 2000 -a naive --jitter random -T" \
+    "-i blob --progressive 200,800,2000 -a stack --pdf" \
+    "-i sky -n 1500 -a level1 --threshold thesis --jitter halton" \
+    "-i blob -n 800 -a level2 -S 5 --sets 3" "-m $T/m.frp -i const -n 1000" \
+    "-i blob -n 5000 --count-only"; do
+	# shellcheck disable=SC2086
+	frs-sample -m "$M" $opts -q -o "$T/cpu.out" &&
+	    frs-sample -m "$M" $opts -q --device cl -o "$T/cl.out" &&
+	    cmp -s "$T/cpu.out" "$T/cl.out" && ok "--device cl $opts: the same bytes" ||
+	    nok "--device cl $opts: the same bytes"
+done
+frs-sample -m "$M" -i blob -n 3000 -a stack -T -o "$T/stack.txt"
+frs-sample -m "$M" -i blob -n 3000 -a flat1 --device cl:0 -T -o "$T/flat1.txt"
+cmp -s "$T/stack.txt" "$T/flat1.txt" && ok "-a flat1 gives Stack's bytes" ||
+    nok "-a flat1 gives Stack's bytes"
+frs-sample --list-devices >"$T/dev.txt" && head -n 1 "$T/dev.txt" | grep -q '^cl:0' &&
+    ok "--list-devices starts with cl:0" || nok "--list-devices starts with cl:0"
+expect_fail "--device cl:63" 1 "cl:63" "$T/o.pts" frs-sample -m "$M" -n 10 --device cl:63 -o "$T/o.pts"
+expect_fail "--device gpu" 2 "--device" "$T/o.pts" frs-sample -m "$M" -n 10 --device gpu -o "$T/o.pts"
+expect_fail "-a flat1 without OpenCL" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 -o "$T/o.pts"
+expect_fail "-a flat1 --device cpu" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 --device cpu -o "$T/o.pts"

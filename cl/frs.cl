@@ -1,0 +1,367 @@
+/*
+ * Forced Random Sampling on OpenCL (thesis Ch. 5): Naive, Stack, Level N,
+ * Sorted with one work-item per active map pixel, and Flat 1 (Sec. 5.4)
+ * with one kernel launch per minmap level over a list of candidate blocks.
+ *
+ * The host (src/lib/frscl.c) does the setup and turns each pixel's
+ * thresholds into integers, so no floating point happens here and every
+ * device agrees with src/lib/frs.c bit for bit.  Per active pixel p the
+ * record thr[p * (2 + 2 nsteps)] holds
+ *   [0] px | py << 32     the pixel
+ *   [1] lim               values from lim never pass (last step)
+ *   [2 + 2k] tf_k         values below tf_k pass at step k
+ *   [3 + 2k] c_k          v == tf_k passes when the 53-bit coin < c_k
+ *                         (c_k = ceil(frac_k 2^53); 0: never)
+ * par: [0] sw [1] ns [2] wx [3] wy [4] mw [5] mh [6] seed [7] nsteps
+ *      [8] number of active pixels [9] start level / sorted block size.
+ *
+ * Every per-pixel kernel runs twice: with write = 0 it stores the number
+ * of elements of each pixel in cnt; with write = 1 it writes them as
+ * (x, y, step) uint triples from out[3 off[p]], in the order in which
+ * src/lib/frs.c emits them.  All window coordinates are 64-bit.
+ */
+#define PAR_SW 0
+#define PAR_NS 1
+#define PAR_WX 2
+#define PAR_WY 3
+#define PAR_MW 4
+#define PAR_MH 5
+#define PAR_SEED 6
+#define PAR_NSTEPS 7
+#define PAR_NACT 8
+#define PAR_L 9
+
+struct pix {
+	__global const ulong *th;	/* the pixel's record */
+	ulong seed, sw;
+	uint nsteps;
+	ulong lim;
+	ulong x0, y0;			/* the pixel's first window element */
+	ulong count;
+	int write;
+	__global uint *out;		/* at the pixel's offset */
+};
+
+static ulong wrapn(ulong v, ulong n)
+{
+	return (n & (n - 1)) == 0 ? v & (n - 1) : v % n;
+}
+
+/* src/lib/frs.c passes() with integer thresholds. */
+static int passes_k(const struct pix *p, uint k, ulong v, ulong x, ulong y)
+{
+	ulong tf = p->th[2 + 2 * k], c = p->th[3 + 2 * k];
+
+	if (v < tf)
+		return 1;
+	return v == tf && c > 0 &&
+	    frs_rand53(p->seed, FRS_STREAM_COIN, y * p->sw + x) < c;
+}
+
+static void put(struct pix *p, ulong x, ulong y, uint step)
+{
+	if (p->write) {
+		__global uint *o = p->out + 3 * p->count;
+		o[0] = (uint)x;
+		o[1] = (uint)y;
+		o[2] = step;
+	}
+	p->count++;
+}
+
+/* src/lib/frs.c emit(). */
+static void emit(struct pix *p, ulong x, ulong y, uint v)
+{
+	uint k, last = p->nsteps - 1;
+
+	if (!passes_k(p, last, v, x, y))
+		return;
+	for (k = 0; k < last && !passes_k(p, k, v, x, y); k++)
+		;
+	put(p, x, y, k);
+}
+
+static void pix_init(struct pix *p, __global const ulong *par,
+    __global const ulong *thr, ulong i, __global const ulong *off,
+    __global uint *out, int write)
+{
+	ulong rec = 2 + 2 * par[PAR_NSTEPS], pp;
+
+	p->th = thr + i * rec;
+	p->seed = par[PAR_SEED];
+	p->sw = par[PAR_SW];
+	p->nsteps = (uint)par[PAR_NSTEPS];
+	p->lim = p->th[1];
+	pp = p->th[0];
+	p->x0 = (pp & 0xffffffffUL) * par[PAR_NS];
+	p->y0 = (pp >> 32) * par[PAR_NS];
+	p->count = 0;
+	p->write = write;
+	p->out = write ? out + 3 * off[i] : out;
+}
+
+/* Listing 5.2. */
+__kernel void frs_naive(__global const ulong *par, __global const ulong *thr,
+    __global const uint *mat, __global ulong *cnt, __global const ulong *off,
+    __global uint *out, int write)
+{
+	ulong i = get_global_id(0);
+	ulong ns, mw, mh, wx, wy;
+	struct pix p;
+
+	if (i >= par[PAR_NACT])
+		return;
+	pix_init(&p, par, thr, i, off, out, write);
+	ns = par[PAR_NS];
+	mw = par[PAR_MW];
+	mh = par[PAR_MH];
+	wx = par[PAR_WX];
+	wy = par[PAR_WY];
+	for (ulong sy = 0; sy < ns; sy++) {
+		ulong y = p.y0 + sy;
+		__global const uint *row = mat + wrapn(wy + y, mh) * mw;
+		ulong mx = wrapn(wx + p.x0, mw);
+		for (ulong sx = 0; sx < ns; sx++) {
+			uint v = row[mx];
+			if (v < p.lim)
+				emit(&p, p.x0 + sx, y, v);
+			if (++mx == mw)
+				mx = 0;
+		}
+	}
+	if (!write)
+		cnt[i] = p.count;
+}
+
+/* The minmap value of the level-l block whose first element is (x, y);
+ * lev holds every level, level l from lev[loff[l]]. */
+static uint minmap_at(__global const ulong *par, __global const uint *lev,
+    __global const ulong *loff, uint l, ulong x, ulong y)
+{
+	ulong mx = wrapn(par[PAR_WX] + x, par[PAR_MW]) >> l;
+	ulong my = wrapn(par[PAR_WY] + y, par[PAR_MH]) >> l;
+	return lev[loff[l] + my * (par[PAR_MW] >> l) + mx];
+}
+
+struct blk {
+	uint x, y;	/* inside the pixel: below n_s <= 2^31 */
+	uint l;
+};
+
+/* Listing 5.4 (Stack) and 5.5 (Level N) in one: the same depth-first
+ * visit of the quadrants in the order (0,0), (1,0), (0,1), (1,1) from
+ * start blocks of level par[PAR_L] in row order. */
+__kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
+    __global const uint *lev, __global const ulong *loff,
+    __global ulong *cnt, __global const ulong *off, __global uint *out,
+    int write)
+{
+	ulong i = get_global_id(0);
+	uint L;
+	ulong b, nb;
+	struct pix p;
+	struct blk st[3 * 32 + 4];
+
+	if (i >= par[PAR_NACT])
+		return;
+	pix_init(&p, par, thr, i, off, out, write);
+	L = (uint)par[PAR_L];
+	b = (ulong)1 << L;
+	nb = par[PAR_NS] / b;
+	for (ulong by = 0; by < nb; by++)
+		for (ulong bx = 0; bx < nb; bx++) {
+			int top = 0;
+			st[top].x = (uint)(bx * b);
+			st[top].y = (uint)(by * b);
+			st[top++].l = L;
+			while (top > 0) {
+				struct blk e = st[--top];
+				ulong x = p.x0 + e.x, y = p.y0 + e.y;
+				uint v = minmap_at(par, lev, loff, e.l, x, y);
+				uint h;
+				if (v >= p.lim)
+					continue;
+				if (e.l == 0) {
+					emit(&p, x, y, v);
+					continue;
+				}
+				h = 1u << (e.l - 1);
+				st[top].x = e.x + h; st[top].y = e.y + h;
+				st[top++].l = e.l - 1;
+				st[top].x = e.x; st[top].y = e.y + h;
+				st[top++].l = e.l - 1;
+				st[top].x = e.x + h; st[top].y = e.y;
+				st[top++].l = e.l - 1;
+				st[top].x = e.x; st[top].y = e.y;
+				st[top++].l = e.l - 1;
+			}
+		}
+	if (!write)
+		cnt[i] = p.count;
+}
+
+/* Listing 5.11: the sorted values of each block of b x b (par[PAR_L]),
+ * as take_block / pix_sorted of src/lib/frs.c. */
+__kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
+    __global const uint *sval, __global const uint *sidx,
+    __global ulong *cnt, __global const ulong *off, __global uint *out,
+    int write)
+{
+	ulong i = get_global_id(0);
+	ulong b, bw, nb, bb;
+	uint lb = 0;
+	struct pix p;
+
+	if (i >= par[PAR_NACT])
+		return;
+	pix_init(&p, par, thr, i, off, out, write);
+	b = par[PAR_L];
+	bw = par[PAR_MW] / b;
+	nb = par[PAR_NS] / b;
+	bb = b * b;
+	while (((ulong)1 << lb) < b)
+		lb++;
+	for (ulong by = 0; by < nb; by++)
+		for (ulong bx = 0; bx < nb; bx++) {
+			ulong x = p.x0 + bx * b, y = p.y0 + by * b;
+			ulong blk = (wrapn(par[PAR_WY] + y, par[PAR_MH]) / b) * bw +
+			    wrapn(par[PAR_WX] + x, par[PAR_MW]) / b;
+			__global const uint *val = sval + blk * bb;
+			__global const uint *idx = sidx + blk * bb;
+			if (p.nsteps == 1) {
+				ulong lo = 0, hi = bb, k;
+				while (lo < hi) {
+					ulong mid = lo + (hi - lo) / 2;
+					if (val[mid] < p.lim)
+						lo = mid + 1;
+					else
+						hi = mid;
+				}
+				k = lo;
+				if (k > 0 && !passes_k(&p, 0, val[k - 1],
+				    x + idx[k - 1] % b, y + idx[k - 1] / b))
+					k--;
+				if (!p.write) {
+					p.count += k;
+					continue;
+				}
+				for (ulong j = 0; j < k; j++)
+					put(&p, x + (idx[j] & (b - 1)),
+					    y + (idx[j] >> lb), 0);
+				continue;
+			}
+			for (ulong k = 0; k < bb && val[k] < p.lim; k++)
+				emit(&p, x + idx[k] % b, y + idx[k] / b, val[k]);
+		}
+	if (!write)
+		cnt[i] = p.count;
+}
+
+/*
+ * Flat 1 (thesis Sec. 5.4).  Candidates are uint triples (active pixel,
+ * x, y inside the pixel).  frs_flat_init makes the start blocks (level
+ * par[PAR_L]) whose minimum is below the pixel's limit, per pixel;
+ * frs_flat_refine, launched once per level l >= 1, keeps the children
+ * (level l - 1) of each candidate whose minimum passes; frs_flat_final
+ * tests the elements of level 0 and writes the samples.  Each runs with
+ * write = 0 to count per item (cnt) and with write = 1 to write at the
+ * offsets the host made from the counts: every list is sized exactly.
+ * The order is that of Stack from the same start level.
+ */
+__kernel void frs_flat_init(__global const ulong *par,
+    __global const ulong *thr, __global const uint *lev,
+    __global const ulong *loff, __global ulong *cnt,
+    __global const ulong *off, __global uint *cand, int write)
+{
+	ulong i = get_global_id(0);
+	ulong rec, b, nb, x0, y0, lim, ns, n = 0;
+	uint L;
+	__global uint *o;
+
+	if (i >= par[PAR_NACT])
+		return;
+	rec = 2 + 2 * par[PAR_NSTEPS];
+	ns = par[PAR_NS];
+	x0 = (thr[i * rec] & 0xffffffffUL) * ns;
+	y0 = (thr[i * rec] >> 32) * ns;
+	lim = thr[i * rec + 1];
+	L = (uint)par[PAR_L];
+	b = (ulong)1 << L;
+	nb = ns / b;
+	o = write ? cand + 3 * off[i] : cand;
+	for (ulong by = 0; by < nb; by++)
+		for (ulong bx = 0; bx < nb; bx++)
+			if (minmap_at(par, lev, loff, L, x0 + bx * b, y0 + by * b) <
+			    lim) {
+				if (write) {
+					o[3 * n] = (uint)i;
+					o[3 * n + 1] = (uint)(bx * b);
+					o[3 * n + 2] = (uint)(by * b);
+				}
+				n++;
+			}
+	if (!write)
+		cnt[i] = n;
+}
+
+__kernel void frs_flat_refine(__global const ulong *par,
+    __global const ulong *thr, __global const uint *lev,
+    __global const ulong *loff, __global const uint *cin, ulong ncand,
+    uint l, __global uint *cnt, __global const ulong *off,
+    __global uint *cout, int write)
+{
+	ulong i = get_global_id(0);
+	ulong rec, x0, y0, lim, ns;
+	uint pi, cx, cy, h, n = 0;
+	__global uint *o;
+
+	if (i >= ncand)
+		return;
+	pi = cin[3 * i];
+	cx = cin[3 * i + 1];
+	cy = cin[3 * i + 2];
+	rec = 2 + 2 * par[PAR_NSTEPS];
+	ns = par[PAR_NS];
+	x0 = (thr[pi * rec] & 0xffffffffUL) * ns;
+	y0 = (thr[pi * rec] >> 32) * ns;
+	lim = thr[pi * rec + 1];
+	h = 1u << (l - 1);
+	o = write ? cout + 3 * off[i] : cout;
+	for (uint q = 0; q < 4; q++) {
+		uint x = cx + (q & 1) * h, y = cy + (q >> 1) * h;
+		if (minmap_at(par, lev, loff, l - 1, x0 + x, y0 + y) < lim) {
+			if (write) {
+				o[3 * n] = pi;
+				o[3 * n + 1] = x;
+				o[3 * n + 2] = y;
+			}
+			n++;
+		}
+	}
+	if (!write)
+		cnt[i] = n;
+}
+
+__kernel void frs_flat_final(__global const ulong *par,
+    __global const ulong *thr, __global const uint *mat,
+    __global const uint *cin, ulong ncand, __global uint *cnt,
+    __global const ulong *off, __global uint *out, int write)
+{
+	ulong i = get_global_id(0);
+	struct pix p;
+	uint pi;
+	ulong x, y;
+
+	if (i >= ncand)
+		return;
+	pi = cin[3 * i];
+	pix_init(&p, par, thr, pi, off, out, 0);
+	x = p.x0 + cin[3 * i + 1];
+	y = p.y0 + cin[3 * i + 2];
+	p.write = write;
+	p.out = write ? out + 3 * off[i] : out;
+	emit(&p, x, y, mat[wrapn(par[PAR_WY] + y, par[PAR_MH]) * par[PAR_MW] +
+	    wrapn(par[PAR_WX] + x, par[PAR_MW])]);
+	if (!write)
+		cnt[i] = (uint)p.count;
+}
