@@ -10,16 +10,20 @@
 
 #include "cli.h"
 #include "frdgen.h"
+#include "frdgencl.h"
 #include "frdio.h"
 #include "frdq.h"
+#include "ocl.h"
 #include "outfile.h"
 #include "parse.h"
 #include "progress.h"
 
 static const char usage[] =
     "usage: frd-gen -s SIZE [-k 2|3] [-p P] [--tol EPS | --exact] [-S SEED]\n"
-    "               [-j N] [--checkpoint FILE] [-v] [-o FILE]\n"
+    "               [-j N] [--checkpoint FILE] [--device cpu|cl|cl:N] [-v]\n"
+    "               [-o FILE]\n"
     "       frd-gen --quality FILE\n"
+    "       frd-gen --list-devices\n"
     "\n"
     "  -s, --size SIZE     N (N x N, or N^3 with -k 3), WxH or WxHxD\n"
     "  -k, --dims K        2 (default) or 3\n"
@@ -38,6 +42,9 @@ static const char usage[] =
     "      --checkpoint F  resume from F if it holds a run with the same\n"
     "                      parameters; save progress there every minute\n"
     "      --checkpoint-every SEC  seconds between saves (default 60)\n"
+    "      --device DEV    cpu (default), cl (first OpenCL device) or cl:N;\n"
+    "                      the same bytes on every device (needs fp64)\n"
+    "      --list-devices  list the OpenCL devices and exit\n"
     "  -v, --verbose       print time and quality figures on standard error\n"
     "      --quality FILE  print the quality figures of a matrix and exit\n"
     "  -o, --output FILE   output (default: standard output)\n"
@@ -47,7 +54,7 @@ static const char usage[] =
 
 enum {
 	OPT_TOL = OPT_FIRST_PRIVATE, OPT_EXACT, OPT_REACH, OPT_FS, OPT_FQ,
-	OPT_CKPT, OPT_CKPT_EVERY, OPT_QUALITY
+	OPT_CKPT, OPT_CKPT_EVERY, OPT_QUALITY, OPT_DEVICE, OPT_LIST
 };
 
 static const struct option longopts[] = {
@@ -62,6 +69,8 @@ static const struct option longopts[] = {
 	{ "checkpoint", required_argument, NULL, OPT_CKPT },
 	{ "checkpoint-every", required_argument, NULL, OPT_CKPT_EVERY },
 	{ "quality", required_argument, NULL, OPT_QUALITY },
+	{ "device", required_argument, NULL, OPT_DEVICE },
+	{ "list-devices", no_argument, NULL, OPT_LIST },
 
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
@@ -145,10 +154,11 @@ int main(int argc, char **argv)
 {
 	struct frdgen_params pr;
 	struct frs_matrix m;
-	struct outfile o;
+	struct outfile of;
 	struct progress prog;
 	const char *size = NULL;
-	int c, verbose = 0;
+	int c, verbose = 0, use_cl = 0, dev = -1;
+	struct ocl o;
 	double t0;
 
 	cli_init("frd-gen", usage);
@@ -194,6 +204,15 @@ int main(int argc, char **argv)
 			break;
 		case OPT_QUALITY:
 			return quality(optarg);
+		case OPT_DEVICE:
+			use_cl = ocl_parse_device(optarg, &dev);
+			if (use_cl < 0)
+				cli_usage_error("--device: %s", frs_errmsg());
+			break;
+		case OPT_LIST:
+			if (ocl_list(stdout) < 0)
+				cli_die_lib();
+			return 0;
 
 		case 'v':
 			verbose = 1;
@@ -211,29 +230,38 @@ int main(int argc, char **argv)
 	pr.seed = cli.seed;
 	if (frdgen_check(&pr) < 0)
 		cli_usage_error("%s", frs_errmsg());
+	if (use_cl && pr.checkpoint != NULL)
+		cli_usage_error("--checkpoint: not available with --device cl");
 	check_memory(&pr);
+	/* The device before the output: a missing one fails at once. */
+	if (use_cl && ocl_open(&o, dev) < 0)
+		cli_die_lib();
 	/* Open the output first: a bad path fails before hours of work. */
-	if (outfile_open(&o, cli.out, 1) < 0)
+	if (outfile_open(&of, cli.out, 1) < 0)
 		cli_die_lib();
 	t0 = progress_now();
 	progress_begin(&prog, "inserting", (uint64_t)pr.w * pr.h * pr.d);
-	if (frdgen_run(&pr, &m, &prog) < 0) {
+	if ((use_cl ? frdgen_run_cl(&pr, &o, &m, &prog) :
+	    frdgen_run(&pr, &m, &prog)) < 0) {
 		progress_end(&prog);
-		outfile_abort(&o);
+		outfile_abort(&of);
 		cli_die_lib();
 	}
 	progress_end(&prog);
-	if (frd_write(o.fp, o.name, &m) < 0) {
-		outfile_abort(&o);
+	if (use_cl)
+		ocl_close(&o);
+	if (frd_write(of.fp, of.name, &m) < 0) {
+		outfile_abort(&of);
 		cli_die_lib();
 	}
-	if (outfile_commit(&o) < 0)
+	if (outfile_commit(&of) < 0)
 		cli_die_lib();
 	if (pr.checkpoint != NULL)
 		unlink(pr.checkpoint);
 	if (verbose) {
-		fprintf(stderr, "frd-gen: %ux%ux%u in %.3f s (radius %.1f)\n",
-		    pr.w, pr.h, pr.d, progress_now() - t0, frdgen_radius(&pr));
+		fprintf(stderr, "frd-gen: %ux%ux%u in %.3f s (radius %.1f) on "
+		    "%s\n", pr.w, pr.h, pr.d, progress_now() - t0,
+		    frdgen_radius(&pr), use_cl ? o.name : "the CPU");
 		print_quality(stderr, &m, cli.out ? cli.out : "<stdout>");
 	}
 	frd_free(&m);

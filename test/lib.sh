@@ -8,6 +8,12 @@ T=$(mktemp -d "${TMPDIR:-/tmp}/frs-test.XXXXXX")
 trap 'rm -rf "$T"' EXIT INT TERM
 
 ok() { echo "ok - $*"; }
+
+# nolsan CMD...: run CMD without LeakSanitizer's exit check, for commands
+# that use OpenCL (see test/run.sh).
+nolsan() {
+	ASAN_OPTIONS=${FRS_CL_ASAN:-${ASAN_OPTIONS:-}} "$@"
+}
 nok() { echo "not ok - $*"; }
 
 # check WHAT CMD...: CMD succeeds.
