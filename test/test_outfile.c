@@ -4,6 +4,7 @@
 #include "outfile.h"
 
 #include <dirent.h>
+#include <sys/stat.h>
 
 static int count_entries(const char *dir)
 {
@@ -88,6 +89,51 @@ static void full_disk(void **state)
 	assert_err_has("/dev/full", "No space left on device");
 }
 
+/* A symbolic link stays a link: its target gets the new contents.  A
+ * link into /proc (as /dev/stdout is) is written through in place, never
+ * replaced: a process's open file must not be swapped for another. */
+static void symlinks(void **state)
+{
+	struct outfile o;
+	const char *target = tu_path("target.txt"), *link = tu_path("link.txt");
+	const char *fdlink = tu_path("fd.txt"), *sink = tu_path("sink.txt");
+	char via[64];
+	struct stat st;
+	size_t n;
+	unsigned char *b;
+	FILE *fp;
+	(void)state;
+
+	tu_write(target, "old\n", 4);
+	assert_int_equal(symlink("target.txt", link), 0);
+	assert_int_equal(outfile_open(&o, link, 0), 0);
+	fputs("new\n", o.fp);
+	assert_int_equal(outfile_commit(&o), 0);
+	assert_int_equal(lstat(link, &st), 0);
+	assert_true(S_ISLNK(st.st_mode));
+	b = tu_read(target, &n);
+	assert_int_equal(n, 4);
+	assert_memory_equal(b, "new\n", 4);
+	free(b);
+
+	/* a link to an open file descriptor: the bytes reach that file */
+	fp = fopen(sink, "wb");
+	assert_non_null(fp);
+	snprintf(via, sizeof via, "/proc/self/fd/%d", fileno(fp));
+	assert_int_equal(symlink(via, fdlink), 0);
+	assert_int_equal(outfile_open(&o, fdlink, 0), 0);
+	fputs("through\n", o.fp);
+	assert_int_equal(outfile_commit(&o), 0);
+	assert_int_equal(lstat(fdlink, &st), 0);
+	assert_true(S_ISLNK(st.st_mode));
+	fclose(fp);
+	b = tu_read(sink, &n);
+	assert_int_equal(n, 8);
+	assert_memory_equal(b, "through\n", 8);
+	free(b);
+	unlink(link), unlink(target), unlink(fdlink), unlink(sink);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -95,6 +141,7 @@ int main(void)
 		cmocka_unit_test(abort_keeps_old),
 		cmocka_unit_test(bad_targets),
 		cmocka_unit_test(full_disk),
+		cmocka_unit_test(symlinks),
 	};
 	return cmocka_run_group_tests(tests, NULL, tu_teardown);
 }

@@ -128,9 +128,60 @@ static int make_tmp(struct outfile *o)
 	return 0;
 }
 
+/*
+ * Follow a symbolic link to the file it names: the temporary file and the
+ * rename must be beside that file, or the rename would replace the link
+ * itself.  A chain that passes through /proc or /dev (/dev/stdout ->
+ * /proc/self/fd/1) names an open file of some process: replacing that
+ * file would lose what is written, so such a target is written in place
+ * (*inplace = 1).  Returns a malloc'd path, or NULL with a message.
+ */
+static char *resolve(const char *path, int *inplace)
+{
+	char *cur = strdup(path);
+
+	*inplace = 0;
+	for (int hops = 0; cur != NULL && hops < 40; hops++) {
+		struct stat st;
+		char buf[4096], *next;
+		ssize_t n;
+		if (strncmp(cur, "/proc/", 6) == 0 || strncmp(cur, "/dev/", 5) == 0)
+			*inplace = 1;
+		if (lstat(cur, &st) != 0 || !S_ISLNK(st.st_mode))
+			return cur;
+		n = readlink(cur, buf, sizeof buf - 1);
+		if (n < 0) {
+			frs_fail_errno("%s: cannot read the link", path);
+			free(cur);
+			return NULL;
+		}
+		buf[n] = '\0';
+		if (buf[0] == '/' || strchr(cur, '/') == NULL)
+			next = strdup(buf);
+		else {
+			size_t d = (size_t)(strrchr(cur, '/') - cur) + 1;
+			next = malloc(d + (size_t)n + 1);
+			if (next != NULL) {
+				memcpy(next, cur, d);
+				memcpy(next + d, buf, (size_t)n + 1);
+			}
+		}
+		free(cur);
+		cur = next;
+	}
+	if (cur == NULL)
+		frs_fail("%s: out of memory", path);
+	else {
+		frs_fail("%s: too many levels of symbolic links", path);
+		free(cur);
+	}
+	return NULL;
+}
+
 int outfile_open(struct outfile *o, const char *path, int binary)
 {
 	struct stat st;
+	int inplace;
 
 	memset(o, 0, sizeof *o);
 	install_handlers();
@@ -144,7 +195,15 @@ int outfile_open(struct outfile *o, const char *path, int binary)
 		frs_fail("%s: is a directory", path);
 		goto fail;
 	}
-	if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+	{
+		char *real = resolve(path, &inplace);
+		if (real == NULL)
+			goto fail;
+		free(o->path);
+		o->path = real;
+		o->name = o->path;
+	}
+	if (inplace || (stat(path, &st) == 0 && !S_ISREG(st.st_mode))) {
 		o->fp = fopen(path, "wb");
 		if (o->fp == NULL) {
 			frs_fail_errno("%s: cannot open", path);
