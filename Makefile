@@ -69,7 +69,7 @@ TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%)
 REFBIN = $(REFSRC:test/%.c=$(B)/test/%)
 
 .PHONY: all progs tests check demo bench install uninstall clean deps \
-	lint-man
+	lint-man experiments
 .DELETE_ON_ERROR:
 .SECONDARY:
 
@@ -141,6 +141,12 @@ demo: deps
 bench: deps
 	@$(MAKE) --no-print-directory VARIANT=bench progs $(REFSRC:test/%.c=build/bench/test/%)
 	@sh scripts/bench.sh build/bench
+
+# make experiments [ONLY=fig6.3,tab6.1] [QUICK=0]: every thesis experiment
+# (scripts/exp-*.sh), results and results/REPORT.md.
+experiments: deps
+	@$(MAKE) --no-print-directory all
+	@ONLY='$(ONLY)' QUICK='$(QUICK)' sh scripts/experiments.sh
 
 lint-man:
 	mandoc -Tlint -Wwarning man/man*/*.[0-9]

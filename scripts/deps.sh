@@ -7,7 +7,7 @@ set -eu
 
 PKGS="gcc g++ make libc6-dev pkg-config libpng-dev libopenexr-dev libcmocka-dev
 ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo mandoc gnuplot-nox
-time"
+time parallel"
 
 missing=""
 for p in $PKGS; do

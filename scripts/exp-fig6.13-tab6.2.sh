@@ -1,0 +1,270 @@
+#!/bin/sh
+# Thesis Sec. 6.4 "Single-Threaded CPU Implementations", Fig. 6.13 and
+# Table 6.2: CPU time of the FRS implementations Naive, Level 1, Stack and
+# Sorted and of HSW (Halton input) for n = 2^0 .. 2^24 samples from four
+# 128x128 importance maps (const, blob, ramp and $ENVMAP resampled to
+# 128x128 with --equirect), S_M = 2048 (data/default.frd prepared with
+# frd-prep -a all), sigma 8.  The time is what -v reports: frs-sample's
+# "thresholding" and hsw-sample's "warping" (the setup, i.e. reading the
+# matrix and the map statistics, and the output to /dev/null are left
+# out), on one thread (-j 1, the thesis' single-core code) and on all.
+# The measurements run one after another (never in parallel: that would
+# distort them); each is cached, so a rerun reuses them until the
+# programs change.  Each time is the minimum over REPS runs.
+#   tiny:  map blob, n = 2^0, 2^4, 2^8, 2^12, matrix data/default.frd
+#          as it is (no preparation), REPS 1
+#   quick: maps const and blob; Sorted and HSW at n = 2^0, 2^8, 2^12, 2^14,
+#          2^15, 2^16, 2^18, 2^20, 2^22, 2^24, Naive, Level 1 and Stack up
+#          to 2^20 and a window of 2^30 elements (Stack 2^34); REPS 1
+#   full:  the four maps, n = 2^0 .. 2^24 for every implementation, REPS 3
+#          (1 from 2^20 on); Naive and Level 1 up to windows of 2^34
+#          elements (Stack 2^38): the peaked env map needs far larger
+#          windows (Eq. 4.12 sizes them for the map's maximum)
+# ids: fig6.13-tab6.2 fig6.13 tab6.2
+. "$(dirname "$0")/explib.sh"
+exp_begin fig6.13-tab6.2 "CPU time of the FRS implementations and HSW" \
+    "Sec. 6.4, Fig. 6.13 and Table 6.2: Naive, Level 1, Stack, Sorted and HSW (Halton), n = 2^0..2^24, four 128x128 maps, S_M = 2048, sigma 8, averages of 100 runs on an Intel Q6600 2.4 GHz, one core" \
+    "about 20 minutes"
+
+MAPS=$(pick "blob" "const blob" "const blob ramp env")
+LIM=$(pick 26 30 34) # Naive and Level 1: at most 2^LIM window elements
+NS=$(pick "0 4 8 12" "0 8 12 14 15 16 18 20 22 24" "$(seq 0 24)")
+SLOWMAX=$(pick 12 20 24) # Naive, Level 1 and Stack: the largest log2 n
+REPS=$(pick 1 1 3)
+JALL=$(nproc)
+THREADS=1
+[ "$JALL" -gt 1 ] && THREADS="1 $JALL"
+
+# The matrix: prepared once (tiny mode uses the .frd: the same thresholds,
+# only the setup, which is not timed, builds the structures).
+if [ "$MODE" = tiny ]; then
+	FRP=$TOP/data/default.frd
+else
+	FRP=$CACHE/default-all.frp
+	cached "$FRP" frd-prep -q -a all "$TOP/data/default.frd"
+fi
+ENVB=$(basename "$ENVMAP")
+ENV128=$CACHE/${ENVB%.*}-128-equirect.exr
+case " $MAPS " in
+*" env "*) cached "$ENV128" imap convert -q -s 128x128 --equirect --format exr "$ENVMAP" - ;;
+esac
+mapin() { if [ "$1" = env ]; then echo "$ENV128"; else echo "$1"; fi; }
+
+# One measurement: the -v lines of REPS runs (stderr), output discarded.
+meas() { # algo map e threads reps
+	i=0
+	while [ $i -lt "$5" ]; do
+		if [ "$1" = hsw ]; then
+			hsw-sample -q -i "$(mapin "$2")" --input halton -n $((1 << $3)) \
+			    -j "$4" -v -o /dev/null 2>&1 >/dev/null
+		else
+			frs-sample -q -m "$FRP" -i "$(mapin "$2")" -n $((1 << $3)) \
+			    --sigma 8 -a "$1" -j "$4" -v -o /dev/null 2>&1 >/dev/null
+		fi
+		i=$((i + 1))
+	done
+}
+
+D=$CACHE/perf-cpu
+TAG=$(basename "$FRP" | tr . _)
+printf 'map\talgo\tthreads\tlog2n\tn\tsamples\tsetup_s\tthreshold_s\toutput_s\tn_s\n' >"$OUT/times.tsv"
+nr() { if [ "$1" -ge 20 ]; then echo 1; else echo "$REPS"; fi; }
+for m in $MAPS; do
+	mk=$m
+	[ $m = env ] && mk=${ENVB%.*}
+	for a in sorted naive level1 stack hsw; do
+		for e in $NS; do
+			case $a in naive | level1 | stack) [ "$e" -gt "$SLOWMAX" ] && continue ;; esac
+			case $a in naive | level1 | stack)
+				# the window, from the Sorted run of the same n
+				w=$(sed -n 's/.* window \([0-9]*\)x\([0-9]*\) .*/\1 \2/p' "$D/sorted_${mk}_${TAG}_s8_n${e}_j1_x$(nr "$e").v" | head -n 1)
+				lim=$LIM
+				[ $a = stack ] && lim=$((LIM + 4))
+				awk -v w="$w" -v l=$lim 'BEGIN { split(w, a, " "); exit !(a[1] * a[2] > 2^l) }' && continue ;;
+			esac
+			r=$(nr "$e")
+			for j in $THREADS; do
+				f=$D/${a}_${mk}_${TAG}_s8_n${e}_j${j}_x${r}.v
+				cached "$f" meas $a $m "$e" "$j" $r
+				# the minimum over the runs of each phase
+				awk -v m=$m -v a=$a -v j="$j" -v e="$e" '
+				function num(k,   i) { for (i = 1; i < NF; i++) if ($i == k) return $(i + 1) + 0; return -1 }
+				function mn(x, v) { return (x == "" || v < x) ? v : x }
+				/ n_s / { ns = $7 + 0 }
+				/samples \(/ { c = $2; s = mn(s, num("setup")); t = mn(t, num("thresholding")); o = mn(o, num("output")) }
+				/warping/ { c = 2^e; s = mn(s, num("setup")); t = mn(t, num("warping")); o = mn(o, num("output")) }
+				END { printf "%s\t%s\t%s\t%d\t%.0f\t%s\t%.6f\t%.6f\t%.6f\t%s\n", m, a, j, e, 2^e, c, s, t, o, (a == "hsw" ? "-" : ns) }' "$f" >>"$OUT/times.tsv"
+			done
+		done
+	done
+done
+
+# Thesis Table 6.2 (seconds, average over the four maps).
+cat >"$OUT/thesis.tsv" <<'EOF'
+log2n	n	naive	level1	stack	sorted	hsw
+5	32	0.062	0.016	0.008	0.003	0.000
+6	64	0.060	0.016	0.008	0.003	0.000
+7	128	0.059	0.016	0.008	0.003	0.000
+8	256	0.060	0.016	0.008	0.003	0.001
+9	512	0.060	0.017	0.009	0.003	0.003
+10	1024	0.060	0.017	0.011	0.003	0.006
+11	2048	0.060	0.018	0.014	0.003	0.012
+12	4096	0.061	0.020	0.021	0.003	0.025
+13	8192	0.061	0.025	0.033	0.004	0.050
+14	16384	0.062	0.032	0.053	0.005	0.100
+15	32768	0.238	0.093	0.132	0.006	0.201
+16	65536	0.243	0.123	0.213	0.008	0.393
+17	131072	0.946	0.365	0.530	0.011	0.793
+18	262144	0.966	0.491	0.862	0.018	1.589
+19	524288	3.772	1.449	2.119	0.033	3.149
+20	1048576	3.850	1.920	3.440	0.062	6.304
+21	2097152	15.078	5.694	8.417	0.119	12.555
+22	4194304	15.317	7.657	13.820	0.231	25.044
+23	8388608	60.148	22.944	33.950	0.452	50.233
+24	16777216	61.674	30.965	55.637	0.883	100.434
+EOF
+
+# Averages over the maps (only where every map was measured), one thread
+# and all threads; per-map tables for the panels.
+NMAPS=$(echo $MAPS | wc -w)
+awk -F'\t' -v nm="$NMAPS" -v jall="$JALL" -v out="$OUT" -v maps="$MAPS" '
+NR == 1 { next }
+{
+	k = $4 SUBSEP $2 SUBSEP ($3 == 1 ? 1 : "all")
+	sum[k] += $8; cnt[k]++; e[$4] = 1
+	pm[$1, $4, $2] = $8
+}
+END {
+	split("naive level1 stack sorted hsw", A, " ")
+	f = out "/avg.tsv"
+	printf "log2n\tn\tnaive\tlevel1\tstack\tsorted\thsw\tnaive_jall\tlevel1_jall\tstack_jall\tsorted_jall\thsw_jall\n" >f
+	for (x = 0; x <= 40; x++) {
+		if (!(x in e)) continue
+		printf "%d\t%.0f", x, 2^x >f
+		for (t = 1; t <= 2; t++)
+			for (i = 1; i <= 5; i++) {
+				k = x SUBSEP A[i] SUBSEP (t == 1 ? 1 : "all")
+				if (t == 2 && jall == 1) k = x SUBSEP A[i] SUBSEP 1
+				printf "\t%s", (cnt[k] == nm ? sprintf("%.6f", sum[k] / nm) : "-") >f
+			}
+		printf "\n" >f
+	}
+	nmp = split(maps, M, " ")
+	for (q = 1; q <= nmp; q++) {
+		g = out "/map-" M[q] ".tsv"
+		printf "log2n\tn\tnaive\tlevel1\tstack\tsorted\thsw\n" >g
+		for (x = 0; x <= 40; x++) {
+			if (!(x in e)) continue
+			printf "%d\t%.0f", x, 2^x >g
+			for (i = 1; i <= 5; i++)
+				printf "\t%s", ((M[q], x, A[i]) in pm ? sprintf("%.6f", pm[M[q], x, A[i]]) : "-") >g
+			printf "\n" >g
+		}
+	}
+}' "$OUT/times.tsv"
+
+# Ours beside the thesis wherever both exist.
+awk -F'\t' '
+FNR == 1 { next }
+NR == FNR { for (i = 3; i <= 7; i++) th[$1, i] = $i; next }
+{
+	split("naive level1 stack sorted hsw", A, " ")
+	for (i = 3; i <= 7; i++) {
+		if (!(($1, i) in th) || $i == "-") continue
+		r = ($i > 0 && th[$1, i] > 0) ? sprintf("%.1f", th[$1, i] / $i) : "-"
+		printf "%d\t%s\t%s\t%s\t%s\t%s\n", $1, A[i - 2], $i, $(i + 5), th[$1, i], r
+	}
+}' "$OUT/thesis.tsv" "$OUT/avg.tsv" |
+    { printf 'log2n\talgo\tours_j1_s\tours_jall_s\tthesis_s\tthesis_over_ours\n'; sort -k2,2 -k1,1n; } >"$OUT/compare.tsv"
+
+# Figures: the averages beside the thesis, and one panel per map.
+{
+	gp_png "$OUT/fig6.13.png"
+	cat <<EOF
+set datafile missing '-'
+set logscale xy 2
+set format x '2^{%L}'
+set format y '10^{%L}'
+set logscale y 10
+set xlabel 'samples n'
+set ylabel 'seconds (thresholding / warping)'
+set key left top
+set grid
+set title 'Fig. 6.13 (e): average over the maps ($MAPS), one thread (solid) vs thesis Table 6.2 (dashed, Q6600)'
+p '$OUT/avg.tsv' u 2:3 w lp lw 2 lc 1 pt 7 t 'Naive', '' u 2:4 w lp lw 2 lc 2 pt 7 t 'Level 1', \
+  '' u 2:5 w lp lw 2 lc 3 pt 7 t 'Stack', '' u 2:6 w lp lw 2 lc 4 pt 7 t 'Sorted', '' u 2:7 w lp lw 2 lc 7 pt 7 t 'HSW', \
+  '' u 2:11 w l lw 1 lc 4 dt 3 t 'Sorted, $JALL threads', '' u 2:12 w l lw 1 lc 7 dt 3 t 'HSW, $JALL threads', \
+  '$OUT/thesis.tsv' u 2:(\$3>0?\$3:1/0) w l dt 2 lc 1 t 'thesis Naive', '' u 2:(\$4>0?\$4:1/0) w l dt 2 lc 2 t 'thesis Level 1', \
+  '' u 2:(\$5>0?\$5:1/0) w l dt 2 lc 3 t 'thesis Stack', '' u 2:(\$6>0?\$6:1/0) w l dt 2 lc 4 t 'thesis Sorted', \
+  '' u 2:(\$7>0?\$7:1/0) w l dt 2 lc 7 t 'thesis HSW'
+EOF
+} | gnuplot
+{
+	gp_png "$OUT/fig6.13-maps.png"
+	nm=$(echo $MAPS | wc -w)
+	cols=$(( nm > 1 ? 2 : 1 ))
+	rows=$(( (nm + 1) / 2 ))
+	cat <<EOF
+set datafile missing '-'
+set logscale x 2
+set logscale y 10
+set format x '2^{%L}'
+set format y '10^{%L}'
+set grid
+set key left top font ',8'
+set multiplot layout $rows,$cols title 'Fig. 6.13 (a-d): per map, one thread, seconds'
+EOF
+	for m in $MAPS; do
+		cat <<EOF
+set title '$m'
+p '$OUT/map-$m.tsv' u 2:3 w lp pt 7 t 'Naive', '' u 2:4 w lp pt 7 t 'Level 1', '' u 2:5 w lp pt 7 t 'Stack', \
+  '' u 2:6 w lp pt 7 t 'Sorted', '' u 2:7 w lp pt 7 lc 7 t 'HSW'
+EOF
+	done
+	echo "unset multiplot"
+} | gnuplot
+
+# Key numbers.
+get() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/avg.tsv"; }
+thv() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/thesis.tsv"; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.3g", a / b }'; }
+fmt() { awk -v a="$1" 'BEGIN { if (a == "" || a == "-") print "-"; else printf "%.4g s", a }'; }
+EMAX=$(echo $NS | tr ' ' '\n' | tail -n 1)
+RE="20 24"
+case " $NS " in *" 20 "* | *" 24 "*) ;; *) RE=$EMAX ;; esac
+for e in $RE; do
+	case " $NS " in *" $e "*) ;; *) continue ;; esac
+	for a in naive level1 stack sorted hsw; do
+		o=$(get "$e" $a)
+		[ "$o" = "-" ] && continue
+		t=$(thv "$e" $a)
+		if [ -n "$t" ]; then
+			row "$a, n = 2^$e, 1 thread (avg over maps)" "$(fmt "$o") ($JALL threads: $(fmt "$(get "$e" ${a}_jall)"))" "$t s (thesis/ours $(ratio "$t" "$o"))"
+		else
+			row "$a, n = 2^$e, 1 thread (avg over maps)" "$(fmt "$o") ($JALL threads: $(fmt "$(get "$e" ${a}_jall)"))" "not in Table 6.2 (starts at 2^5)"
+		fi
+	done
+done
+SH=$(ratio "$(get "$EMAX" sorted)" "$(get "$EMAX" hsw)")
+row "Sorted / HSW time, n = 2^$EMAX" "$SH" "$(ratio "$(thv "$EMAX" sorted)" "$(thv "$EMAX" hsw)") (Sorted < 1 % of HSW at 2^24)"
+# the smallest n from which on Sorted is faster than HSW (one thread)
+CROSS=$(awk -F'\t' 'NR > 1 && $6 != "-" && $7 != "-" { if ($6 < $7) { if (c == "") c = $1 } else c = "" } END { print (c == "" ? "-" : "2^" c) }' "$OUT/avg.tsv")
+row "Sorted faster than HSW from n =" "$CROSS" "2^10 (HSW best up to 2^9)"
+# the stair step on the first map (const, where the window is the thesis')
+M1=$(echo $MAPS | cut -d' ' -f1)
+st() { awk -F'\t' -v m="$1" -v e="$2" 'NR > 1 && $1 == m && $2 == "naive" && $3 == 1 && $4 == e { print $8 }' "$OUT/times.tsv"; }
+a=$(st "$M1" 14)
+b=$(st "$M1" 15)
+if [ -n "$a" ] && [ -n "$b" ]; then
+	row "Naive stair step t(2^15) / t(2^14), map $M1" "$(ratio "$b" "$a")" "$(ratio "$(thv 15 naive)" "$(thv 14 naive)") (constant up to 2^14, then x4 every 2nd doubling)"
+fi
+ES=$(awk -F'\t' 'NR > 1 && $5 != "-" { e = $1 } END { print e }' "$OUT/avg.tsv")
+row "Stack / Level 1 time, n = 2^$ES" "$(ratio "$(get "$ES" stack)" "$(get "$ES" level1)")" "$(ratio "$(thv "$ES" stack)" "$(thv "$ES" level1)") (Stack worse than Level 1)"
+for a in sorted hsw naive; do
+	x=$(awk -F'\t' -v a=$a -v nm="$NMAPS" 'NR > 1 && $2 == a && $3 == 1 { c[$4]++ } END { for (e in c) if (c[e] == nm && e + 0 > b + 0) b = e; print b }' "$OUT/times.tsv")
+	[ -n "$x" ] || continue
+	sp=$(awk -F'\t' -v a=$a -v e="$x" 'NR > 1 && $2 == a && $3 == 1 && $4 == e { if (mx == "" || $8 > mx) { mx = $8; mm = $1 } if (mn == "" || $8 < mn) mn = $8 } END { printf "%.2f (slowest: %s)", (mn > 0 ? mx / mn : 0), mm }' "$OUT/times.tsv")
+	row "$a 2^$x, slowest / fastest map of $MAPS" "$sp" "almost identical for the four maps"
+done
+
+exp_end "differs" "Absolute times are not comparable: the thesis measured .NET code on a 2007 Intel Q6600 (2.4 GHz), we measure C on this $(nproc)-core machine ($(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -n 1)), shared with other jobs, so small times are noisy (each point the minimum of $REPS run(s), 1 from 2^20 on).  Reproduced: Sorted is by far the fastest FRS implementation and overtakes HSW (row above; HSW here is relatively much faster than the thesis' .NET HSW, so the crossover comes later than 2^10), HSW grows linearly in n, and on the const map the FRS times are flat up to 2^14 (window 1024^2) and then rise in steps at every second doubling, where n_s doubles (Naive; the step ratio is in the rows).  Different: (1) our window follows Eq. 4.12 with the map's maximum over its mean, so a peaked map (blob: 7x, env: hundreds x) gets a window up to 2^(several) times larger and Naive, Level 1 and Stack depend strongly on the map, where the thesis found all maps almost identical (its S_W = 1024 up to 2^14 for every map: it sized the window as for a uniform map); Sorted and HSW hardly depend on the map; (2) our Stack is much faster than Level 1 and our Level 1 barely faster than Naive, the reverse of the thesis' order, a property of the implementations.  Times are the thresholding (FRS) and warping (HSW) phases of -v; setup and output are left out."

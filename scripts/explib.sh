@@ -1,0 +1,123 @@
+# Helpers for the experiment scripts (scripts/exp-*.sh); source it.
+#
+# Environment (scripts/experiments.sh sets it; each script also runs
+# alone: sh scripts/exp-fig6.9.sh):
+#   MODE     tiny (make check: seconds), quick (default: <= 50 s each) or
+#            full (the thesis parameters)
+#   BIN      the programs (default bin/)
+#   RES      results root (default results/); the experiment writes
+#            RES/ID/, intermediate files go to RES/cache/
+#   JOBS     parallel jobs (default: all cores)
+#   SSHLOGIN hosts for GNU parallel --sshlogin (e.g. "8/host1,8/host2,:");
+#            the tree must be at the same path on every host (NFS)
+#   ENVMAP   the environment map of Fig. 6.1d (default data/sunset.exr)
+set -eu
+TOP=$(cd "$(dirname "$0")/.." && pwd)
+MODE=${MODE:-quick}
+BIN=${BIN:-$TOP/bin}
+RES=${RES:-$TOP/results}
+JOBS=${JOBS:-$(nproc)}
+ENVMAP=${ENVMAP:-$TOP/data/sunset.exr}
+CACHE=$RES/cache
+PATH=$BIN:$PATH
+export PATH BIN RES MODE JOBS CACHE ENVMAP TOP
+
+case $MODE in
+tiny | quick | full) ;;
+*) echo "explib: MODE must be tiny, quick or full" >&2; exit 2 ;;
+esac
+
+# pick TINY QUICK FULL: the value for the mode.
+pick() {
+	case $MODE in
+	tiny) echo "$1" ;;
+	quick) echo "$2" ;;
+	*) echo "$3" ;;
+	esac
+}
+
+# exp_begin ID "title" "thesis section and parameters" "full-mode estimate"
+exp_begin() {
+	ID=$1
+	OUT=$RES/$ID
+	mkdir -p "$OUT" "$CACHE"
+	: >"$OUT/summary.md"
+	EXP_T0=$(date +%s.%N)
+	{
+		echo "## $ID: $2"
+		echo
+		echo "Thesis: $3.  Mode: $MODE."
+		echo
+	} >"$OUT/head.md"
+	if [ "$MODE" = full ]; then
+		echo "$ID: full mode, expected to take $4" >&2
+	fi
+	export ID OUT
+}
+
+# newest program: a cached file older than it is stale.
+exp_stamp() {
+	ls -t "$BIN"/* 2>/dev/null | head -n 1
+}
+
+# cached FILE CMD...: FILE is CMD's standard output, made only when it is
+# missing or older than the programs; written atomically.
+cached() {
+	f=$1
+	shift
+	s=$(exp_stamp)
+	if [ -s "$f" ] && { [ -z "$s" ] || [ "$f" -nt "$s" ]; }; then
+		return 0
+	fi
+	mkdir -p "$(dirname "$f")"
+	"$@" >"$f.tmp.$$"
+	mv -f "$f.tmp.$$" "$f"
+}
+
+# par_run: run the shell commands on standard input, one a line, with GNU
+# parallel on JOBS cores (or the SSHLOGIN hosts); stops at the first
+# failure.
+par_run() {
+	if [ -n "${SSHLOGIN:-}" ]; then
+		parallel --will-cite --halt now,fail=1 --sshlogin "$SSHLOGIN" \
+		    --workdir "$TOP" --env PATH --env MODE --env RES
+	else
+		parallel --will-cite --halt now,fail=1 -j "$JOBS"
+	fi
+}
+
+# gp_png FILE: the preamble of a gnuplot script writing a PNG.
+gp_png() {
+	echo "set terminal png size 900,600 font ',10'"
+	echo "set output '$1'"
+	echo "set datafile separator '\t'"
+	echo "set key autotitle columnhead"
+}
+
+# row "what" "ours" "thesis": a line of the summary table.
+row() {
+	[ -s "$OUT/rows.md" ] || {
+		echo "| what | ours | thesis |"
+		echo "| --- | --- | --- |"
+	} >"$OUT/rows.md"
+	echo "| $1 | $2 | $3 |" >>"$OUT/rows.md"
+}
+
+# exp_end VERDICT "why": reproduced, differs or not reproducible here.
+exp_end() {
+	t1=$(date +%s.%N)
+	secs=$(awk -v a="$EXP_T0" -v b="$t1" 'BEGIN { printf "%.1f", b - a }')
+	{
+		cat "$OUT/head.md"
+		for f in "$OUT"/*.png; do
+			[ -e "$f" ] && echo "![$ID]($ID/$(basename "$f"))" && echo
+		done
+		[ -s "$OUT/rows.md" ] && cat "$OUT/rows.md" && echo
+		echo "**Verdict: $1.** $2"
+		echo
+		echo "Time: $secs s ($MODE mode)."
+		echo
+	} >"$OUT/summary.md"
+	rm -f "$OUT/head.md" "$OUT/rows.md"
+	echo "$ID: $1 ($secs s)" >&2
+}
