@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frdgen.h"
+#include "frdgenint.h"
 #include "err.h"
 #include "io.h"
 #include "outfile.h"
@@ -24,16 +25,9 @@ struct level {
 	unsigned char *arg;	/* level 0: where in its tile the minimum is */
 };
 
-struct item {			/* a heap entry of the rank query */
-	double v;
-	int lev;		/* -1: a cell */
-	uint32_t idx;
-};
-
 struct gen {
 	const struct frdgen_params *pr;
-	uint32_t w, h, d;
-	size_t n;
+	struct frdgen_size sz;
 	/* The field is stored tile by tile: each tile of tx*ty*tz cells is
 	 * one contiguous block (one cache line per tile row in 2-D), so that
 	 * adding a force and finding the new minimum of a tile work on the
@@ -42,8 +36,6 @@ struct gen {
 	double *field;
 	uint32_t *val;
 	double *table;		/* f by |dx|, |dy|, |dz| */
-	uint32_t hw, hh, hd;	/* largest toroidal offsets: w/2, h/2, d/2 */
-	double rtol, rmax;
 	uint32_t tx, ty, tz;	/* tile size */
 	unsigned lx, ly, lz;	/* their log2 */
 	uint32_t ntx, nty, ntz;	/* tiles per axis */
@@ -60,10 +52,7 @@ struct gen {
 	uint32_t *dirty[2];
 	uint32_t *ax[3];	/* tiles per axis of the current window */
 	size_t ndirty[2], dcap;
-	struct item *heap;
-	size_t nheap, hcap;
-	struct item *emit;
-	size_t nemit, ecap;
+	struct frdgen_sel sel;	/* the rank query */
 	/* window of the current insertion, for the parallel add */
 	uint32_t cx, cy, cz;
 	double r;
@@ -172,7 +161,7 @@ uint64_t frdgen_zerorank(const struct frdgen_params *pr, uint64_t step,
 	return r < z ? r : z - 1;
 }
 
-static void tile_shape(unsigned dims, uint32_t t[3])
+void frdgen_tile_shape(unsigned dims, uint32_t t[3])
 {
 	/* Tile shapes measured fastest (16 x 8 beat 8x8, 32x4, 64x2 at
 	 * 512^2 and 1024^2): rows long enough for vector adds, few enough
@@ -187,7 +176,7 @@ uint64_t frdgen_cellorder(const struct frdgen_params *pr, uint32_t c)
 	uint32_t t[3], x = c % pr->w, y = c / pr->w % pr->h, z = c / pr->w / pr->h;
 	uint64_t ntx, nty, tile, local;
 
-	tile_shape(pr->dims, t);
+	frdgen_tile_shape(pr->dims, t);
 	ntx = (pr->w + t[0] - 1) / t[0];
 	nty = (pr->h + t[1] - 1) / t[1];
 	tile = ((uint64_t)(z / t[2]) * nty + y / t[1]) * ntx + x / t[0];
@@ -197,6 +186,20 @@ uint64_t frdgen_cellorder(const struct frdgen_params *pr, uint32_t c)
 
 /* ---- setup -------------------------------------------------------- */
 
+void frdgen_size(struct frdgen_size *z, const struct frdgen_params *pr)
+{
+	z->w = pr->w;
+	z->h = pr->h;
+	z->d = pr->d;
+	z->n = (size_t)pr->w * pr->h * pr->d;
+	z->hw = z->w / 2;
+	z->hh = z->h / 2;
+	z->hd = z->d / 2;
+	z->rtol = frdgen_radius(pr);
+	z->rmax = sqrt((double)z->hw * z->hw + (double)z->hh * z->hh +
+	    (double)z->hd * z->hd);
+}
+
 static size_t fidx(const struct gen *g, uint32_t x, uint32_t y, uint32_t z)
 {
 	size_t t = ((size_t)(z >> g->lz) * g->nty + (y >> g->ly)) * g->ntx +
@@ -205,22 +208,25 @@ static size_t fidx(const struct gen *g, uint32_t x, uint32_t y, uint32_t z)
 	    g->lx | (x & (g->tx - 1)));
 }
 
-static int make_table(struct gen *g)
+double *frdgen_table(const struct frdgen_params *pr)
 {
-	size_t nt = (size_t)(g->hw + 1) * (g->hh + 1) * (g->hd + 1);
+	uint32_t hw = pr->w / 2, hh = pr->h / 2, hd = pr->d / 2;
+	size_t nt = (size_t)(hw + 1) * (hh + 1) * (hd + 1);
+	double *t = malloc(nt * sizeof *t);
 
-	g->table = malloc(nt * sizeof *g->table);
-	if (g->table == NULL)
-		return frs_fail("out of memory for the force table");
-	for (uint32_t z = 0; z <= g->hd; z++)
-		for (uint32_t y = 0; y <= g->hh; y++)
-			for (uint32_t x = 0; x <= g->hw; x++) {
+	if (t == NULL) {
+		frs_fail("out of memory for the force table");
+		return NULL;
+	}
+	for (uint32_t z = 0; z <= hd; z++)
+		for (uint32_t y = 0; y <= hh; y++)
+			for (uint32_t x = 0; x <= hw; x++) {
 				double r = sqrt((double)x * x + (double)y * y +
 				    (double)z * z);
-				g->table[((size_t)z * (g->hh + 1) + y) *
-				    (g->hw + 1) + x] = frdgen_force(g->pr, r);
+				t[((size_t)z * (hh + 1) + y) * (hw + 1) + x] =
+				    frdgen_force(pr, r);
 			}
-	return 0;
+	return t;
 }
 
 static int make_levels(struct gen *g)
@@ -253,7 +259,7 @@ static int make_levels(struct gen *g)
 	g->lev[0].arg = calloc((size_t)g->ntx * g->nty * g->ntz, 1);
 	g->tlist = malloc((size_t)g->ntx * g->nty * g->ntz * sizeof(uint32_t));
 	g->changed = malloc((size_t)g->ntx * g->nty * g->ntz);
-	g->ext = malloc((size_t)(2 * g->hh + 1) * (2 * g->hd + 1) *
+	g->ext = malloc((size_t)(2 * g->sz.hh + 1) * (2 * g->sz.hd + 1) *
 	    sizeof *g->ext);
 	g->ntiles = (size_t)g->ntx * g->nty * g->ntz;
 	g->zc = calloc(g->ntiles, sizeof *g->zc);
@@ -288,11 +294,10 @@ static void gen_free(struct gen *g)
 	free(g->zc);
 	free(g->zf);
 	free(g->fen);
-	free(g->heap);
-	free(g->emit);
+	frdgen_sel_free(&g->sel);
 }
 
-static unsigned log2u(uint32_t v)
+unsigned frdgen_log2u(uint32_t v)
 {
 	unsigned l = 0;
 	while ((1u << l) < v)
@@ -307,9 +312,9 @@ static void init_field(struct gen *g)
 
 	for (size_t i = 0; i < total; i++)
 		g->field[i] = INFINITY;
-	for (uint32_t z = 0; z < g->d; z++)
-		for (uint32_t y = 0; y < g->h; y++)
-			for (uint32_t x = 0; x < g->w; x++)
+	for (uint32_t z = 0; z < g->sz.d; z++)
+		for (uint32_t y = 0; y < g->sz.h; y++)
+			for (uint32_t x = 0; x < g->sz.w; x++)
 				g->field[fidx(g, x, y, z)] = 0.0;
 }
 
@@ -321,39 +326,31 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
 
 	memset(g, 0, sizeof *g);
 	g->pr = pr;
-	g->w = pr->w;
-	g->h = pr->h;
-	g->d = pr->d;
-	g->n = (size_t)pr->w * pr->h * pr->d;
-	g->hw = g->w / 2;
-	g->hh = g->h / 2;
-	g->hd = g->d / 2;
-	g->rtol = frdgen_radius(pr);
-	g->rmax = sqrt((double)g->hw * g->hw + (double)g->hh * g->hh +
-	    (double)g->hd * g->hd);
+	frdgen_size(&g->sz, pr);
 	{
 		uint32_t t[3];
-		tile_shape(pr->dims, t);
+		frdgen_tile_shape(pr->dims, t);
 		g->tx = t[0];
 		g->ty = t[1];
 		g->tz = t[2];
 	}
-	g->lx = log2u(g->tx);
-	g->ly = log2u(g->ty);
-	g->lz = log2u(g->tz);
+	g->lx = frdgen_log2u(g->tx);
+	g->ly = frdgen_log2u(g->ty);
+	g->lz = frdgen_log2u(g->tz);
 	g->ts = (size_t)g->tx * g->ty * g->tz;
-	g->ntx = (g->w + g->tx - 1) / g->tx;
-	g->nty = (g->h + g->ty - 1) / g->ty;
-	g->ntz = (g->d + g->tz - 1) / g->tz;
+	g->ntx = (g->sz.w + g->tx - 1) / g->tx;
+	g->nty = (g->sz.h + g->ty - 1) / g->ty;
+	g->ntz = (g->sz.d + g->tz - 1) / g->tz;
 	frdgen_describe(pr, params, sizeof params);
-	if (frd_alloc(out, pr->dims, g->w, g->h, g->d, params) < 0)
+	if (frd_alloc(out, pr->dims, g->sz.w, g->sz.h, g->sz.d, params) < 0)
 		return -1;
 	g->val = out->v;
 	total = (size_t)g->ntx * g->nty * g->ntz * g->ts;
 	g->field = malloc(total * sizeof *g->field);
 	if (g->field == NULL)
-		return frs_fail("out of memory for a %zu-cell force field", g->n);
-	if (make_table(g) < 0 || make_levels(g) < 0)
+		return frs_fail("out of memory for a %zu-cell force field", g->sz.n);
+	g->table = frdgen_table(pr);
+	if (g->table == NULL || make_levels(g) < 0)
 		return -1;
 	return 0;
 }
@@ -398,39 +395,39 @@ static double tile_rescan(struct gen *g, size_t t)
 
 /* ---- zero cells: counts per tile in a Fenwick tree ----------------- */
 
-static void fen_add(struct gen *g, size_t t, int64_t d)
+void frdgen_fen_add(uint64_t *fen, size_t n, size_t t, int64_t d)
 {
-	for (size_t i = t + 1; i <= g->ntiles; i += i & (~i + 1))
-		g->fen[i] = (uint64_t)((int64_t)g->fen[i] + d);
+	for (size_t i = t + 1; i <= n; i += i & (~i + 1))
+		fen[i] = (uint64_t)((int64_t)fen[i] + d);
 }
 
 static void fen_sync(struct gen *g, size_t t)
 {
 	if (g->zc[t] != g->zf[t]) {
-		fen_add(g, t, (int64_t)g->zc[t] - (int64_t)g->zf[t]);
+		frdgen_fen_add(g->fen, g->ntiles, t,
+		    (int64_t)g->zc[t] - (int64_t)g->zf[t]);
 		g->zf[t] = g->zc[t];
 	}
 }
 
-static uint64_t fen_total(const struct gen *g)
+uint64_t frdgen_fen_total(const uint64_t *fen, size_t n)
 {
 	uint64_t s = 0;
-	for (size_t i = g->ntiles; i > 0; i -= i & (~i + 1))
-		s += g->fen[i];
+	for (size_t i = n; i > 0; i -= i & (~i + 1))
+		s += fen[i];
 	return s;
 }
 
-/* The tile holding zero number r (0-based); r becomes its rank inside. */
-static size_t fen_find(const struct gen *g, uint64_t *r)
+size_t frdgen_fen_find(const uint64_t *fen, size_t n, uint64_t *r)
 {
 	size_t pos = 0, step = 1;
 
-	while (step * 2 <= g->ntiles)
+	while (step * 2 <= n)
 		step *= 2;
 	for (; step > 0; step /= 2)
-		if (pos + step <= g->ntiles && g->fen[pos + step] <= *r) {
+		if (pos + step <= n && fen[pos + step] <= *r) {
 			pos += step;
-			*r -= g->fen[pos];
+			*r -= fen[pos];
 		}
 	return pos;
 }
@@ -541,6 +538,16 @@ static uint32_t umin(uint32_t a, uint32_t b)
 	return a < b ? a : b;
 }
 
+void frdgen_window(const struct frdgen_size *z, uint32_t tx, double r,
+    struct frdgen_win *wd)
+{
+	wd->e = r >= (double)UINT32_MAX ? UINT32_MAX : (uint32_t)floor(r);
+	wd->r2 = r >= z->rmax ? INFINITY : r * r;
+	wd->fast = 2 * (uint64_t)wd->e + 1 + 2 * tx <= z->w;
+	wd->ey = umin(wd->e, z->hh);
+	wd->ez = umin(wd->e, z->hd);
+}
+
 /* Largest e with e^2 <= rr, capped at cap. */
 static uint32_t extent(double rr, uint32_t cap)
 {
@@ -583,31 +590,23 @@ static uint32_t tgap(uint32_t c, uint32_t a, uint32_t b, uint32_t n)
 	return (uint32_t)(da < db ? da : db);
 }
 
-struct window {
-	double r2;
-	uint32_t e;	/* floor(r), capped */
-	uint32_t ey, ez;	/* reach in y and z */
-	int fast;	/* one contiguous run per tile row (see add_tile_row) */
-	int32_t *ext;	/* x reach per (dz, dy), -1 out of reach */
-};
-
 /* The x reach of every row (dy, dz) of the window, once per insertion. */
-static void window_extents(struct gen *g, struct window *wd)
+static void window_extents(struct gen *g, struct frdgen_win *wd)
 {
 	uint32_t ny = 2 * wd->ey + 1;
 
 	for (int64_t dz = -(int64_t)wd->ez; dz <= (int64_t)wd->ez; dz++)
 		for (int64_t dy = -(int64_t)wd->ey; dy <= (int64_t)wd->ey; dy++) {
 			double rr = wd->r2 - (double)(dy * dy) - (double)(dz * dz);
-			wd->ext[(size_t)(dz + wd->ez) * ny + (size_t)(dy + wd->ey)] =
-			    rr < 0.0 ? -1 : (int32_t)extent(rr, g->hw);
+			g->ext[(size_t)(dz + wd->ez) * ny + (size_t)(dy + wd->ey)] =
+			    rr < 0.0 ? -1 : (int32_t)extent(rr, g->sz.hw);
 		}
 }
 
 /* Add the row of forces at offsets dy, dz to cells x0 .. x1 of one tile
  * row. */
-static void add_tile_row(struct gen *g, const struct window *wd, double *row,
-    uint32_t x0, uint32_t x1, int64_t dy, int64_t dz)
+static void add_tile_row(struct gen *g, const struct frdgen_win *wd,
+    double *row, uint32_t x0, uint32_t x1, int64_t dy, int64_t dz)
 {
 	const double *t;
 	int64_t e, dx0, klo, khi, kmid;
@@ -615,15 +614,15 @@ static void add_tile_row(struct gen *g, const struct window *wd, double *row,
 	if ((dy < 0 ? -dy : dy) > (int64_t)wd->ey ||
 	    (dz < 0 ? -dz : dz) > (int64_t)wd->ez)
 		return;
-	e = wd->ext[(size_t)(dz + wd->ez) * (2 * wd->ey + 1) +
+	e = g->ext[(size_t)(dz + wd->ez) * (2 * wd->ey + 1) +
 	    (size_t)(dy + wd->ey)];
 	if (e < 0)
 		return;
-	t = g->table + ((size_t)(dz < 0 ? -dz : dz) * (g->hh + 1) +
-	    (size_t)(dy < 0 ? -dy : dy)) * (g->hw + 1);
+	t = g->table + ((size_t)(dz < 0 ? -dz : dz) * (g->sz.hh + 1) +
+	    (size_t)(dy < 0 ? -dy : dy)) * (g->sz.hw + 1);
 	if (!wd->fast) {
 		for (uint32_t x = x0; x <= x1; x++) {
-			int64_t dx = toff(x, g->cx, g->w);
+			int64_t dx = toff(x, g->cx, g->sz.w);
 			if ((dx < 0 ? -dx : dx) <= e)
 				row[x - x0] += t[dx < 0 ? -dx : dx];
 		}
@@ -633,7 +632,7 @@ static void add_tile_row(struct gen *g, const struct window *wd, double *row,
 	 * seam of the torus inside the tile would break the run, but 2e + 1
 	 * is two tiles shorter than the row, so cells past a seam are out of
 	 * reach and fall outside [klo, khi]. */
-	dx0 = toff(x0, g->cx, g->w);
+	dx0 = toff(x0, g->cx, g->sz.w);
 	klo = -e - dx0 > 0 ? -e - dx0 : 0;
 	khi = e - dx0 < (int64_t)(x1 - x0) ? e - dx0 : (int64_t)(x1 - x0);
 	kmid = -dx0 < klo ? klo : -dx0 > khi + 1 ? khi + 1 : -dx0;
@@ -644,14 +643,15 @@ static void add_tile_row(struct gen *g, const struct window *wd, double *row,
 }
 
 /* Add the force to one tile and report whether its minimum moved. */
-static int add_tile(struct gen *g, const struct window *wd, uint32_t t)
+static int add_tile(struct gen *g, const struct frdgen_win *wd, uint32_t t)
 {
 	uint32_t tx = t % g->ntx, ty = t / g->ntx % g->nty, tz = t / g->ntx / g->nty;
-	uint32_t x0 = tx * g->tx, x1 = umin(x0 + g->tx, g->w) - 1;
-	uint32_t y0 = ty * g->ty, y1 = umin(y0 + g->ty, g->h) - 1;
-	uint32_t z0 = tz * g->tz, z1 = umin(z0 + g->tz, g->d) - 1;
-	uint32_t gx = tgap(g->cx, x0, x1, g->w), gy = tgap(g->cy, y0, y1, g->h);
-	uint32_t gz = tgap(g->cz, z0, z1, g->d);
+	uint32_t x0 = tx * g->tx, x1 = umin(x0 + g->tx, g->sz.w) - 1;
+	uint32_t y0 = ty * g->ty, y1 = umin(y0 + g->ty, g->sz.h) - 1;
+	uint32_t z0 = tz * g->tz, z1 = umin(z0 + g->tz, g->sz.d) - 1;
+	uint32_t gx = tgap(g->cx, x0, x1, g->sz.w);
+	uint32_t gy = tgap(g->cy, y0, y1, g->sz.h);
+	uint32_t gz = tgap(g->cz, z0, z1, g->sz.d);
 	double *blk = g->field + (size_t)t * g->ts, old = g->lev[0].min[t];
 	unsigned a = g->lev[0].arg[t];
 	int64_t ax, ay, az;
@@ -661,13 +661,13 @@ static int add_tile(struct gen *g, const struct window *wd, uint32_t t)
 	for (uint32_t z = z0; z <= z1; z++)
 		for (uint32_t y = y0; y <= y1; y++)
 			add_tile_row(g, wd, blk + (((z - z0) << g->ly | (y - y0)) <<
-			    g->lx), x0, x1, toff(y, g->cy, g->h),
-			    toff(z, g->cz, g->d));
+			    g->lx), x0, x1, toff(y, g->cy, g->sz.h),
+			    toff(z, g->cz, g->sz.d));
 	/* Forces only grow: if the cell holding the minimum got nothing
 	 * (and is not the one just taken), the minimum stays. */
-	ax = toff(x0 + (a & (g->tx - 1)), g->cx, g->w);
-	ay = toff(y0 + (a >> g->lx & (g->ty - 1)), g->cy, g->h);
-	az = toff(z0 + (a >> (g->lx + g->ly)), g->cz, g->d);
+	ax = toff(x0 + (a & (g->tx - 1)), g->cx, g->sz.w);
+	ay = toff(y0 + (a >> g->lx & (g->ty - 1)), g->cy, g->sz.h);
+	az = toff(z0 + (a >> (g->lx + g->ly)), g->cz, g->sz.d);
 	if ((double)(ax * ax + ay * ay + az * az) > wd->r2 && blk[a] == old &&
 	    old != 0.0)	/* zero counts must stay exact */
 		return 0;
@@ -676,7 +676,7 @@ static int add_tile(struct gen *g, const struct window *wd, uint32_t t)
 
 struct tilejob {
 	struct gen *g;
-	const struct window *wd;
+	const struct frdgen_win *wd;
 };
 
 static int tiles_add_task(void *ctx, uint64_t b, uint64_t e)
@@ -692,17 +692,13 @@ static int tiles_add_task(void *ctx, uint64_t b, uint64_t e)
  * r, then bring the pyramid up to date. */
 static void add_force(struct gen *g, double r)
 {
-	struct window wd;
-	uint32_t size[3] = { g->w, g->h, g->d }, ts[3] = { g->tx, g->ty, g->tz };
+	struct frdgen_win wd;
+	uint32_t size[3] = { g->sz.w, g->sz.h, g->sz.d };
+	uint32_t ts[3] = { g->tx, g->ty, g->tz };
 	uint32_t c[3] = { g->cx, g->cy, g->cz }, cnt[3];
 	size_t nt = 0;
 
-	wd.e = r >= (double)UINT32_MAX ? UINT32_MAX : (uint32_t)floor(r);
-	wd.r2 = r >= g->rmax ? INFINITY : r * r;
-	wd.fast = 2 * (uint64_t)wd.e + 1 + 2 * g->tx <= g->w;
-	wd.ey = umin(wd.e, g->hh);
-	wd.ez = umin(wd.e, g->hd);
-	wd.ext = g->ext;
+	frdgen_window(&g->sz, g->tx, r, &wd);
 	window_extents(g, &wd);
 	for (int i = 0; i < 3; i++)
 		cnt[i] = axis_tiles(c[i], umin(wd.e, size[i]), size[i], ts[i],
@@ -731,11 +727,11 @@ static void add_force(struct gen *g, double r)
 /* ---- the rank query: the K-th smallest free cell ------------------ */
 
 /* Room for one more item in a growing array. */
-static int item_room(struct item **a, size_t n, size_t *cap)
+static int item_room(struct frdgen_item **a, size_t n, size_t *cap)
 {
 	if (n == *cap) {
 		size_t ncap = *cap ? 2 * *cap : 256;
-		struct item *na = realloc(*a, ncap * sizeof *na);
+		struct frdgen_item *na = realloc(*a, ncap * sizeof *na);
 		if (na == NULL)
 			return frs_fail("out of memory in the rank query");
 		*a = na;
@@ -744,79 +740,47 @@ static int item_room(struct item **a, size_t n, size_t *cap)
 	return 0;
 }
 
-static int heap_push(struct gen *g, double v, int lev, uint32_t idx)
+int frdgen_push(struct frdgen_sel *s, double v, int lev, uint32_t idx)
 {
 	size_t i;
 
-	if (item_room(&g->heap, g->nheap, &g->hcap) < 0)
+	if (item_room(&s->heap, s->nheap, &s->hcap) < 0)
 		return -1;
-	i = g->nheap++;
-	while (i > 0 && g->heap[(i - 1) / 2].v > v) {
-		g->heap[i] = g->heap[(i - 1) / 2];
+	i = s->nheap++;
+	while (i > 0 && s->heap[(i - 1) / 2].v > v) {
+		s->heap[i] = s->heap[(i - 1) / 2];
 		i = (i - 1) / 2;
 	}
-	g->heap[i] = (struct item){ v, lev, idx };
+	s->heap[i] = (struct frdgen_item){ v, lev, idx };
 	return 0;
 }
 
-static struct item heap_pop(struct gen *g)
+static struct frdgen_item heap_pop(struct frdgen_sel *s)
 {
-	struct item top = g->heap[0], last = g->heap[--g->nheap];
+	struct frdgen_item top = s->heap[0], last = s->heap[--s->nheap];
 	size_t i = 0;
 
 	for (;;) {
 		size_t c = 2 * i + 1;
-		if (c >= g->nheap)
+		if (c >= s->nheap)
 			break;
-		if (c + 1 < g->nheap && g->heap[c + 1].v < g->heap[c].v)
+		if (c + 1 < s->nheap && s->heap[c + 1].v < s->heap[c].v)
 			c++;
-		if (g->heap[c].v >= last.v)
+		if (s->heap[c].v >= last.v)
 			break;
-		g->heap[i] = g->heap[c];
+		s->heap[i] = s->heap[c];
 		i = c;
 	}
-	if (g->nheap > 0)
-		g->heap[i] = last;
+	if (s->nheap > 0)
+		s->heap[i] = last;
 	return top;
 }
 
-/* Push the children of a node: nodes of the level below, or cells. */
-static int expand(struct gen *g, int lev, uint32_t idx)
+static int emit(struct frdgen_sel *s, struct frdgen_item it)
 {
-	const struct level *l = &g->lev[lev];
-	uint32_t x = idx % l->nx, y = idx / l->nx % l->ny, z = idx / l->nx / l->ny;
-
-	if (lev == 0) {
-		const double *blk = g->field + (size_t)idx * g->ts;
-		uint32_t x0 = x * g->tx, y0 = y * g->ty, z0 = z * g->tz;
-		for (uint32_t k = z0; k < umin(z0 + g->tz, g->d); k++)
-			for (uint32_t j = y0; j < umin(y0 + g->ty, g->h); j++)
-				for (uint32_t i = x0; i < umin(x0 + g->tx, g->w); i++) {
-					double v = blk[((k - z0) << g->ly | (j - y0)) <<
-					    g->lx | (i - x0)];
-					uint32_t c = (k * g->h + j) * g->w + i;
-					if (v < INFINITY && heap_push(g, v, -1, c) < 0)
-						return -1;
-				}
-		return 0;
-	}
-	l = &g->lev[lev - 1];
-	for (uint32_t k = 2 * z; k < umin(2 * z + 2, l->nz); k++)
-		for (uint32_t j = 2 * y; j < umin(2 * y + 2, l->ny); j++)
-			for (uint32_t i = 2 * x; i < umin(2 * x + 2, l->nx); i++) {
-				uint32_t ci = (k * l->ny + j) * l->nx + i;
-				if (l->min[ci] < INFINITY &&
-				    heap_push(g, l->min[ci], lev - 1, ci) < 0)
-					return -1;
-			}
-	return 0;
-}
-
-static int emit(struct gen *g, struct item it)
-{
-	if (item_room(&g->emit, g->nemit, &g->ecap) < 0)
+	if (item_room(&s->emit, s->nemit, &s->ecap) < 0)
 		return -1;
-	g->emit[g->nemit++] = it;
+	s->emit[s->nemit++] = it;
 	return 0;
 }
 
@@ -828,29 +792,107 @@ static int cmp_key(const void *a, const void *b)
 	return x[1] < y[1] ? -1 : x[1] > y[1];
 }
 
-/* Pick the (rank)-th (0-based) cell of a tie group by key. */
-static int pick_in_group(struct gen *g, size_t a, size_t rank, uint32_t *c)
+/* Pick the (rank)-th (0-based) cell of the tie group emit[a ..] by key. */
+static int pick_in_group(struct frdgen_sel *s, const struct frdgen_params *pr,
+    uint64_t step, size_t a, size_t rank, uint32_t *c)
 {
-	size_t m = g->nemit - a;
-	uint64_t *kc = malloc(2 * m * sizeof *kc);
+	size_t m = s->nemit - a;
 
-	if (kc == NULL)
-		return frs_fail("out of memory in the rank query");
-	for (size_t i = 0; i < m; i++) {
-		kc[2 * i] = frdgen_tiekey(g->pr, g->step, g->emit[a + i].idx);
-		kc[2 * i + 1] = g->emit[a + i].idx;
+	if (m == 1) {
+		*c = s->emit[a].idx;
+		return 0;
 	}
-	qsort(kc, m, 2 * sizeof *kc, cmp_key);
-	*c = (uint32_t)kc[2 * rank + 1];
-	free(kc);
+	if (2 * m > s->kcap) {
+		uint64_t *nk = realloc(s->keys, 2 * m * sizeof *nk);
+		if (nk == NULL)
+			return frs_fail("out of memory in the rank query");
+		s->keys = nk;
+		s->kcap = 2 * m;
+	}
+	for (size_t i = 0; i < m; i++) {
+		s->keys[2 * i] = frdgen_tiekey(pr, step, s->emit[a + i].idx);
+		s->keys[2 * i + 1] = s->emit[a + i].idx;
+	}
+	qsort(s->keys, m, 2 * sizeof *s->keys, cmp_key);
+	*c = (uint32_t)s->keys[2 * rank + 1];
 	return 0;
 }
 
-/* The K-th smallest free cell in the order (force, tie key). */
+int frdgen_select(struct frdgen_sel *s, const struct frdgen_params *pr,
+    uint64_t step, uint64_t k, struct frdgen_item root,
+    frdgen_expand_fn *expand, void *ctx, uint32_t *c)
+{
+	double v;
+	size_t a;
+
+	s->nheap = s->nemit = 0;
+	if (frdgen_push(s, root.v, root.lev, root.idx) < 0)
+		return -1;
+	/* Best-first: cells come out in nondecreasing force. */
+	while (s->nheap > 0) {
+		struct frdgen_item it;
+		if (s->nemit >= k && s->heap[0].v > s->emit[k - 1].v)
+			break;
+		it = heap_pop(s);
+		if ((it.lev < 0 ? emit(s, it) : expand(ctx, it.lev, it.idx)) < 0)
+			return -1;
+	}
+	if (s->nemit < k)
+		return frs_fail("internal error: %zu free cells found, rank %llu",
+		    s->nemit, (unsigned long long)k);
+	v = s->emit[k - 1].v;
+	for (a = k - 1; a > 0 && s->emit[a - 1].v == v; a--)
+		;
+	while (s->nemit > k && s->emit[s->nemit - 1].v > v)
+		s->nemit--;
+	return pick_in_group(s, pr, step, a, k - 1 - a, c);
+}
+
+void frdgen_sel_free(struct frdgen_sel *s)
+{
+	free(s->heap);
+	free(s->emit);
+	free(s->keys);
+}
+
+/* Push the children of a node: nodes of the level below, or cells. */
+static int expand(void *ctx, int lev, uint32_t idx)
+{
+	struct gen *g = ctx;
+	const struct level *l = &g->lev[lev];
+	uint32_t x = idx % l->nx, y = idx / l->nx % l->ny, z = idx / l->nx / l->ny;
+
+	if (lev == 0) {
+		const double *blk = g->field + (size_t)idx * g->ts;
+		uint32_t x0 = x * g->tx, y0 = y * g->ty, z0 = z * g->tz;
+		for (uint32_t k = z0; k < umin(z0 + g->tz, g->sz.d); k++)
+			for (uint32_t j = y0; j < umin(y0 + g->ty, g->sz.h); j++)
+				for (uint32_t i = x0; i < umin(x0 + g->tx, g->sz.w); i++) {
+					double v = blk[((k - z0) << g->ly | (j - y0)) <<
+					    g->lx | (i - x0)];
+					uint32_t c = (k * g->sz.h + j) * g->sz.w + i;
+					if (v < INFINITY &&
+					    frdgen_push(&g->sel, v, -1, c) < 0)
+						return -1;
+				}
+		return 0;
+	}
+	l = &g->lev[lev - 1];
+	for (uint32_t k = 2 * z; k < umin(2 * z + 2, l->nz); k++)
+		for (uint32_t j = 2 * y; j < umin(2 * y + 2, l->ny); j++)
+			for (uint32_t i = 2 * x; i < umin(2 * x + 2, l->nx); i++) {
+				uint32_t ci = (k * l->ny + j) * l->nx + i;
+				if (l->min[ci] < INFINITY &&
+				    frdgen_push(&g->sel, l->min[ci], lev - 1, ci) < 0)
+					return -1;
+			}
+	return 0;
+}
+
 /* The r-th zero cell of the matrix, in the order of frdgen_cellorder. */
 static uint32_t zero_cell(const struct gen *g, uint64_t r)
 {
-	size_t t = fen_find(g, &r);
+	size_t t = frdgen_fen_find(g->fen, g->ntiles, &r);
 	const double *b = g->field + t * g->ts;
 	uint32_t tx = (uint32_t)(t % g->ntx), ty = (uint32_t)(t / g->ntx % g->nty);
 	uint32_t tz = (uint32_t)(t / g->ntx / g->nty);
@@ -860,47 +902,24 @@ static uint32_t zero_cell(const struct gen *g, uint64_t r)
 			uint32_t x = tx * g->tx + (uint32_t)(i & (g->tx - 1));
 			uint32_t y = ty * g->ty + (uint32_t)(i >> g->lx & (g->ty - 1));
 			uint32_t z = tz * g->tz + (uint32_t)(i >> (g->lx + g->ly));
-			return (z * g->h + y) * g->w + x;
+			return (z * g->sz.h + y) * g->sz.w + x;
 		}
 	return 0;	/* not reached: the counts are exact */
 }
 
+/* The K-th smallest free cell in the order (force, tie key). */
 static int select_cell(struct gen *g, uint64_t k, uint32_t *c)
 {
-	double v;
-	size_t a;
+	const struct level *top = &g->lev[g->nlev - 1];
+	struct frdgen_item root = { top->min[0], g->nlev - 1, 0 };
 
 	/* Cells no force has reached: one of them, uniformly. */
-	if (g->lev[g->nlev - 1].min[0] == 0.0) {
-		uint64_t z = fen_total(g);
+	if (top->min[0] == 0.0) {
+		uint64_t z = frdgen_fen_total(g->fen, g->ntiles);
 		*c = zero_cell(g, frdgen_zerorank(g->pr, g->step, z));
 		return 0;
 	}
-
-	g->nheap = g->nemit = 0;
-	if (heap_push(g, g->lev[g->nlev - 1].min[0], g->nlev - 1, 0) < 0)
-		return -1;
-	/* Best-first: cells come out in nondecreasing force. */
-	while (g->nheap > 0) {
-		struct item it;
-		if (g->nemit >= k && g->heap[0].v > g->emit[k - 1].v)
-			break;
-		it = heap_pop(g);
-		if ((it.lev < 0 ? emit(g, it) : expand(g, it.lev, it.idx)) < 0)
-			return -1;
-	}
-	if (g->nemit < k)
-		return frs_fail("internal error: %zu free cells found, rank %llu",
-		    g->nemit, (unsigned long long)k);
-	v = g->emit[k - 1].v;
-	for (a = k - 1; a > 0 && g->emit[a - 1].v == v; a--)
-		;
-	if (g->nheap == 0 || g->heap[0].v > v) {
-		while (g->nemit > k && g->emit[g->nemit - 1].v > v)
-			g->nemit--;
-		return pick_in_group(g, a, k - 1 - a, c);
-	}
-	return frs_fail("internal error: tie at %g not gathered", v);
+	return frdgen_select(&g->sel, g->pr, g->step, k, root, expand, g, c);
 }
 
 /* ---- checkpoints -------------------------------------------------- */
@@ -932,7 +951,7 @@ static int save_checkpoint(struct gen *g, uint64_t step)
 		return -1;
 	ok = fwrite(h, 1, sizeof h, o.fp) == sizeof h &&
 	    fwrite(params, 1, plen, o.fp) == plen &&
-	    fwrite(g->val, 4, g->n, o.fp) == g->n &&
+	    fwrite(g->val, 4, g->sz.n, o.fp) == g->sz.n &&
 	    fwrite(g->field, 8, field_cells(g), o.fp) == field_cells(g);
 	if (!ok) {
 		frs_fail_errno("%s: write error", o.name);
@@ -975,7 +994,7 @@ static int load_checkpoint(struct gen *g, uint64_t *step)
 		    "afresh)", name);
 		goto done;
 	}
-	if (*step > g->n || io_read_exact(fp, name, g->val, g->n * 4,
+	if (*step > g->sz.n || io_read_exact(fp, name, g->val, g->sz.n * 4,
 	    "values") < 0 || io_read_exact(fp, name, g->field,
 	    field_cells(g) * 8, "field") < 0)
 		goto done;
@@ -989,21 +1008,22 @@ done:
 
 /* Expected spacing of n values spread evenly: hexagonal in 2-D,
  * face-centred cubic in 3-D. */
-static double spacing(const struct gen *g, uint64_t n)
+static double spacing(const struct frdgen_params *pr, uint64_t n)
 {
-	double vol = (double)g->w * g->h * g->d;
+	double vol = (double)pr->w * pr->h * pr->d;
 
-	if (g->pr->dims == 2)
+	if (pr->dims == 2)
 		return sqrt(2.0 * vol / (sqrt(3.0) * (double)n));
 	return cbrt(sqrt(2.0) * vol / (double)n);
 }
 
-static double radius_after(const struct gen *g, uint64_t inserted)
+double frdgen_radius_after(const struct frdgen_params *pr, double rtol,
+    uint64_t inserted)
 {
-	double r = g->rtol;
+	double r = rtol;
 
-	if (g->pr->reach > 0.0) {
-		double adapt = g->pr->reach * spacing(g, inserted);
+	if (pr->reach > 0.0) {
+		double adapt = pr->reach * spacing(pr, inserted);
 		r = adapt > r ? adapt : r;
 	}
 	return r;
@@ -1027,24 +1047,24 @@ int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
 			goto fail;
 	}
 	if (start == 0) {
-		memset(g.val, 0xff, g.n * sizeof *g.val);
+		memset(g.val, 0xff, g.sz.n * sizeof *g.val);
 		init_field(&g);
 	}
 	rebuild_all(&g);
 	if (frs_team_start() < 0)
 		goto fail;
 	last_save = progress_now();
-	for (g.step = start; g.step < g.n; g.step++) {
+	for (g.step = start; g.step < g.sz.n; g.step++) {
 		uint32_t c = 0;
-		uint64_t k = frdgen_rank(par, g.step, g.n - g.step);
+		uint64_t k = frdgen_rank(par, g.step, g.sz.n - g.step);
 		if (select_cell(&g, k, &c) < 0)
 			goto fail;
 		g.val[c] = (uint32_t)g.step;
-		g.cx = c % g.w;
-		g.cy = c / g.w % g.h;
-		g.cz = c / g.w / g.h;
+		g.cx = c % g.sz.w;
+		g.cy = c / g.sz.w % g.sz.h;
+		g.cz = c / g.sz.w / g.sz.h;
 		g.field[fidx(&g, g.cx, g.cy, g.cz)] = INFINITY;
-		add_force(&g, radius_after(&g, g.step + 1));
+		add_force(&g, frdgen_radius_after(par, g.sz.rtol, g.step + 1));
 		if (prog != NULL && (g.step & 1023) == 0)
 			progress_update(prog, g.step);
 		if (par->checkpoint != NULL && (g.step & 4095) == 0 &&

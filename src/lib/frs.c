@@ -514,15 +514,10 @@ static int rows_task(void *ctx, uint64_t b, uint64_t e)
 	return 0;
 }
 
-int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
-    unsigned nsteps, int count_only, struct frs_result *r)
+int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
+    int algo, const char *name, const uint64_t *steps, unsigned nsteps,
+    int count_only, double *tau)
 {
-	double tau[16];
-	struct run run = { s, map, p, algo, tau, nsteps, count_only, r };
-	int rc;
-
-	memset(r, 0, sizeof *r);
 	if (nsteps < 1 || nsteps > 16)
 		return frs_fail("--progressive: 1 to 16 steps");
 	for (unsigned k = 0; k < nsteps; k++) {
@@ -534,13 +529,27 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
 		return frs_fail("the window of %llux%llu elements is too large to "
 		    "store samples (--count-only counts them)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh);
-	if (algo != FRS_NAIVE && p->nlev < 2 && algo != FRS_SORTED)
-		return frs_fail("-a %s: the matrix has no minmap",
-		    frs_algo_name(algo));
+	if (algo != FRS_NAIVE && algo != FRS_SORTED && p->nlev < 2)
+		return frs_fail("-a %s: the matrix has no minmap", name);
 	if (algo == FRS_SORTED && (p->block == 0 || p->block > s->ns ||
 	    s->ns % p->block))
 		return frs_fail("-a sorted: lists of blocks of %u do not fit "
 		    "n_s = %u", p->block, s->ns);
+	return 0;
+}
+
+int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
+    unsigned nsteps, int count_only, struct frs_result *r)
+{
+	double tau[16];
+	struct run run = { s, map, p, algo, tau, nsteps, count_only, r };
+	int rc;
+
+	memset(r, 0, sizeof *r);
+	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), steps,
+	    nsteps, count_only, tau) < 0)
+		return -1;
 	r->nchunk = (s->ih + ROWS_PER_CHUNK - 1) / ROWS_PER_CHUNK;
 	r->chunk = calloc(r->nchunk, sizeof *r->chunk);
 	if (r->chunk == NULL)

@@ -114,6 +114,12 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs_result *r);
 void frs_result_free(struct frs_result *r);
+/* The argument checks of frs_sample (and frs_sample_cl): the steps, the
+ * window, what algorithm algo (named name in messages) needs of p; tau[k]
+ * gets the threshold of steps[k]. */
+int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
+    int algo, const char *name, const uint64_t *steps, unsigned nsteps,
+    int count_only, double *tau);
 
 /* The point of an element, in [0, 1)^2, with the setup's jitter. */
 void frs_point(const struct frs_setup *s, const struct frs_elem *e,

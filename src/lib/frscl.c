@@ -236,23 +236,72 @@ static int kernel(struct clrun *c, const char *name, cl_kernel *k)
 	return ocl_kernel(c->prog, name, k);
 }
 
+/* Run kernel k on n work-items: the kernel phase. */
+static int launch(struct clrun *c, cl_kernel k, uint64_t n)
+{
+	if (ocl_run(c->o, k, (size_t)n, 0) < 0)
+		return -1;
+	phase(c, &last.kernel);
+	return 0;
+}
+
+/* A fresh *buf for total records of 12 bytes. */
+static int grow(struct clrun *c, uint64_t total, cl_mem *buf)
+{
+	if (total > SIZE_MAX / 12)
+		return alloc_fail();
+	rel(buf);
+	if (buffer(c, (size_t)total * 12, NULL, buf) < 0)
+		return -1;
+	phase(c, &last.download);
+	return 0;
+}
+
+/* Offsets (to c->off) from the n counts in cnt and a fresh *buf for the
+ * records counted; their number in *total. */
+static int make_room(struct clrun *c, cl_mem cnt, uint64_t n, int wide,
+    cl_mem *buf, uint64_t *total)
+{
+	if (scan(c, cnt, n, wide, &c->off, total) < 0)
+		return -1;
+	return grow(c, *total, buf);
+}
+
+/* make_room for the samples (c->out): the count goes to r; with
+ * count_only nothing more is done and the result is 1. */
+static int make_out(struct clrun *c, cl_mem cnt, uint64_t n, int wide,
+    int count_only, struct frs_result *r, uint64_t *total)
+{
+	if (scan(c, cnt, n, wide, &c->off, total) < 0)
+		return -1;
+	r->count = *total;
+	if (count_only) {
+		phase(c, &last.download);
+		return 1;
+	}
+	return grow(c, *total, &c->out);
+}
+
+/* Read the total samples back: the download phase. */
+static int finish(struct clrun *c, uint64_t total, struct frs_result *r)
+{
+	if (take(c, total, r) < 0)
+		return -1;
+	phase(c, &last.download);
+	return 0;
+}
+
 /* Naive, Stack, Level N, Sorted: count, offsets, write. */
 static int per_pixel(struct clrun *c, int algo, int count_only,
     struct frs_result *r)
 {
 	uint64_t total;
-	int wr = 0;
+	int wr = 0, rc;
 	cl_mem m1, m2;
 
-	if (algo == FRS_NAIVE) {
-		if (kernel(c, "frs_naive", &c->k) < 0)
-			return -1;
-	} else if (algo == FRS_SORTED) {
-		if (kernel(c, "frs_sorted", &c->k) < 0)
-			return -1;
-	} else if (kernel(c, "frs_minmap", &c->k) < 0) {
+	if (kernel(c, algo == FRS_NAIVE ? "frs_naive" : algo == FRS_SORTED ?
+	    "frs_sorted" : "frs_minmap", &c->k) < 0)
 		return -1;
-	}
 	if (buffer(c, c->nact * sizeof(uint64_t), NULL, &c->cnt) < 0 ||
 	    buffer(c, sizeof(uint64_t), NULL, &c->off) < 0 ||
 	    buffer(c, 12, NULL, &c->out) < 0)
@@ -268,29 +317,58 @@ static int per_pixel(struct clrun *c, int algo, int count_only,
 		    sizeof m1, &m1, sizeof m2, &m2, sizeof c->cnt, &c->cnt,
 		    sizeof c->off, &c->off, sizeof c->out, &c->out, sizeof wr, &wr))
 			return -1;
-		if (ocl_run(c->o, c->k, (size_t)c->nact, 0) < 0)
+		if (launch(c, c->k, c->nact) < 0)
 			return -1;
-		phase(c, &last.kernel);
 		if (wr)
 			break;
-		if (scan(c, c->cnt, c->nact, 1, &c->off, &total) < 0)
-			return -1;
-		r->count = total;
-		if (count_only) {
-			phase(c, &last.download);
-			return 0;
-		}
-		if (total > SIZE_MAX / 12)
-			return alloc_fail();
-		rel(&c->out);
-		if (buffer(c, (size_t)total * 12, NULL, &c->out) < 0)
-			return -1;
-		phase(c, &last.download);
+		rc = make_out(c, c->cnt, c->nact, 1, count_only, r, &total);
+		if (rc != 0)
+			return rc < 0 ? -1 : 0;
 		wr = 1;
 	}
-	if (take(c, total, r) < 0)
+	return finish(c, total, r);
+}
+
+/* Flat 1, first launch: the candidate blocks at the start level (c->ca). */
+static int flat_init(struct clrun *c, uint64_t *ncand)
+{
+	for (int wr = 0; wr < 2; wr++) {
+		if (ocl_args(c->k, 8, sizeof c->par, &c->par, sizeof c->thr,
+		    &c->thr, sizeof c->mat, &c->mat, sizeof c->loff, &c->loff,
+		    sizeof c->cnt, &c->cnt, sizeof c->off, &c->off, sizeof c->ca,
+		    &c->ca, sizeof wr, &wr) < 0 || launch(c, c->k, c->nact) < 0)
+			return -1;
+		if (!wr && make_room(c, c->cnt, c->nact, 1, &c->ca, ncand) < 0)
+			return -1;
+	}
+	return 0;
+}
+
+/* Flat 1, one level: the ncand blocks of c->ca refined to level l - 1. */
+static int flat_refine(struct clrun *c, unsigned l, uint64_t *ncand)
+{
+	uint64_t next = 0;
+
+	rel(&c->ccnt);
+	rel(&c->cb);
+	if (buffer(c, (size_t)*ncand * 4, NULL, &c->ccnt) < 0 ||
+	    buffer(c, 12, NULL, &c->cb) < 0)
 		return -1;
-	phase(c, &last.download);
+	for (int wr = 0; wr < 2; wr++) {
+		if (ocl_args(c->k2, 11, sizeof c->par, &c->par, sizeof c->thr,
+		    &c->thr, sizeof c->mat, &c->mat, sizeof c->loff, &c->loff,
+		    sizeof c->ca, &c->ca, sizeof *ncand, ncand, sizeof l, &l,
+		    sizeof c->ccnt, &c->ccnt, sizeof c->off, &c->off,
+		    sizeof c->cb, &c->cb, sizeof wr, &wr) < 0 ||
+		    launch(c, c->k2, *ncand) < 0)
+			return -1;
+		if (!wr && make_room(c, c->ccnt, *ncand, 0, &c->cb, &next) < 0)
+			return -1;
+	}
+	rel(&c->ca);
+	c->ca = c->cb;
+	c->cb = NULL;
+	*ncand = next;
 	return 0;
 }
 
@@ -298,8 +376,8 @@ static int per_pixel(struct clrun *c, int algo, int count_only,
 static int flat1(struct clrun *c, unsigned L, int count_only,
     struct frs_result *r)
 {
-	uint64_t ncand, next, total;
-	int wr;
+	uint64_t ncand = 0, total;
+	int rc;
 
 	if (kernel(c, "frs_flat_init", &c->k) < 0 ||
 	    kernel(c, "frs_flat_refine", &c->k2) < 0 ||
@@ -310,89 +388,29 @@ static int flat1(struct clrun *c, unsigned L, int count_only,
 	    buffer(c, 12, NULL, &c->ca) < 0)
 		return -1;
 	phase(c, &last.upload);
-	for (wr = 0; wr < 2; wr++) {
-		if (ocl_args(c->k, 8, sizeof c->par, &c->par, sizeof c->thr,
-		    &c->thr, sizeof c->mat, &c->mat, sizeof c->loff, &c->loff,
-		    sizeof c->cnt, &c->cnt, sizeof c->off, &c->off, sizeof c->ca,
-		    &c->ca, sizeof wr, &wr) < 0 ||
-		    ocl_run(c->o, c->k, (size_t)c->nact, 0) < 0)
+	if (flat_init(c, &ncand) < 0)
+		return -1;
+	for (unsigned l = L; l >= 1; l--)
+		if (flat_refine(c, l, &ncand) < 0)
 			return -1;
-		phase(c, &last.kernel);
-		if (wr)
-			break;
-		if (scan(c, c->cnt, c->nact, 1, &c->off, &ncand) < 0)
-			return -1;
-		if (ncand > SIZE_MAX / 12)
-			return alloc_fail();
-		rel(&c->ca);
-		if (buffer(c, (size_t)ncand * 12, NULL, &c->ca) < 0)
-			return -1;
-		phase(c, &last.download);
-	}
-	for (unsigned l = L; l >= 1; l--) {
-		rel(&c->ccnt);
-		rel(&c->cb);
-		if (buffer(c, (size_t)ncand * 4, NULL, &c->ccnt) < 0 ||
-		    buffer(c, 12, NULL, &c->cb) < 0)
-			return -1;
-		next = 0;
-		for (wr = 0; wr < 2; wr++) {
-			if (ocl_args(c->k2, 11, sizeof c->par, &c->par, sizeof c->thr,
-			    &c->thr, sizeof c->mat, &c->mat, sizeof c->loff,
-			    &c->loff, sizeof c->ca, &c->ca, sizeof ncand, &ncand,
-			    sizeof l, &l, sizeof c->ccnt, &c->ccnt, sizeof c->off,
-			    &c->off, sizeof c->cb, &c->cb, sizeof wr, &wr) < 0 ||
-			    ocl_run(c->o, c->k2, (size_t)ncand, 0) < 0)
-				return -1;
-			phase(c, &last.kernel);
-			if (wr)
-				break;
-			if (scan(c, c->ccnt, ncand, 0, &c->off, &next) < 0)
-				return -1;
-			if (next > SIZE_MAX / 12)
-				return alloc_fail();
-			rel(&c->cb);
-			if (buffer(c, (size_t)next * 12, NULL, &c->cb) < 0)
-				return -1;
-			phase(c, &last.download);
-		}
-		rel(&c->ca);
-		c->ca = c->cb;
-		c->cb = NULL;
-		ncand = next;
-	}
 	rel(&c->ccnt);
 	if (buffer(c, (size_t)ncand * 4, NULL, &c->ccnt) < 0 ||
 	    buffer(c, 12, NULL, &c->out) < 0)
 		return -1;
-	for (wr = 0; wr < 2; wr++) {
+	for (int wr = 0; wr < 2; wr++) {
 		if (ocl_args(c->k3, 9, sizeof c->par, &c->par, sizeof c->thr,
 		    &c->thr, sizeof c->mat, &c->mat, sizeof c->ca, &c->ca,
 		    sizeof ncand, &ncand, sizeof c->ccnt, &c->ccnt, sizeof c->off,
 		    &c->off, sizeof c->out, &c->out, sizeof wr, &wr) < 0 ||
-		    ocl_run(c->o, c->k3, (size_t)ncand, 0) < 0)
+		    launch(c, c->k3, ncand) < 0)
 			return -1;
-		phase(c, &last.kernel);
 		if (wr)
 			break;
-		if (scan(c, c->ccnt, ncand, 0, &c->off, &total) < 0)
-			return -1;
-		r->count = total;
-		if (count_only) {
-			phase(c, &last.download);
-			return 0;
-		}
-		if (total > SIZE_MAX / 12)
-			return alloc_fail();
-		rel(&c->out);
-		if (buffer(c, (size_t)total * 12, NULL, &c->out) < 0)
-			return -1;
-		phase(c, &last.download);
+		rc = make_out(c, c->ccnt, ncand, 0, count_only, r, &total);
+		if (rc != 0)
+			return rc < 0 ? -1 : 0;
 	}
-	if (take(c, total, r) < 0)
-		return -1;
-	phase(c, &last.download);
-	return 0;
+	return finish(c, total, r);
 }
 
 /* The minmap levels in one buffer, level l from offset loff[l]. */
@@ -438,24 +456,9 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 	c.t = progress_now();
 	if (algo < 0 || algo >= FRSCL_NALGO)
 		return frs_fail("-a: no implementation %d", algo);
-	if (nsteps < 1 || nsteps > 16)
-		return frs_fail("--progressive: 1 to 16 steps");
-	for (unsigned k = 0; k < nsteps; k++) {
-		if (k > 0 && steps[k] <= steps[k - 1])
-			return frs_fail("--progressive: counts must increase");
-		tau[k] = frs_tau(s, steps[k]);
-	}
-	if (!count_only && (s->sw > UINT32_MAX || s->sh > UINT32_MAX))
-		return frs_fail("the window of %llux%llu elements is too large to "
-		    "store samples (--count-only counts them)",
-		    (unsigned long long)s->sw, (unsigned long long)s->sh);
-	if (algo != FRS_NAIVE && algo != FRS_SORTED && p->nlev < 2)
-		return frs_fail("-a %s: the matrix has no minmap",
-		    frscl_algo_name(algo));
-	if (algo == FRS_SORTED && (p->block == 0 || p->block > s->ns ||
-	    s->ns % p->block))
-		return frs_fail("-a sorted: lists of blocks of %u do not fit "
-		    "n_s = %u", p->block, s->ns);
+	if (frs_sample_check(s, p, algo, frscl_algo_name(algo), steps, nsteps,
+	    count_only, tau) < 0)
+		return -1;
 	if (program(o, &c.prog) < 0)
 		return -1;
 	phase(&c, &last.build);
