@@ -169,3 +169,55 @@ uninstall:
 
 clean:
 	rm -rf build bin
+
+# Fuzzing (test/fuzz/): one libFuzzer target per parser.
+#   make fuzz [FUZZ_SECONDS=600] [-j2]   build with clang and run each
+#       target on its seed corpus (new inputs in build/fuzz/corpus/T/),
+#       crashes saved in $(FUZZ_CRASHES)/T/
+# make tests also builds replay drivers, $(B)/fuzz/replay_T, that run
+# the same targets on the seed corpus and the saved crashes (test/run.sh).
+FUZZ_TARGETS = $(patsubst test/fuzz/fuzz_%.c,%,$(wildcard test/fuzz/fuzz_*.c))
+FUZZ_SECONDS ?= 600
+FUZZ_CC ?= clang
+FUZZ_CXX ?= clang++
+FUZZ_SAN = -fsanitize=address,undefined -fno-sanitize-recover=undefined
+FUZZ_VFLAGS = -O1 -g -fno-omit-frame-pointer $(FUZZ_SAN) \
+	-fsanitize=fuzzer-no-link
+FUZZ_CRASHES ?= test/fuzz/crashes
+FUZZ_FLAGS ?= -rss_limit_mb=4096 -timeout=30
+FUZZBIN = $(FUZZ_TARGETS:%=build/fuzz/fuzz_%)
+REPLAYBIN = $(FUZZ_TARGETS:%=$(B)/fuzz/replay_%)
+
+.PHONY: fuzz fuzz-build fuzz-lib $(FUZZ_TARGETS:%=fuzz-%)
+
+tests: $(REPLAYBIN)
+
+$(B)/fuzz/%.o: test/fuzz/%.c test/fuzz/fuzz.h
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(B)/fuzz/replay_%: $(B)/fuzz/fuzz_%.o $(B)/fuzz/replay.o $(B)/libfrs.a
+	$(CC) $(ALL_LDFLAGS) $^ $(LIBS) -o $@
+
+# The library again, built by clang with the fuzzer's instrumentation.
+fuzz-lib:
+	@$(MAKE) --no-print-directory VARIANT=fuzz CC=$(FUZZ_CC) \
+	    CXX=$(FUZZ_CXX) VFLAGS='$(FUZZ_VFLAGS)' build/fuzz/libfrs.a
+
+fuzz-build: fuzz-lib
+	@$(MAKE) --no-print-directory $(FUZZBIN)
+
+build/fuzz/fuzz_%: test/fuzz/fuzz_%.c test/fuzz/fuzz.h build/fuzz/libfrs.a
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
+	    $(CFLAGS) -c $< -o $@.o
+	$(FUZZ_CXX) -fsanitize=fuzzer $(FUZZ_SAN) $@.o build/fuzz/libfrs.a \
+	    $(LIBS) -o $@
+
+fuzz: $(FUZZ_TARGETS:%=fuzz-%)
+
+$(FUZZ_TARGETS:%=fuzz-%): fuzz-%: fuzz-build
+	@mkdir -p build/fuzz/corpus/$* $(FUZZ_CRASHES)/$*
+	build/fuzz/fuzz_$* -max_total_time=$(FUZZ_SECONDS) $(FUZZ_FLAGS) \
+	    -artifact_prefix=$(FUZZ_CRASHES)/$*/ \
+	    build/fuzz/corpus/$* test/fuzz/corpus/$*

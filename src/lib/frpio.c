@@ -5,6 +5,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define FRP_VERSION 1
 #define FRP_HEADER 40
@@ -209,6 +210,22 @@ static int read_sorted(FILE *fp, const char *name, const struct frs_matrix *m,
 	return 0;
 }
 
+/* A regular file must hold at least the matrix its header announces:
+ * checked before allocating, so that a damaged header cannot ask for
+ * gigabytes. */
+static int fits_file(FILE *fp, const char *name, uint32_t w, uint32_t h)
+{
+	struct stat st;
+	uint64_t need = 40 + 4 * (uint64_t)w * h;
+
+	if (fstat(fileno(fp), &st) == 0 && S_ISREG(st.st_mode) &&
+	    (uint64_t)st.st_size < need)
+		return frs_fail("%s: truncated: a %ux%u matrix needs %llu bytes, "
+		    "the file has %lld", name, w, h, (unsigned long long)need,
+		    (long long)st.st_size);
+	return 0;
+}
+
 int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
     uint32_t block)
 {
@@ -222,6 +239,7 @@ int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
 	if (fp == NULL)
 		return -1;
 	if (read_header(fp, name, &w, &h, &flags, &sum, &nb) < 0 ||
+	    fits_file(fp, name, w, h) < 0 ||
 	    frd_alloc(m, 2, w, h, 1, "prepared") < 0 ||
 	    io_read_exact(fp, name, m->v, m->n * 4, "matrix") < 0)
 		goto fail;

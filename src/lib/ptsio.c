@@ -352,6 +352,8 @@ void pts_reader_close(struct pts_reader *r)
 	memset(r, 0, sizeof *r);
 }
 
+#define PTS_PREALLOC ((uint64_t)1 << 16)
+
 int pts_read(const char *path, struct frs_points *p)
 {
 	struct pts_reader r;
@@ -365,8 +367,11 @@ int pts_read(const char *path, struct frs_points *p)
 	p->dims = r.dims;
 	p->extra = r.extra;
 	ncol = r.dims + r.extra;
-	if (r.count != 0 && r.count < ((uint64_t)1 << 40) / ncol)
-		cap = (size_t)r.count;
+	/* The header's count only sizes the first buffer, and at most 2^16
+	 * records of it: a damaged count must not allocate without bound;
+	 * the buffer grows as the records arrive. */
+	if (r.count != 0)
+		cap = (size_t)(r.count < PTS_PREALLOC ? r.count : PTS_PREALLOC);
 	while ((rc = pts_reader_next(&r, rec)) == 1) {
 		if (p->n == cap || p->x == NULL) {
 			size_t ncap = cap > p->n ? cap : (cap ? cap * 2 : 1024);
