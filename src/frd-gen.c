@@ -205,14 +205,10 @@ int main(int argc, char **argv)
 		case OPT_QUALITY:
 			return quality(optarg);
 		case OPT_DEVICE:
-			use_cl = ocl_parse_device(optarg, &dev);
-			if (use_cl < 0)
-				cli_usage_error("--device: %s", frs_errmsg());
+			use_cl = cli_device(optarg, &dev);
 			break;
 		case OPT_LIST:
-			if (ocl_list(stdout) < 0)
-				cli_die_lib();
-			return 0;
+			cli_list_devices();
 
 		case 'v':
 			verbose = 1;

@@ -180,16 +180,10 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 			o->sets = cli_u64("--sets", optarg, 1, SETS_MAX_TOTAL);
 			break;
 		case OPT_DEVICE:
-			o->cl = ocl_parse_device(optarg, &o->dev);
-			if (o->cl < 0)
-				cli_usage_error("--device: %s", frs_errmsg());
+			o->cl = cli_device(optarg, &o->dev);
 			break;
 		case OPT_LIST_DEVICES:
-			if (ocl_list(stdout) < 0)
-				cli_die("--list-devices: %s", frs_errmsg());
-			if (fflush(stdout) == EOF || ferror(stdout))
-				cli_die("--list-devices: write error");
-			exit(0);
+			cli_list_devices();
 		case 'v': o->verbose = 1; break;
 		default:
 			if (!cli_common_opt(c, optarg))

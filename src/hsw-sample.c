@@ -73,7 +73,6 @@ struct opts {
 	int have_n, pdf, verbose;
 	uint32_t w, h;
 	int cl, cl_index;	/* --device: OpenCL, and which (-1: first) */
-	int list;		/* --list-devices */
 };
 
 static void parse_opts(int argc, char **argv, struct opts *o)
@@ -110,11 +109,9 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 			break;
 		case OPT_PDF: o->pdf = 1; break;
 		case OPT_DEVICE:
-			o->cl = ocl_parse_device(optarg, &o->cl_index);
-			if (o->cl < 0)
-				cli_usage_error("--device: %s", frs_errmsg());
+			o->cl = cli_device(optarg, &o->cl_index);
 			break;
-		case OPT_LIST: o->list = 1; break;
+		case OPT_LIST: cli_list_devices();
 		case 'v': o->verbose = 1; break;
 		default:
 			if (!cli_common_opt(c, optarg))
@@ -123,8 +120,6 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 	}
 	if (optind != argc)
 		cli_usage_error("unexpected argument '%s'", argv[optind]);
-	if (o->list)
-		return;
 	if (o->imp == NULL)
 		cli_usage_error("-i IMPORTANCE is required");
 	if (!o->have_n && o->file == NULL)
@@ -237,7 +232,7 @@ int main(int argc, char **argv)
 {
 	static const char *const names[] = { "random", "regular", "jittered",
 	    "halton", "hammersley" };
-	struct opts o = { NULL, NULL, HSW_HALTON, 0, 0, 0, 0, 0, 0, 0, -1, 0 };
+	struct opts o = { NULL, NULL, HSW_HALTON, 0, 0, 0, 0, 0, 0, 0, -1 };
 	struct frs_imap map;
 	struct hsw_tree t;
 	struct ocl dev;
@@ -246,11 +241,6 @@ int main(int argc, char **argv)
 
 	cli_init("hsw-sample", usage);
 	parse_opts(argc, argv, &o);
-	if (o.list) {
-		if (ocl_list(stdout) < 0 || fflush(stdout) != 0)
-			cli_die_lib();
-		return 0;
-	}
 	if (o.cl && ocl_open(&dev, o.cl_index) < 0)
 		cli_die_lib();
 	if (imap_load(o.imp, o.w, o.h, 0, &map) < 0)

@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
+#include "ocl.h"
 #include "outfile.h"
 #include "par.h"
 #include "parse.h"
@@ -152,4 +153,22 @@ void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
 {
 	if (parse_size(opt, s, max, w, h) < 0)
 		cli_usage_error("%s", frs_errmsg());
+}
+
+int cli_device(const char *arg, int *index)
+{
+	int cl = ocl_parse_device(arg, index);
+
+	if (cl < 0)
+		cli_usage_error("--device: %s", frs_errmsg());
+	return cl;
+}
+
+noreturn void cli_list_devices(void)
+{
+	if (ocl_list(stdout) < 0)
+		cli_die("--list-devices: %s", frs_errmsg());
+	if (fflush(stdout) == EOF || ferror(stdout))
+		cli_die("--list-devices: write error");
+	exit(0);
 }

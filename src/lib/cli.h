@@ -67,6 +67,13 @@ double cli_double(const char *opt, const char *s, double min, double max);
 void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
     uint32_t *h);
 
+/* --device VALUE: 0 for cpu, 1 for OpenCL with *index (-1: the first
+ * device); a bad value is a usage error. */
+int cli_device(const char *arg, int *index);
+/* --list-devices: print the OpenCL devices and exit 0, or exit 1 with
+ * the reason (no platform, no writable PoCL cache). */
+noreturn void cli_list_devices(void);
+
 /* Number of online processors. */
 int cli_ncpu(void);
 
