@@ -1,34 +1,14 @@
 /* Forced Random Sampling: setup against closed forms, every
  * implementation against Naive, and the statistics of what comes out. */
 #include "testutil.h"
+#include "frsutil.h"
 #include "frdio.h"
 #include "frs.h"
 #include "imap.h"
 #include "par.h"
 #include "rng.h"
 
-/* A random permutation matrix: the implementations must agree on any. */
-static void perm_matrix(struct frs_matrix *m, uint32_t w, uint32_t h)
-{
-	struct frs_rng r;
-	assert_int_equal(frd_alloc(m, 2, w, h, 1, ""), 0);
-	frs_rng_init(&r, 3, FRS_STREAM_TEST);
-	for (uint32_t i = 0; i < m->n; i++)
-		m->v[i] = i;
-	for (uint32_t i = (uint32_t)m->n - 1; i > 0; i--) {
-		uint32_t j = (uint32_t)frs_rng_below(&r, i + 1), t = m->v[i];
-		m->v[i] = m->v[j];
-		m->v[j] = t;
-	}
-}
 
-static void map_of(const char *spec, uint32_t w, uint32_t h,
-    struct frs_imap *m)
-{
-	if (imap_load(spec, w, h, 0, m) != 0)
-		print_error("%s\n", frs_errmsg());
-	assert_non_null(m->v);
-}
 
 /* Listing 5.1 by hand: constant 128^2 map, n = 1024, sigma 8:
  * w_min = 8 sqrt(1024) = 256, n_s = 2, tau = 1024 * 2048^2 / 256^2. */
@@ -39,7 +19,7 @@ static void setup_closed_form(void **state)
 	struct frs_setup s;
 	(void)state;
 
-	map_of("const", 128, 128, &map);
+	tu_map_of("const", 128, 128, &map);
 	assert_int_equal(frs_setup(&s, &map, &m, 1024, 8.0, 1), 0);
 	assert_int_equal(s.ns, 2);
 	assert_true(s.sw == 256 && s.sh == 256);
@@ -56,18 +36,18 @@ static void setup_closed_form(void **state)
 	assert_int_equal(s.level0, 3);
 	imap_free(&map);
 	/* A 64 x 256 map: a = 4, the smaller side sets n_s. */
-	map_of("const", 64, 256, &map);
+	tu_map_of("const", 64, 256, &map);
 	assert_int_equal(frs_setup(&s, &map, &m, 4096, 8.0, 1), 0);
 	/* w_min = 8 sqrt(4096 / 4) = 256 -> n_s = 4 */
 	assert_int_equal(s.ns, 4);
 	assert_true(s.sw == 256 && s.sh == 1024);
 	imap_free(&map);
 	/* The maximum over the mean widens the window (Eq. 4.9). */
-	map_of("ramp:from=0,to=2", 128, 128, &map);	/* mean 1, max ~2 */
+	tu_map_of("ramp:from=0,to=2", 128, 128, &map);	/* mean 1, max ~2 */
 	assert_int_equal(frs_setup(&s, &map, &m, 1024, 8.0, 1), 0);
 	assert_int_equal(s.ns, 4);	/* 8 sqrt(1024 * 2) = 362 > 256 */
 	imap_free(&map);
-	map_of("const", 16, 16, &map);
+	tu_map_of("const", 16, 16, &map);
 	assert_int_equal(frs_setup(&s, &map, &m, 0, 8.0, 1), -1);
 	assert_int_equal(frs_setup(&s, &map, &m, 10, 0.5, 1), -1);
 	imap_free(&map);
@@ -120,7 +100,7 @@ static void implementations_agree(void **state)
 	struct frs_matrix m;
 	(void)state;
 
-	perm_matrix(&m, 256, 256);
+	tu_perm_matrix(&m, 256, 256, 3);
 	for (size_t mi = 0; mi < 5; mi++)
 		for (size_t ni = 0; ni < 4; ni++) {
 			struct frs_imap map;
@@ -128,7 +108,7 @@ static void implementations_agree(void **state)
 			struct frs_result ref;
 			struct frs_elem *re;
 			uint64_t n = ns[ni];
-			map_of(maps[mi], 32 + 8 * (uint32_t)mi, 24, &map);
+			tu_map_of(maps[mi], 32 + 8 * (uint32_t)mi, 24, &map);
 			assert_int_equal(frs_setup(&s, &map, &m, n, sig[(mi + ni) % 4],
 			    7 + ni), 0);
 			s.rule = ni == 2 ? FRS_THESIS : FRS_UNBIASED;
@@ -170,8 +150,8 @@ static void thread_order(void **state)
 	uint64_t n = 5000;
 	(void)state;
 
-	perm_matrix(&m, 256, 256);
-	map_of("blob", 64, 64, &map);
+	tu_perm_matrix(&m, 256, 256, 3);
+	tu_map_of("blob", 64, 64, &map);
 	assert_int_equal(frs_setup(&s, &map, &m, n, 8.0, 1), 0);
 	frs_set_threads(1);
 	run(&s, &map, &m, FRS_SORTED, &n, 1, &a);
@@ -202,8 +182,8 @@ static void progressive(void **state)
 	struct frs_elem *a, *b;
 	(void)state;
 
-	perm_matrix(&m, 256, 256);
-	map_of("blob", 64, 64, &map);
+	tu_perm_matrix(&m, 256, 256, 3);
+	tu_map_of("blob", 64, 64, &map);
 	assert_int_equal(frs_setup(&s, &map, &m, 4096, 8.0, 2), 0);
 	run(&s, &map, &m, FRS_SORTED, steps + 2, 1, &one);
 	run(&s, &map, &m, FRS_SORTED, steps, 3, &prog);

@@ -3,6 +3,7 @@
  * gives Stack's, with progressive steps, both threshold rules, and window
  * math past 32 bits. */
 #include "testutil.h"
+#include "frsutil.h"
 #include "frdio.h"
 #include "frs.h"
 #include "frscl.h"
@@ -30,29 +31,7 @@ static int teardown(void **state)
 	return 0;
 }
 
-/* A random permutation matrix, as test_frs.c. */
-static void perm_matrix(struct frs_matrix *m, uint32_t w, uint32_t h,
-    uint64_t seed)
-{
-	struct frs_rng r;
-	assert_int_equal(frd_alloc(m, 2, w, h, 1, ""), 0);
-	frs_rng_init(&r, seed, FRS_STREAM_TEST);
-	for (uint32_t i = 0; i < m->n; i++)
-		m->v[i] = i;
-	for (uint32_t i = (uint32_t)m->n - 1; i > 0; i--) {
-		uint32_t j = (uint32_t)frs_rng_below(&r, i + 1), t = m->v[i];
-		m->v[i] = m->v[j];
-		m->v[j] = t;
-	}
-}
 
-static void map_of(const char *spec, uint32_t w, uint32_t h,
-    struct frs_imap *m)
-{
-	if (imap_load(spec, w, h, 0, m) != 0)
-		print_error("%s\n", frs_errmsg());
-	assert_non_null(m->v);
-}
 
 /* All elements of a result in their order. */
 static struct frs_elem *flat(const struct frs_result *r)
@@ -100,7 +79,7 @@ static void implementations_match_cpu(void **state)
 	struct frs_prep pm;
 	(void)state;
 
-	perm_matrix(&m, 256, 256, 3);
+	tu_perm_matrix(&m, 256, 256, 3);
 	assert_int_equal(frs_prepare(&pm, &m, 1, 0), 0);
 	for (unsigned mi = 0; mi < 4; mi++)
 		for (unsigned v = 0; v < 4; v++) {
@@ -116,7 +95,7 @@ static void implementations_match_cpu(void **state)
 				steps += nsteps - 1;
 				nsteps = 1;
 			}
-			map_of(maps[mi], 24 + 8 * mi, 20, &map);
+			tu_map_of(maps[mi], 24 + 8 * mi, 20, &map);
 			assert_int_equal(frs_setup(&s, &map, &m, steps[nsteps - 1],
 			    mi == 3 ? 4.0 : 8.0, 11 + 3 * mi + v), 0);
 			s.rule = (mi + v) % 2 ? FRS_THESIS : FRS_UNBIASED;
@@ -184,8 +163,8 @@ static void large_counts(void **state)
 	uint64_t n = (uint64_t)1 << 24, n2 = (uint64_t)1 << 23;
 	(void)state;
 
-	perm_matrix(&m, 256, 256, 5);
-	map_of("blob", 128, 128, &map);
+	tu_perm_matrix(&m, 256, 256, 5);
+	tu_map_of("blob", 128, 128, &map);
 	assert_int_equal(frs_setup(&s, &map, &m, n, 8.0, 3), 0);
 	assert_true(s.sw * s.sh > UINT32_MAX);
 	assert_int_equal(frs_prepare(&ps, &m, 0, s.ns < m.w ? s.ns : m.w), 0);
@@ -226,8 +205,8 @@ static void refusals(void **state)
 	int a;
 	(void)state;
 
-	perm_matrix(&m, 64, 64, 1);
-	map_of("blob", 16, 16, &map);
+	tu_perm_matrix(&m, 64, 64, 1);
+	tu_map_of("blob", 16, 16, &map);
 	assert_int_equal(frs_setup(&s, &map, &m, n, 8.0, 1), 0);
 	assert_int_equal(frs_prepare(&p, &m, 0, 0), 0);
 	assert_int_equal(frs_sample_cl(&o, &s, &map, &p, FRSCL_FLAT1, &n, 1, 0,
