@@ -8,8 +8,6 @@
 #include "par.h"
 #include "rng.h"
 
-
-
 /* Listing 5.1 by hand: constant 128^2 map, n = 1024, sigma 8:
  * w_min = 8 sqrt(1024) = 256, n_s = 2, tau = 1024 * 2048^2 / 256^2. */
 static void setup_closed_form(void **state)

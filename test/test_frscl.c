@@ -31,8 +31,6 @@ static int teardown(void **state)
 	return 0;
 }
 
-
-
 /* All elements of a result in their order. */
 static struct frs_elem *flat(const struct frs_result *r)
 {
