@@ -37,18 +37,7 @@ THREADS=1
 
 # The matrix: prepared once (tiny mode uses the .frd: the same thresholds,
 # only the setup, which is not timed, builds the structures).
-if [ "$MODE" = tiny ]; then
-	FRP=$TOP/data/default.frd
-else
-	FRP=$CACHE/default-all.frp
-	cached "$FRP" frd-prep -q -a all "$TOP/data/default.frd"
-fi
-ENVB=$(basename "$ENVMAP")
-ENV128=$CACHE/${ENVB%.*}-128-equirect.exr
-case " $MAPS " in
-*" env "*) cached "$ENV128" imap convert -q -s 128x128 --equirect --format exr "$ENVMAP" - ;;
-esac
-mapin() { if [ "$1" = env ]; then echo "$ENV128"; else echo "$1"; fi; }
+timing_inputs "$MAPS"
 
 # One measurement: the -v lines of REPS runs (stderr), output discarded.
 meas() { # algo map e threads reps

@@ -36,18 +36,7 @@ fi
 DEV=$(head -n 1 "$OUT/devices.txt" | cut -f 3)
 DEVTYPE=$(head -n 1 "$OUT/devices.txt" | cut -f 4)
 
-if [ "$MODE" = tiny ]; then
-	FRP=$TOP/data/default.frd
-else
-	FRP=$CACHE/default-all.frp
-	cached "$FRP" frd-prep -q -a all "$TOP/data/default.frd"
-fi
-ENVB=$(basename "$ENVMAP")
-ENV128=$CACHE/${ENVB%.*}-128-equirect.exr
-case " $MAPS " in
-*" env "*) cached "$ENV128" imap convert -q -s 128x128 --equirect --format exr "$ENVMAP" - ;;
-esac
-mapin() { if [ "$1" = env ]; then echo "$ENV128"; else echo "$1"; fi; }
+timing_inputs "$MAPS"
 
 # Warm the runtime's kernel cache (not timed anyway: -v reports the build
 # apart).

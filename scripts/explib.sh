@@ -86,6 +86,30 @@ par_run() {
 	fi
 }
 
+# timing_inputs MAPS: the inputs of the timing experiments.  FRP is the
+# default matrix prepared with frd-prep -a all (tiny mode: the .frd
+# itself; only the untimed setup differs), ENV128 the environment map at
+# 128x128 with the sin(theta) weight when MAPS holds env; mapin NAME gives
+# the map argument for a name of MAPS.
+timing_inputs() {
+	if [ "$MODE" = tiny ]; then
+		FRP=$TOP/data/default.frd
+	else
+		FRP=$CACHE/default-all.frp
+		cached "$FRP" frd-prep -q -a all "$TOP/data/default.frd"
+	fi
+	envb=$(basename "$ENVMAP")
+	ENV128=$CACHE/${envb%.*}-128-equirect.exr
+	case " $1 " in
+	*" env "*) cached "$ENV128" imap convert -q -s 128x128 --equirect \
+	    --format exr "$ENVMAP" - ;;
+	esac
+}
+
+mapin() {
+	if [ "$1" = env ]; then echo "$ENV128"; else echo "$1"; fi
+}
+
 # gp_png FILE: the preamble of a gnuplot script writing a PNG.
 gp_png() {
 	echo "set terminal png size 900,600 font ',10'"
