@@ -90,9 +90,7 @@ for jit in none random; do
 done
 # points per set, for the stats
 npts() { # SIZE JIT
-	for seed in $(seq 1 $SETS); do
-		od -A n -t u8 -j 24 -N 8 "$(pts $1 $2 $seed)"
-	done | awk '{ t += $1; c++ } END { printf "%.1f", t / c }'
+	mean_points $(for seed in $(seq 1 $SETS); do pts $1 $2 $seed; done)
 }
 # peak of the radial mean beyond 0.3 spacings, mean anisotropy of the
 # annuli from 0.5 to 6 spacings, RMS difference to dart's radial mean

@@ -110,6 +110,14 @@ mapin() {
 	if [ "$1" = env ]; then echo "$ENV128"; else echo "$1"; fi
 }
 
+# mean_points FILE...: the mean point count of binary .pts files, from
+# their headers (the count is the 8 bytes at offset 24).
+mean_points() {
+	for f in "$@"; do
+		od -A n -t u8 -j 24 -N 8 "$f"
+	done | awk '{ t += $1; c++ } END { printf "%.1f", t / c }'
+}
+
 # gp_png FILE: the preamble of a gnuplot script writing a PNG.
 gp_png() {
 	echo "set terminal png size 900,600 font ',10'"
