@@ -38,6 +38,8 @@ PROGS = imap frd-gen frd-prep frs-sample pts-render ref-sample hsw-sample \
 LIBSRC = $(wildcard src/lib/*.c)
 LIBCXXSRC = $(wildcard src/lib/*.cc)
 TESTSRC = $(wildcard test/test_*.c)
+# test/hard/: the numerical hard cases gathered in one suite.
+HARDSRC = $(wildcard test/hard/test_*.c)
 REFSRC = $(wildcard test/ref_*.c)
 
 # Variant: rel (bin/, portable), san (sanitizers, for make check),
@@ -65,7 +67,7 @@ CLSRC = $(wildcard cl/*.cl)
 LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o) \
 	$(LIBCXXSRC:src/lib/%.cc=$(B)/lib/%.o) $(B)/gen/clsrc.o
 PROGBIN = $(PROGS:%=$(B)/bin/%)
-TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%)
+TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%) $(HARDSRC:test/hard/%.c=$(B)/test/%)
 REFBIN = $(REFSRC:test/%.c=$(B)/test/%)
 
 .PHONY: all progs tests check demo bench install uninstall clean deps \
@@ -116,6 +118,10 @@ $(B)/bin/%: $(B)/obj/%.o $(B)/libfrs.a
 $(B)/test/%.o: test/%.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -Wno-conversion -c $< -o $@
+
+$(B)/test/%.o: test/hard/%.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Itest -Wno-conversion -c $< -o $@
 
 $(B)/test/test_%: $(B)/test/test_%.o $(B)/libfrs.a
 	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) $(CMOCKA_LIBS) -o $@
@@ -197,7 +203,14 @@ $(B)/fuzz/%.o: test/fuzz/%.c test/fuzz/fuzz.h
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
 $(B)/fuzz/replay_%: $(B)/fuzz/fuzz_%.o $(B)/fuzz/replay.o $(B)/libfrs.a
-	$(CC) $(ALL_LDFLAGS) $^ $(LIBS) -o $@
+	$(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(B)/libfrs.a $(LIBS) -o $@
+
+# fuzz_opts runs every program's main: the programs again, main renamed
+# main_NAME (dashes as underscores).
+$(B)/fuzz/prog/%.o: src/%.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -Dmain=main_$(subst -,_,$*) -c $< -o $@
+$(B)/fuzz/replay_opts: $(PROGS:%=$(B)/fuzz/prog/%.o)
 
 # The library again, built by clang with the fuzzer's instrumentation.
 fuzz-lib:
@@ -211,8 +224,13 @@ build/fuzz/fuzz_%: test/fuzz/fuzz_%.c test/fuzz/fuzz.h build/fuzz/libfrs.a
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
 	    $(CFLAGS) -c $< -o $@.o
-	$(FUZZ_CXX) -fsanitize=fuzzer $(FUZZ_SAN) $@.o build/fuzz/libfrs.a \
-	    $(LIBS) -o $@
+	$(FUZZ_CXX) -fsanitize=fuzzer $(FUZZ_SAN) $@.o \
+	    $(filter build/fuzz/prog/%.o,$^) build/fuzz/libfrs.a $(LIBS) -o $@
+build/fuzz/fuzz_opts: $(PROGS:%=build/fuzz/prog/%.o)
+build/fuzz/prog/%.o: src/%.c build/fuzz/libfrs.a
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
+	    $(PATHS) $(CFLAGS) -Dmain=main_$(subst -,_,$*) -c $< -o $@
 
 fuzz: $(FUZZ_TARGETS:%=fuzz-%)
 

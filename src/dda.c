@@ -356,6 +356,7 @@ int main(int argc, char **argv)
 
 	cli_init("dda", usage);
 	parse(argc, argv, &o);
+	cli_options_done();
 	for (int i = optind; i < argc; i++)
 		if (pt_sets_add(&ps, argv[i], o.per) < 0)
 			cli_die_lib();

@@ -239,6 +239,7 @@ int main(int argc, char **argv)
 	if (!have_shapes)
 		o.shapes = DISC_SHAPES;
 	o.seed = cli.seed;
+	cli_options_done();
 
 	for (int i = optind; i < argc; i++)
 		if (pt_sets_add(&ps, argv[i], per) < 0)

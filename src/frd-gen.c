@@ -13,6 +13,7 @@
 #include "frdgencl.h"
 #include "frdio.h"
 #include "frdq.h"
+#include "mem.h"
 #include "ocl.h"
 #include "outfile.h"
 #include "parse.h"
@@ -141,13 +142,11 @@ static int quality(const char *path)
 
 static void check_memory(const struct frdgen_params *pr)
 {
-	long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
-	uint64_t need = frdgen_memory(pr);
+	char what[64];
 
-	if (pages > 0 && psize > 0 && need > (uint64_t)pages * (uint64_t)psize)
-		cli_die("-s %ux%ux%u: needs %.1f GiB of memory, this machine "
-		    "has %.1f GiB", pr->w, pr->h, pr->d, (double)need / (1 << 30),
-		    (double)pages * (double)psize / (1 << 30));
+	snprintf(what, sizeof what, "-s %ux%ux%u", pr->w, pr->h, pr->d);
+	if (mem_check(what, frdgen_memory(pr), 1) < 0)
+		cli_die_lib();
 }
 
 int main(int argc, char **argv)
@@ -203,6 +202,7 @@ int main(int argc, char **argv)
 			    0.0, 1e9);
 			break;
 		case OPT_QUALITY:
+			cli_options_done();
 			return quality(optarg);
 		case OPT_DEVICE:
 			use_cl = cli_device(optarg, &dev);
@@ -229,6 +229,7 @@ int main(int argc, char **argv)
 	if (use_cl && pr.checkpoint != NULL)
 		cli_usage_error("--checkpoint: not available with --device cl");
 	check_memory(&pr);
+	cli_options_done();
 	/* The device before the output: a missing one fails at once. */
 	if (use_cl && ocl_open(&o, dev) < 0)
 		cli_die_lib();

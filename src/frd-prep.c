@@ -95,6 +95,7 @@ int main(int argc, char **argv)
 	if (argc - optind > 1)
 		cli_usage_error("one input at most");
 	in = optind < argc ? argv[optind] : "-";
+	cli_options_done();
 	minmap = strcmp(algo, "all") == 0 || strcmp(algo, "stack") == 0 ||
 	    strcmp(algo, "level1") == 0 || strcmp(algo, "level2") == 0;
 	sorted = strcmp(algo, "all") == 0 || strcmp(algo, "sorted") == 0;

@@ -13,6 +13,7 @@
 #include "frs.h"
 #include "frscl.h"
 #include "imap.h"
+#include "mem.h"
 #include "outfile.h"
 #include "progress.h"
 #include "ptsio.h"
@@ -275,19 +276,18 @@ static int put_set(struct pts_writer *w, const struct opts *o,
 	return 0;
 }
 
-/* Refuse counts whose elements could not be stored (12 bytes each, and
- * 16 per point written) before spending the time. */
+/* Refuse counts whose elements could not be stored (12 bytes each, with
+ * a tenth more for the count's spread) before spending the time. */
 static void check_room(const struct opts *o)
 {
-	long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
-	double need = 12.0 * 1.1 * (double)o->steps[o->nsteps - 1];
+	uint64_t n = o->steps[o->nsteps - 1];
+	char what[64];
 
-	if (!o->count_only && pages > 0 && psize > 0 &&
-	    need > (double)pages * (double)psize)
-		cli_die("-n %llu: storing the samples needs %.0f GiB, this "
-		    "machine has %.0f GiB (--count-only counts them)",
-		    (unsigned long long)o->steps[o->nsteps - 1], need / (1 << 30),
-		    (double)pages * (double)psize / (1 << 30));
+	snprintf(what, sizeof what, "-n %llu (--count-only counts them)",
+	    (unsigned long long)n);
+	if (!o->count_only && mem_check(what, n + n / 10,
+	    sizeof(struct frs_elem)) < 0)
+		cli_die_lib();
 }
 
 static int needs_minmap(int a)
@@ -425,6 +425,7 @@ int main(int argc, char **argv)
 	cli_init("frs-sample", usage);
 	parse_opts(argc, argv, &o);
 	check_room(&o);
+	cli_options_done();
 	if (o.matrix == NULL)
 		o.matrix = default_matrix();
 	if (imap_load(o.imp ? o.imp : "const", o.w, o.h, o.flags, &map) < 0)
@@ -480,8 +481,11 @@ int main(int argc, char **argv)
 				goto fail;
 		}
 		if (o.count_only) {
-			if (fprintf(of.fp, "%llu\n", (unsigned long long)r.count) < 0)
+			if (fprintf(of.fp, "%llu\n",
+			    (unsigned long long)r.count) < 0) {
+				frs_fail_errno("%s: write error", of.name);
 				goto fail;
+			}
 		} else if (put_set(&w, &o, &s, &map, &r) < 0) {
 			goto fail;
 		}

@@ -13,6 +13,7 @@
 #include "hsw.h"
 #include "hswcl.h"
 #include "imap.h"
+#include "mem.h"
 #include "ocl.h"
 #include "outfile.h"
 #include "par.h"
@@ -129,6 +130,7 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 /* The input set: 2n doubles. */
 static double *make_input(struct opts *o)
 {
+	char what[48];
 	double *pts;
 
 	if (o->file != NULL) {
@@ -165,11 +167,9 @@ static double *make_input(struct opts *o)
 		pts_free(&p);
 		return pts;
 	}
-	if (o->n > SIZE_MAX / 16)
-		cli_die("-n %llu: too many points", (unsigned long long)o->n);
-	pts = malloc((size_t)o->n * 2 * sizeof *pts);
-	if (pts == NULL)
-		cli_die("-n %llu: out of memory", (unsigned long long)o->n);
+	snprintf(what, sizeof what, "-n %llu", (unsigned long long)o->n);
+	if ((pts = mem_calloc(what, o->n, 2 * sizeof *pts)) == NULL)
+		cli_die_lib();
 	if (o->input == INPUT_DART) {
 		uint64_t placed;
 		if (o->n > REFSAMP_MAX_N) {
@@ -241,6 +241,7 @@ int main(int argc, char **argv)
 
 	cli_init("hsw-sample", usage);
 	parse_opts(argc, argv, &o);
+	cli_options_done();
 	if (o.cl && ocl_open(&dev, o.cl_index) < 0)
 		cli_die_lib();
 	if (imap_load(o.imp, o.w, o.h, 0, &map) < 0)

@@ -2,6 +2,7 @@
  * imap: make, convert and describe importance maps.
  */
 #define _POSIX_C_SOURCE 200809L
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -164,6 +165,7 @@ static int cmd_gen(int argc, char **argv)
 		cli_usage_error("'%s' is not a procedural map (const, blob, "
 		    "ramp, aniso, sky)", argv[0]);
 	format_of(cli.out);	/* fail on a bad name before any work */
+	cli_options_done();
 	if (imap_load(argv[0], opt_w, opt_h, opt_flags | IMAP_ALLOW_ZERO,
 	    &m) < 0)
 		cli_die_lib();
@@ -182,6 +184,7 @@ static int cmd_convert(int argc, char **argv)
 	else if (argc != 1 || out == NULL)
 		cli_usage_error("convert takes IN and OUT");
 	format_of(out);
+	cli_options_done();
 	if (imap_load(argv[0], opt_w, opt_h, opt_flags | IMAP_ALLOW_ZERO,
 	    &m) < 0)
 		cli_die_lib();
@@ -198,6 +201,7 @@ static int cmd_info(int argc, char **argv)
 
 	if (argc != 1)
 		cli_usage_error("info takes one FILE or SPEC");
+	cli_options_done();
 	name = strcmp(argv[0], "-") == 0 ? "<stdin>" : argv[0];
 	/* Statistics of the source as it is, negatives included. */
 	if (imap_load_raw(argv[0], opt_w, opt_h, opt_flags, &m) < 0)
@@ -221,7 +225,7 @@ static int cmd_info(int argc, char **argv)
 	    s.min_positive : 0.0);
 	imap_free(&m);
 	if (fflush(stdout) != 0 || ferror(stdout))
-		cli_die("<stdout>: write error");
+		cli_die("<stdout>: write error: %s", strerror(errno));
 	return 0;
 }
 
@@ -233,6 +237,12 @@ int main(int argc, char **argv)
 
 	snprintf(help, sizeof help, "%s%s", usage, imap_spec_help());
 	cli_init("imap", help);
+	/* Defaults set here, not only by static zeroing, so that main can
+	 * run again in one process (test/fuzz/fuzz_opts.c). */
+	opt_w = opt_h = 0;
+	opt_flags = 0;
+	opt_format = FMT_NONE;
+	opt_log = 0;
 	if (argc < 2)
 		cli_usage_error("no command (gen, info or convert)");
 	cmd = argv[1];

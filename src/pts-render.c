@@ -151,6 +151,7 @@ int main(int argc, char **argv)
 
 	/* The output first: a bad path fails before any work, and standard
 	 * output is never a terminal. */
+	cli_options_done();
 	if (outfile_open(&o, cli.out, 1) < 0)
 		cli_die_lib();
 

@@ -11,6 +11,7 @@
 
 #include "cli.h"
 #include "imap.h"
+#include "mem.h"
 #include "outfile.h"
 #include "progress.h"
 #include "ptsio.h"
@@ -88,6 +89,7 @@ int main(int argc, char **argv)
 	const char *imp = NULL;
 	uint32_t mw = 0, mh = 0;
 	double *xy;
+	char what[48];
 	struct frs_imap map;
 	int have_map = 0;
 	struct outfile of;
@@ -147,8 +149,10 @@ int main(int argc, char **argv)
 		    (unsigned long long)refsamp_grid_side(n),
 		    (unsigned long long)refsamp_grid_side(n),
 		    (unsigned long long)n);
-	if ((xy = malloc(2 * count * sizeof *xy)) == NULL)
-		cli_die("no memory for %llu points", (unsigned long long)count);
+	cli_options_done();
+	snprintf(what, sizeof what, "%llu points", (unsigned long long)count);
+	if ((xy = mem_calloc(what, count, 2 * sizeof *xy)) == NULL)
+		cli_die_lib();
 	if (kind == REFSAMP_RELAXED_DART) {
 		if (imap_load(imp ? imp : "const", mw, mh, flags, &map) < 0) {
 			free(xy);
@@ -166,13 +170,17 @@ int main(int argc, char **argv)
 		cli_die("%s", frs_errmsg());
 	}
 	if (placed < count) {
-		if (sets > 1)
+		if (sets > 1) {
+			free(xy);
+			if (have_map)
+				imap_free(&map);
 			cli_die("dart, seed %llu: placed only %llu of %llu points "
 			    "(%llu candidates in a row rejected); with --sets "
 			    "every set needs them all: raise --max-failures or "
 			    "lower -n", (unsigned long long)cli.seed,
 			    (unsigned long long)placed, (unsigned long long)count,
 			    (unsigned long long)maxf);
+		}
 		cli_note("dart: placed %llu of %llu points (%llu candidates in a "
 		    "row rejected)", (unsigned long long)placed,
 		    (unsigned long long)count, (unsigned long long)maxf);
@@ -189,10 +197,12 @@ int main(int argc, char **argv)
 			if (make_set(kind, n, seed, maxf, have_map ? &map : NULL,
 			    xy, &placed) < 0) {
 				outfile_abort(&of);
+				free(xy);
 				cli_die("%s", frs_errmsg());
 			}
 			if (placed < count) {
 				outfile_abort(&of);
+				free(xy);
 				cli_die("dart, seed %llu: placed only %llu of %llu "
 				    "points (%llu candidates in a row rejected); "
 				    "with --sets every set needs them all: raise "
@@ -219,5 +229,8 @@ int main(int argc, char **argv)
 	return 0;
 fail:
 	outfile_abort(&of);
+	if (have_map)
+		imap_free(&map);
+	free(xy);
 	cli_die_lib();
 }

@@ -164,17 +164,17 @@ for opts in "-i blob -n 3000" "-i ramp -n 2000 -a naive --jitter random -T" \
     "-i blob -n 5000 --count-only"; do
 	# shellcheck disable=SC2086
 	frs-sample -m "$M" $opts -q -o "$T/cpu.out" &&
-	    nolsan frs-sample -m "$M" $opts -q --device cl -o "$T/cl.out" &&
+	    cl_run frs-sample -m "$M" $opts -q --device cl -o "$T/cl.out" &&
 	    cmp -s "$T/cpu.out" "$T/cl.out" && ok "--device cl $opts: the same bytes" ||
 	    nok "--device cl $opts: the same bytes"
 done
 frs-sample -m "$M" -i blob -n 3000 -a stack -T -o "$T/stack.txt"
-nolsan frs-sample -m "$M" -i blob -n 3000 -a flat1 --device cl:0 -T -o "$T/flat1.txt"
+cl_run frs-sample -m "$M" -i blob -n 3000 -a flat1 --device cl:0 -T -o "$T/flat1.txt"
 cmp -s "$T/stack.txt" "$T/flat1.txt" && ok "-a flat1 gives Stack's bytes" ||
     nok "-a flat1 gives Stack's bytes"
-nolsan frs-sample --list-devices >"$T/dev.txt" && head -n 1 "$T/dev.txt" | grep -q '^cl:0' &&
+cl_run frs-sample --list-devices >"$T/dev.txt" && head -n 1 "$T/dev.txt" | grep -q '^cl:0' &&
     ok "--list-devices starts with cl:0" || nok "--list-devices starts with cl:0"
-expect_fail "--device cl:63" 1 "cl:63" "$T/o.pts" nolsan frs-sample -m "$M" -n 10 --device cl:63 -o "$T/o.pts"
+expect_fail "--device cl:63" 1 "cl:63" "$T/o.pts" cl_run frs-sample -m "$M" -n 10 --device cl:63 -o "$T/o.pts"
 expect_fail "--device gpu" 2 "--device" "$T/o.pts" frs-sample -m "$M" -n 10 --device gpu -o "$T/o.pts"
 expect_fail "-a flat1 without OpenCL" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 -o "$T/o.pts"
 expect_fail "-a flat1 --device cpu" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 --device cpu -o "$T/o.pts"

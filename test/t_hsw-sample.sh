@@ -83,28 +83,28 @@ expect_fail "write to /dev/full" 1 "/dev/full" - \
     hsw-sample -i blob -n 100000 -o /dev/full
 
 # --device: OpenCL gives the CPU's bytes; device listing and errors.
-if nolsan hsw-sample --list-devices >"$T/dev" 2>"$T/err"; then
+if cl_run hsw-sample --list-devices >"$T/dev" 2>"$T/err"; then
 	head -n 1 "$T/dev" | grep -q '^cl:0' && ok "--list-devices: cl:0 first" ||
 	    nok "--list-devices: cl:0 first"
 	for m in blob sky:sun=1e4 ramp:angle=30; do
 		hsw-sample -i "$m" -n 30000 --device cpu -o "$T/cpu.pts"
-		nolsan hsw-sample -i "$m" -n 30000 --device cl -o "$T/cl.pts"
+		cl_run hsw-sample -i "$m" -n 30000 --device cl -o "$T/cl.pts"
 		cmp -s "$T/cpu.pts" "$T/cl.pts" &&
 		    ok "--device cl, $m: the CPU's bytes" ||
 		    nok "--device cl, $m: the CPU's bytes"
 	done
 	hsw-sample -i blob -s 100x60 -n 5000 --input dart -S 4 --pdf -T \
 	    --device cpu -o "$T/cpu.txt"
-	nolsan hsw-sample -i blob -s 100x60 -n 5000 --input dart -S 4 --pdf -T \
+	cl_run hsw-sample -i blob -s 100x60 -n 5000 --input dart -S 4 --pdf -T \
 	    --device cl:0 -o "$T/cl.txt"
 	cmp -s "$T/cpu.txt" "$T/cl.txt" &&
 	    ok "--device cl:0, 100x60, dart, --pdf -T: the CPU's text" ||
 	    nok "--device cl:0, 100x60, dart, --pdf -T: the CPU's text"
-	nolsan hsw-sample -i blob -n 1000 --device cl -v -o /dev/null 2>"$T/v"
+	cl_run hsw-sample -i blob -n 1000 --device cl -v -o /dev/null 2>"$T/v"
 	grep -q 'kernel' "$T/v" && ok "-v --device cl: device times" ||
 	    nok "-v --device cl: device times"
 	expect_fail "--device cl:63" 1 "cl:63" "$T/d63.pts" \
-	    nolsan hsw-sample -i blob -n 10 --device cl:63 -o "$T/d63.pts"
+	    cl_run hsw-sample -i blob -n 10 --device cl:63 -o "$T/d63.pts"
 else
 	grep -q 'no platform' "$T/err" && ok "--list-devices without a platform" ||
 	    nok "--list-devices: $(head -n 1 "$T/err")"

@@ -5,6 +5,7 @@
 #include "par.h"
 #include "parse.h"
 
+#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,9 +15,54 @@
 struct cli_common cli = { NULL, 0, 1, 0, 0, 0 };
 const char *cli_prog = "frs";
 static const char *usage_text = "";
+jmp_buf *cli_trap;
+/* An error was reported: check_stdout stays quiet (see there). */
+static int reported;
+
+/* exit(status), or the fuzz target's longjmp (see cli.h). */
+static noreturn void cli_exit(int status)
+{
+	if (cli_trap != NULL)
+		longjmp(*cli_trap, status + 1);
+	exit(status);
+}
+
+/*
+ * Reports, --help and --version go to standard output through stdio,
+ * which exit() flushes with the error ignored: a full disk or a closed
+ * pipe (SIGPIPE ignored) would lose them and still give status 0.  So
+ * check at exit, as gnulib's close_stdout does (output files check their
+ * own errors in outfile.c).  After a reported error the buffer may still
+ * hold what failed; a second message would only repeat it.
+ */
+static void check_stdout(void)
+{
+	if (reported)
+		return;
+	errno = 0;
+	if (fflush(stdout) != 0 || ferror(stdout)) {
+		fprintf(stderr, "%s: <stdout>: write error: %s\n", cli_prog,
+		    errno ? strerror(errno) : "input/output error");
+		outfile_cleanup_all();
+		_exit(1);
+	}
+}
+
+void cli_options_done(void)
+{
+	if (cli_trap != NULL)
+		longjmp(*cli_trap, CLI_PARSED);
+}
 
 void cli_init(const char *prog, const char *usage)
 {
+	static int registered;
+
+	if (!registered) {
+		registered = 1;
+		atexit(check_stdout);
+	}
+	cli = (struct cli_common){ NULL, 0, 1, 0, 0, 0 };
 	cli_prog = prog;
 	usage_text = usage;
 	cli.threads = cli_ncpu();
@@ -43,7 +89,7 @@ noreturn void cli_usage(int status)
 	} else {
 		fputs(usage_text, fp);
 	}
-	exit(status);
+	cli_exit(status);
 }
 
 noreturn void cli_usage_error(const char *fmt, ...)
@@ -68,7 +114,8 @@ noreturn void cli_die(const char *fmt, ...)
 	va_end(ap);
 	fputc('\n', stderr);
 	outfile_cleanup_all();
-	exit(1);
+	reported = 1;
+	cli_exit(1);
 }
 
 noreturn void cli_die_lib(void)
@@ -96,7 +143,7 @@ int cli_common_opt(int c, const char *arg)
 		cli_usage(0);
 	case OPT_VERSION:
 		printf("%s (frs) %s\n", cli_prog, FRS_VERSION);
-		exit(0);
+		cli_exit(0);
 	case 'o':
 		cli.out = arg;
 		return 1;
@@ -166,9 +213,10 @@ int cli_device(const char *arg, int *index)
 
 noreturn void cli_list_devices(void)
 {
+	cli_options_done();	/* the fuzz target stops here */
 	if (ocl_list(stdout) < 0)
 		cli_die("--list-devices: %s", frs_errmsg());
 	if (fflush(stdout) == EOF || ferror(stdout))
 		cli_die("--list-devices: write error");
-	exit(0);
+	cli_exit(0);
 }

@@ -9,6 +9,7 @@
 #define FRS_CLI_H
 
 #include <getopt.h>
+#include <setjmp.h>
 #include <stdint.h>
 #include <stdnoreturn.h>
 
@@ -73,6 +74,16 @@ int cli_device(const char *arg, int *index);
 /* --list-devices: print the OpenCL devices and exit 0, or exit 1 with
  * the reason (no platform, no writable PoCL cache). */
 noreturn void cli_list_devices(void);
+
+/* Called by every program when its options are parsed and checked,
+ * before any file is opened or work begins.  Normally it does nothing.
+ * The option-parsing fuzz target (test/fuzz/fuzz_opts.c) sets cli_trap:
+ * then every exit above longjmps there with status + 1 instead, and
+ * cli_options_done (and --list-devices) with CLI_PARSED, so that a
+ * program's option parsing runs many times in one process. */
+extern jmp_buf *cli_trap;
+#define CLI_PARSED 1000
+void cli_options_done(void);
 
 /* Number of online processors. */
 int cli_ncpu(void);

@@ -22,11 +22,13 @@
  */
 #include "imap.h"
 #include "err.h"
+#include "mem.h"
 #include "exrcxx.h"
 
 #include <OpenEXRConfig.h>
 #include <openexr.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -226,11 +228,9 @@ static int alloc_planes(struct reader *r, uint64_t cw, uint64_t ch)
 
 	r->plane_cap = (size_t)n;
 	for (int k = 0; k < r->nwant; k++) {
-		r->plane[k] = malloc((size_t)n * 4);
+		r->plane[k] = mem_calloc("image chunk", n, 4);
 		if (r->plane[k] == NULL)
-			return frs_fail("%s: out of memory for a %llu x %llu "
-			    "chunk", r->name, (unsigned long long)cw,
-			    (unsigned long long)ch);
+			return frs_fail_context(r->name);
 	}
 	return 0;
 }
@@ -693,6 +693,32 @@ static int decodes_back(const struct mem_sink *sink, const char *name,
 	return same;
 }
 
+/*
+ * The file holds floats: a finite value beyond FLT_MAX would be written as
+ * infinity, a file that every reader refuses, and a map whose positive
+ * values all lie below half the smallest float would be written as zero
+ * everywhere.  NaN and infinity are written as they are.
+ */
+static int fits_float(const struct frs_imap *m, const char *name)
+{
+	double top = 0.0;
+
+	for (size_t i = 0; i < (size_t)m->w * m->h; i++) {
+		double v = m->v[i];
+		if (isfinite(v) && fabs(v) > FLT_MAX)
+			return frs_fail("%s: pixel (%zu, %zu) is %g, beyond the "
+			    "largest float (%g) that OpenEXR holds", name,
+			    i % m->w, i / m->w, v, (double)FLT_MAX);
+		if (isfinite(v) && v > top)
+			top = v;
+	}
+	if (top > 0.0 && (float)top == 0.0f)
+		return frs_fail("%s: the largest value, %g, is below the "
+		    "smallest float that OpenEXR holds: the map would be zero "
+		    "everywhere", name, top);
+	return 0;
+}
+
 int imap_write_exr(FILE *fp, const char *name, const struct frs_imap *m)
 {
 	struct mem_sink sink;
@@ -702,6 +728,8 @@ int imap_write_exr(FILE *fp, const char *name, const struct frs_imap *m)
 	    m->h > IMAP_MAX_SIDE)
 		return frs_fail("%s: cannot write a %ux%u map", name, m->w,
 		    m->h);
+	if (fits_float(m, name) < 0)
+		return -1;
 	/* The ZIP encoder of OpenEXRCore 3.1.5 corrupts some chunks (a
 	 * 128x128 Gaussian blob reads back with NaNs), so every file is
 	 * decoded again, and written uncompressed if it does not match. */

@@ -2,6 +2,7 @@
 #include "frdgen.h"
 #include "frdgenint.h"
 #include "err.h"
+#include "mem.h"
 #include "io.h"
 #include "outfile.h"
 #include "par.h"
@@ -341,6 +342,10 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
 	g->ntx = (g->sz.w + g->tx - 1) / g->tx;
 	g->nty = (g->sz.h + g->ty - 1) / g->ty;
 	g->ntz = (g->sz.d + g->tz - 1) / g->tz;
+	/* Everything together, before anything exists: an impossible size
+	 * is refused with the figure it needs. */
+	if (mem_check("matrix generation", frdgen_memory(pr), 1) < 0)
+		return -1;
 	frdgen_describe(pr, params, sizeof params);
 	if (frd_alloc(out, pr->dims, g->sz.w, g->sz.h, g->sz.d, params) < 0)
 		return -1;

@@ -2,7 +2,9 @@
 #include "frdio.h"
 #include "err.h"
 #include "io.h"
+#include "mem.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -10,6 +12,7 @@ int frd_alloc(struct frs_matrix *m, unsigned dims, uint32_t w, uint32_t h,
     uint32_t d, const char *params)
 {
 	uint64_t n = (uint64_t)w * h * d;
+	char what[64];
 
 	memset(m, 0, sizeof *m);
 	if (dims < 2 || dims > 3 || w == 0 || h == 0 || d == 0 ||
@@ -19,12 +22,13 @@ int frd_alloc(struct frs_matrix *m, unsigned dims, uint32_t w, uint32_t h,
 	if (n > FRD_MAX_ELEMS || n > SIZE_MAX / sizeof(uint32_t))
 		return frs_fail("matrix of %llu elements is too large",
 		    (unsigned long long)n);
-	m->params = strdup(params ? params : "");
-	m->v = calloc((size_t)n, sizeof *m->v);
-	if (m->v == NULL || m->params == NULL) {
+	snprintf(what, sizeof what, dims == 2 ? "%ux%u matrix" :
+	    "%ux%ux%u matrix", w, h, d);
+	if ((m->v = mem_calloc(what, n, sizeof *m->v)) == NULL)
+		return -1;
+	if ((m->params = strdup(params ? params : "")) == NULL) {
 		frd_free(m);
-		return frs_fail("out of memory for a matrix of %llu elements",
-		    (unsigned long long)n);
+		return frs_fail("out of memory for a matrix's parameters");
 	}
 	m->dims = dims;
 	m->w = w;

@@ -2,6 +2,7 @@
 #include "frs.h"
 #include "err.h"
 #include "io.h"
+#include "mem.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -66,9 +67,9 @@ int frp_write(FILE *fp, const char *name, const struct frs_matrix *m,
 static int read_u32s(FILE *fp, const char *name, uint32_t **out, size_t n,
     const char *what)
 {
-	*out = malloc((n ? n : 1) * sizeof **out);
+	*out = mem_calloc(what, n, sizeof **out);
 	if (*out == NULL)
-		return frs_fail("%s: out of memory", name);
+		return frs_fail_context(name);
 	if (io_read_exact(fp, name, *out, n * 4, what) < 0) {
 		free(*out);
 		*out = NULL;

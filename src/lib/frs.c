@@ -46,12 +46,30 @@ static unsigned log2u64(uint64_t v)
 
 /* ---- setup (Listing 5.1) ------------------------------------------ */
 
+/* Mean and maximum of the map times the power of two iscale (exact for
+ * every value that stays normal), compensated sum (Neumaier). */
+static void scaled_stats(const struct frs_imap *map, double iscale,
+    double *mean, double *max)
+{
+	uint64_t n = (uint64_t)map->w * map->h;
+	double sum = 0.0, c = 0.0, mx = 0.0;
+
+	for (uint64_t i = 0; i < n; i++) {
+		double v = map->v[i] * iscale, t = sum + v;
+		c += fabs(sum) >= fabs(v) ? (sum - t) + v : (v - t) + sum;
+		sum = t;
+		mx = v > mx ? v : mx;
+	}
+	*mean = (sum + c) / (double)n;
+	*max = mx;
+}
+
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed)
 {
 	struct frs_imap_stats st;
 	uint32_t small, large;
-	double a, wmin;
+	double a, wmin, imax;
 	uint64_t ns = 1, ux, uy;
 
 	memset(s, 0, sizeof *s);
@@ -65,6 +83,18 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 	if (!(st.max > 0.0) || st.nonfinite || st.negatives)
 		return frs_fail("importance must be finite, non-negative and not "
 		    "zero everywhere");
+	/* Only ratios matter: scale an extreme map by a power of two, so
+	 * that tau and the mean stay finite; the thresholds of every other
+	 * map are those of the map as it is. */
+	s->iscale = 1.0;
+	s->imean = st.mean;
+	imax = st.max;
+	if (!(st.max >= 0x1p-900 && st.max <= 0x1p900)) {
+		int e = -ilogb(st.max);	/* 1074 for the smallest denormal */
+		s->iscale = ldexp(1.0, e < 1023 ? e : 1023);
+		scaled_stats(map, s->iscale, &s->imean, &imax);
+		st.mean = s->imean / s->iscale;
+	}
 	s->iw = map->w;
 	s->ih = map->h;
 	s->mw = mat->w;
@@ -77,7 +107,7 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 	small = map->w < map->h ? map->w : map->h;
 	large = map->w < map->h ? map->h : map->w;
 	a = (double)large / small;
-	wmin = ceil(sigma * sqrt((double)n * st.max / (st.mean * a)));
+	wmin = ceil(sigma * sqrt((double)n * imax / (s->imean * a)));
 	while ((double)small * (double)ns < wmin) {
 		ns <<= 1;
 		if (ns > ((uint64_t)1 << 31))
@@ -103,7 +133,7 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 double frs_tau(const struct frs_setup *s, uint64_t n)
 {
 	return (double)n * (double)s->mw * (double)s->mh /
-	    ((double)s->sw * (double)s->sh * s->mean);
+	    ((double)s->sw * (double)s->sh * s->imean);
 }
 
 double frs_unique(const struct frs_setup *s)
@@ -494,7 +524,8 @@ static int rows_task(void *ctx, uint64_t b, uint64_t e)
 				if (!(imp > 0.0))
 					continue;	/* zero importance costs nothing */
 				for (unsigned k = 0; k < run->nsteps; k++)
-					make_thr(&px.th[k], run->tau[k] * imp, s->rule);
+					make_thr(&px.th[k], run->tau[k] *
+					    (imp * s->iscale), s->rule);
 				px.lim = px.th[run->nsteps - 1].lim;
 				if (px.lim == 0)
 					continue;

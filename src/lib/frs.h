@@ -54,6 +54,11 @@ struct frs_setup {
 	uint64_t seed;
 	enum frs_rule rule;
 	enum frs_jitter jitter;
+	/* Thresholds are T = tau * (I * iscale): iscale is a power of two, 1
+	 * unless the map's maximum lies outside [2^-900, 2^900], where tau
+	 * (denormal maps) or the mean (a sum past DBL_MAX) would overflow;
+	 * imean is the mean of I * iscale, which tau uses. */
+	double iscale, imean;
 };
 
 /* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */

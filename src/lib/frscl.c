@@ -475,7 +475,7 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 		uint64_t *t = thr + c.nact * rec;
 		if (!(imp > 0.0))
 			continue;
-		if (pixel_record(t, tau, nsteps, imp, s->rule) == 0)
+		if (pixel_record(t, tau, nsteps, imp * s->iscale, s->rule) == 0)
 			continue;
 		t[0] = (i % s->iw) | (i / s->iw) << 32;
 		c.nact++;

@@ -29,12 +29,41 @@ static uint64_t morton(uint32_t x, uint32_t y)
 	return r;
 }
 
+/*
+ * The power of two that the leaves are scaled by: 1 unless the largest
+ * value lies outside [2^-900, 2^900], where the sums would overflow (a
+ * map of 1e308) or the splits u (a + b) < a would round on a few bits of
+ * denormals; only ratios matter, and scaling by a power of two keeps
+ * them.  -1 with a message naming the first non-finite pixel.
+ */
+static int leaf_scale(const struct frs_imap *m, double *scale)
+{
+	double mx = 0.0;
+	int e;
+
+	for (uint64_t i = 0; i < (uint64_t)m->w * m->h; i++) {
+		double v = m->v[i];
+		if (!isfinite(v))
+			return frs_fail("pixel (%llu, %llu) is %s",
+			    (unsigned long long)(i % m->w),
+			    (unsigned long long)(i / m->w),
+			    isnan(v) ? "NaN" : "infinite");
+		mx = v > mx ? v : mx;
+	}
+	*scale = 1.0;
+	if (mx > 0.0 && !(mx >= 0x1p-900 && mx <= 0x1p900)) {
+		e = -ilogb(mx);
+		*scale = ldexp(1.0, e < 1023 ? e : 1023);
+	}
+	return 0;
+}
+
 int hsw_build(struct hsw_tree *t, const struct frs_imap *m)
 {
 	uint32_t side = m->w > m->h ? m->w : m->h;
 	unsigned L = 0;
 	uint64_t leaves, off;
-	double *s;
+	double *s, scale = 1.0;
 
 	memset(t, 0, sizeof *t);
 	while (((uint64_t)1 << L) < side)
@@ -44,6 +73,8 @@ int hsw_build(struct hsw_tree *t, const struct frs_imap *m)
 		return frs_fail("map %ux%u: the padded %llux%llu quadtree is "
 		    "too large (at most 2^28 pixels)", m->w, m->h,
 		    (unsigned long long)1 << L, (unsigned long long)1 << L);
+	if (leaf_scale(m, &scale) < 0)
+		return -1;
 	s = calloc((size_t)level_offset(L + 1), sizeof *s);
 	if (s == NULL)
 		return frs_fail("quadtree: out of memory");
@@ -51,7 +82,7 @@ int hsw_build(struct hsw_tree *t, const struct frs_imap *m)
 	for (uint32_t j = 0; j < m->h; j++)
 		for (uint32_t i = 0; i < m->w; i++) {
 			double v = m->v[(uint64_t)j * m->w + i];
-			s[off + morton(i, j)] = v > 0 ? v : 0;
+			s[off + morton(i, j)] = v > 0 ? v * scale : 0;
 		}
 	for (unsigned l = L; l > 0; l--) {
 		uint64_t lo = level_offset(l), up = level_offset(l - 1);
@@ -70,7 +101,7 @@ int hsw_build(struct hsw_tree *t, const struct frs_imap *m)
 	t->size = (uint32_t)1 << L;
 	t->levels = L;
 	t->sum = s;
-	t->total = s[0];
+	t->total = s[0] / scale;	/* the map's own sum */
 	return 0;
 }
 

@@ -28,12 +28,15 @@ struct hsw_tree {
 				 * children of node k of a level are 4k..4k+3
 				 * of the next (top-left, top-right,
 				 * bottom-left, bottom-right) */
-	double total;		/* the root: sum of the map */
+	double total;		/* sum of the map (the root / the scale) */
 };
 
 /* Largest padded square (pixels) hsw_build accepts. */
 #define HSW_MAX_PIXELS ((uint64_t)1 << 28)
 
+/* Negative values count as zero; NaN and infinity are refused, naming
+ * the pixel.  A map whose maximum lies outside [2^-900, 2^900] is scaled
+ * by a power of two in the tree (sum); total stays the map's sum. */
 int hsw_build(struct hsw_tree *t, const struct frs_imap *m);
 void hsw_free(struct hsw_tree *t);
 

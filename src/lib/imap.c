@@ -2,8 +2,10 @@
 #include "imap.h"
 #include "err.h"
 #include "io.h"
+#include "mem.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -12,6 +14,8 @@
 
 int imap_alloc(struct frs_imap *m, uint32_t w, uint32_t h)
 {
+	char what[48];
+
 	memset(m, 0, sizeof *m);
 	if (w == 0 || h == 0)
 		return frs_fail("impossible map size %ux%u", w, h);
@@ -20,9 +24,9 @@ int imap_alloc(struct frs_imap *m, uint32_t w, uint32_t h)
 		return frs_fail("map size %ux%u is too large (at most %u on a "
 		    "side and %llu pixels)", w, h, IMAP_MAX_SIDE,
 		    (unsigned long long)IMAP_MAX_PIXELS);
-	m->v = calloc((size_t)w * h, sizeof *m->v);
-	if (m->v == NULL)
-		return frs_fail("out of memory for a %ux%u map", w, h);
+	snprintf(what, sizeof what, "%ux%u map", w, h);
+	if ((m->v = mem_calloc(what, (uint64_t)w * h, sizeof *m->v)) == NULL)
+		return -1;
 	m->w = w;
 	m->h = h;
 	return 0;

@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "io.h"
 #include "err.h"
+#include "mem.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -75,10 +76,10 @@ int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len)
 				free(b);
 				return frs_fail("%s: file too large", name);
 			}
-			nb = realloc(b, cap * 2);
+			nb = mem_realloc(name, b, cap, 2);
 			if (nb == NULL) {
 				free(b);
-				return frs_fail("%s: out of memory", name);
+				return -1;
 			}
 			b = nb;
 			cap *= 2;

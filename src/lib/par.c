@@ -164,8 +164,12 @@ int frs_team_run(uint64_t n, uint64_t chunk,
 	atomic_store(&team.busy, team.size);
 	atomic_fetch_add_explicit(&team.gen, 1, memory_order_release);
 	run(&j, 1);
-	while (atomic_load_explicit(&team.busy, memory_order_acquire) > 0)
-		;
+	/* Spin a while, then let the core go: on a busy machine the worker
+	 * we wait for may need this very core to finish. */
+	for (unsigned spins = 0; atomic_load_explicit(&team.busy,
+	    memory_order_acquire) > 0; )
+		if (++spins > 2000)
+			sched_yield();
 	return atomic_load(&j.failed) ? -1 : 0;
 }
 

@@ -1,7 +1,9 @@
 #define _POSIX_C_SOURCE 200809L
 #include "imap.h"
 #include "err.h"
+#include "mem.h"
 
+#include <errno.h>
 #include <math.h>
 #include <png.h>
 #include <stdlib.h>
@@ -14,6 +16,7 @@ struct pngctx {
 	size_t len, pos;
 	char msg[256];
 	char warning[256];	/* libpng explains some errors only here */
+	int ours;		/* the error is ours (e.g. the memory ceiling) */
 };
 
 static void on_error(png_structp png, png_const_charp msg)
@@ -24,6 +27,14 @@ static void on_error(png_structp png, png_const_charp msg)
 	else
 		snprintf(c->msg, sizeof c->msg, "%s", msg);
 	png_longjmp(png, 1);
+}
+
+/* Leave libpng with our own error (already recorded), not a PNG fault. */
+static void our_error(png_structp png)
+{
+	struct pngctx *c = png_get_error_ptr(png);
+	c->ours = 1;
+	png_error(png, frs_errmsg());
 }
 
 static void on_warning(png_structp png, png_const_charp msg)
@@ -74,7 +85,7 @@ static void rows_to_map(png_bytep *rows, int channels, int depth, int srgb,
 int imap_read_png_mem(const unsigned char *buf, size_t len, const char *name,
     int srgb, struct frs_imap *m)
 {
-	struct pngctx ctx = { buf, len, 0, "", "" };
+	struct pngctx ctx = { buf, len, 0, "", "", 0 };
 	png_structp png;
 	png_infop info = NULL;
 	png_bytep *volatile rows = NULL;
@@ -94,7 +105,8 @@ int imap_read_png_mem(const unsigned char *buf, size_t len, const char *name,
 		free(rows);
 		free(data);
 		imap_free(m);
-		return frs_fail("%s: bad PNG: %s", name, ctx.msg);
+		return frs_fail(ctx.ours ? "%s: %s" : "%s: bad PNG: %s", name,
+		    ctx.msg);
 	}
 	png_set_read_fn(png, &ctx, read_mem);
 	/* Our own limits, checked before any allocation. */
@@ -119,7 +131,9 @@ int imap_read_png_mem(const unsigned char *buf, size_t len, const char *name,
 	if (channels != 1 && channels != 3)
 		png_error(png, "unexpected channel layout");
 	if (imap_alloc(m, w, h) < 0)
-		png_error(png, frs_errmsg());
+		our_error(png);
+	if (mem_check("decoded image", png_get_rowbytes(png, info), h) < 0)
+		our_error(png);
 	data = malloc(png_get_rowbytes(png, info) * h);
 	rows = malloc(h * sizeof *rows);
 	if (data == NULL || rows == NULL)
@@ -165,7 +179,7 @@ static void write_rows(png_structp png, const struct frs_imap *m,
 
 int imap_write_png16(FILE *fp, const char *name, const struct frs_imap *m)
 {
-	struct pngctx ctx = { NULL, 0, 0, "", "" };
+	struct pngctx ctx = { NULL, 0, 0, "", "", 0 };
 	png_structp png;
 	png_infop info = NULL;
 	png_bytep volatile row = NULL;
@@ -176,9 +190,18 @@ int imap_write_png16(FILE *fp, const char *name, const struct frs_imap *m)
 		png_destroy_write_struct(&png, NULL);
 		return frs_fail("%s: out of memory", name);
 	}
+	errno = 0;
 	if (setjmp(png_jmpbuf(png))) {
+		/* A failed write reaches us as libpng's bare "Write Error":
+		 * the reason (a full disk, a closed pipe) is in errno. */
+		int saved = errno;
+
 		png_destroy_write_struct(&png, &info);
 		free(row);
+		if (ferror(fp)) {
+			errno = saved;
+			return frs_fail_errno("%s: write error", name);
+		}
 		return frs_fail("%s: cannot write PNG: %s", name, ctx.msg);
 	}
 	png_init_io(png, fp);

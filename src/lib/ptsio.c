@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "ptsio.h"
 #include "err.h"
+#include "mem.h"
 #include "io.h"
 
 #include <ctype.h>
@@ -375,9 +376,10 @@ int pts_read(const char *path, struct frs_points *p)
 	while ((rc = pts_reader_next(&r, rec)) == 1) {
 		if (p->n == cap || p->x == NULL) {
 			size_t ncap = cap > p->n ? cap : (cap ? cap * 2 : 1024);
-			double *nx = realloc(p->x, ncap * ncol * sizeof *nx);
+			double *nx = mem_realloc(r.name, p->x, ncap * ncol,
+			    sizeof *nx);
 			if (nx == NULL) {
-				rc = frs_fail("%s: out of memory", r.name);
+				rc = -1;
 				break;
 			}
 			p->x = nx;

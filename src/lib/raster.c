@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "raster.h"
 #include "err.h"
+#include "mem.h"
 
 #include <errno.h>
 #include <math.h>
@@ -22,9 +23,8 @@ int raster_alloc(struct frs_raster *r, uint32_t w, uint32_t h,
 		    "%u, at most %llu pixels)", w, h, IMAP_MAX_SIDE,
 		    (unsigned long long)IMAP_MAX_PIXELS);
 	n = (size_t)w * h * channels;
-	r->px = malloc(n);
-	if (r->px == NULL)
-		return frs_fail("raster: out of memory for %ux%u pixels", w, h);
+	if ((r->px = mem_calloc("raster", n, 1)) == NULL)
+		return -1;
 	memset(r->px, 255, n);
 	r->w = w;
 	r->h = h;

@@ -7,6 +7,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "spectrum.h"
 #include "err.h"
+#include "mem.h"
 #include "fft.h"
 #include "par.h"
 #include "raster.h"
@@ -32,10 +33,9 @@ int spec_img_alloc(struct spec_img *im, uint32_t half, double scale)
 	if (half > SPEC_MAX_HALF)
 		return frs_fail("spectrum image: half side %u is more than "
 		    "%u", half, SPEC_MAX_HALF);
-	im->v = calloc(side * side, sizeof *im->v);
+	im->v = mem_calloc("spectrum image", side * side, sizeof *im->v);
 	if (im->v == NULL)
-		return frs_fail("spectrum image: no memory for %zu x %zu "
-		    "pixels", side, side);
+		return -1;
 	return 0;
 }
 
