@@ -6,7 +6,9 @@
 #   make demo       install missing packages, build, run the pipeline,
 #                   pictures in results/
 #   make bench      benchmarks, built with -O3 -march=native
-#   make install    PREFIX=/usr/local DESTDIR= MANDIR=$(PREFIX)/share/man
+#   make install    PREFIX=/usr/local DESTDIR= (also BINDIR LIBDIR INCDIR
+#                   MANDIR PKGCONFIGDIR): programs, frs.h,
+#                   libfrs.a, libfrs.so, frs.pc, man pages; make uninstall
 
 PREFIX ?= /usr/local
 BINDIR ?= $(PREFIX)/bin
@@ -40,7 +42,8 @@ LIBCXXSRC = $(wildcard src/lib/*.cc)
 TESTSRC = $(wildcard test/test_*.c)
 # test/hard/: the numerical hard cases gathered in one suite.
 HARDSRC = $(wildcard test/hard/test_*.c)
-REFSRC = $(wildcard test/ref_*.c)
+# The benchmarks' reference implementations and drivers (test/bench_*.c).
+REFSRC = $(wildcard test/ref_*.c) $(wildcard test/bench_*.c)
 
 # Variant: rel (bin/, portable), san (sanitizers, for make check),
 # bench (-O3 -march=native, for make bench).
@@ -58,8 +61,9 @@ endif
 # Where frs-sample finds the default matrix: the source tree, then the
 # installed copy.
 PATHS = -DFRS_SRCDATA='"$(CURDIR)/data"' -DFRS_SHAREDIR='"$(PREFIX)/share/frs"'
-ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) $(PATHS) \
-	$(CFLAGS) -MMD -MP
+# src/lib/frs.h is the public header (libfrs(3)); frscore.h the internal one.
+ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
+	$(PATHS) $(CFLAGS) -MMD -MP
 ALL_LDFLAGS = $(VFLAGS) $(LDFLAGS)
 LIBS = $(PKG_LIBS) -lm -lpthread
 
@@ -70,13 +74,14 @@ PROGBIN = $(PROGS:%=$(B)/bin/%)
 TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%) $(HARDSRC:test/hard/%.c=$(B)/test/%)
 REFBIN = $(REFSRC:test/%.c=$(B)/test/%)
 
-.PHONY: all progs tests check demo bench install uninstall clean deps \
+.PHONY: all progs libs tests check demo bench install uninstall clean deps \
 	lint-man experiments
 .DELETE_ON_ERROR:
 .SECONDARY:
 
 all: progs
 ifeq ($(VARIANT),rel)
+all: libs
 	@mkdir -p bin
 	@for p in $(PROGS); do cp -f $(B)/bin/$$p bin/$$p.tmp && \
 	    mv -f bin/$$p.tmp bin/$$p; done
@@ -102,10 +107,45 @@ $(B)/gen/clsrc.c: $(CLSRC) scripts/cl2c.sh
 $(B)/gen/clsrc.o: $(B)/gen/clsrc.c
 	$(CC) $(CSTD) $(VFLAGS) $(CFLAGS) -c $< -o $@
 
+ALL_CXXFLAGS = -std=c++14 -Wall -Wextra $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
+	$(CXXFLAGS) -MMD -MP
+
 $(B)/lib/%.o: src/lib/%.cc
 	@mkdir -p $(@D)
-	$(CXX) -std=c++14 -Wall -Wextra $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
-	    $(CXXFLAGS) -MMD -MP -c $< -o $@
+	$(CXX) $(ALL_CXXFLAGS) -c $< -o $@
+
+# The shared library (make libs; part of make all in the rel variant):
+# the library's sources again as position-independent objects in
+# $(B)/pic/, exporting only the API of src/lib/frs.h (the version script
+# src/lib/libfrs.map).  The programs and tests link libfrs.a, which keeps
+# the internal symbols they use.
+SOMAJOR = 1
+SONAME = libfrs.so.$(SOMAJOR)
+SOFILE = libfrs.so.$(SOMAJOR).0.0
+PICOBJ = $(LIBOBJ:$(B)/%=$(B)/pic/%)
+SOMAP = src/lib/libfrs.map
+
+libs: $(B)/libfrs.a $(B)/$(SOFILE) $(B)/$(SONAME) $(B)/libfrs.so
+
+# -z defs: every symbol the library uses must come from $(LIBS).
+$(B)/$(SOFILE): $(PICOBJ) $(SOMAP)
+	$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--version-script=$(SOMAP) \
+	    -Wl,-z,defs $(ALL_LDFLAGS) $(PICOBJ) $(LIBS) -o $@
+
+$(B)/$(SONAME) $(B)/libfrs.so: $(B)/$(SOFILE)
+	ln -sf $(SOFILE) $@
+
+$(B)/pic/lib/%.o: src/lib/%.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -fPIC -c $< -o $@
+
+$(B)/pic/lib/%.o: src/lib/%.cc
+	@mkdir -p $(@D)
+	$(CXX) $(ALL_CXXFLAGS) -fPIC -c $< -o $@
+
+$(B)/pic/gen/clsrc.o: $(B)/gen/clsrc.c
+	@mkdir -p $(@D)
+	$(CC) $(CSTD) $(VFLAGS) $(CFLAGS) -fPIC -c $< -o $@
 
 $(B)/obj/%.o: src/%.c
 	@mkdir -p $(@D)
@@ -126,11 +166,16 @@ $(B)/test/%.o: test/hard/%.c
 $(B)/test/test_%: $(B)/test/test_%.o $(B)/libfrs.a
 	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) $(CMOCKA_LIBS) -o $@
 
-# Reference implementations for the benchmarks (test/ref_*.c).
+# Reference implementations for the benchmarks (test/ref_*.c), and
+# drivers (test/bench_*.c).
 $(B)/test/ref_%: $(B)/test/ref_%.o $(B)/libfrs.a
 	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
 
--include $(LIBOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d) $(REFBIN:=.d)
+$(B)/test/bench_%: $(B)/test/bench_%.o $(B)/libfrs.a
+	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
+
+-include $(LIBOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d) $(REFBIN:=.d) \
+	$(PICOBJ:.o=.d)
 
 deps:
 	@sh scripts/deps.sh
@@ -157,19 +202,42 @@ experiments: deps
 lint-man:
 	mandoc -Tlint -Wwarning man/man*/*.[0-9]
 
-install: all
-	mkdir -p $(DESTDIR)$(BINDIR) $(DESTDIR)$(MANDIR)/man1 \
-	    $(DESTDIR)$(MANDIR)/man5 $(DESTDIR)$(MANDIR)/man7
-	for p in $(PROGS); do install -m 755 bin/$$p $(DESTDIR)$(BINDIR)/; done
-	mkdir -p $(DESTDIR)$(PREFIX)/share/frs
+# frs.pc: src/lib/frs.pc.in with the install paths, libdir and includedir
+# written relative to ${prefix} where they lie under it (so that
+# pkg-config --define-prefix can move them).
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+VERSION := $(shell sed -n 's/^\#define FRS_VERSION "\(.*\)"$$/\1/p' \
+	src/lib/cli.h)
+PCSUBST = -e 's|@PREFIX@|$(PREFIX)|g' \
+	-e 's|@LIBDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))|g' \
+	-e 's|@INCDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(INCDIR))|g' \
+	-e 's|@VERSION@|$(VERSION)|g'
+INSTLIB = $(DESTDIR)$(LIBDIR)
+
+# From $(B), not bin/: make VARIANT=rel B=DIR install needs no other build.
+install: progs libs
+	mkdir -p $(DESTDIR)$(BINDIR) $(DESTDIR)$(INCDIR) $(INSTLIB) \
+	    $(DESTDIR)$(PKGCONFIGDIR) $(DESTDIR)$(PREFIX)/share/frs
+	for p in $(PROGS); do \
+	    install -m 755 $(B)/bin/$$p $(DESTDIR)$(BINDIR)/ || exit 1; done
 	install -m 644 data/default.frd $(DESTDIR)$(PREFIX)/share/frs/
-	for s in 1 3 5 7; do for f in man/man$$s/*.$$s; do \
-	    [ -f "$$f" ] && install -m 644 "$$f" $(DESTDIR)$(MANDIR)/man$$s/; \
-	    done; done; true
+	install -m 644 src/lib/frs.h $(DESTDIR)$(INCDIR)/
+	install -m 644 $(B)/libfrs.a $(INSTLIB)/
+	install -m 755 $(B)/$(SOFILE) $(INSTLIB)/
+	ln -sf $(SOFILE) $(INSTLIB)/$(SONAME)
+	ln -sf $(SOFILE) $(INSTLIB)/libfrs.so
+	sed $(PCSUBST) src/lib/frs.pc.in >$(DESTDIR)$(PKGCONFIGDIR)/frs.pc
+	for s in 1 3 5 7; do mkdir -p $(DESTDIR)$(MANDIR)/man$$s && \
+	    for f in man/man$$s/*.$$s; do [ ! -f "$$f" ] || \
+	    install -m 644 "$$f" $(DESTDIR)$(MANDIR)/man$$s/ || exit 1; \
+	    done; done
 
 uninstall:
 	for p in $(PROGS); do rm -f $(DESTDIR)$(BINDIR)/$$p; done
 	rm -f $(DESTDIR)$(PREFIX)/share/frs/default.frd
+	rm -f $(DESTDIR)$(INCDIR)/frs.h $(INSTLIB)/libfrs.a \
+	    $(INSTLIB)/$(SOFILE) $(INSTLIB)/$(SONAME) $(INSTLIB)/libfrs.so \
+	    $(DESTDIR)$(PKGCONFIGDIR)/frs.pc
 	for s in 1 3 5 7; do for f in man/man$$s/*.$$s; do \
 	    rm -f $(DESTDIR)$(MANDIR)/man$$s/$${f##*/}; done; done
 
@@ -222,15 +290,16 @@ fuzz-build: fuzz-lib
 
 build/fuzz/fuzz_%: test/fuzz/fuzz_%.c test/fuzz/fuzz.h build/fuzz/libfrs.a
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
-	    $(CFLAGS) -c $< -o $@.o
+	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib \
+	    $(PKG_CFLAGS) $(CFLAGS) -c $< -o $@.o
 	$(FUZZ_CXX) -fsanitize=fuzzer $(FUZZ_SAN) $@.o \
 	    $(filter build/fuzz/prog/%.o,$^) build/fuzz/libfrs.a $(LIBS) -o $@
 build/fuzz/fuzz_opts: $(PROGS:%=build/fuzz/prog/%.o)
 build/fuzz/prog/%.o: src/%.c build/fuzz/libfrs.a
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
-	    $(PATHS) $(CFLAGS) -Dmain=main_$(subst -,_,$*) -c $< -o $@
+	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib \
+	    $(PKG_CFLAGS) $(PATHS) $(CFLAGS) -Dmain=main_$(subst -,_,$*) \
+	    -c $< -o $@
 
 fuzz: $(FUZZ_TARGETS:%=fuzz-%)
 

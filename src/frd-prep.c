@@ -8,7 +8,7 @@
 
 #include "cli.h"
 #include "frdio.h"
-#include "frs.h"
+#include "frscore.h"
 #include "outfile.h"
 
 static const char usage[] =

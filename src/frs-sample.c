@@ -8,9 +8,10 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "api.h"
 #include "cli.h"
 #include "frdio.h"
-#include "frs.h"
+#include "frscore.h"
 #include "frscl.h"
 #include "imap.h"
 #include "mem.h"
@@ -246,36 +247,6 @@ static void print_setup(const struct frs_setup *s, const char *mname)
 	    s->level0);
 }
 
-static int put_elem(struct pts_writer *w, const struct opts *o,
-    const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_elem *e)
-{
-	double rec[4];
-	unsigned k = 2;
-
-	frs_point(s, e, &rec[0], &rec[1]);
-	if (o->pdf)
-		rec[k++] = map->v[(uint64_t)(e->y / s->ns) * s->iw + e->x / s->ns] /
-		    s->mean;
-	if (o->nsteps > 1)
-		rec[k++] = (double)(e->step + 1);
-	return pts_writer_put(w, rec);
-}
-
-/* Write one set's points: progressive steps in turn, each in map order. */
-static int put_set(struct pts_writer *w, const struct opts *o,
-    const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_result *r)
-{
-	for (uint32_t step = 0; step < o->nsteps; step++)
-		for (uint64_t c = 0; c < r->nchunk; c++)
-			for (uint64_t i = 0; i < r->chunk[c].n; i++)
-				if (r->chunk[c].e[i].step == step &&
-				    put_elem(w, o, s, map, &r->chunk[c].e[i]) < 0)
-					return -1;
-	return 0;
-}
-
 /* Refuse counts whose elements could not be stored (12 bytes each, with
  * a tenth more for the count's spread) before spending the time. */
 static void check_room(const struct opts *o)
@@ -290,119 +261,239 @@ static void check_room(const struct opts *o)
 		cli_die_lib();
 }
 
+/* ---- OpenCL: what the public API does not cover -------------------- */
+
+static int put_elem(struct pts_writer *w, const struct opts *o,
+    const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_elem *e)
+{
+	double rec[4];
+	unsigned k = 2;
+
+	frs_point(s, e, &rec[0], &rec[1]);
+	if (o->pdf)
+		rec[k++] = api_pdf(s, map, e);
+	if (o->nsteps > 1)
+		rec[k++] = (double)(e->step + 1);
+	return pts_writer_put(w, rec);
+}
+
+/* Write one set's points: progressive steps in turn, each in map order
+ * (the order of frs_draw_each). */
+static int put_set(struct pts_writer *w, const struct opts *o,
+    const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_result *r)
+{
+	for (uint32_t step = 0; step < o->nsteps; step++)
+		for (uint64_t c = 0; c < r->nchunk; c++)
+			for (uint64_t i = 0; i < r->chunk[c].n; i++)
+				if (r->chunk[c].e[i].step == step &&
+				    put_elem(w, o, s, map, &r->chunk[c].e[i]) < 0)
+					return -1;
+	return 0;
+}
+
 static int needs_minmap(int a)
 {
 	return a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2 ||
 	    a == FRSCL_FLAT1;
 }
 
-static uint32_t sorted_block(const struct frs_setup *s)
+/* One set on the device: the sampler's setup and prepared matrix. */
+static void sample_cl(struct ocl *ocl, const struct opts *o,
+    const frs_sampler *smp, uint64_t seed, struct frs_setup *s,
+    struct frs_result *r)
 {
-	uint32_t b = s->ns < s->mw ? s->ns : s->mw;
-	return b < s->mh ? b : s->mh;
-}
+	struct frs_prep view;
 
-/* Setup, then the matrix and what the implementation needs: from a .frp,
- * from the .frp beside a .frd when it was made from that matrix, or
- * prepared here. */
-static void setup(const struct opts *o, const struct frs_imap *map,
-    const struct frs_matrix *mat, struct frs_setup *s)
-{
-	if (frs_setup(s, map, mat, o->steps[o->nsteps - 1], o->sigma,
-	    cli.seed) < 0)
+	if (api_setup(smp, o->steps[o->nsteps - 1], seed, s) < 0)
 		cli_die("%s", frs_errmsg());
-	s->rule = o->rule;
-	s->jitter = o->jitter;
+	if (api_mask_prep(smp->mask, needs_minmap(o->algo),
+	    o->algo == FRS_SORTED ? api_sorted_block(s) : 0, &view) < 0)
+		cli_die("%s: %s", o->matrix, frs_errmsg());
+	if (frs_sample_cl(ocl, s, &smp->map, &view, o->algo, o->steps,
+	    o->nsteps, o->count_only, r) < 0)
+		cli_die("%s", frs_errmsg());
 }
 
-static const char *sibling_frp(const char *path)
-{
-	static char buf[4096];
-	const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
-	size_t len = dot && (!slash || dot > slash) ? (size_t)(dot - path) :
-	    strlen(path);
+/* ---- output ------------------------------------------------------ */
 
-	if (len + 5 > sizeof buf)
-		return NULL;
-	memcpy(buf, path, len);
-	strcpy(buf + len, ".frp");
-	return buf;
+struct out {
+	const struct opts *o;
+	struct outfile of;
+	struct pts_writer w;
+	int open;
+	uint64_t n;		/* samples of the set being drawn */
+	int noted;		/* the mask's note was printed */
+	double t;		/* seconds spent writing */
+	struct frscl_times ct;	/* OpenCL phases, summed over the sets */
+};
+
+/* Open the output at the first set: with one set its count goes into
+ * the header; more sets announce 0 (unknown), which the writer replaces
+ * by the total when the output can seek. */
+static int out_begin(struct out *u, uint64_t count)
+{
+	const struct opts *o = u->o;
+
+	if (u->open)
+		return 0;
+	if (outfile_open(&u->of, cli.out, !o->count_only && !cli.text) < 0)
+		cli_die_lib();
+	u->open = 1;
+	if (!o->count_only && pts_writer_begin(&u->w, u->of.fp, u->of.name, 2,
+	    (unsigned)o->pdf + (o->nsteps > 1), o->sets == 1 ? count : 0,
+	    cli.text) < 0)
+		return -1;
+	return 0;
 }
 
-static void load_matrix(const struct opts *o, const struct frs_imap *map,
-    struct frs_matrix *mat, struct frs_prep *prep, struct frs_setup *s)
+/* frs_draw_each's callback: records x, y [, pdf] [, step + 1]. */
+static int out_batch(void *ctx, const double *xy, const double *pdf,
+    const uint32_t *step, size_t k, uint64_t total)
 {
-	const char *frp = NULL;
-	int have_minmap, have_block;
+	struct out *u = ctx;
+	double t0 = progress_now(), rec[4];
+	int rc = out_begin(u, total);
 
-	if (frp_is(o->matrix) == 1) {
-		frp = o->matrix;
+	u->n = total;
+
+	for (size_t i = 0; rc == 0 && i < k; i++) {
+		unsigned c = 2;
+		rec[0] = xy[2 * i];
+		rec[1] = xy[2 * i + 1];
+		if (pdf != NULL)
+			rec[c++] = pdf[i];
+		if (step != NULL)
+			rec[c++] = (double)(step[i] + 1);
+		rc = pts_writer_put(&u->w, rec);
+	}
+	u->t += progress_now() - t0;
+	return rc;
+}
+
+/* ---- loading --------------------------------------------------------- */
+
+static frs_mask *load_mask(const char *path)
+{
+	frs_mask *mk;
+	frs_error err;
+
+	if (frs_mask_load(&mk, path, &err) != FRS_OK)
+		cli_die("%s", err.message);
+	if (frs_mask_note(mk) != NULL)
+		frs_warn("%s", frs_mask_note(mk));
+	return mk;
+}
+
+static frs_sampler *make_sampler(const struct opts *o, const frs_mask *mk,
+    const struct frs_imap *map)
+{
+	static const enum frs_algorithm alg[] = {
+		[FRS_NAIVE] = FRS_ALG_NAIVE, [FRS_STACK] = FRS_ALG_STACK,
+		[FRS_LEVEL1] = FRS_ALG_LEVEL1, [FRS_LEVEL2] = FRS_ALG_LEVEL2,
+		[FRS_SORTED] = FRS_ALG_SORTED
+	};
+	struct frs_options opt;
+	frs_sampler *smp;
+	frs_error err;
+
+	frs_options_init(&opt);
+	opt.sigma = o->sigma;
+	opt.algorithm = o->algo < FRS_NALGO ? alg[o->algo] : FRS_ALG_SORTED;
+	opt.jitter = o->jitter == FRS_JITTER_HALTON ? FRS_JIT_HALTON :
+	    o->jitter == FRS_JITTER_RANDOM ? FRS_JIT_RANDOM : FRS_JIT_NONE;
+	opt.rule = o->rule == FRS_THESIS ? FRS_RULE_THESIS :
+	    FRS_RULE_UNBIASED;
+	opt.threads = cli.threads;
+	if (frs_sampler_new_f64(&smp, mk, map->v, map->w, map->h, 0, &opt,
+	    &err) != FRS_OK)
+		cli_die("%s", err.message);
+	return smp;
+}
+
+/* The setup of set 0, checked before any work; the repetition warning. */
+static void first_setup(const struct opts *o, const frs_sampler *smp,
+    struct frs_setup *s0)
+{
+	if (api_setup(smp, o->steps[o->nsteps - 1], cli.seed, s0) < 0)
+		cli_die("%s", frs_errmsg());
+	if ((double)s0->n > frs_unique(s0))
+		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
+		    "its patterns (it gives %.0f without repetition, thesis "
+		    "Table 4.1)", (unsigned long long)s0->n, s0->mw, s0->mh,
+		    s0->sigma, frs_unique(s0));
+}
+
+/* One set through the public API (CPU) or the device; its count. */
+static uint64_t one_set(struct ocl *ocl, const struct opts *o,
+    const frs_sampler *smp, uint64_t seed, struct out *u)
+{
+	frs_error err;
+	uint64_t count = 0;
+
+	if (o->cl) {
+		struct frs_setup s;
+		struct frs_result r;
+		double t0;
+		struct frscl_times ct;
+		sample_cl(ocl, o, smp, seed, &s, &r);
+		frscl_last_times(&ct);
+		u->ct.build += ct.build;
+		u->ct.upload += ct.upload;
+		u->ct.kernel += ct.kernel;
+		u->ct.download += ct.download;
+		t0 = progress_now();
+		if (out_begin(u, r.count) < 0 || (o->count_only ? 0 :
+		    put_set(&u->w, o, &s, &smp->map, &r)) < 0) {
+			frs_result_free(&r);
+			return UINT64_MAX;
+		}
+		u->t += progress_now() - t0;
+		count = r.count;
+		frs_result_free(&r);
+	} else if (o->count_only) {
+		if (frs_count(smp, o->steps[o->nsteps - 1], seed, &count,
+		    &err) != FRS_OK)
+			cli_die("%s", err.message);
 	} else {
-		const char *sib;
-		uint32_t w, h;
-		uint64_t sum;
-		if (frd_read(o->matrix, mat) < 0)
-			cli_die_lib();
-		sib = sibling_frp(o->matrix);
-		if (sib && strcmp(sib, o->matrix) && frp_is(sib) == 1 &&
-		    frp_info(sib, &w, &h, &sum) == 0) {
-			if (sum == frd_checksum(mat))
-				frp = sib;
-			else
-				frs_warn("%s is stale (made from another matrix than "
-				    "%s); ignored", sib, o->matrix);
-		}
-		if (frp != NULL)
-			frd_free(mat);
+		int rc;
+		u->n = 0;
+		rc = frs_draw_each(smp, o->steps, o->nsteps, seed, o->pdf,
+		    out_batch, u, &err);
+		if (rc == FRS_E_CALLBACK)
+			return UINT64_MAX;	/* the writer's message */
+		if (rc != FRS_OK)
+			cli_die("%s", err.message);
+		count = u->n;
 	}
-	if (frp != NULL) {
-		uint32_t w, h;
-		uint64_t sum;
-		struct frs_matrix shape = { 2, 0, 0, 1, 0, NULL, NULL };
-		if (frp_info(frp, &w, &h, &sum) < 0)
-			cli_die_lib();
-		shape.w = w;
-		shape.h = h;
-		setup(o, map, &shape, s);
-		if (frp_read(frp, mat, prep, sorted_block(s)) < 0) {
-			if (frp == o->matrix)
-				cli_die_lib();
-			/* A damaged .frp beside the matrix: use the matrix. */
-			frs_warn("%s; ignored", frs_errmsg());
-			frp = NULL;
-			if (frd_read(o->matrix, mat) < 0)
-				cli_die_lib();
-		}
+	if (out_begin(u, count) < 0)
+		return UINT64_MAX;
+	if (o->count_only && fprintf(u->of.fp, "%llu\n",
+	    (unsigned long long)count) < 0) {
+		frs_fail_errno("%s: write error", u->of.name);
+		return UINT64_MAX;
 	}
-	if (frp == NULL) {
-		setup(o, map, mat, s);
-		memset(prep, 0, sizeof *prep);
-	}
-	have_minmap = prep->nlev > 1;
-	have_block = prep->block == sorted_block(s);
-	if ((needs_minmap(o->algo) && !have_minmap) ||
-	    (o->algo == FRS_SORTED && !have_block)) {
-		frs_prep_free(prep);
-		if (frs_prepare(prep, mat, needs_minmap(o->algo),
-		    o->algo == FRS_SORTED ? sorted_block(s) : 0) < 0)
-			cli_die("%s: %s", o->matrix, frs_errmsg());
-	}
-	prep->m = mat;
+	return count;
 }
 
-/* The setup of set "set": the first one's with the seed S + set (only
- * the window offset and the seed of jitter and coins change). */
-static void reseed(const struct opts *o, const struct frs_imap *map,
-    struct frs_setup *s, uint64_t set)
+static void report(const struct opts *o, const struct frs_setup *s0,
+    uint64_t total, double tsetup, double tthr, const struct out *u,
+    const struct ocl *ocl)
 {
-	struct frs_matrix shape = { 2, s->mw, s->mh, 1, 0, NULL, NULL };
-
-	shape.n = (size_t)s->mw * s->mh;
-	if (frs_setup(s, map, &shape, o->steps[o->nsteps - 1], o->sigma,
-	    cli.seed + set) < 0)
-		cli_die("%s", frs_errmsg());
-	s->rule = o->rule;
-	s->jitter = o->jitter;
+	print_setup(s0, o->matrix);
+	if (o->sets > 1)
+		fprintf(stderr, "frs-sample: %llu sets, seeds %llu to %llu\n",
+		    (unsigned long long)o->sets, (unsigned long long)cli.seed,
+		    (unsigned long long)(cli.seed + o->sets - 1));
+	fprintf(stderr, "frs-sample: %llu samples (%s); setup %.6f s, "
+	    "thresholding %.6f s, output %.6f s\n", (unsigned long long)total,
+	    frscl_algo_name(o->algo), tsetup, tthr, u->t);
+	if (o->cl)
+		fprintf(stderr, "frs-sample: OpenCL device %s: build %.6f s, "
+		    "to the device %.6f s, kernels %.6f s, back and offsets "
+		    "%.6f s\n", ocl->name, u->ct.build, u->ct.upload,
+		    u->ct.kernel, u->ct.download);
 }
 
 int main(int argc, char **argv)
@@ -410,17 +501,14 @@ int main(int argc, char **argv)
 	struct opts o = { NULL, NULL, { 0 }, 0, FRS_SORTED, 8.0,
 	    FRS_JITTER_NONE, FRS_UNBIASED, 0, 0, 0, 0, 0, 0, 1, 0, -1 };
 	struct ocl ocl = { NULL, NULL, NULL, NULL, "", 0 };
-	struct frs_matrix mat;
 	struct frs_imap map;
-	struct frs_setup s, s0;
-	struct frs_prep prep;
-	struct frs_result r;
-	struct outfile of = { NULL, NULL, NULL, NULL };
-	struct pts_writer w;
+	struct frs_setup s0;
+	struct out u = { 0 };
 	struct progress pr;
+	frs_mask *mask;
+	frs_sampler *smp;
 	uint64_t total = 0;
-	double t0, t1, t2, tsetup, tthr = 0.0, tout = 0.0;
-	struct frscl_times ctimes = { 0.0, 0.0, 0.0, 0.0 };
+	double t0, t1, tsetup;
 
 	cli_init("frs-sample", usage);
 	parse_opts(argc, argv, &o);
@@ -433,100 +521,44 @@ int main(int argc, char **argv)
 	if (o.cl && ocl_open(&ocl, o.dev) < 0)
 		cli_die("--device: %s", frs_errmsg());
 	t0 = progress_now();
-	load_matrix(&o, &map, &mat, &prep, &s);
-	s0 = s;
-	if ((double)s.n > frs_unique(&s))
-		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
-		    "its patterns (it gives %.0f without repetition, thesis "
-		    "Table 4.1)", (unsigned long long)s.n, s.mw, s.mh, s.sigma,
-		    frs_unique(&s));
+	mask = load_mask(o.matrix);
+	u.noted = frs_mask_note(mask) != NULL;
+	smp = make_sampler(&o, mask, &map);
+	imap_free(&map);
+	first_setup(&o, smp, &s0);
+	tsetup = progress_now() - t0;
+	u.o = &o;
 	t1 = progress_now();
-	tsetup = t1 - t0;
-	/* Set 0 before the output opens: with one set its count goes into
-	 * the header, as without --sets.  More sets announce 0 (unknown),
-	 * which the writer replaces by the total when the output can seek. */
 	progress_begin(&pr, "sets", o.sets);
 	for (uint64_t set = 0; set < o.sets; set++) {
-		if (set > 0) {
-			t1 = progress_now();
-			reseed(&o, &map, &s, set);
-			t2 = progress_now();
-			tsetup += t2 - t1;
-			t1 = t2;
-		}
-		if ((o.cl ? frs_sample_cl(&ocl, &s, &map, &prep, o.algo, o.steps,
-		    o.nsteps, o.count_only, &r) : frs_sample(&s, &map, &prep,
-		    (enum frs_algo)o.algo, o.steps, o.nsteps, o.count_only,
-		    &r)) < 0) {
-			if (set > 0)
-				outfile_abort(&of);
-			cli_die("%s", frs_errmsg());
-		}
-		t2 = progress_now();
-		tthr += t2 - t1;
-		if (o.cl) {
-			struct frscl_times ct;
-			frscl_last_times(&ct);
-			ctimes.build += ct.build;
-			ctimes.upload += ct.upload;
-			ctimes.kernel += ct.kernel;
-			ctimes.download += ct.download;
-		}
-		if (set == 0) {
-			if (outfile_open(&of, cli.out, !o.count_only && !cli.text) < 0)
-				cli_die_lib();
-			if (!o.count_only && pts_writer_begin(&w, of.fp, of.name, 2,
-			    (unsigned)o.pdf + (o.nsteps > 1),
-			    o.sets == 1 ? r.count : 0, cli.text) < 0)
-				goto fail;
-		}
-		if (o.count_only) {
-			if (fprintf(of.fp, "%llu\n",
-			    (unsigned long long)r.count) < 0) {
-				frs_fail_errno("%s: write error", of.name);
-				goto fail;
-			}
-		} else if (put_set(&w, &o, &s, &map, &r) < 0) {
+		uint64_t c = one_set(&ocl, &o, smp, cli.seed + set, &u);
+		if (c == UINT64_MAX)
 			goto fail;
-		}
-		total += r.count;
-		frs_result_free(&r);
-		tout += progress_now() - t2;
+		total += c;
 		progress_update(&pr, set + 1);
 	}
 	progress_end(&pr);
-	t2 = progress_now();
-	if (!o.count_only && pts_writer_end(&w) < 0)
+	/* A damaged twin .frp shows only when its lists are first read. */
+	if (frs_mask_note(mask) != NULL && !u.noted)
+		frs_warn("%s", frs_mask_note(mask));
+	t0 = progress_now();
+	if (!o.count_only && pts_writer_end(&u.w) < 0)
 		goto fail;
-	if (outfile_commit(&of) < 0)
+	if (outfile_commit(&u.of) < 0)
 		cli_die_lib();
-	tout += progress_now() - t2;
-	if (o.verbose) {
-		print_setup(&s0, o.matrix);
-		if (o.sets > 1)
-			fprintf(stderr, "frs-sample: %llu sets, seeds %llu to %llu\n",
-			    (unsigned long long)o.sets,
-			    (unsigned long long)cli.seed,
-			    (unsigned long long)(cli.seed + o.sets - 1));
-		fprintf(stderr, "frs-sample: %llu samples (%s); setup %.6f s, "
-		    "thresholding %.6f s, output %.6f s\n",
-		    (unsigned long long)total, frscl_algo_name(o.algo), tsetup,
-		    tthr, tout);
-		if (o.cl)
-			fprintf(stderr, "frs-sample: OpenCL device %s: build %.6f s, "
-			    "to the device %.6f s, kernels %.6f s, back and offsets "
-			    "%.6f s\n", ocl.name, ctimes.build, ctimes.upload,
-			    ctimes.kernel, ctimes.download);
-	}
+	u.t += progress_now() - t0;
+	if (o.verbose)
+		report(&o, &s0, total, tsetup, progress_now() - t1 - u.t, &u,
+		    &ocl);
 	if (o.cl) {
 		frscl_release(&ocl);
 		ocl_close(&ocl);
 	}
-	frs_prep_free(&prep);
-	frd_free(&mat);
-	imap_free(&map);
+	frs_sampler_free(smp);
+	frs_mask_free(mask);
 	return 0;
 fail:
-	outfile_abort(&of);
+	if (u.open)
+		outfile_abort(&u.of);
 	cli_die_lib();
 }

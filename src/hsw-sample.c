@@ -9,6 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "api.h"
 #include "cli.h"
 #include "hsw.h"
 #include "hswcl.h"
@@ -196,12 +197,29 @@ static double *make_input(struct opts *o)
 	return pts;
 }
 
-static void write_points(const struct opts *o, const struct hsw_tree *t,
-    const struct frs_imap *map, const double *pts)
+/* Warp the input in place through the public API, or on the device. */
+static void warp(const struct opts *o, const frs_hsw *hw, struct hswcl *hc,
+    double *pts, double *pdf)
+{
+	frs_error err;
+
+	if (hc != NULL) {
+		if (hswcl_warp_points(hc, pts, pts, o->n) < 0)
+			cli_die_lib();
+		if (pdf != NULL)
+			api_hsw_pdf(&hw->t, &hw->map, pts, pdf, (size_t)o->n);
+		return;
+	}
+	if (frs_hsw_warp(hw, pts, pts, pdf, (size_t)o->n, cli.threads,
+	    &err) != FRS_OK)
+		cli_die("%s", err.message);
+}
+
+static void write_points(const struct opts *o, const double *pts,
+    const double *pdf)
 {
 	struct outfile of;
 	struct pts_writer w;
-	double mean = t->total / ((double)map->w * (double)map->h);
 
 	if (outfile_open(&of, cli.out, !cli.text) < 0)
 		cli_die_lib();
@@ -209,12 +227,8 @@ static void write_points(const struct opts *o, const struct hsw_tree *t,
 	    cli.text) < 0)
 		goto fail;
 	for (uint64_t i = 0; i < o->n; i++) {
-		double rec[3] = { pts[2 * i], pts[2 * i + 1], 0 };
-		if (o->pdf) {
-			uint32_t px = (uint32_t)(rec[0] * map->w);
-			uint32_t py = (uint32_t)(rec[1] * map->h);
-			rec[2] = map->v[(uint64_t)py * map->w + px] / mean;
-		}
+		double rec[3] = { pts[2 * i], pts[2 * i + 1],
+		    o->pdf ? pdf[i] : 0 };
 		if (pts_writer_put(&w, rec) < 0)
 			goto fail;
 	}
@@ -234,10 +248,11 @@ int main(int argc, char **argv)
 	    "halton", "hammersley" };
 	struct opts o = { NULL, NULL, HSW_HALTON, 0, 0, 0, 0, 0, 0, 0, -1 };
 	struct frs_imap map;
-	struct hsw_tree t;
+	frs_hsw *hw;
+	frs_error err;
 	struct ocl dev;
 	struct hswcl hc;
-	double *pts, t0, t1, t2, t3;
+	double *pts, *pdf = NULL, t0, t1, t2, t3;
 
 	cli_init("hsw-sample", usage);
 	parse_opts(argc, argv, &o);
@@ -247,23 +262,23 @@ int main(int argc, char **argv)
 	if (imap_load(o.imp, o.w, o.h, 0, &map) < 0)
 		cli_die_lib();
 	t0 = progress_now();
-	if (hsw_build(&t, &map) < 0)
-		cli_die("%s: %s", o.imp, frs_errmsg());
-	if (o.cl && hswcl_init(&hc, &dev, &t) < 0)
+	if (frs_hsw_new_f64(&hw, map.v, map.w, map.h, 0, &err) != FRS_OK)
+		cli_die("%s: %s", o.imp, err.message);
+	if (o.cl && hswcl_init(&hc, &dev, &hw->t) < 0)
 		cli_die_lib();
 	pts = make_input(&o);
-	t1 = progress_now();
-	if ((o.cl ? hswcl_warp_points(&hc, pts, pts, o.n) :
-	    hsw_warp_points(&t, pts, pts, o.n)) < 0)
+	if (o.pdf && (pdf = mem_calloc("--pdf", o.n, sizeof *pdf)) == NULL)
 		cli_die_lib();
+	t1 = progress_now();
+	warp(&o, hw, o.cl ? &hc : NULL, pts, pdf);
 	t2 = progress_now();
-	write_points(&o, &t, &map, pts);
+	write_points(&o, pts, pdf);
 	t3 = progress_now();
 	if (o.verbose) {
 		fprintf(stderr, "hsw-sample: map %ux%u padded to %ux%u "
 		    "(%u levels), mean %.6g; input %s, %llu points, %d "
-		    "threads\n", map.w, map.h, t.size, t.size, t.levels,
-		    t.total / ((double)map.w * (double)map.h),
+		    "threads\n", map.w, map.h, hw->t.size, hw->t.size,
+		    hw->t.levels, hw->t.total / ((double)map.w * (double)map.h),
 		    o.file ? o.file : o.input == INPUT_DART ? "dart" :
 		    names[o.input], (unsigned long long)o.n,
 		    frs_threads());
@@ -280,7 +295,8 @@ int main(int argc, char **argv)
 		ocl_close(&dev);
 	}
 	free(pts);
-	hsw_free(&t);
+	free(pdf);
+	frs_hsw_free(hw);
 	imap_free(&map);
 	return 0;
 }

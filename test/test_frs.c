@@ -3,7 +3,7 @@
 #include "testutil.h"
 #include "frsutil.h"
 #include "frdio.h"
-#include "frs.h"
+#include "frscore.h"
 #include "imap.h"
 #include "par.h"
 #include "rng.h"

@@ -5,7 +5,7 @@
  * maps, and the density of uniform samples. */
 #include "testutil.h"
 #include "frdio.h"
-#include "frs.h"
+#include "frscore.h"
 #include "imap.h"
 #include "moments.h"
 

@@ -5,7 +5,7 @@
 #include "testutil.h"
 #include "frsutil.h"
 #include "frdio.h"
-#include "frs.h"
+#include "frscore.h"
 #include "frscl.h"
 #include "imap.h"
 #include "par.h"

@@ -2,27 +2,34 @@
 #include "err.h"
 
 #include <errno.h>
-#include <pthread.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
 
-/* One message for the process; worker threads may fail at once, so
- * writing it is serialised. */
-static char errbuf[1024];
-static pthread_mutex_t errlock = PTHREAD_MUTEX_INITIALIZER;
-static const char *warn_prefix = "frs";
+/* One message per thread, so that library calls in different threads
+ * (libfrs(3)) do not mix their errors; frs_parallel hands a worker's
+ * message to the thread that called it.  errkind says what failed (see
+ * err.h), for the public API's codes. */
+static _Thread_local char errbuf[1024];
+static _Thread_local int errkind;
+/* Warnings print only once a program has named itself: the library used
+ * from another program (libfrs(3)) never prints. */
+static const char *warn_prefix;
 static int quiet;
-static unsigned long nwarn;
+static atomic_ulong nwarn;
 
 static int vfail(const char *fmt, va_list ap, int with_errno, int saved)
 {
-	pthread_mutex_lock(&errlock);
-	vsnprintf(errbuf, sizeof errbuf, fmt, ap);
+	char tmp[sizeof errbuf];
+
+	/* Through tmp: fmt's arguments may point into errbuf itself. */
+	vsnprintf(tmp, sizeof tmp, fmt, ap);
 	if (with_errno) {
-		size_t len = strlen(errbuf);
-		snprintf(errbuf + len, sizeof errbuf - len, ": %s", strerror(saved));
+		size_t len = strlen(tmp);
+		snprintf(tmp + len, sizeof tmp - len, ": %s", strerror(saved));
 	}
-	pthread_mutex_unlock(&errlock);
+	memcpy(errbuf, tmp, sizeof errbuf);
+	errkind = FRS_ERRKIND_OTHER;
 	return -1;
 }
 
@@ -69,6 +76,17 @@ const char *frs_errmsg(void)
 void frs_clearerr(void)
 {
 	errbuf[0] = '\0';
+	errkind = FRS_ERRKIND_OTHER;
+}
+
+void frs_set_errkind(int kind)
+{
+	errkind = kind;
+}
+
+int frs_errkind(void)
+{
+	return errkind;
 }
 
 void frs_set_warn_prefix(const char *prog)
@@ -83,14 +101,14 @@ void frs_set_quiet(int q)
 
 unsigned long frs_warn_count(void)
 {
-	return nwarn;
+	return atomic_load(&nwarn);
 }
 
 void frs_warn(const char *fmt, ...)
 {
 	va_list ap;
-	nwarn++;
-	if (quiet)
+	atomic_fetch_add(&nwarn, 1);
+	if (quiet || warn_prefix == NULL)
 		return;
 	fprintf(stderr, "%s: warning: ", warn_prefix);
 	va_start(ap, fmt);

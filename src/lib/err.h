@@ -26,8 +26,14 @@ int frs_fail_errno(const char *fmt, ...) FRS_PRINTF(1, 2);
 int frs_fail_context(const char *context);
 const char *frs_errmsg(void);
 void frs_clearerr(void);
+/* What the last failure was about: every frs_fail sets OTHER; the memory
+ * ceiling (mem.c) then sets MEM, imap_validate MAP. */
+enum { FRS_ERRKIND_OTHER, FRS_ERRKIND_MEM, FRS_ERRKIND_MAP };
+void frs_set_errkind(int kind);
+int frs_errkind(void);
 
-/* Warnings: printed as "prog: warning: ..." unless silenced. */
+/* Warnings: printed as "prog: warning: ..." once frs_set_warn_prefix
+ * has named the program, unless silenced; never before. */
 void frs_warn(const char *fmt, ...) FRS_PRINTF(1, 2);
 void frs_set_warn_prefix(const char *prog);
 void frs_set_quiet(int quiet);

@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "frs.h"
+#include "frscore.h"
 #include "err.h"
 #include "par.h"
 #include "rng.h"

@@ -1,161 +1,207 @@
 /*
- * Forced Random Sampling (thesis ch. 4-5): threshold a window of the
- * tiled FRD matrix against importance * tau.
+ * libfrs: Forced Random Sampling in-process.  See libfrs(3).
  *
- * Setup (Listing 5.1, done once here for every implementation): with the
- * map's mean mu and maximum m, the window's smaller side needs at least
- * w_min = ceil(sigma * sqrt(n m / (mu a))) elements, a the map's aspect
- * ratio; n_s, the window elements per map pixel and side, is the smallest
- * power of two with n_s * (smaller map side) >= w_min, the same in x and
- * y, and the window is S_W = n_s * S_I in integers.  The window offset is
- * a random multiple of n_s (of the matrix size when n_s exceeds it) per
- * axis, and tau = n S_M^2 / (S_W,x S_W,y mu).
- *
- * Thresholds (unbiased, the default): with T = tau * I(pixel), an element
- * whose matrix value v is below floor(T) passes, v == floor(T) passes with
- * probability frac(T) by a coin of (seed, window element), so that every
- * pixel gets n I / sum(I) samples in expectation.  The thesis's rule,
- * v < T (Eq. 4.14), passes ceil(T) values of each matrix tile and biases
- * dark pixels upwards; FRS_THESIS selects it.
- *
- * Implementations (Naive, Stack, Level 1, Level 2, Sorted) differ only in
- * which elements they look at: all produce the same window elements, which
- * frs_point turns into points the same way, with jitter and coins that
- * depend only on (seed, window element).
+ * Opaque handles, no global state: every function reports failure as a
+ * code, with a message in the caller's frs_error when one is given;
+ * nothing prints, nothing exits.  Thread safety is stated per function;
+ * in short, a handle is built by one thread and then read by any number
+ * at once, each with its own output buffers.
  */
-#ifndef FRS_FRS_H
-#define FRS_FRS_H
+#ifndef FRS_PUBLIC_H
+#define FRS_PUBLIC_H
 
+#include <stddef.h>
 #include <stdint.h>
 
-#include "frdio.h"
-#include "imap.h"
-
-enum frs_algo {
-	FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2, FRS_SORTED, FRS_NALGO
-};
-enum frs_jitter { FRS_JITTER_NONE, FRS_JITTER_HALTON, FRS_JITTER_RANDOM };
-enum frs_rule { FRS_UNBIASED, FRS_THESIS };
-
-const char *frs_algo_name(enum frs_algo a);
-int frs_algo_parse(const char *s, enum frs_algo *a);
-
-struct frs_setup {
-	uint32_t iw, ih;	/* importance map */
-	uint32_t mw, mh;	/* matrix */
-	uint64_t n;		/* samples asked for (the last step) */
-	double sigma;
-	double mean, max;	/* of the map */
-	uint32_t ns;		/* window elements per pixel side, 2^k */
-	uint64_t sw, sh;	/* window: ns * iw, ns * ih */
-	uint64_t wx, wy;	/* window offset in the tiled matrix */
-	double tau;		/* for n */
-	unsigned level0;	/* first minmap level: log2 min(ns, sigma) */
-	uint64_t seed;
-	enum frs_rule rule;
-	enum frs_jitter jitter;
-	/* Thresholds are T = tau * (I * iscale): iscale is a power of two, 1
-	 * unless the map's maximum lies outside [2^-900, 2^900], where tau
-	 * (denormal maps) or the mean (a sum past DBL_MAX) would overflow;
-	 * imean is the mean of I * iscale, which tau uses. */
-	double iscale, imean;
-};
-
-/* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */
-int frs_setup(struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
-/* tau for another count with the same window (progressive steps). */
-double frs_tau(const struct frs_setup *s, uint64_t n);
-/* Samples a matrix gives without repetition: S_M^2 / sigma^2 (Eq. 4.17). */
-double frs_unique(const struct frs_setup *s);
-
-/* The matrix prepared for the implementations: minmap levels and
- * block-sorted lists. */
-struct frs_prep {
-	const struct frs_matrix *m;
-	unsigned nlev;		/* levels 0 (the matrix) .. nlev - 1 */
-	uint32_t *lev[32];	/* level l: (mw >> l) x (mh >> l) minima */
-	uint32_t block;		/* block size of the sorted lists, 0: none */
-	uint32_t *sval;		/* per block, ascending values */
-	uint32_t *sidx;		/* and their index inside the block */
-};
-
-/* Build the minmap (stack, levels) and, when block > 0, the sorted lists
- * of blocks x blocks (sorted).  Power-of-two matrices only. */
-int frs_prepare(struct frs_prep *p, const struct frs_matrix *m,
-    int minmap, uint32_t block);
-void frs_prep_free(struct frs_prep *p);
-
-/* One accepted window element; (x, y) window coordinates (windows of
- * 2^32 or more elements a side can only be counted). */
-struct frs_elem {
-	uint32_t x, y;
-	uint32_t step;		/* progressive step, 0 for the first */
-};
-
-/* Elements in chunks of map rows, in row order: the same order for any
- * thread count, and no copy to join them. */
-struct frs_chunk {
-	struct frs_elem *e;
-	uint64_t n, cap;
-	uint64_t count;
-	int failed;
-};
-
-struct frs_result {
-	struct frs_chunk *chunk;
-	uint64_t nchunk;
-	uint64_t count;		/* elements accepted (also with count_only) */
-};
-
-/*
- * Threshold the window.  steps: the counts of progressive sampling in
- * increasing order (nsteps >= 1, the last equal to s->n); each element
- * records the first step at which it passes.  count_only: count, store
- * nothing.  threads: see frs_set_threads; the elements come in the same
- * order for any thread count.
- */
-int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
-    unsigned nsteps, int count_only, struct frs_result *r);
-void frs_result_free(struct frs_result *r);
-/* The argument checks of frs_sample (and frs_sample_cl): the steps, the
- * window, what algorithm algo (named name in messages) needs of p; tau[k]
- * gets the threshold of steps[k]. */
-int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
-    int algo, const char *name, const uint64_t *steps, unsigned nsteps,
-    int count_only, double *tau);
-
-/* The point of an element, in [0, 1)^2, with the setup's jitter. */
-void frs_point(const struct frs_setup *s, const struct frs_elem *e,
-    double *x, double *y);
-
+#ifdef __cplusplus
+extern "C" {
 #endif
 
-/*
- * Prepared matrices, the .frp format (see frd(5)), little-endian:
- *   0   8  magic "\211FRP\r\n\032\n"
- *   8   4  version 1
- *   12  4  width, 16 4 height
- *   20  4  flags: 1 minmap, 2 sorted lists
- *   24  8  checksum of the matrix (frd_checksum)
- *   32  4  number of sorted block sizes, 36 4 reserved (0)
- *   40     the matrix values; then minmap levels 1, 2, ... while both
- *          sides are at least 1; then per block size B: B, 0 (8 bytes),
- *          the sorted values and their in-block indices, uint32 each.
- */
-#define FRP_MAGIC "\211FRP\r\n\032\n"
+#define FRS_API_VERSION_MAJOR 1
+#define FRS_API_VERSION_MINOR 0
 
-/* Write m with its minmap (if minmap) and the sorted lists of the given
- * block sizes. */
-int frp_write(FILE *fp, const char *name, const struct frs_matrix *m,
-    int minmap, const uint32_t *blocks, unsigned nblocks);
-/* Read a .frp: the matrix, the minmap when present, and the sorted lists
- * of block size "block" when present (p->block = 0 if not).  The
- * checksum must match the matrix read. */
-int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
-    uint32_t block);
-/* The size and checksum recorded in a .frp. */
-int frp_info(const char *path, uint32_t *w, uint32_t *h, uint64_t *sum);
-/* 1 if the file starts with the .frp magic, 0 if not, -1 if unreadable. */
-int frp_is(const char *path);
+/* ---- errors ---------------------------------------------------------- */
+
+enum frs_code {
+	FRS_OK = 0,
+	FRS_E_ARG,	/* a bad argument: NULL, a zero size, out of range */
+	FRS_E_MAP,	/* the map: NaN, infinite, negative or all zero */
+	FRS_E_BUFFER,	/* the caller's buffer is too small */
+	FRS_E_NOMEM,	/* out of memory, or above the ceiling FRS_MAX_MEM */
+	FRS_E_IO,	/* a file could not be opened or read */
+	FRS_E_FORMAT,	/* a file is not what it should be */
+	FRS_E_LIMIT,	/* a size beyond what the method supports */
+	FRS_E_CALLBACK	/* the caller's callback asked to stop */
+};
+
+typedef struct frs_error {
+	enum frs_code code;
+	char message[512];	/* "context: problem", or "" */
+} frs_error;
+
+/* "FRS_E_ARG" and so on; thread-safe. */
+const char *frs_code_name(int code);
+/* "0.1.0"; thread-safe. */
+const char *frs_library_version(void);
+
+/* ---- threshold matrices ---------------------------------------------- */
+
+typedef struct frs_mask frs_mask;
+
+/* Load an FRD matrix (.frd) or a prepared one (.frp, see frd(5)).  For a
+ * .frd whose prepared twin NAME.frp lies beside it and was made from it,
+ * the twin's precomputed lists are used; a stale or damaged twin is
+ * ignored and frs_mask_note says so.  Thread-safe. */
+int frs_mask_load(frs_mask **mask, const char *path, frs_error *err);
+/* Use the caller's width x height values, row-major, which must be a
+ * permutation of 0 .. width*height-1 with power-of-two sides.  Nothing
+ * is copied: the values must stay unchanged while the mask lives.
+ * Thread-safe. */
+int frs_mask_wrap(frs_mask **mask, const uint32_t *values, uint32_t width,
+    uint32_t height, frs_error *err);
+void frs_mask_size(const frs_mask *mask, uint32_t *width,
+    uint32_t *height);
+/* A remark on the mask's twin .frp, or NULL: stale and ignored (at
+ * load), or damaged and ignored (found when a draw first needed its
+ * sorted lists; the lists are then made instead).  A .frp loaded as
+ * such with damaged lists makes that draw fail with FRS_E_FORMAT. */
+const char *frs_mask_note(const frs_mask *mask);
+/* Not while a sampler made from it lives. */
+void frs_mask_free(frs_mask *mask);
+
+/* ---- importance maps ------------------------------------------------- */
+
+/* Load a map: a PNG or OpenEXR file (luminance), or a procedural spec
+ * such as "blob" (see imap(1)).  width, height: resample to that size,
+ * or 0, 0 for the file's own (128 x 128 for specs).  *map gets
+ * (*width_out) x (*height_out) floats, row 0 at the top, to be released
+ * with frs_map_free.  Thread-safe. */
+int frs_map_load(const char *src, uint32_t width, uint32_t height,
+    float **map, uint32_t *width_out, uint32_t *height_out, frs_error *err);
+void frs_map_free(float *map);
+
+/* ---- Forced Random Sampling ------------------------------------------ */
+
+enum frs_algorithm {
+	FRS_ALG_SORTED = 0,	/* block-sorted lists (the default) */
+	FRS_ALG_NAIVE, FRS_ALG_STACK, FRS_ALG_LEVEL1, FRS_ALG_LEVEL2
+};
+enum frs_jitter_mode {
+	FRS_JIT_NONE = 0,	/* element centres */
+	FRS_JIT_HALTON,		/* Halton offsets inside the element */
+	FRS_JIT_RANDOM		/* random offsets inside the element */
+};
+enum frs_rule_mode {
+	FRS_RULE_UNBIASED = 0,	/* n I / sum I samples per pixel */
+	FRS_RULE_THESIS		/* v < T, thesis Eq. 4.14 */
+};
+
+struct frs_options {
+	double sigma;			/* sparsity, default 8 */
+	enum frs_algorithm algorithm;	/* default FRS_ALG_SORTED */
+	enum frs_jitter_mode jitter;	/* default FRS_JIT_NONE */
+	enum frs_rule_mode rule;	/* default FRS_RULE_UNBIASED */
+	int threads;			/* per call, default 1 */
+};
+/* The defaults above. */
+void frs_options_init(struct frs_options *opt);
+
+typedef struct frs_sampler frs_sampler;
+
+/*
+ * A sampler of the importance map width x height: map[y * stride + x],
+ * row 0 at the top, stride >= width in elements (0: width); NULL for a
+ * constant map (uniform sampling).  The map is copied; the mask must
+ * outlive the sampler.  opt NULL: the defaults.  Thread-safe.
+ */
+int frs_sampler_new(frs_sampler **sampler, const frs_mask *mask,
+    const float *map, uint32_t width, uint32_t height, size_t stride,
+    const struct frs_options *opt, frs_error *err);
+/* The same with double values (as frs-sample reads them). */
+int frs_sampler_new_f64(frs_sampler **sampler, const frs_mask *mask,
+    const double *map, uint32_t width, uint32_t height, size_t stride,
+    const struct frs_options *opt, frs_error *err);
+/* Not while another thread uses the sampler. */
+void frs_sampler_free(frs_sampler *sampler);
+
+/*
+ * About n samples (1 <= n <= 2^40, else FRS_E_ARG or FRS_E_LIMIT) with
+ * this seed: (x, y) pairs in [0,1)^2 into xy (2 cap
+ * doubles), and when pdf is not NULL each sample's density I / mean I
+ * into pdf (cap doubles).  *count gets the number made.  When it exceeds
+ * cap, nothing is written, *count says how many there are, and the code
+ * is FRS_E_BUFFER: the same call with room for them gives them.  The
+ * same (n, seed, options) give the same samples for any thread count,
+ * as frs-sample(1) does.  Thread-safe: one sampler, many threads, each
+ * with its own buffers.
+ */
+int frs_draw(const frs_sampler *sampler, uint64_t n, uint64_t seed,
+    double *xy, double *pdf, size_t cap, size_t *count, frs_error *err);
+/* Only the number frs_draw would make.  Thread-safe. */
+int frs_count(const frs_sampler *sampler, uint64_t n, uint64_t seed,
+    uint64_t *count, frs_error *err);
+
+/* Progressive sampling: counts steps[0] < steps[1] < ... (nsteps <= 16);
+ * the samples of each step come after those of the steps before, and
+ * step, when not NULL, gets each sample's step (0, 1, ...).  A prefix of
+ * the output is a complete sample set of steps[k].  Thread-safe. */
+int frs_draw_progressive(const frs_sampler *sampler, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, double *xy, double *pdf,
+    uint32_t *step, size_t cap, size_t *count, frs_error *err);
+
+/* The callback form: the samples in batches of k, in the order frs_draw
+ * and frs_draw_progressive give them (nsteps 1 for plain sampling); pdf
+ * and step are NULL unless want_pdf, resp. nsteps > 1.  total is the
+ * number of samples of the whole run, the same in every call (so that
+ * the first call can size what follows); a run without samples makes no
+ * call.  A callback that returns non-zero stops the run with
+ * FRS_E_CALLBACK.  The callback runs in the calling thread.
+ * Thread-safe. */
+typedef int (*frs_point_fn)(void *ctx, const double *xy, const double *pdf,
+    const uint32_t *step, size_t k, uint64_t total);
+int frs_draw_each(const frs_sampler *sampler, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int want_pdf, frs_point_fn fn,
+    void *ctx, frs_error *err);
+
+/* The setup for n samples (thesis Listing 5.1). */
+struct frs_info {
+	uint32_t ns;			/* window elements per pixel side */
+	uint64_t window_w, window_h;	/* window size in elements */
+	uint64_t offset_x, offset_y;	/* window offset in the tiled mask */
+	double tau;			/* threshold scale */
+	double mean, max;		/* of the map */
+	double unique;			/* samples before patterns repeat */
+};
+int frs_sampler_info(const frs_sampler *sampler, uint64_t n, uint64_t seed,
+    struct frs_info *info, frs_error *err);
+
+/* ---- Hierarchical Sample Warping ------------------------------------- */
+
+typedef struct frs_hsw frs_hsw;
+
+enum frs_hsw_input {
+	FRS_HSW_RANDOM = 0, FRS_HSW_REGULAR, FRS_HSW_JITTERED, FRS_HSW_HALTON,
+	FRS_HSW_HAMMERSLEY
+};
+
+/* The warping quadtree of a map, as frs_sampler_new takes it (map NULL:
+ * constant).  Negative values count as zero.  Thread-safe. */
+int frs_hsw_new(frs_hsw **hsw, const float *map, uint32_t width,
+    uint32_t height, size_t stride, frs_error *err);
+int frs_hsw_new_f64(frs_hsw **hsw, const double *map, uint32_t width,
+    uint32_t height, size_t stride, frs_error *err);
+void frs_hsw_free(frs_hsw *hsw);
+/* Warp n points of [0,1)^2 (pairs) from in to out (may be the same);
+ * pdf as in frs_draw.  threads: 0 or 1 for one.  Thread-safe. */
+int frs_hsw_warp(const frs_hsw *hsw, const double *in, double *out,
+    double *pdf, size_t n, int threads, frs_error *err);
+/* n points of the given input set with this seed, warped: the points
+ * hsw-sample(1) makes.  Thread-safe. */
+int frs_hsw_draw(const frs_hsw *hsw, enum frs_hsw_input input, uint64_t n,
+    uint64_t seed, double *xy, double *pdf, int threads, frs_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -15,7 +15,7 @@
 #ifndef FRS_FRSCL_H
 #define FRS_FRSCL_H
 
-#include "frs.h"
+#include "frscore.h"
 #include "ocl.h"
 
 /* Flat 1: an implementation only OpenCL has (after the enum frs_algo). */

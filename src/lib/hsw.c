@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "err.h"
+#include "mem.h"
 #include "hsw.h"
 #include "par.h"
 #include "rng.h"
@@ -75,9 +76,8 @@ int hsw_build(struct hsw_tree *t, const struct frs_imap *m)
 		    (unsigned long long)1 << L, (unsigned long long)1 << L);
 	if (leaf_scale(m, &scale) < 0)
 		return -1;
-	s = calloc((size_t)level_offset(L + 1), sizeof *s);
-	if (s == NULL)
-		return frs_fail("quadtree: out of memory");
+	if ((s = mem_calloc("quadtree", level_offset(L + 1), sizeof *s)) == NULL)
+		return -1;
 	off = level_offset(L);
 	for (uint32_t j = 0; j < m->h; j++)
 		for (uint32_t i = 0; i < m->w; i++) {

@@ -86,7 +86,7 @@ void imap_stats(const struct frs_imap *m, struct frs_imap_stats *s)
 		s->min = s->max = 0.0;
 }
 
-int imap_validate(struct frs_imap *m, const char *name, int flags)
+static int validate(struct frs_imap *m, const char *name, int flags)
 {
 	struct frs_imap_stats s;
 	uint64_t n = (uint64_t)m->w * m->h;
@@ -113,6 +113,14 @@ int imap_validate(struct frs_imap *m, const char *name, int flags)
 	if (!(flags & IMAP_ALLOW_ZERO) && s.max <= 0.0)
 		return frs_fail("%s: importance is zero everywhere", name);
 	return 0;
+}
+
+int imap_validate(struct frs_imap *m, const char *name, int flags)
+{
+	if (validate(m, name, flags) == 0)
+		return 0;
+	frs_set_errkind(FRS_ERRKIND_MAP);	/* the values, not the file */
+	return -1;
 }
 
 /* Overlap of [a0, a1) with [b0, b1). */

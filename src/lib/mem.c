@@ -77,12 +77,18 @@ int mem_check(const char *what, uint64_t nmemb, uint64_t size)
 	if (lim == 0)
 		return frs_fail("FRS_MAX_MEM=%s: not a size (write e.g. 512M or "
 		    "8G)", getenv("FRS_MAX_MEM"));
-	if (size != 0 && nmemb > UINT64_MAX / size)
-		return frs_fail("%s: needs more than 16 EiB of memory", what);
-	if (nmemb * size > lim || nmemb * size > SIZE_MAX)
-		return frs_fail("%s: needs %s, above the memory limit of %s "
+	if (size != 0 && nmemb > UINT64_MAX / size) {
+		frs_fail("%s: needs more than 16 EiB of memory", what);
+		frs_set_errkind(FRS_ERRKIND_MEM);
+		return -1;
+	}
+	if (nmemb * size > lim || nmemb * size > SIZE_MAX) {
+		frs_fail("%s: needs %s, above the memory limit of %s "
 		    "(FRS_MAX_MEM)", what, mem_human(nmemb * size, need),
 		    mem_human(lim, have));
+		frs_set_errkind(FRS_ERRKIND_MEM);
+		return -1;
+	}
 	return 0;
 }
 
@@ -97,6 +103,7 @@ void *mem_calloc(const char *what, uint64_t nmemb, uint64_t size)
 		char need[32];
 		frs_fail("%s: out of memory (needed %s)", what,
 		    mem_human(nmemb * size, need));
+		frs_set_errkind(FRS_ERRKIND_MEM);
 	}
 	return p;
 }
@@ -112,6 +119,7 @@ void *mem_realloc(const char *what, void *p, uint64_t nmemb, uint64_t size)
 		char need[32];
 		frs_fail("%s: out of memory (needed %s)", what,
 		    mem_human(nmemb * size, need));
+		frs_set_errkind(FRS_ERRKIND_MEM);
 	}
 	return q;
 }

@@ -7,7 +7,9 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdint.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 /* Temporary files alive now; the signal handler unlinks them, which is
@@ -91,6 +93,38 @@ static int open_stdout(struct outfile *o, int binary)
 	return 0;
 }
 
+/* Open a new temporary NAME.tmp.XXXXXX beside the target.  The name is
+ * tracked before the file exists, not after (as mkstemp would force):
+ * a signal in between would otherwise leave the file behind.  Unlinking
+ * a name not yet created is harmless. */
+static int open_tmp(char *tmp, size_t len)
+{
+	static const char digits[] =
+	    "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+	static unsigned long counter;
+	uint64_t x = (uint64_t)getpid() * 0x9E3779B97F4A7C15u ^
+	    (uint64_t)time(NULL) ^ (uint64_t)(uintptr_t)tmp;
+
+	for (int tries = 0; tries < 100; tries++) {
+		int fd;
+		x += 0x9E3779B97F4A7C15u * ++counter;
+		for (int i = 0; i < 6; i++) {
+			uint64_t z = x >> (6 * i);
+			tmp[len - 6 + (size_t)i] = digits[z % 62];
+		}
+		track(tmp, 1);
+		/* 0666 & ~umask, as for any new file. */
+		fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+		if (fd >= 0)
+			return fd;
+		track(tmp, 0);
+		if (errno != EEXIST)
+			return -1;
+	}
+	errno = EEXIST;
+	return -1;
+}
+
 static int make_tmp(struct outfile *o)
 {
 	size_t len = strlen(o->path);
@@ -101,20 +135,13 @@ static int make_tmp(struct outfile *o)
 		return frs_fail("%s: out of memory", o->path);
 	/* Same directory, so that rename() is atomic. */
 	snprintf(o->tmp, len + 16, "%s.tmp.XXXXXX", o->path);
-	fd = mkstemp(o->tmp);
+	fd = open_tmp(o->tmp, strlen(o->tmp));
 	if (fd < 0) {
 		frs_fail_errno("%s: cannot create", o->path);
 		free(o->tmp);
 		o->tmp = NULL;
 		return -1;
 	}
-	{
-		/* mkstemp makes 0600; give the file the usual 0666 & ~umask. */
-		mode_t m = umask(0);
-		umask(m);
-		fchmod(fd, 0666 & ~m);
-	}
-	track(o->tmp, 1);
 	o->fp = fdopen(fd, "wb");
 	if (o->fp == NULL) {
 		frs_fail_errno("%s: cannot open", o->path);

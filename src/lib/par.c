@@ -6,9 +6,12 @@
 #include <pthread.h>
 #include <sched.h>
 #include <stdatomic.h>
+#include <stdio.h>
 #include <stdlib.h>
 
-static int nthreads = 1;
+/* Per thread, so that library calls in different threads (libfrs(3))
+ * each use their own count; threads started here run with 1. */
+static _Thread_local int nthreads = 1;
 
 void frs_set_threads(int n)
 {
@@ -28,6 +31,7 @@ struct job {
 	atomic_uint_fast64_t next;	/* next chunk to hand out */
 	atomic_uint_fast64_t done;	/* items finished */
 	atomic_int failed;
+	char msg[1024];		/* the first failure's message */
 };
 
 static void job_init(struct job *j, uint64_t n, uint64_t chunk,
@@ -54,13 +58,25 @@ static void run(struct job *j, int main_thread)
 		e = j->n - b < j->chunk ? j->n : b + j->chunk;
 		rc = j->fn(j->ctx, b, e);
 		if (rc < 0) {
-			atomic_store(&j->failed, 1);
+			/* Messages are per thread: keep the first for the
+			 * caller (see job_result). */
+			if (atomic_exchange(&j->failed, 1) == 0)
+				snprintf(j->msg, sizeof j->msg, "%s",
+				    frs_errmsg());
 			break;
 		}
 		atomic_fetch_add(&j->done, e - b);
 		if (main_thread && j->pr != NULL)
 			progress_update(j->pr, atomic_load(&j->done));
 	}
+}
+
+/* 0, or -1 with the first failed chunk's message in this thread. */
+static int job_result(struct job *j)
+{
+	if (!atomic_load(&j->failed))
+		return 0;
+	return frs_fail("%s", j->msg);
 }
 
 static void *worker(void *arg)
@@ -93,7 +109,7 @@ int frs_parallel(uint64_t n, uint64_t chunk,
 	for (int t = 0; t < started; t++)
 		pthread_join(tid[t], NULL);
 	free(tid);
-	return atomic_load(&j.failed) ? -1 : 0;
+	return job_result(&j);
 }
 
 /* ---- a spinning team ---------------------------------------------- */
@@ -158,7 +174,7 @@ int frs_team_run(uint64_t n, uint64_t chunk,
 	job_init(&j, n, chunk, fn, ctx, NULL);
 	if (team.size == 0 || n <= chunk) {
 		run(&j, 1);
-		return atomic_load(&j.failed) ? -1 : 0;
+		return job_result(&j);
 	}
 	team.job = &j;
 	atomic_store(&team.busy, team.size);
@@ -170,7 +186,7 @@ int frs_team_run(uint64_t n, uint64_t chunk,
 	    memory_order_acquire) > 0; )
 		if (++spins > 2000)
 			sched_yield();
-	return atomic_load(&j.failed) ? -1 : 0;
+	return job_result(&j);
 }
 
 void frs_team_stop(void)

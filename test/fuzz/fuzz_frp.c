@@ -2,7 +2,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "fuzz.h"
 #include "frdio.h"
-#include "frs.h"
+#include "frscore.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

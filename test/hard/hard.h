@@ -16,7 +16,7 @@
 #include <sys/wait.h>
 
 #include "frdio.h"
-#include "frs.h"
+#include "frscore.h"
 #include "imap.h"
 #include "par.h"
 

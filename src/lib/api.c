@@ -1,0 +1,850 @@
+/*
+ * The public API (src/lib/frs.h, libfrs(3)) over the library's own
+ * modules.  The internal functions report through the per-thread message
+ * of err.c; here it becomes a code and the caller's frs_error.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "frs.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "api.h"
+#include "cli.h"
+#include "err.h"
+#include "frscore.h"
+#include "hsw.h"
+#include "io.h"
+#include "par.h"
+
+/* ---- errors ---------------------------------------------------------- */
+
+static const char *const code_names[] = {
+	"FRS_OK", "FRS_E_ARG", "FRS_E_MAP", "FRS_E_BUFFER", "FRS_E_NOMEM",
+	"FRS_E_IO", "FRS_E_FORMAT", "FRS_E_LIMIT", "FRS_E_CALLBACK"
+};
+
+const char *frs_code_name(int code)
+{
+	if (code < 0 || code >= (int)(sizeof code_names / sizeof code_names[0]))
+		return "FRS_E_UNKNOWN";
+	return code_names[code];
+}
+
+const char *frs_library_version(void)
+{
+	return FRS_VERSION;
+}
+
+static int set_err(frs_error *err, enum frs_code code, const char *msg)
+{
+	if (err != NULL) {
+		err->code = code;
+		snprintf(err->message, sizeof err->message, "%s", msg);
+	}
+	return (int)code;
+}
+
+/* An argument error with a message of our own. */
+static int arg_err(frs_error *err, const char *what)
+{
+	return set_err(err, FRS_E_ARG, what);
+}
+
+/* The library's last message as code (NOMEM when the memory ceiling or
+ * an allocation failed, whatever code the caller expected else). */
+static int lib_err(frs_error *err, enum frs_code code)
+{
+	if (frs_errkind() == FRS_ERRKIND_MEM)
+		code = FRS_E_NOMEM;
+	else if (frs_errkind() == FRS_ERRKIND_MAP)
+		code = FRS_E_MAP;
+	return set_err(err, code, frs_errmsg());
+}
+
+static int ok(frs_error *err)
+{
+	return set_err(err, FRS_OK, "");
+}
+
+/* FRS_E_IO when path cannot be opened for reading, else FRS_OK. */
+static int readable(const char *path, frs_error *err)
+{
+	const char *name;
+	FILE *fp = io_open_in(path, &name);
+
+	if (fp == NULL)
+		return lib_err(err, FRS_E_IO);
+	io_close_in(fp);
+	return FRS_OK;
+}
+
+/* ---- masks ----------------------------------------------------------- */
+
+static int is_pow2(uint32_t v)
+{
+	return v != 0 && (v & (v - 1)) == 0;
+}
+
+static unsigned log2u(uint32_t v)
+{
+	unsigned l = 0;
+
+	while ((1u << l) < v)
+		l++;
+	return l;
+}
+
+static void mask_free_parts(frs_mask *mk)
+{
+	for (unsigned l = 1; l < mk->nlev; l++)
+		free(mk->lev[l]);
+	for (unsigned b = 0; b < 32; b++) {
+		free(mk->sval[b]);
+		free(mk->sidx[b]);
+	}
+	if (!mk->wrapped)
+		frd_free(&mk->m);
+	free(mk->frp);
+}
+
+void frs_mask_free(frs_mask *mk)
+{
+	if (mk == NULL)
+		return;
+	mask_free_parts(mk);
+	pthread_mutex_destroy(&mk->lock);
+	free(mk);
+}
+
+static frs_mask *mask_new(void)
+{
+	frs_mask *mk = calloc(1, sizeof *mk);
+
+	if (mk != NULL && pthread_mutex_init(&mk->lock, NULL) != 0) {
+		free(mk);
+		return NULL;
+	}
+	return mk;
+}
+
+/* Take the minmap levels of a prepared matrix read from a .frp. */
+static void take_minmap(frs_mask *mk, struct frs_prep *p)
+{
+	mk->nlev = p->nlev;
+	mk->lev[0] = mk->m.v;
+	for (unsigned l = 1; l < p->nlev; l++) {
+		mk->lev[l] = p->lev[l];
+		p->lev[l] = NULL;
+	}
+	p->nlev = 1;
+}
+
+/* A .frp: the matrix and its minmap now, its sorted lists when asked. */
+static int load_frp(frs_mask *mk, const char *path)
+{
+	struct frs_prep p;
+
+	if (frp_read(path, &mk->m, &p, 0) < 0)
+		return -1;
+	take_minmap(mk, &p);
+	frs_prep_free(&p);
+	if ((mk->frp = strdup(path)) == NULL)
+		return frs_fail("%s: out of memory", path);
+	return 0;
+}
+
+/* NAME.frp for NAME.frd (the last dot after the last slash). */
+static char *sibling_frp(const char *path)
+{
+	const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+	size_t len = dot && (!slash || dot > slash) ? (size_t)(dot - path) :
+	    strlen(path);
+	char *s = malloc(len + 5);
+
+	if (s != NULL) {
+		memcpy(s, path, len);
+		strcpy(s + len, ".frp");
+	}
+	return s;
+}
+
+/* A .frd, and the prepared twin beside it when it was made from it. */
+static int load_frd(frs_mask *mk, const char *path)
+{
+	char *sib;
+	uint32_t w, h;
+	uint64_t sum;
+	struct frs_matrix tm;
+	struct frs_prep tp;
+
+	if (frd_read(path, &mk->m) < 0)
+		return -1;
+	sib = sibling_frp(path);
+	if (sib == NULL || strcmp(sib, path) == 0 || frp_is(sib) != 1 ||
+	    frp_info(sib, &w, &h, &sum) < 0) {
+		free(sib);
+		frs_clearerr();
+		return 0;
+	}
+	if (sum != frd_checksum(&mk->m)) {
+		snprintf(mk->note, sizeof mk->note, "%s is stale (made from "
+		    "another matrix than %s); ignored", sib, path);
+		free(sib);
+		return 0;
+	}
+	/* Read it whole once: a damaged twin is noted and ignored. */
+	if (frp_read(sib, &tm, &tp, 0) < 0) {
+		snprintf(mk->note, sizeof mk->note, "%s; ignored", frs_errmsg());
+		frs_clearerr();
+		free(sib);
+		return 0;
+	}
+	take_minmap(mk, &tp);
+	mk->lev[0] = mk->m.v;
+	frs_prep_free(&tp);
+	frd_free(&tm);
+	mk->frp = sib;
+	mk->twin = 1;
+	return 0;
+}
+
+int frs_mask_load(frs_mask **mask, const char *path, frs_error *err)
+{
+	frs_mask *mk;
+	int rc;
+
+	if (mask == NULL || path == NULL)
+		return arg_err(err, "frs_mask_load: NULL argument");
+	*mask = NULL;
+	if (readable(path, err) != FRS_OK)
+		return err ? (int)err->code : FRS_E_IO;
+	if ((mk = mask_new()) == NULL)
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	rc = frp_is(path) == 1 ? load_frp(mk, path) : load_frd(mk, path);
+	if (rc == 0 && mk->m.dims != 2)
+		rc = frs_fail("%s: a %u-D matrix; sampling needs a 2-D one",
+		    path, mk->m.dims);
+	if (rc == 0 && frd_check_permutation(&mk->m, path) < 0)
+		rc = -1;
+	if (rc < 0) {
+		int code = lib_err(err, FRS_E_FORMAT);
+		frs_mask_free(mk);
+		return code;
+	}
+	if (mk->nlev == 0) {
+		mk->nlev = 1;
+		mk->lev[0] = mk->m.v;
+	}
+	*mask = mk;
+	return ok(err);
+}
+
+int frs_mask_wrap(frs_mask **mask, const uint32_t *values, uint32_t width,
+    uint32_t height, frs_error *err)
+{
+	frs_mask *mk;
+
+	if (mask == NULL || values == NULL)
+		return arg_err(err, "frs_mask_wrap: NULL argument");
+	*mask = NULL;
+	if (!is_pow2(width) || !is_pow2(height) ||
+	    (uint64_t)width * height > FRD_MAX_ELEMS / 2)
+		return arg_err(err, "frs_mask_wrap: the sides must be powers of "
+		    "two, below 2^31 elements in all");
+	if ((mk = mask_new()) == NULL)
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	mk->wrapped = 1;
+	mk->m = (struct frs_matrix){ 2, width, height, 1,
+	    (size_t)width * height, NULL, (uint32_t *)values };
+	if (frd_check_permutation(&mk->m, "frs_mask_wrap") < 0) {
+		frs_mask_free(mk);
+		return lib_err(err, FRS_E_ARG);
+	}
+	mk->nlev = 1;
+	mk->lev[0] = mk->m.v;
+	*mask = mk;
+	return ok(err);
+}
+
+void frs_mask_size(const frs_mask *mk, uint32_t *width, uint32_t *height)
+{
+	if (width != NULL)
+		*width = mk ? mk->m.w : 0;
+	if (height != NULL)
+		*height = mk ? mk->m.h : 0;
+}
+
+const char *frs_mask_note(const frs_mask *mk)
+{
+	return mk != NULL && mk->note[0] ? mk->note : NULL;
+}
+
+/* Sorted lists of block size b: from the .frp when it has them, made
+ * here otherwise.  Damaged lists are an error in a .frp loaded as such;
+ * in the twin of a .frd they are noted and the twin is dropped.  Called
+ * with the lock held. */
+static int make_lists(frs_mask *mk, uint32_t b)
+{
+	unsigned l = log2u(b);
+	struct frs_prep p;
+
+	if (mk->frp != NULL) {
+		struct frs_matrix tm;
+		if (frp_read(mk->frp, &tm, &p, b) == 0) {
+			frd_free(&tm);
+			if (p.block == b) {
+				mk->sval[l] = p.sval, mk->sidx[l] = p.sidx;
+				p.sval = p.sidx = NULL;
+				frs_prep_free(&p);
+				return 0;
+			}
+			frs_prep_free(&p);
+		} else if (!mk->twin) {
+			return -1;
+		} else {
+			snprintf(mk->note, sizeof mk->note, "%s; ignored",
+			    frs_errmsg());
+			free(mk->frp);
+			mk->frp = NULL;
+		}
+		frs_clearerr();		/* make them instead */
+	}
+	if (frs_prepare(&p, &mk->m, 0, b) < 0)
+		return -1;
+	mk->sval[l] = p.sval, mk->sidx[l] = p.sidx;
+	p.sval = p.sidx = NULL;
+	frs_prep_free(&p);
+	return 0;
+}
+
+static int make_minmap(frs_mask *mk)
+{
+	struct frs_prep p;
+
+	if (frs_prepare(&p, &mk->m, 1, 0) < 0)
+		return -1;
+	take_minmap(mk, &p);
+	frs_prep_free(&p);
+	return 0;
+}
+
+int api_mask_prep(const frs_mask *cmk, int minmap, uint32_t block,
+    struct frs_prep *view)
+{
+	frs_mask *mk = (frs_mask *)cmk;	/* only the lazy parts change */
+	int rc = 0;
+
+	pthread_mutex_lock(&mk->lock);
+	if (minmap && mk->nlev <= 1)
+		rc = make_minmap(mk);
+	if (rc == 0 && block && mk->sval[log2u(block)] == NULL)
+		rc = make_lists(mk, block);
+	memset(view, 0, sizeof *view);
+	view->m = &mk->m;
+	view->nlev = minmap ? mk->nlev : 1;
+	for (unsigned l = 0; l < view->nlev; l++)
+		view->lev[l] = mk->lev[l];
+	if (block && rc == 0) {
+		view->block = block;
+		view->sval = mk->sval[log2u(block)];
+		view->sidx = mk->sidx[log2u(block)];
+	}
+	pthread_mutex_unlock(&mk->lock);
+	return rc;
+}
+
+const struct frs_matrix *api_mask_matrix(const frs_mask *mk)
+{
+	return &mk->m;
+}
+
+/* ---- maps ------------------------------------------------------------ */
+
+int frs_map_load(const char *src, uint32_t width, uint32_t height,
+    float **map, uint32_t *width_out, uint32_t *height_out, frs_error *err)
+{
+	struct frs_imap m;
+	float *f;
+
+	if (src == NULL || map == NULL || width_out == NULL ||
+	    height_out == NULL)
+		return arg_err(err, "frs_map_load: NULL argument");
+	*map = NULL;
+	if ((width == 0) != (height == 0))
+		return arg_err(err, "frs_map_load: width and height are both "
+		    "0 or both set");
+	if (!imap_is_spec(src) && readable(src, err) != FRS_OK)
+		return err ? (int)err->code : FRS_E_IO;
+	/* Negative values (lossy EXR) become zero, as in frs-sample(1). */
+	if (imap_load(src, width, height, 0, &m) < 0)
+		return lib_err(err, imap_is_spec(src) ? FRS_E_ARG :
+		    FRS_E_FORMAT);
+	f = malloc((size_t)m.w * m.h * sizeof *f);
+	if (f == NULL) {
+		imap_free(&m);
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	}
+	for (size_t i = 0; i < (size_t)m.w * m.h; i++)
+		f[i] = (float)m.v[i];
+	*map = f;
+	*width_out = m.w;
+	*height_out = m.h;
+	imap_free(&m);
+	return ok(err);
+}
+
+void frs_map_free(float *map)
+{
+	free(map);
+}
+
+/* The caller's map as the library's (doubles, validated: no NaN, no
+ * infinity, no negative value, not all zero).  map NULL: constant 1. */
+static int copy_map(struct frs_imap *m, const float *f, const double *d,
+    uint32_t w, uint32_t h, size_t stride, int flags, frs_error *err)
+{
+	if (w == 0 || h == 0)
+		return arg_err(err, "map: width and height must not be 0");
+	if (stride == 0)
+		stride = w;
+	if (stride < w)
+		return arg_err(err, "map: stride is less than the width");
+	if (imap_alloc(m, w, h) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	for (uint32_t y = 0; y < h; y++)
+		for (uint32_t x = 0; x < w; x++)
+			m->v[(size_t)y * w + x] = f ? (double)f[y * stride + x] :
+			    d ? d[y * stride + x] : 1.0;
+	if (imap_validate(m, "map", flags) < 0) {
+		imap_free(m);
+		return lib_err(err, FRS_E_MAP);
+	}
+	return FRS_OK;
+}
+
+/* ---- samplers -------------------------------------------------------- */
+
+void frs_options_init(struct frs_options *opt)
+{
+	opt->sigma = 8.0;
+	opt->algorithm = FRS_ALG_SORTED;
+	opt->jitter = FRS_JIT_NONE;
+	opt->rule = FRS_RULE_UNBIASED;
+	opt->threads = 1;
+}
+
+static int check_options(const struct frs_options *o, frs_error *err)
+{
+	if (!(o->sigma >= 1.0 && o->sigma <= 1e6))
+		return arg_err(err, "options: sigma must lie in [1, 1e6]");
+	if ((unsigned)o->algorithm > FRS_ALG_LEVEL2)
+		return arg_err(err, "options: unknown algorithm");
+	if ((unsigned)o->jitter > FRS_JIT_RANDOM)
+		return arg_err(err, "options: unknown jitter");
+	if ((unsigned)o->rule > FRS_RULE_THESIS)
+		return arg_err(err, "options: unknown rule");
+	if (o->threads < 0 || o->threads > 1024)
+		return arg_err(err, "options: threads must lie in 0 .. 1024");
+	return FRS_OK;
+}
+
+static int sampler_new(frs_sampler **sp, const frs_mask *mask,
+    const float *f, const double *d, uint32_t w, uint32_t h, size_t stride,
+    const struct frs_options *opt, frs_error *err)
+{
+	frs_sampler *s;
+	int rc;
+
+	if (sp == NULL || mask == NULL)
+		return arg_err(err, "frs_sampler_new: NULL argument");
+	*sp = NULL;
+	if ((s = calloc(1, sizeof *s)) == NULL)
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	if (opt != NULL)
+		s->opt = *opt;
+	else
+		frs_options_init(&s->opt);
+	if ((rc = check_options(&s->opt, err)) != FRS_OK ||
+	    (rc = copy_map(&s->map, f, d, w, h, stride, IMAP_STRICT,
+	    err)) != FRS_OK) {
+		free(s);
+		return rc;
+	}
+	s->mask = mask;
+	*sp = s;
+	return ok(err);
+}
+
+int frs_sampler_new(frs_sampler **sampler, const frs_mask *mask,
+    const float *map, uint32_t width, uint32_t height, size_t stride,
+    const struct frs_options *opt, frs_error *err)
+{
+	return sampler_new(sampler, mask, map, NULL, width, height, stride,
+	    opt, err);
+}
+
+int frs_sampler_new_f64(frs_sampler **sampler, const frs_mask *mask,
+    const double *map, uint32_t width, uint32_t height, size_t stride,
+    const struct frs_options *opt, frs_error *err)
+{
+	return sampler_new(sampler, mask, NULL, map, width, height, stride,
+	    opt, err);
+}
+
+void frs_sampler_free(frs_sampler *s)
+{
+	if (s == NULL)
+		return;
+	imap_free(&s->map);
+	free(s);
+}
+
+static const enum frs_algo algos[] = {
+	FRS_SORTED, FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2
+};
+
+int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
+    struct frs_setup *su)
+{
+	if (frs_setup(su, &s->map, &s->mask->m, n, s->opt.sigma, seed) < 0)
+		return -1;
+	su->rule = s->opt.rule == FRS_RULE_THESIS ? FRS_THESIS : FRS_UNBIASED;
+	su->jitter = s->opt.jitter == FRS_JIT_HALTON ? FRS_JITTER_HALTON :
+	    s->opt.jitter == FRS_JIT_RANDOM ? FRS_JITTER_RANDOM :
+	    FRS_JITTER_NONE;
+	return 0;
+}
+
+/* The most samples one call makes, as frs-sample -n allows: past it
+ * the window alone would take hours to threshold. */
+#define MAX_N ((uint64_t)1 << 40)
+
+static int check_steps(const uint64_t *steps, unsigned nsteps,
+    frs_error *err)
+{
+	if (steps == NULL || nsteps == 0 || nsteps > 16)
+		return arg_err(err, "steps: 1 to 16 counts");
+	for (unsigned k = 0; k < nsteps; k++)
+		if (steps[k] == 0 || (k > 0 && steps[k] <= steps[k - 1]))
+			return arg_err(err, "steps: counts must be positive "
+			    "and increase");
+	if (steps[nsteps - 1] > MAX_N)
+		return set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
+	return FRS_OK;
+}
+
+/* Threshold the window for steps with this seed; r and su for the
+ * caller.  A code. */
+static int run(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
+    uint64_t seed, int count_only, struct frs_setup *su,
+    struct frs_result *r, frs_error *err)
+{
+	enum frs_algo a;
+	struct frs_prep view;
+	int minmap, rc;
+	uint32_t block = 0;
+
+	if (s == NULL)
+		return arg_err(err, "NULL sampler");
+	a = algos[s->opt.algorithm];
+	minmap = a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2;
+	if ((rc = check_steps(steps, nsteps, err)) != FRS_OK)
+		return rc;
+	if (api_setup(s, steps[nsteps - 1], seed, su) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	if (a == FRS_SORTED)
+		block = api_sorted_block(su);
+	if (api_mask_prep(s->mask, minmap, block, &view) < 0)
+		return lib_err(err, FRS_E_FORMAT);
+	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
+	if (frs_sample(su, &s->map, &view, a, steps, nsteps, count_only, r) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	return FRS_OK;
+}
+
+uint32_t api_sorted_block(const struct frs_setup *su)
+{
+	uint32_t b = su->ns < su->mw ? su->ns : su->mw;
+	return b < su->mh ? b : su->mh;
+}
+
+double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
+    const struct frs_elem *e)
+{
+	return map->v[(uint64_t)(e->y / su->ns) * su->iw + e->x / su->ns] /
+	    su->mean;
+}
+
+/* Visit the elements in output order: the steps in turn, each in row
+ * order; fn returns non-zero to stop. */
+static int each_elem(const struct frs_result *r, unsigned nsteps,
+    int (*fn)(void *, const struct frs_elem *), void *ctx)
+{
+	for (uint32_t step = 0; step < nsteps; step++)
+		for (uint64_t c = 0; c < r->nchunk; c++)
+			for (uint64_t i = 0; i < r->chunk[c].n; i++) {
+				const struct frs_elem *e = &r->chunk[c].e[i];
+				if ((nsteps == 1 || e->step == step) &&
+				    fn(ctx, e) != 0)
+					return -1;
+			}
+	return 0;
+}
+
+struct put {
+	const struct frs_setup *su;
+	const struct frs_imap *map;
+	double *xy, *pdf;
+	uint32_t *step;
+	size_t k;
+};
+
+static int put_one(void *ctx, const struct frs_elem *e)
+{
+	struct put *p = ctx;
+
+	frs_point(p->su, e, &p->xy[2 * p->k], &p->xy[2 * p->k + 1]);
+	if (p->pdf != NULL)
+		p->pdf[p->k] = api_pdf(p->su, p->map, e);
+	if (p->step != NULL)
+		p->step[p->k] = e->step;
+	p->k++;
+	return 0;
+}
+
+static uint64_t stored(const struct frs_result *r)
+{
+	uint64_t n = 0;
+
+	for (uint64_t c = 0; c < r->nchunk; c++)
+		n += r->chunk[c].n;
+	return n;
+}
+
+int frs_draw_progressive(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, double *xy, double *pdf,
+    uint32_t *step, size_t cap, size_t *count, frs_error *err)
+{
+	struct frs_setup su;
+	struct frs_result r;
+	struct put p;
+	uint64_t n;
+	int rc;
+
+	if (count == NULL || (xy == NULL && cap > 0))
+		return arg_err(err, "frs_draw: NULL argument");
+	*count = 0;
+	if ((rc = run(s, steps, nsteps, seed, 0, &su, &r, err)) != FRS_OK)
+		return rc;
+	n = stored(&r);
+	*count = (size_t)n;
+	if (n > cap) {
+		frs_result_free(&r);
+		return set_err(err, FRS_E_BUFFER, "frs_draw: the buffer is "
+		    "too small; *count says how many samples there are");
+	}
+	p = (struct put){ &su, &s->map, xy, pdf, step, 0 };
+	each_elem(&r, nsteps, put_one, &p);
+	frs_result_free(&r);
+	return ok(err);
+}
+
+int frs_draw(const frs_sampler *s, uint64_t n, uint64_t seed, double *xy,
+    double *pdf, size_t cap, size_t *count, frs_error *err)
+{
+	return frs_draw_progressive(s, &n, 1, seed, xy, pdf, NULL, cap, count,
+	    err);
+}
+
+int frs_count(const frs_sampler *s, uint64_t n, uint64_t seed,
+    uint64_t *count, frs_error *err)
+{
+	struct frs_setup su;
+	struct frs_result r;
+	int rc;
+
+	if (count == NULL)
+		return arg_err(err, "frs_count: NULL argument");
+	*count = 0;
+	if ((rc = run(s, &n, 1, seed, 1, &su, &r, err)) != FRS_OK)
+		return rc;
+	*count = r.count;
+	frs_result_free(&r);
+	return ok(err);
+}
+
+/* Batches for frs_draw_each. */
+#define BATCH 4096
+struct batch {
+	struct put p;
+	double xy[2 * BATCH], pdf[BATCH];
+	uint32_t step[BATCH];
+	frs_point_fn fn;
+	void *ctx;
+	uint64_t total;
+};
+
+static int flush(struct batch *b)
+{
+	int rc = b->p.k ? b->fn(b->ctx, b->xy, b->p.pdf, b->p.step, b->p.k,
+	    b->total) : 0;
+
+	b->p.k = 0;
+	return rc;
+}
+
+static int batch_one(void *ctx, const struct frs_elem *e)
+{
+	struct batch *b = ctx;
+
+	put_one(&b->p, e);
+	return b->p.k == BATCH ? flush(b) : 0;
+}
+
+int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int want_pdf, frs_point_fn fn,
+    void *ctx, frs_error *err)
+{
+	struct frs_setup su;
+	struct frs_result r;
+	struct batch *b;
+	int rc, stop;
+
+	if (fn == NULL)
+		return arg_err(err, "frs_draw_each: NULL callback");
+	if ((b = malloc(sizeof *b)) == NULL)
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	if ((rc = run(s, steps, nsteps, seed, 0, &su, &r, err)) != FRS_OK) {
+		free(b);
+		return rc;
+	}
+	b->p = (struct put){ &su, &s->map, b->xy, want_pdf ? b->pdf : NULL,
+	    nsteps > 1 ? b->step : NULL, 0 };
+	b->fn = fn;
+	b->ctx = ctx;
+	b->total = stored(&r);
+	stop = each_elem(&r, nsteps, batch_one, b) < 0 || flush(b) != 0;
+	frs_result_free(&r);
+	free(b);
+	if (stop)
+		return set_err(err, FRS_E_CALLBACK, "stopped by the callback");
+	return ok(err);
+}
+
+int frs_sampler_info(const frs_sampler *s, uint64_t n, uint64_t seed,
+    struct frs_info *info, frs_error *err)
+{
+	struct frs_setup su;
+
+	if (s == NULL || info == NULL)
+		return arg_err(err, "frs_sampler_info: NULL argument");
+	if (n == 0)
+		return arg_err(err, "frs_sampler_info: n must not be 0");
+	if (n > MAX_N)
+		return set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
+	if (api_setup(s, n, seed, &su) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	*info = (struct frs_info){ su.ns, su.sw, su.sh, su.wx, su.wy, su.tau,
+	    su.mean, su.max, frs_unique(&su) };
+	return ok(err);
+}
+
+/* ---- HSW ------------------------------------------------------------- */
+
+static int hsw_new(frs_hsw **hp, const float *f, const double *d,
+    uint32_t w, uint32_t h, size_t stride, frs_error *err)
+{
+	frs_hsw *hw;
+	int rc;
+
+	if (hp == NULL)
+		return arg_err(err, "frs_hsw_new: NULL argument");
+	*hp = NULL;
+	if ((hw = calloc(1, sizeof *hw)) == NULL)
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	/* Negative values count as zero, as in the quadtree itself. */
+	if ((rc = copy_map(&hw->map, f, d, w, h, stride, 0, err)) != FRS_OK) {
+		free(hw);
+		return rc;
+	}
+	if (hsw_build(&hw->t, &hw->map) < 0) {
+		rc = lib_err(err, FRS_E_LIMIT);
+		imap_free(&hw->map);
+		free(hw);
+		return rc;
+	}
+	*hp = hw;
+	return ok(err);
+}
+
+int frs_hsw_new(frs_hsw **hsw, const float *map, uint32_t width,
+    uint32_t height, size_t stride, frs_error *err)
+{
+	return hsw_new(hsw, map, NULL, width, height, stride, err);
+}
+
+int frs_hsw_new_f64(frs_hsw **hsw, const double *map, uint32_t width,
+    uint32_t height, size_t stride, frs_error *err)
+{
+	return hsw_new(hsw, NULL, map, width, height, stride, err);
+}
+
+void frs_hsw_free(frs_hsw *hw)
+{
+	if (hw == NULL)
+		return;
+	hsw_free(&hw->t);
+	imap_free(&hw->map);
+	free(hw);
+}
+
+void api_hsw_pdf(const struct hsw_tree *t, const struct frs_imap *map,
+    const double *xy, double *pdf, size_t n)
+{
+	double mean = t->total / ((double)map->w * (double)map->h);
+
+	for (size_t i = 0; i < n; i++) {
+		uint32_t px = (uint32_t)(xy[2 * i] * map->w);
+		uint32_t py = (uint32_t)(xy[2 * i + 1] * map->h);
+		pdf[i] = map->v[(uint64_t)py * map->w + px] / mean;
+	}
+}
+
+int frs_hsw_warp(const frs_hsw *hw, const double *in, double *out,
+    double *pdf, size_t n, int threads, frs_error *err)
+{
+	if (hw == NULL || ((in == NULL || out == NULL) && n > 0))
+		return arg_err(err, "frs_hsw_warp: NULL argument");
+	if (threads < 0 || threads > 1024)
+		return arg_err(err, "frs_hsw_warp: threads must lie in 0 .. "
+		    "1024");
+	for (size_t i = 0; i < 2 * n; i++)
+		if (!(in[i] >= 0.0 && in[i] < 1.0))
+			return arg_err(err, "frs_hsw_warp: a point lies outside "
+			    "[0,1)^2");
+	frs_set_threads(threads > 0 ? threads : 1);
+	if (hsw_warp_points(&hw->t, in, out, n) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	if (pdf != NULL)
+		api_hsw_pdf(&hw->t, &hw->map, out, pdf, n);
+	return ok(err);
+}
+
+int frs_hsw_draw(const frs_hsw *hw, enum frs_hsw_input input, uint64_t n,
+    uint64_t seed, double *xy, double *pdf, int threads, frs_error *err)
+{
+	static const enum hsw_input kinds[] = {
+		HSW_RANDOM, HSW_REGULAR, HSW_JITTERED, HSW_HALTON, HSW_HAMMERSLEY
+	};
+
+	if (hw == NULL || (xy == NULL && n > 0))
+		return arg_err(err, "frs_hsw_draw: NULL argument");
+	if ((unsigned)input > FRS_HSW_HAMMERSLEY)
+		return arg_err(err, "frs_hsw_draw: unknown input set");
+	hsw_input_make(kinds[input], n, seed, xy);
+	return frs_hsw_warp(hw, xy, xy, pdf, (size_t)n, threads, err);
+}

@@ -1,0 +1,57 @@
+/*
+ * Inside the public API (src/lib/frs.h): the handles' contents and the
+ * pieces the programs share with it.  The programs use the public API
+ * for everything it covers; what it does not cover (OpenCL devices, the
+ * -v report) reaches these.
+ */
+#ifndef FRS_API_H
+#define FRS_API_H
+
+#include <pthread.h>
+
+#include "frs.h"
+#include "frscore.h"
+#include "hsw.h"
+
+struct frs_mask {
+	struct frs_matrix m;
+	int wrapped;		/* m.v is the caller's */
+	char *frp;		/* prepared file to take sorted lists from */
+	int twin;		/* frp lies beside the .frd loaded */
+	char note[1024];
+	pthread_mutex_t lock;	/* over the lazily made parts below */
+	unsigned nlev;		/* minmap levels, lev[0] = m.v */
+	uint32_t *lev[32];
+	uint32_t *sval[32], *sidx[32];	/* sorted lists by log2(block) */
+};
+
+struct frs_sampler {
+	const frs_mask *mask;
+	struct frs_imap map;
+	struct frs_options opt;
+};
+
+struct frs_hsw {
+	struct hsw_tree t;
+	struct frs_imap map;
+};
+
+/* The setup of n samples with this seed, options applied; -1 after
+ * frs_fail. */
+int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
+    struct frs_setup *su);
+/* A view of the mask prepared for an implementation: the minmap and the
+ * sorted lists of block (0: none), made on first use and kept. */
+int api_mask_prep(const frs_mask *mk, int minmap, uint32_t block,
+    struct frs_prep *view);
+const struct frs_matrix *api_mask_matrix(const frs_mask *mk);
+/* The block of the sorted lists that a setup uses. */
+uint32_t api_sorted_block(const struct frs_setup *su);
+/* A sample's density I / mean I. */
+double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
+    const struct frs_elem *e);
+/* The densities of n warped points. */
+void api_hsw_pdf(const struct hsw_tree *t, const struct frs_imap *map,
+    const double *xy, double *pdf, size_t n);
+
+#endif

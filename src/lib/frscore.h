@@ -1,0 +1,161 @@
+/*
+ * Forced Random Sampling (thesis ch. 4-5): threshold a window of the
+ * tiled FRD matrix against importance * tau.
+ *
+ * Setup (Listing 5.1, done once here for every implementation): with the
+ * map's mean mu and maximum m, the window's smaller side needs at least
+ * w_min = ceil(sigma * sqrt(n m / (mu a))) elements, a the map's aspect
+ * ratio; n_s, the window elements per map pixel and side, is the smallest
+ * power of two with n_s * (smaller map side) >= w_min, the same in x and
+ * y, and the window is S_W = n_s * S_I in integers.  The window offset is
+ * a random multiple of n_s (of the matrix size when n_s exceeds it) per
+ * axis, and tau = n S_M^2 / (S_W,x S_W,y mu).
+ *
+ * Thresholds (unbiased, the default): with T = tau * I(pixel), an element
+ * whose matrix value v is below floor(T) passes, v == floor(T) passes with
+ * probability frac(T) by a coin of (seed, window element), so that every
+ * pixel gets n I / sum(I) samples in expectation.  The thesis's rule,
+ * v < T (Eq. 4.14), passes ceil(T) values of each matrix tile and biases
+ * dark pixels upwards; FRS_THESIS selects it.
+ *
+ * Implementations (Naive, Stack, Level 1, Level 2, Sorted) differ only in
+ * which elements they look at: all produce the same window elements, which
+ * frs_point turns into points the same way, with jitter and coins that
+ * depend only on (seed, window element).
+ */
+#ifndef FRS_FRSCORE_H
+#define FRS_FRSCORE_H
+
+#include <stdint.h>
+
+#include "frdio.h"
+#include "imap.h"
+
+enum frs_algo {
+	FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2, FRS_SORTED, FRS_NALGO
+};
+enum frs_jitter { FRS_JITTER_NONE, FRS_JITTER_HALTON, FRS_JITTER_RANDOM };
+enum frs_rule { FRS_UNBIASED, FRS_THESIS };
+
+const char *frs_algo_name(enum frs_algo a);
+int frs_algo_parse(const char *s, enum frs_algo *a);
+
+struct frs_setup {
+	uint32_t iw, ih;	/* importance map */
+	uint32_t mw, mh;	/* matrix */
+	uint64_t n;		/* samples asked for (the last step) */
+	double sigma;
+	double mean, max;	/* of the map */
+	uint32_t ns;		/* window elements per pixel side, 2^k */
+	uint64_t sw, sh;	/* window: ns * iw, ns * ih */
+	uint64_t wx, wy;	/* window offset in the tiled matrix */
+	double tau;		/* for n */
+	unsigned level0;	/* first minmap level: log2 min(ns, sigma) */
+	uint64_t seed;
+	enum frs_rule rule;
+	enum frs_jitter jitter;
+	/* Thresholds are T = tau * (I * iscale): iscale is a power of two, 1
+	 * unless the map's maximum lies outside [2^-900, 2^900], where tau
+	 * (denormal maps) or the mean (a sum past DBL_MAX) would overflow;
+	 * imean is the mean of I * iscale, which tau uses. */
+	double iscale, imean;
+};
+
+/* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */
+int frs_setup(struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
+/* tau for another count with the same window (progressive steps). */
+double frs_tau(const struct frs_setup *s, uint64_t n);
+/* Samples a matrix gives without repetition: S_M^2 / sigma^2 (Eq. 4.17). */
+double frs_unique(const struct frs_setup *s);
+
+/* The matrix prepared for the implementations: minmap levels and
+ * block-sorted lists. */
+struct frs_prep {
+	const struct frs_matrix *m;
+	unsigned nlev;		/* levels 0 (the matrix) .. nlev - 1 */
+	uint32_t *lev[32];	/* level l: (mw >> l) x (mh >> l) minima */
+	uint32_t block;		/* block size of the sorted lists, 0: none */
+	uint32_t *sval;		/* per block, ascending values */
+	uint32_t *sidx;		/* and their index inside the block */
+};
+
+/* Build the minmap (stack, levels) and, when block > 0, the sorted lists
+ * of blocks x blocks (sorted).  Power-of-two matrices only. */
+int frs_prepare(struct frs_prep *p, const struct frs_matrix *m,
+    int minmap, uint32_t block);
+void frs_prep_free(struct frs_prep *p);
+
+/* One accepted window element; (x, y) window coordinates (windows of
+ * 2^32 or more elements a side can only be counted). */
+struct frs_elem {
+	uint32_t x, y;
+	uint32_t step;		/* progressive step, 0 for the first */
+};
+
+/* Elements in chunks of map rows, in row order: the same order for any
+ * thread count, and no copy to join them. */
+struct frs_chunk {
+	struct frs_elem *e;
+	uint64_t n, cap;
+	uint64_t count;
+	int failed;
+};
+
+struct frs_result {
+	struct frs_chunk *chunk;
+	uint64_t nchunk;
+	uint64_t count;		/* elements accepted (also with count_only) */
+};
+
+/*
+ * Threshold the window.  steps: the counts of progressive sampling in
+ * increasing order (nsteps >= 1, the last equal to s->n); each element
+ * records the first step at which it passes.  count_only: count, store
+ * nothing.  threads: see frs_set_threads; the elements come in the same
+ * order for any thread count.
+ */
+int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
+    unsigned nsteps, int count_only, struct frs_result *r);
+void frs_result_free(struct frs_result *r);
+/* The argument checks of frs_sample (and frs_sample_cl): the steps, the
+ * window, what algorithm algo (named name in messages) needs of p; tau[k]
+ * gets the threshold of steps[k]. */
+int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
+    int algo, const char *name, const uint64_t *steps, unsigned nsteps,
+    int count_only, double *tau);
+
+/* The point of an element, in [0, 1)^2, with the setup's jitter. */
+void frs_point(const struct frs_setup *s, const struct frs_elem *e,
+    double *x, double *y);
+
+#endif
+
+/*
+ * Prepared matrices, the .frp format (see frd(5)), little-endian:
+ *   0   8  magic "\211FRP\r\n\032\n"
+ *   8   4  version 1
+ *   12  4  width, 16 4 height
+ *   20  4  flags: 1 minmap, 2 sorted lists
+ *   24  8  checksum of the matrix (frd_checksum)
+ *   32  4  number of sorted block sizes, 36 4 reserved (0)
+ *   40     the matrix values; then minmap levels 1, 2, ... while both
+ *          sides are at least 1; then per block size B: B, 0 (8 bytes),
+ *          the sorted values and their in-block indices, uint32 each.
+ */
+#define FRP_MAGIC "\211FRP\r\n\032\n"
+
+/* Write m with its minmap (if minmap) and the sorted lists of the given
+ * block sizes. */
+int frp_write(FILE *fp, const char *name, const struct frs_matrix *m,
+    int minmap, const uint32_t *blocks, unsigned nblocks);
+/* Read a .frp: the matrix, the minmap when present, and the sorted lists
+ * of block size "block" when present (p->block = 0 if not).  The
+ * checksum must match the matrix read. */
+int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
+    uint32_t block);
+/* The size and checksum recorded in a .frp. */
+int frp_info(const char *path, uint32_t *w, uint32_t *h, uint64_t *sum);
+/* 1 if the file starts with the .frp magic, 0 if not, -1 if unreadable. */
+int frp_is(const char *path);

@@ -1,0 +1,1581 @@
+/*
+ * The public API (src/lib/frs.h) against its contract: the same samples
+ * as the programs frs-sample and hsw-sample for the same map, seed and
+ * options, bit for bit; every error code that bad arguments reach, with
+ * and without an frs_error; one sampler used by several threads at once.
+ * The programs come from $BIN (test/run.sh exports it); the current
+ * directory is the source tree.
+ */
+#include "testutil.h"
+
+#include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/wait.h>
+
+#include "frs.h"
+#include "frdio.h"
+#include "imap.h"
+#include "ptsio.h"
+
+#define MATRIX "data/default.frd"
+
+static frs_mask *mask;		/* MATRIX, loaded once */
+static struct frs_imap blob;	/* "blob" as frs-sample reads it: doubles */
+
+/* ---- helpers --------------------------------------------------------- */
+
+static const char *bindir(void)
+{
+	const char *b = getenv("BIN");
+
+	return b != NULL && *b ? b : "bin";
+}
+
+/* Run "$BIN/CMD" through the shell; it must succeed. */
+static void prog(const char *fmt, ...) FRS_PRINTF(1, 2);
+static void prog(const char *fmt, ...)
+{
+	char cmd[2048];
+	int len = snprintf(cmd, sizeof cmd, "%s/", bindir());
+	va_list ap;
+
+	va_start(ap, fmt);
+	vsnprintf(cmd + len, sizeof cmd - (size_t)len, fmt, ap);
+	va_end(ap);
+	if (system(cmd) != 0) {
+		print_error("command failed: %s\n", cmd);
+		fail();
+	}
+}
+
+/* "Nothing prints": standard error goes to a file from quiet_begin to
+ * quiet_end, which fails the test when anything was written. */
+static int quiet_begin(void)
+{
+	int saved, fd;
+
+	fflush(stderr);
+	saved = dup(2);
+	fd = open(tu_path("stderr.txt"), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+	assert_true(saved >= 0 && fd >= 0);
+	assert_int_equal(dup2(fd, 2), 2);
+	close(fd);
+	return saved;
+}
+
+static void quiet_end(int saved, const char *what)
+{
+	size_t n;
+	unsigned char *text;
+
+	fflush(stderr);
+	assert_int_equal(dup2(saved, 2), 2);
+	close(saved);
+	text = tu_read(tu_path("stderr.txt"), &n);
+	if (n > 0) {
+		text[n] = '\0';
+		print_error("%s printed: %s\n", what, (char *)text);
+		free(text);
+		fail();
+	}
+	free(text);
+}
+
+/* The records of a point file equal rec (n records of 2 + extra). */
+static void same_as_file(const char *path, const double *rec, size_t n,
+    unsigned extra)
+{
+	struct frs_points p;
+	size_t k = 2 + extra;
+
+	assert_int_equal(pts_read(path, &p), 0);
+	assert_int_equal(p.dims, 2);
+	assert_int_equal(p.extra, extra);
+	if (p.n != n)
+		print_error("%s: %zu points, the API made %zu\n", path, p.n, n);
+	assert_int_equal(p.n, n);
+	for (size_t i = 0; i < n; i++)
+		if (memcmp(&p.x[i * k], &rec[i * k], k * sizeof *rec) != 0) {
+			print_error("%s: point %zu is (%.17g, %.17g), the API's "
+			    "(%.17g, %.17g)\n", path, i, p.x[i * k],
+			    p.x[i * k + 1], rec[i * k], rec[i * k + 1]);
+			fail();
+		}
+	pts_free(&p);
+}
+
+/* What one draw made. */
+struct drawn {
+	size_t n;
+	double *xy, *pdf;
+	uint32_t *step;
+};
+
+static void drawn_free(struct drawn *d)
+{
+	free(d->xy);
+	free(d->pdf);
+	free(d->step);
+	memset(d, 0, sizeof *d);
+}
+
+/* frs_draw_progressive, sized by a first call with no room (which must
+ * say FRS_E_BUFFER and the count). */
+static struct drawn draw(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int want_pdf)
+{
+	struct drawn d = { 0, NULL, NULL, NULL };
+	frs_error e;
+	size_t cnt = 0;
+
+	assert_int_equal(frs_draw_progressive(s, steps, nsteps, seed, NULL,
+	    NULL, NULL, 0, &d.n, &e), FRS_E_BUFFER);
+	assert_int_equal(e.code, FRS_E_BUFFER);
+	assert_true(d.n > 0);
+	d.xy = malloc(2 * d.n * sizeof *d.xy);
+	d.pdf = want_pdf ? malloc(d.n * sizeof *d.pdf) : NULL;
+	d.step = malloc(d.n * sizeof *d.step);
+	assert_non_null(d.xy);
+	assert_non_null(d.step);
+	if (frs_draw_progressive(s, steps, nsteps, seed, d.xy, d.pdf, d.step,
+	    d.n, &cnt, &e) != FRS_OK) {
+		print_error("frs_draw_progressive: %s %s\n",
+		    frs_code_name(e.code), e.message);
+		fail();
+	}
+	assert_int_equal(e.code, FRS_OK);
+	assert_string_equal(e.message, "");
+	assert_int_equal(cnt, d.n);
+	return d;
+}
+
+/* In frs-sample's layout: x, y, the density with --pdf, the step
+ * (counted from 1) with --progressive. */
+static double *records(const struct drawn *d, int pdf, int steps)
+{
+	size_t k = 2 + (size_t)pdf + (size_t)steps, j;
+	double *r = malloc((d->n ? d->n : 1) * k * sizeof *r);
+
+	assert_non_null(r);
+	for (size_t i = 0; i < d->n; i++) {
+		j = i * k;
+		r[j++] = d->xy[2 * i];
+		r[j++] = d->xy[2 * i + 1];
+		if (pdf)
+			r[j++] = d->pdf[i];
+		if (steps)
+			r[j++] = (double)d->step[i] + 1.0;
+	}
+	return r;
+}
+
+/* "1000,3000" for --progressive. */
+static const char *step_list(const uint64_t *steps, unsigned nsteps)
+{
+	static char buf[512];
+	size_t len = 0;
+
+	for (unsigned k = 0; k < nsteps; k++)
+		len += (size_t)snprintf(buf + len, sizeof buf - len, "%s%llu",
+		    k ? "," : "", (unsigned long long)steps[k]);
+	return buf;
+}
+
+/*
+ * frs-sample -m MATRIX ARGS with the same counts, seed and --pdf against
+ * frs_draw_progressive of s: the same records, bit for bit.
+ */
+static void compare(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int pdf, const char *args)
+{
+	const char *out = tu_path("frs.pts");
+	struct drawn d;
+	double *rec;
+
+	if (nsteps > 1)
+		prog("frs-sample -q -m %s %s --progressive %s -S %llu %s -o %s",
+		    MATRIX, args, step_list(steps, nsteps),
+		    (unsigned long long)seed, pdf ? "--pdf" : "", out);
+	else
+		prog("frs-sample -q -m %s %s -n %llu -S %llu %s -o %s", MATRIX,
+		    args, (unsigned long long)steps[0], (unsigned long long)seed,
+		    pdf ? "--pdf" : "", out);
+	d = draw(s, steps, nsteps, seed, pdf);
+	rec = records(&d, pdf, nsteps > 1);
+	same_as_file(out, rec, d.n, (unsigned)pdf + (nsteps > 1));
+	free(rec);
+	drawn_free(&d);
+}
+
+static frs_sampler *sampler_f64(const frs_mask *mk, const struct frs_imap *m,
+    const struct frs_options *opt)
+{
+	frs_sampler *s = NULL;
+	frs_error e;
+
+	if (frs_sampler_new_f64(&s, mk, m->v, m->w, m->h, 0, opt, &e) !=
+	    FRS_OK) {
+		print_error("frs_sampler_new_f64: %s\n", e.message);
+		fail();
+	}
+	return s;
+}
+
+/* The map as single-channel float EXR: its values as frs_map_load and
+ * frs-sample read them alike. */
+static const char *write_exr(const char *name, const struct frs_imap *m)
+{
+	const char *path = tu_path(name);
+	FILE *fp = fopen(path, "wb");
+
+	assert_non_null(fp);
+	assert_int_equal(imap_write_exr(fp, path, m), 0);
+	assert_int_equal(fclose(fp), 0);
+	return path;
+}
+
+/* ---- the same samples as frs-sample ------------------------------------ */
+
+static void test_const_map(void **state)
+{
+	frs_sampler *s;
+	uint64_t n = 5000;
+
+	(void)state;
+	assert_int_equal(frs_sampler_new(&s, mask, NULL, 128, 128, 0, NULL,
+	    NULL), FRS_OK);
+	compare(s, &n, 1, 7, 0, "-i const");
+	compare(s, &n, 1, 7, 1, "-i const");
+	frs_sampler_free(s);
+}
+
+static void test_blob_defaults(void **state)
+{
+	frs_sampler *s = sampler_f64(mask, &blob, NULL);
+	uint64_t n[] = { 5000, 1, 100000 };
+
+	(void)state;
+	compare(s, &n[0], 1, 7, 0, "-i blob");
+	compare(s, &n[0], 1, 1, 0, "-i blob");
+	compare(s, &n[1], 1, 3, 1, "-i blob");
+	compare(s, &n[2], 1, 9, 1, "-i blob");
+	frs_sampler_free(s);
+}
+
+/* Each option as its frs-sample flag. */
+static void test_options(void **state)
+{
+	static const struct {
+		double sigma;
+		enum frs_algorithm a;
+		enum frs_jitter_mode j;
+		enum frs_rule_mode r;
+		int pdf;
+		const char *args;
+	} c[] = {
+		{ 8, FRS_ALG_SORTED, FRS_JIT_RANDOM, FRS_RULE_UNBIASED, 1,
+		    "--jitter random" },
+		{ 8, FRS_ALG_SORTED, FRS_JIT_HALTON, FRS_RULE_UNBIASED, 0,
+		    "--jitter halton" },
+		{ 8, FRS_ALG_SORTED, FRS_JIT_NONE, FRS_RULE_THESIS, 1,
+		    "--threshold thesis" },
+		{ 4, FRS_ALG_SORTED, FRS_JIT_NONE, FRS_RULE_UNBIASED, 0,
+		    "--sigma 4" },
+		{ 13.5, FRS_ALG_LEVEL2, FRS_JIT_RANDOM, FRS_RULE_THESIS, 1,
+		    "--sigma 13.5 -a level2 --jitter random --threshold thesis" },
+		{ 8, FRS_ALG_NAIVE, FRS_JIT_NONE, FRS_RULE_UNBIASED, 0,
+		    "-a naive" },
+		{ 8, FRS_ALG_STACK, FRS_JIT_NONE, FRS_RULE_UNBIASED, 0,
+		    "-a stack" },
+		{ 8, FRS_ALG_LEVEL1, FRS_JIT_HALTON, FRS_RULE_UNBIASED, 0,
+		    "-a level1 --jitter halton" },
+		{ 8, FRS_ALG_LEVEL2, FRS_JIT_NONE, FRS_RULE_UNBIASED, 1,
+		    "-a level2" },
+	};
+	uint64_t n = 3000;
+	char args[256];
+
+	(void)state;
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		struct frs_options o;
+		frs_sampler *s;
+		frs_options_init(&o);
+		o.sigma = c[i].sigma;
+		o.algorithm = c[i].a;
+		o.jitter = c[i].j;
+		o.rule = c[i].r;
+		s = sampler_f64(mask, &blob, &o);
+		/* Any thread count in the program: the same points. */
+		snprintf(args, sizeof args, "-i blob %s -j %d", c[i].args,
+		    1 + (int)(i % 2));
+		compare(s, &n, 1, 11 + i, c[i].pdf, args);
+		frs_sampler_free(s);
+	}
+}
+
+static void test_progressive(void **state)
+{
+	static const uint64_t steps[] = { 1000, 3000, 5000 };
+	static const uint64_t one[] = { 64, 20000 };
+	struct frs_options o;
+	frs_sampler *s = sampler_f64(mask, &blob, NULL);
+	struct drawn d;
+
+	(void)state;
+	compare(s, steps, 3, 7, 1, "-i blob");
+	compare(s, steps, 3, 8, 0, "-i blob");
+	/* The steps come in order. */
+	d = draw(s, steps, 3, 7, 0);
+	for (size_t i = 1; i < d.n; i++)
+		assert_true(d.step[i] >= d.step[i - 1]);
+	assert_true(d.step[d.n - 1] <= 2);
+	drawn_free(&d);
+	frs_sampler_free(s);
+	frs_options_init(&o);
+	o.jitter = FRS_JIT_RANDOM;
+	o.algorithm = FRS_ALG_STACK;
+	s = sampler_f64(mask, &blob, &o);
+	compare(s, one, 2, 2, 1, "-i blob -a stack --jitter random");
+	frs_sampler_free(s);
+}
+
+/* A float map read from an EXR file by frs_map_load, and by frs-sample
+ * from the same file. */
+static void test_float_map(void **state)
+{
+	const char *path = write_exr("blob.exr", &blob);
+	struct frs_imap f64, r64;
+	frs_sampler *s;
+	float *map;
+	uint32_t w = 0, h = 0;
+	uint64_t n = 6000;
+	frs_error e;
+
+	(void)state;
+	assert_int_equal(frs_map_load(path, 0, 0, &map, &w, &h, &e), FRS_OK);
+	assert_int_equal(w, 128);
+	assert_int_equal(h, 128);
+	assert_int_equal(imap_load(path, 0, 0, 0, &f64), 0);
+	for (size_t i = 0; i < (size_t)w * h; i++)
+		assert_true((double)map[i] == f64.v[i]);
+	assert_int_equal(frs_sampler_new(&s, mask, map, w, h, 0, NULL, &e),
+	    FRS_OK);
+	{
+		char args[600];
+		snprintf(args, sizeof args, "-i %s", path);
+		compare(s, &n, 1, 4, 1, args);
+	}
+	frs_sampler_free(s);
+	frs_map_free(map);
+	/* Resampled on loading: the values frs-sample would use, rounded. */
+	assert_int_equal(frs_map_load(path, 48, 20, &map, &w, &h, NULL),
+	    FRS_OK);
+	assert_int_equal(w, 48);
+	assert_int_equal(h, 20);
+	assert_int_equal(imap_load(path, 48, 20, 0, &r64), 0);
+	for (size_t i = 0; i < (size_t)w * h; i++)
+		assert_true(map[i] == (float)r64.v[i]);
+	frs_map_free(map);
+	/* A spec, as frs-sample evaluates it, rounded to float. */
+	assert_int_equal(frs_map_load("blob", 0, 0, &map, &w, &h, NULL),
+	    FRS_OK);
+	assert_int_equal(w, 128);
+	for (size_t i = 0; i < (size_t)w * h; i++)
+		assert_true(map[i] == (float)blob.v[i]);
+	frs_map_free(map);
+	imap_free(&r64);
+	imap_free(&f64);
+}
+
+/* A row stride: the values between the rows are never read (NaN there
+ * would be FRS_E_MAP). */
+static void test_stride(void **state)
+{
+	struct frs_imap m;
+	size_t stride = 128;
+	double *wide;
+	float *wf, *cf;
+	frs_sampler *s, *t;
+	uint64_t n = 4000;
+	struct drawn a, b;
+
+	(void)state;
+	assert_int_equal(imap_load("blob", 100, 60, 0, &m), 0);
+	wide = malloc(stride * m.h * sizeof *wide);
+	wf = malloc(stride * m.h * sizeof *wf);
+	cf = malloc((size_t)m.w * m.h * sizeof *cf);
+	assert_non_null(wide);
+	assert_non_null(wf);
+	assert_non_null(cf);
+	for (size_t i = 0; i < stride * m.h; i++) {
+		wide[i] = NAN;
+		wf[i] = NAN;
+	}
+	for (uint32_t y = 0; y < m.h; y++)
+		for (uint32_t x = 0; x < m.w; x++) {
+			wide[y * stride + x] = m.v[(size_t)y * m.w + x];
+			wf[y * stride + x] = (float)m.v[(size_t)y * m.w + x];
+			cf[(size_t)y * m.w + x] = wf[y * stride + x];
+		}
+	assert_int_equal(frs_sampler_new_f64(&s, mask, wide, m.w, m.h, stride,
+	    NULL, NULL), FRS_OK);
+	compare(s, &n, 1, 6, 1, "-i blob -s 100x60");
+	frs_sampler_free(s);
+	assert_int_equal(frs_sampler_new(&s, mask, wf, m.w, m.h, stride,
+	    NULL, NULL), FRS_OK);
+	assert_int_equal(frs_sampler_new(&t, mask, cf, m.w, m.h, m.w, NULL,
+	    NULL), FRS_OK);
+	/* The map is copied: changing it afterwards changes nothing. */
+	for (size_t i = 0; i < (size_t)m.w * m.h; i++)
+		cf[i] = -1.0f;
+	a = draw(s, &n, 1, 6, 1);
+	b = draw(t, &n, 1, 6, 1);
+	assert_int_equal(a.n, b.n);
+	assert_memory_equal(a.xy, b.xy, 2 * a.n * sizeof *a.xy);
+	assert_memory_equal(a.pdf, b.pdf, a.n * sizeof *a.pdf);
+	drawn_free(&a);
+	drawn_free(&b);
+	frs_sampler_free(s);
+	frs_sampler_free(t);
+	free(wide);
+	free(wf);
+	free(cf);
+	imap_free(&m);
+}
+
+/* options.threads: the same bytes for 0, 1, 2 and 3 threads. */
+static void test_threads_option(void **state)
+{
+	struct drawn d[4];
+	uint64_t n = 30000;
+
+	(void)state;
+	for (int t = 0; t < 4; t++) {
+		struct frs_options o;
+		frs_sampler *s;
+		frs_options_init(&o);
+		o.threads = t;
+		o.jitter = FRS_JIT_RANDOM;
+		s = sampler_f64(mask, &blob, &o);
+		d[t] = draw(s, &n, 1, 5, 1);
+		frs_sampler_free(s);
+	}
+	for (int t = 1; t < 4; t++) {
+		assert_int_equal(d[t].n, d[0].n);
+		assert_memory_equal(d[t].xy, d[0].xy, 2 * d[0].n * sizeof(double));
+		assert_memory_equal(d[t].pdf, d[0].pdf, d[0].n * sizeof(double));
+	}
+	for (int t = 0; t < 4; t++)
+		drawn_free(&d[t]);
+}
+
+/* frs_count: frs-sample --count-only, and what frs_draw makes. */
+static void test_count(void **state)
+{
+	const char *out = tu_path("count.txt");
+	frs_sampler *s = sampler_f64(mask, &blob, NULL);
+	uint64_t c = 0, n = 5000;
+	unsigned long long pc = 0;
+	struct drawn d;
+	FILE *fp;
+
+	(void)state;
+	prog("frs-sample -q -m %s -i blob -n 5000 -S 7 --count-only -o %s",
+	    MATRIX, out);
+	fp = fopen(out, "r");
+	assert_non_null(fp);
+	assert_int_equal(fscanf(fp, "%llu", &pc), 1);
+	fclose(fp);
+	assert_int_equal(frs_count(s, n, 7, &c, NULL), FRS_OK);
+	assert_int_equal(c, pc);
+	d = draw(s, &n, 1, 7, 0);
+	assert_int_equal(d.n, c);
+	drawn_free(&d);
+	/* "About n": within a few per cent here. */
+	assert_true(c > 4500 && c < 5500);
+	frs_sampler_free(s);
+}
+
+/* frs_sampler_info: the setup frs-sample -v prints. */
+static void test_info(void **state)
+{
+	const char *err = tu_path("v.txt");
+	frs_sampler *s = sampler_f64(mask, &blob, NULL);
+	struct frs_info in;
+	char line[1024];
+	unsigned ns = 0;
+	unsigned long long ww, wh, ox, oy;
+	double tau = 0;
+	int found = 0;
+	FILE *fp;
+
+	(void)state;
+	prog("frs-sample -m %s -i blob -n 5000 -S 7 -v -o /dev/null 2>%s",
+	    MATRIX, err);
+	fp = fopen(err, "r");
+	assert_non_null(fp);
+	while (fgets(line, sizeof line, fp) != NULL) {
+		const char *p = strstr(line, "n_s ");
+		if (p != NULL && sscanf(p, "n_s %u, window %llux%llu at (%llu, "
+		    "%llu), tau %lg", &ns, &ww, &wh, &ox, &oy, &tau) == 6)
+			found = 1;
+	}
+	fclose(fp);
+	if (!found) {
+		print_error("no 'n_s ..., window ..., tau' line in frs-sample "
+		    "-v\n");
+		fail();
+	}
+	assert_int_equal(frs_sampler_info(s, 5000, 7, &in, NULL), FRS_OK);
+	assert_int_equal(in.ns, ns);
+	assert_int_equal(in.window_w, ww);
+	assert_int_equal(in.window_h, wh);
+	assert_int_equal(in.offset_x, ox);
+	assert_int_equal(in.offset_y, oy);
+	assert_near(in.tau, tau, 1e-8 * fabs(tau));
+	{
+		struct frs_imap_stats st;
+		imap_stats(&blob, &st);
+		assert_near(in.mean, st.mean, 1e-12 * st.mean);
+		assert_true(in.max == st.max);
+	}
+	assert_true(in.unique > 0);
+	frs_sampler_free(s);
+}
+
+/* ---- masks ------------------------------------------------------------ */
+
+/* frs_mask_wrap of the values of MATRIX: the samples of the loaded one. */
+static void test_wrap(void **state)
+{
+	static const uint32_t v4[16] = { 0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1,
+	    9, 15, 7, 13, 5 };
+	struct frs_matrix m;
+	frs_mask *mk;
+	frs_sampler *s, *t;
+	uint64_t n = 5000;
+	uint32_t w = 0, h = 0;
+	struct drawn a, b;
+
+	(void)state;
+	assert_int_equal(frd_read(MATRIX, &m), 0);
+	assert_int_equal(frs_mask_wrap(&mk, m.v, m.w, m.h, NULL), FRS_OK);
+	frs_mask_size(mk, &w, &h);
+	assert_int_equal(w, 2048);
+	assert_int_equal(h, 2048);
+	assert_null(frs_mask_note(mk));
+	s = sampler_f64(mk, &blob, NULL);
+	t = sampler_f64(mask, &blob, NULL);
+	a = draw(s, &n, 1, 3, 1);
+	b = draw(t, &n, 1, 3, 1);
+	assert_int_equal(a.n, b.n);
+	assert_memory_equal(a.xy, b.xy, 2 * a.n * sizeof *a.xy);
+	drawn_free(&a);
+	drawn_free(&b);
+	frs_sampler_free(s);
+	frs_sampler_free(t);
+	frs_mask_free(mk);
+	frd_free(&m);
+	/* A 4x4 one samples too. */
+	assert_int_equal(frs_mask_wrap(&mk, v4, 4, 4, NULL), FRS_OK);
+	frs_mask_size(mk, &w, &h);
+	assert_int_equal(w, 4);
+	assert_int_equal(h, 4);
+	assert_int_equal(frs_sampler_new(&s, mk, NULL, 8, 8, 0, NULL, NULL),
+	    FRS_OK);
+	a = draw(s, &n, 1, 1, 0);
+	for (size_t i = 0; i < 2 * a.n; i++)
+		assert_true(a.xy[i] >= 0.0 && a.xy[i] < 1.0);
+	drawn_free(&a);
+	frs_sampler_free(s);
+	frs_mask_free(mk);
+}
+
+/* A random 64x64 matrix (a permutation) in path. */
+static void write_frd(const char *path, uint64_t seed)
+{
+	struct frs_matrix m;
+	FILE *fp;
+
+	assert_int_equal(frd_alloc(&m, 2, 64, 64, 1, "test"), 0);
+	for (uint32_t i = 0; i < m.n; i++)
+		m.v[i] = i;
+	for (uint32_t i = (uint32_t)m.n - 1; i > 0; i--) {
+		uint32_t j = (uint32_t)(frs_rand64(seed, FRS_STREAM_TEST, i) %
+		    (i + 1)), t = m.v[i];
+		m.v[i] = m.v[j];
+		m.v[j] = t;
+	}
+	fp = fopen(path, "wb");
+	assert_non_null(fp);
+	assert_int_equal(frd_write(fp, path, &m), 0);
+	assert_int_equal(fclose(fp), 0);
+	frd_free(&m);
+}
+
+/* Samples of a mask file against frs-sample -m with the same file. */
+static void compare_mask(const char *path, const char *algo,
+    enum frs_algorithm a)
+{
+	const char *out = tu_path("m.pts");
+	struct frs_options o;
+	frs_mask *mk;
+	frs_sampler *s;
+	uint64_t n = 3000;
+	struct drawn d;
+	double *rec;
+	frs_error e;
+
+	if (frs_mask_load(&mk, path, &e) != FRS_OK) {
+		print_error("frs_mask_load %s: %s %s\n", path,
+		    frs_code_name(e.code), e.message);
+		fail();
+	}
+	frs_options_init(&o);
+	o.algorithm = a;
+	s = sampler_f64(mk, &blob, &o);
+	prog("frs-sample -q -m %s -i blob -a %s -n 3000 -S 2 -o %s", path, algo,
+	    out);
+	d = draw(s, &n, 1, 2, 0);
+	rec = records(&d, 0, 0);
+	same_as_file(out, rec, d.n, 0);
+	free(rec);
+	drawn_free(&d);
+	frs_sampler_free(s);
+	frs_mask_free(mk);
+}
+
+/* .frp files, and a .frd with a good, a stale and a damaged twin. */
+static void test_prepared(void **state)
+{
+	char frd[256], frp[256], other[256], alone[256];
+	frs_mask *mk;
+	frs_error e;
+	const char *note;
+
+	(void)state;
+	/* Copies: tu_path's buffers are reused. */
+	snprintf(frd, sizeof frd, "%s", tu_path("M.frd"));
+	snprintf(frp, sizeof frp, "%s", tu_path("M.frp"));
+	snprintf(other, sizeof other, "%s", tu_path("O.frd"));
+	snprintf(alone, sizeof alone, "%s", tu_path("P.frp"));
+	write_frd(frd, 1);
+	write_frd(other, 2);
+	prog("frd-prep -a all %s -o %s", frd, alone);
+	compare_mask(alone, "sorted", FRS_ALG_SORTED);
+	compare_mask(alone, "level2", FRS_ALG_LEVEL2);
+	compare_mask(frd, "stack", FRS_ALG_STACK);
+	/* A good twin: used, no note. */
+	prog("frd-prep -a all %s -o %s", frd, frp);
+	assert_int_equal(frs_mask_load(&mk, frd, &e), FRS_OK);
+	assert_null(frs_mask_note(mk));
+	frs_mask_free(mk);
+	compare_mask(frd, "sorted", FRS_ALG_SORTED);
+	/* Stale: made from another matrix. */
+	prog("frd-prep -a all %s -o %s", other, frp);
+	assert_int_equal(frs_mask_load(&mk, frd, &e), FRS_OK);
+	note = frs_mask_note(mk);
+	assert_non_null(note);
+	assert_non_null(strstr(note, "stale"));
+	frs_mask_free(mk);
+	compare_mask(frd, "level1", FRS_ALG_LEVEL1);
+	/* Damaged: the right header, the matrix cut short (40 bytes of
+	 * header, 64 x 64 values of 4).  The note may come when the damage
+	 * is met, at the first draw. */
+	prog("frd-prep -a all %s -o %s && truncate -s %d %s", frd, frp,
+	    40 + 2 * 64 * 64, frp);
+	compare_mask(frd, "sorted", FRS_ALG_SORTED);
+	assert_int_equal(frs_mask_load(&mk, frd, &e), FRS_OK);
+	{
+		frs_sampler *s;
+		uint64_t c;
+		int q = quiet_begin();
+		assert_int_equal(frs_sampler_new(&s, mk, NULL, 64, 64, 0, NULL,
+		    NULL), FRS_OK);
+		assert_int_equal(frs_count(s, 1000, 1, &c, NULL), FRS_OK);
+		frs_sampler_free(s);
+		quiet_end(q, "a mask with a damaged twin");
+	}
+	note = frs_mask_note(mk);
+	if (note == NULL) {
+		print_error("a damaged twin, ignored without a note\n");
+		fail();
+	}
+	frs_mask_free(mk);
+	/* Loaded directly, the damaged .frp is an error. */
+	assert_int_equal(frs_mask_load(&mk, frp, &e), FRS_E_FORMAT);
+	assert_null(mk);
+}
+
+/* ---- errors ----------------------------------------------------------- */
+
+/* CALL, which uses E, returns CODE twice: with an frs_error (whose code
+ * matches, with a message) and with err NULL. */
+#define EXPECT(code, call) do { \
+	for (int pass_ = 0; pass_ < 2; pass_++) { \
+		frs_error e_ = { FRS_E_CALLBACK, "untouched" }; \
+		frs_error *E = pass_ ? NULL : &e_; \
+		int rc_ = (call); \
+		expect_code(__FILE__, __LINE__, #call, rc_, (code), E); \
+	} \
+} while (0)
+
+static void expect_code(const char *file, int line, const char *what,
+    int rc, int code, const frs_error *e)
+{
+	if (rc != code) {
+		print_error("%s: %s, expected %s (%s)\n", what, frs_code_name(rc),
+		    frs_code_name(code), e ? e->message : "err NULL");
+		_fail(file, line);
+	}
+	if (e != NULL && (int)e->code != code) {
+		print_error("%s: err->code %s, returned %s\n", what,
+		    frs_code_name(e->code), frs_code_name(rc));
+		_fail(file, line);
+	}
+	if (e != NULL && code != FRS_OK && e->message[0] == '\0') {
+		print_error("%s: %s without a message\n", what,
+		    frs_code_name(code));
+		_fail(file, line);
+	}
+	if (e != NULL && code == FRS_OK && e->message[0] != '\0') {
+		print_error("%s: FRS_OK with the message '%s'\n", what,
+		    e->message);
+		_fail(file, line);
+	}
+}
+
+static void test_code_names(void **state)
+{
+	static const char *const names[] = { "FRS_OK", "FRS_E_ARG",
+	    "FRS_E_MAP", "FRS_E_BUFFER", "FRS_E_NOMEM", "FRS_E_IO",
+	    "FRS_E_FORMAT", "FRS_E_LIMIT", "FRS_E_CALLBACK" };
+	const char *v = frs_library_version();
+	int a, b, c;
+
+	(void)state;
+	assert_int_equal(FRS_OK, 0);
+	assert_int_equal(FRS_E_CALLBACK, 8);
+	for (int i = 0; i <= FRS_E_CALLBACK; i++)
+		assert_string_equal(frs_code_name(i), names[i]);
+	/* Not a code: a name all the same, none of the above. */
+	for (int i = -1; i < 200; i += 50) {
+		const char *n = frs_code_name(i > 8 ? i : -1);
+		assert_non_null(n);
+		for (int k = 0; k <= FRS_E_CALLBACK; k++)
+			assert_string_not_equal(n, names[k]);
+	}
+	assert_non_null(v);
+	assert_int_equal(sscanf(v, "%d.%d.%d", &a, &b, &c), 3);
+	assert_int_equal(FRS_API_VERSION_MAJOR, 1);
+}
+
+static void test_mask_errors(void **state)
+{
+	const char *junk = tu_path("junk.frd");
+	static const uint32_t dup[16] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
+	    12, 13, 14, 14 };
+	static const uint32_t big[16] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
+	    12, 13, 14, 16 };
+	static const uint32_t v12[12] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,
+	    11 };
+	frs_mask *mk = NULL;
+
+	(void)state;
+	tu_write(junk, "this is no matrix at all\n", 25);
+	EXPECT(FRS_E_ARG, frs_mask_load(NULL, MATRIX, E));
+	EXPECT(FRS_E_ARG, frs_mask_load(&mk, NULL, E));
+	EXPECT(FRS_E_IO, frs_mask_load(&mk, tu_path("missing.frd"), E));
+	EXPECT(FRS_E_IO, frs_mask_load(&mk, tu_dir(), E));
+	EXPECT(FRS_E_FORMAT, frs_mask_load(&mk, junk, E));
+	EXPECT(FRS_E_FORMAT, frs_mask_load(&mk, "data/sunset.exr", E));
+	EXPECT(FRS_E_ARG, frs_mask_wrap(NULL, dup, 4, 4, E));
+	EXPECT(FRS_E_ARG, frs_mask_wrap(&mk, NULL, 4, 4, E));
+	EXPECT(FRS_E_ARG, frs_mask_wrap(&mk, dup, 4, 4, E));
+	EXPECT(FRS_E_ARG, frs_mask_wrap(&mk, big, 4, 4, E));
+	EXPECT(FRS_E_ARG, frs_mask_wrap(&mk, v12, 4, 3, E));
+	EXPECT(FRS_E_ARG, frs_mask_wrap(&mk, v12, 3, 4, E));
+	EXPECT(FRS_E_ARG, frs_mask_wrap(&mk, v12, 0, 4, E));
+	EXPECT(FRS_E_ARG, frs_mask_wrap(&mk, v12, 4, 0, E));
+	/* Nothing was made; freeing NULL is harmless. */
+	frs_mask_free(NULL);
+	frs_mask_size(NULL, NULL, NULL);
+}
+
+static void test_map_errors(void **state)
+{
+	const char *junk = tu_path("junk.png");
+	float *map = NULL;
+	uint32_t w, h;
+
+	(void)state;
+	tu_write(junk, "\x89PNG\r\n\x1a\n but no more", 21);
+	EXPECT(FRS_E_ARG, frs_map_load(NULL, 0, 0, &map, &w, &h, E));
+	EXPECT(FRS_E_ARG, frs_map_load("blob", 0, 0, NULL, &w, &h, E));
+	EXPECT(FRS_E_ARG, frs_map_load("blob", 0, 0, &map, NULL, &h, E));
+	EXPECT(FRS_E_ARG, frs_map_load("blob", 0, 0, &map, &w, NULL, E));
+	EXPECT(FRS_E_ARG, frs_map_load("blob", 16, 0, &map, &w, &h, E));
+	EXPECT(FRS_E_ARG, frs_map_load("blob", 0, 16, &map, &w, &h, E));
+	EXPECT(FRS_E_IO, frs_map_load(tu_path("missing.exr"), 0, 0, &map, &w,
+	    &h, E));
+	EXPECT(FRS_E_FORMAT, frs_map_load(junk, 0, 0, &map, &w, &h, E));
+	EXPECT(FRS_E_FORMAT, frs_map_load(MATRIX, 0, 0, &map, &w, &h, E));
+	frs_map_free(NULL);
+}
+
+/* Maps whose values are refused: NaN, infinity, a negative value, all
+ * zero; as float and as double. */
+static void test_bad_maps(void **state)
+{
+	static const double bad[] = { NAN, INFINITY, -INFINITY, -1.0, 0.0 };
+	double d[64];
+	float f[64];
+	frs_sampler *s = NULL;
+	frs_hsw *hw = NULL;
+
+	(void)state;
+	for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+		for (int i = 0; i < 64; i++) {
+			/* one bad pixel, or (for 0) all of them */
+			d[i] = bad[k] == 0.0 || i == 37 ? bad[k] : 1.0;
+			f[i] = (float)d[i];
+		}
+		EXPECT(FRS_E_MAP, frs_sampler_new_f64(&s, mask, d, 8, 8, 0, NULL,
+		    E));
+		EXPECT(FRS_E_MAP, frs_sampler_new(&s, mask, f, 8, 8, 0, NULL,
+		    E));
+		/* HSW: negative values count as zero, the rest is refused. */
+		if (bad[k] == -1.0) {
+			/* Not EXPECT: it calls twice, which would leak. */
+			assert_int_equal(frs_hsw_new_f64(&hw, d, 8, 8, 0, NULL),
+			    FRS_OK);
+			frs_hsw_free(hw);
+			assert_int_equal(frs_hsw_new(&hw, f, 8, 8, 0, NULL),
+			    FRS_OK);
+			frs_hsw_free(hw);
+		} else {
+			EXPECT(FRS_E_MAP, frs_hsw_new_f64(&hw, d, 8, 8, 0, E));
+			EXPECT(FRS_E_MAP, frs_hsw_new(&hw, f, 8, 8, 0, E));
+		}
+	}
+	/* Only negative and zero values: nothing to sample. */
+	for (int i = 0; i < 64; i++)
+		d[i] = i % 2 ? -1.0 : 0.0;
+	EXPECT(FRS_E_MAP, frs_hsw_new_f64(&hw, d, 8, 8, 0, E));
+	/* The map files: any code but FRS_OK; see the report for which. */
+	for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+		struct frs_imap m;
+		const char *path;
+		float *map = NULL;
+		uint32_t w, h;
+		frs_error e;
+		int rc, q;
+		assert_int_equal(imap_alloc(&m, 8, 8), 0);
+		for (int i = 0; i < 64; i++)
+			m.v[i] = bad[k] == 0.0 || i == 37 ? bad[k] : 1.0;
+		path = write_exr("bad.exr", &m);
+		q = quiet_begin();
+		rc = frs_map_load(path, 0, 0, &map, &w, &h, &e);
+		quiet_end(q, "frs_map_load");
+		if (bad[k] == -1.0 && rc == FRS_OK) {
+			/* Clamped to zero, as frs-sample does. */
+			for (int i = 0; i < 64; i++)
+				assert_true(map[i] == (i == 37 ? 0.0f : 1.0f));
+			frs_map_free(map);
+		} else if (rc != FRS_E_MAP) {
+			print_error("frs_map_load of a map with %g: %s\n", bad[k],
+			    frs_code_name(rc));
+			fail();
+		} else {
+			assert_null(map);
+		}
+		imap_free(&m);
+	}
+}
+
+static frs_sampler *blob_sampler(void)
+{
+	return sampler_f64(mask, &blob, NULL);
+}
+
+static void test_sampler_errors(void **state)
+{
+	static const double one[16] = { 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
+	    1, 1, 1 };
+	frs_sampler *s = NULL;
+	struct frs_options o;
+
+	(void)state;
+	EXPECT(FRS_E_ARG, frs_sampler_new(NULL, mask, NULL, 8, 8, 0, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, NULL, NULL, 8, 8, 0, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 0, 8, 0, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 0, 0, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_new_f64(NULL, mask, one, 4, 4, 0, NULL,
+	    E));
+	EXPECT(FRS_E_ARG, frs_sampler_new_f64(&s, NULL, one, 4, 4, 0, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_new_f64(&s, mask, one, 0, 4, 0, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_new_f64(&s, mask, one, 4, 0, 0, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_new_f64(&s, mask, one, 4, 4, 3, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_new_f64(&s, mask, one, 8, 2, 7, NULL, E));
+	/* A size beyond what a map may have. */
+	EXPECT(FRS_E_LIMIT, frs_sampler_new(&s, mask, NULL, 1u << 20, 1u << 20,
+	    0, NULL, E));
+	/* Options. */
+	{
+		static const double sig[] = { 0.0, -1.0, 0.5, NAN, -INFINITY,
+		    INFINITY };
+		for (size_t i = 0; i < sizeof sig / sizeof sig[0]; i++) {
+			frs_options_init(&o);
+			o.sigma = sig[i];
+			EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0,
+			    &o, E));
+		}
+	}
+	frs_options_init(&o);
+	o.algorithm = (enum frs_algorithm)5;
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	o.algorithm = (enum frs_algorithm)-1;
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	frs_options_init(&o);
+	o.jitter = (enum frs_jitter_mode)3;
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	frs_options_init(&o);
+	o.rule = (enum frs_rule_mode)2;
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	frs_options_init(&o);
+	o.threads = -1;
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	/* The defaults, and a good call clears err. */
+	frs_options_init(&o);
+	assert_true(o.sigma == 8.0);
+	assert_int_equal(o.algorithm, FRS_ALG_SORTED);
+	assert_int_equal(o.jitter, FRS_JIT_NONE);
+	assert_int_equal(o.rule, FRS_RULE_UNBIASED);
+	assert_int_equal(o.threads, 1);
+	EXPECT(FRS_OK, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E) ==
+	    FRS_OK ? (frs_sampler_free(s), FRS_OK) : FRS_E_ARG);
+	frs_sampler_free(NULL);
+}
+
+static void test_draw_errors(void **state)
+{
+	frs_sampler *s = blob_sampler();
+	static const uint64_t st_eq[] = { 500, 500 }, st_dn[] = { 900, 500 },
+	    st_zero[] = { 0, 500 };
+	uint64_t st17[17], c64;
+	struct frs_info in;
+	double xy[16];
+	size_t c;
+	uint32_t step[8];
+
+	(void)state;
+	for (int i = 0; i < 17; i++)
+		st17[i] = 100 * (uint64_t)(i + 1);
+	EXPECT(FRS_E_ARG, frs_draw(s, 100, 1, xy, NULL, 8, NULL, E));
+	EXPECT(FRS_E_ARG, frs_draw(s, 100, 1, NULL, NULL, 8, &c, E));
+	EXPECT(FRS_E_ARG, frs_draw(s, 0, 1, xy, NULL, 8, &c, E));
+	EXPECT(FRS_E_ARG, frs_count(s, 100, 1, NULL, E));
+	EXPECT(FRS_E_ARG, frs_count(s, 0, 1, &c64, E));
+	EXPECT(FRS_E_ARG, frs_sampler_info(s, 100, 1, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_info(s, 0, 1, &in, E));
+	/* Steps. */
+	EXPECT(FRS_E_ARG, frs_draw_progressive(s, NULL, 1, 1, xy, NULL, step,
+	    8, &c, E));
+	EXPECT(FRS_E_ARG, frs_draw_progressive(s, st17, 0, 1, xy, NULL, step,
+	    8, &c, E));
+	EXPECT(FRS_E_ARG, frs_draw_progressive(s, st17, 17, 1, xy, NULL, step,
+	    8, &c, E));
+	EXPECT(FRS_E_ARG, frs_draw_progressive(s, st_eq, 2, 1, xy, NULL, step,
+	    8, &c, E));
+	EXPECT(FRS_E_ARG, frs_draw_progressive(s, st_dn, 2, 1, xy, NULL, step,
+	    8, &c, E));
+	EXPECT(FRS_E_ARG, frs_draw_progressive(s, st_zero, 2, 1, xy, NULL,
+	    step, 8, &c, E));
+	EXPECT(FRS_E_ARG, frs_draw_progressive(s, st_eq, 2, 1, xy, NULL, step,
+	    8, NULL, E));
+	/* Sixteen steps are allowed (too many samples for 8 here). */
+	EXPECT(FRS_E_BUFFER, frs_draw_progressive(s, st17, 16, 1, xy, NULL,
+	    step, 8, &c, E));
+	EXPECT(FRS_E_ARG, frs_draw_each(s, st17, 17, 1, 0, NULL, NULL, E));
+	frs_sampler_free(s);
+}
+
+/* Run call(s, n) in a child process that must return one of the codes
+ * want0, want1 within secs seconds: a call that would run for hours
+ * fails the test instead of hanging it.  No cmocka in the child. */
+static void in_child(const char *what, int (*call)(const frs_sampler *,
+    uint64_t), const frs_sampler *s, uint64_t n, int want0, int want1)
+{
+	pid_t pid = fork();
+	int st = 0;
+
+	assert_true(pid >= 0);
+	if (pid == 0) {
+		int rc;
+		alarm(10);
+		rc = call(s, n);
+		if (rc != want0 && rc != want1)
+			fprintf(stderr, "%s of %llu: %s\n", what,
+			    (unsigned long long)n, frs_code_name(rc));
+		_exit(rc == want0 || rc == want1 ? 0 : 1);
+	}
+	assert_int_equal(waitpid(pid, &st, 0), pid);
+	if (WIFSIGNALED(st) && WTERMSIG(st) == SIGALRM) {
+		print_error("%s of %llu: still running after 10 s\n", what,
+		    (unsigned long long)n);
+		fail();
+	}
+	assert_true(WIFEXITED(st) && WEXITSTATUS(st) == 0);
+}
+
+static int huge_count(const frs_sampler *s, uint64_t n)
+{
+	uint64_t c;
+
+	return frs_count(s, n, 1, &c, NULL);
+}
+
+static int huge_draw(const frs_sampler *s, uint64_t n)
+{
+	double xy[2];
+	size_t c;
+	frs_error e;
+	int rc = frs_draw(s, n, 1, xy, NULL, 1, &c, &e);
+
+	return e.code == (enum frs_code)rc ? rc : -1;
+}
+
+/* Counts far beyond any matrix: FRS_E_LIMIT (the draw may also say
+ * FRS_E_NOMEM), soon. */
+static void huge_n(uint64_t n)
+{
+	frs_sampler *s = blob_sampler();
+
+	in_child("frs_count", huge_count, s, n, FRS_E_LIMIT, FRS_E_LIMIT);
+	in_child("frs_draw", huge_draw, s, n, FRS_E_LIMIT, FRS_E_NOMEM);
+	frs_sampler_free(s);
+}
+
+static void test_huge_n(void **state)
+{
+	(void)state;
+	huge_n(UINT64_MAX);
+	huge_n((uint64_t)1 << 62);
+}
+
+/* FRS_E_BUFFER: the count, nothing written; then that room is enough. */
+static void test_buffer(void **state)
+{
+	frs_sampler *s = blob_sampler();
+	uint64_t n = 2000, want = 0;
+	size_t c = 0, c2 = 0;
+	double *xy, *pdf, *xy2;
+	frs_error e;
+
+	(void)state;
+	assert_int_equal(frs_count(s, n, 4, &want, NULL), FRS_OK);
+	xy = malloc(2 * want * sizeof *xy);
+	pdf = malloc(want * sizeof *pdf);
+	xy2 = malloc(2 * want * sizeof *xy2);
+	assert_non_null(xy);
+	assert_non_null(pdf);
+	assert_non_null(xy2);
+	for (size_t i = 0; i < 2 * want; i++)
+		xy[i] = 42.0;
+	for (size_t i = 0; i < want; i++)
+		pdf[i] = 42.0;
+	EXPECT(FRS_E_BUFFER, frs_draw(s, n, 4, xy, pdf, want - 1, &c, E));
+	assert_int_equal(c, want);
+	for (size_t i = 0; i < 2 * want; i++)
+		assert_true(xy[i] == 42.0);
+	for (size_t i = 0; i < want; i++)
+		assert_true(pdf[i] == 42.0);
+	EXPECT(FRS_E_BUFFER, frs_draw(s, n, 4, xy, NULL, 10, &c, E));
+	assert_int_equal(c, want);
+	EXPECT(FRS_E_BUFFER, frs_draw(s, n, 4, NULL, NULL, 0, &c, E));
+	assert_int_equal(c, want);
+	assert_int_equal(frs_draw(s, n, 4, xy, pdf, c, &c2, &e), FRS_OK);
+	assert_int_equal(c2, want);
+	for (size_t i = 0; i < 2 * want; i++)
+		assert_true(xy[i] >= 0.0 && xy[i] < 1.0);
+	for (size_t i = 0; i < want; i++)
+		assert_true(pdf[i] > 0.0);
+	/* More room changes nothing; no pdf, the same points. */
+	free(xy2);
+	xy2 = malloc(2 * (want + 100) * sizeof *xy2);
+	assert_non_null(xy2);
+	assert_int_equal(frs_draw(s, n, 4, xy2, NULL, want + 100, &c2, NULL),
+	    FRS_OK);
+	assert_int_equal(c2, want);
+	assert_memory_equal(xy, xy2, 2 * want * sizeof *xy);
+	free(xy);
+	free(xy2);
+	free(pdf);
+	frs_sampler_free(s);
+}
+
+/* The callback form: the batches make up frs_draw_progressive's output. */
+struct gather {
+	struct drawn d;
+	size_t cap, calls, stop_at;
+	uint64_t total;
+	int want_pdf, steps, bad;
+};
+
+static int gather(void *ctx, const double *xy, const double *pdf,
+    const uint32_t *step, size_t k, uint64_t total)
+{
+	struct gather *g = ctx;
+
+	g->calls++;
+	if (g->calls == 1)
+		g->total = total;
+	if (k == 0 || total != g->total || g->d.n + k > g->cap ||
+	    (pdf != NULL) != g->want_pdf || (step != NULL) != g->steps)
+		g->bad = 1;
+	if (!g->bad) {
+		memcpy(g->d.xy + 2 * g->d.n, xy, 2 * k * sizeof *xy);
+		if (pdf)
+			memcpy(g->d.pdf + g->d.n, pdf, k * sizeof *pdf);
+		if (step)
+			memcpy(g->d.step + g->d.n, step, k * sizeof *step);
+		g->d.n += k;
+	}
+	return g->stop_at != 0 && g->calls == g->stop_at;
+}
+
+static void each_case(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps, int want_pdf)
+{
+	struct drawn ref = draw(s, steps, nsteps, 3, want_pdf);
+	struct gather g;
+
+	memset(&g, 0, sizeof g);
+	g.cap = ref.n;
+	g.want_pdf = want_pdf;
+	g.steps = nsteps > 1;
+	g.d.xy = malloc(2 * ref.n * sizeof(double));
+	g.d.pdf = malloc(ref.n * sizeof(double));
+	g.d.step = malloc(ref.n * sizeof(uint32_t));
+	EXPECT(FRS_OK, (g.d.n = 0, g.calls = 0, frs_draw_each(s, steps, nsteps,
+	    3, want_pdf, gather, &g, E)));
+	assert_false(g.bad);
+	assert_int_equal(g.d.n, ref.n);
+	assert_int_equal(g.total, ref.n);
+	assert_true(g.calls >= 1);
+	assert_memory_equal(g.d.xy, ref.xy, 2 * ref.n * sizeof(double));
+	if (want_pdf)
+		assert_memory_equal(g.d.pdf, ref.pdf, ref.n * sizeof(double));
+	if (nsteps > 1)
+		assert_memory_equal(g.d.step, ref.step,
+		    ref.n * sizeof(uint32_t));
+	drawn_free(&g.d);
+	drawn_free(&ref);
+}
+
+static void test_each(void **state)
+{
+	frs_sampler *s = blob_sampler();
+	static const uint64_t steps[] = { 2000, 9000, 20000 };
+	uint64_t n = 20000;
+	struct gather g;
+
+	(void)state;
+	each_case(s, &n, 1, 0);
+	each_case(s, &n, 1, 1);
+	each_case(s, steps, 3, 1);
+	each_case(s, steps, 3, 0);
+	/* A callback that asks to stop: no call after that one. */
+	memset(&g, 0, sizeof g);
+	g.cap = 40000;
+	g.d.xy = malloc(2 * g.cap * sizeof(double));
+	g.d.pdf = malloc(g.cap * sizeof(double));
+	g.d.step = malloc(g.cap * sizeof(uint32_t));
+	g.stop_at = 2;
+	EXPECT(FRS_E_CALLBACK, (g.calls = 0, g.d.n = 0, frs_draw_each(s, &n, 1,
+	    3, 0, gather, &g, E)));
+	assert_int_equal(g.calls, 2);
+	g.stop_at = 1;
+	EXPECT(FRS_E_CALLBACK, (g.calls = 0, g.d.n = 0, frs_draw_each(s, &n, 1,
+	    3, 0, gather, &g, E)));
+	assert_int_equal(g.calls, 1);
+	drawn_free(&g.d);
+	EXPECT(FRS_E_ARG, frs_draw_each(s, &n, 1, 3, 0, NULL, NULL, E));
+	EXPECT(FRS_E_ARG, frs_draw_each(s, NULL, 1, 3, 0, gather, &g, E));
+	frs_sampler_free(s);
+}
+
+/* FRS_MAX_MEM below what a load needs: FRS_E_NOMEM. */
+static void test_nomem(void **state)
+{
+	frs_mask *mk = NULL;
+	frs_sampler *s = NULL;
+	frs_hsw *hw = NULL;
+	float *map = NULL;
+	uint32_t w, h;
+
+	(void)state;
+	assert_int_equal(setenv("FRS_MAX_MEM", "1k", 1), 0);
+	EXPECT(FRS_E_NOMEM, frs_mask_load(&mk, MATRIX, E));
+	EXPECT(FRS_E_NOMEM, frs_map_load("blob", 0, 0, &map, &w, &h, E));
+	EXPECT(FRS_E_NOMEM, frs_map_load("data/sunset.exr", 0, 0, &map, &w, &h,
+	    E));
+	EXPECT(FRS_E_NOMEM, frs_sampler_new_f64(&s, mask, blob.v, blob.w,
+	    blob.h, 0, NULL, E));
+	EXPECT(FRS_E_NOMEM, frs_hsw_new_f64(&hw, blob.v, blob.w, blob.h, 0,
+	    E));
+	assert_int_equal(unsetenv("FRS_MAX_MEM"), 0);
+	EXPECT(FRS_OK, frs_map_load("blob", 0, 0, &map, &w, &h, E) == FRS_OK ?
+	    (frs_map_free(map), FRS_OK) : FRS_E_ARG);
+}
+
+static int unset_max_mem(void **state)
+{
+	(void)state;
+	return unsetenv("FRS_MAX_MEM");
+}
+
+/* ---- threads ---------------------------------------------------------- */
+
+struct job {
+	const frs_sampler *s;
+	uint64_t n, seed;
+	int pdf;
+	struct drawn d;
+	size_t cap;
+	int rc;
+};
+
+static void *job_run(void *arg)
+{
+	struct job *j = arg;
+
+	/* Several times, so that the calls overlap. */
+	for (int r = 0; r < 3 && j->rc == FRS_OK; r++)
+		j->rc = frs_draw(j->s, j->n, j->seed, j->d.xy, j->d.pdf, j->cap,
+		    &j->d.n, NULL);
+	return NULL;
+}
+
+/*
+ * One sampler used by four threads at once, each with its own buffers,
+ * two of them with the same seed; the mask fresh, so that the threads
+ * also race to make its lazy parts (sorted lists, minmap).  The bytes of
+ * sequential calls.
+ */
+static void test_thread_safety(void **state)
+{
+	frs_mask *mk;
+	frs_sampler *s[2];
+	struct frs_options o;
+	struct job j[6];
+	pthread_t t[6];
+
+	(void)state;
+	assert_int_equal(frs_mask_load(&mk, MATRIX, NULL), FRS_OK);
+	frs_options_init(&o);
+	o.jitter = FRS_JIT_RANDOM;
+	s[0] = sampler_f64(mk, &blob, &o);
+	o.algorithm = FRS_ALG_LEVEL1;
+	o.threads = 2;
+	s[1] = sampler_f64(mk, &blob, &o);
+	for (int i = 0; i < 6; i++) {
+		j[i] = (struct job){ s[i >= 4], 6000 + 1000 * (uint64_t)(i % 2),
+		    i == 3 ? 1 : (uint64_t)i + 1, i % 2, { 0, NULL, NULL, NULL },
+		    20000, FRS_OK };
+		j[i].d.xy = malloc(2 * j[i].cap * sizeof(double));
+		j[i].d.pdf = malloc(j[i].cap * sizeof(double));
+		assert_non_null(j[i].d.xy);
+		assert_non_null(j[i].d.pdf);
+		if (!j[i].pdf) {
+			free(j[i].d.pdf);
+			j[i].d.pdf = NULL;
+		}
+	}
+	for (int i = 0; i < 6; i++)
+		assert_int_equal(pthread_create(&t[i], NULL, job_run, &j[i]), 0);
+	for (int i = 0; i < 6; i++)
+		assert_int_equal(pthread_join(t[i], NULL), 0);
+	for (int i = 0; i < 6; i++) {
+		struct drawn d = draw(j[i].s, &j[i].n, 1, j[i].seed, j[i].pdf);
+		assert_int_equal(j[i].rc, FRS_OK);
+		assert_int_equal(j[i].d.n, d.n);
+		assert_memory_equal(j[i].d.xy, d.xy, 2 * d.n * sizeof(double));
+		if (j[i].pdf)
+			assert_memory_equal(j[i].d.pdf, d.pdf,
+			    d.n * sizeof(double));
+		drawn_free(&d);
+		drawn_free(&j[i].d);
+	}
+	frs_sampler_free(s[0]);
+	frs_sampler_free(s[1]);
+	frs_mask_free(mk);
+}
+
+/* ---- HSW -------------------------------------------------------------- */
+
+/* hsw-sample with ARGS, -n n and --pdf against the records of xy, pdf. */
+static void compare_hsw(const double *xy, const double *pdf, size_t n,
+    const char *args)
+{
+	const char *out = tu_path("hsw.pts");
+	double *rec = malloc(3 * n * sizeof *rec);
+
+	assert_non_null(rec);
+	prog("hsw-sample -q %s -n %zu --pdf -o %s", args, n, out);
+	for (size_t i = 0; i < n; i++) {
+		rec[3 * i] = xy[2 * i];
+		rec[3 * i + 1] = xy[2 * i + 1];
+		rec[3 * i + 2] = pdf[i];
+	}
+	same_as_file(out, rec, n, 1);
+	free(rec);
+}
+
+static void test_hsw_draw(void **state)
+{
+	static const char *const kinds[] = { "random", "regular", "jittered",
+	    "halton", "hammersley" };
+	size_t n = 777;
+	double *xy = malloc(2 * n * sizeof *xy), *pdf = malloc(n * sizeof *pdf);
+	double *xy2 = malloc(2 * n * sizeof *xy2);
+	frs_hsw *hw, *hc;
+	char args[256];
+
+	(void)state;
+	assert_non_null(xy);
+	assert_non_null(pdf);
+	assert_non_null(xy2);
+	assert_int_equal(frs_hsw_new_f64(&hw, blob.v, blob.w, blob.h, 0, NULL),
+	    FRS_OK);
+	assert_int_equal(frs_hsw_new(&hc, NULL, 64, 64, 0, NULL), FRS_OK);
+	for (int k = FRS_HSW_RANDOM; k <= FRS_HSW_HAMMERSLEY; k++) {
+		assert_int_equal(frs_hsw_draw(hw, (enum frs_hsw_input)k, n, 3, xy,
+		    pdf, 1, NULL), FRS_OK);
+		snprintf(args, sizeof args, "-i blob --input %s -S 3", kinds[k]);
+		compare_hsw(xy, pdf, n, args);
+		/* Threads and no pdf: the same points. */
+		assert_int_equal(frs_hsw_draw(hw, (enum frs_hsw_input)k, n, 3,
+		    xy2, NULL, 2, NULL), FRS_OK);
+		assert_memory_equal(xy, xy2, 2 * n * sizeof *xy);
+		assert_int_equal(frs_hsw_draw(hc, (enum frs_hsw_input)k, n, 3, xy,
+		    pdf, 0, NULL), FRS_OK);
+		snprintf(args, sizeof args, "-i const -s 64x64 --input %s -S 3",
+		    kinds[k]);
+		compare_hsw(xy, pdf, n, args);
+	}
+	frs_hsw_free(hw);
+	frs_hsw_free(hc);
+	free(xy);
+	free(xy2);
+	free(pdf);
+}
+
+/* Given points: hsw-sample --input FILE; in place the same. */
+static void test_hsw_warp(void **state)
+{
+	size_t n = 5000;
+	double *in = tu_rnd_points(n, 5), *out = malloc(2 * n * sizeof *out);
+	double *pdf = malloc(n * sizeof *pdf), *pdf2 = malloc(n * sizeof *pdf);
+	const char *pin = tu_path("in.pts"), *exr = write_exr("hblob.exr",
+	    &blob);
+	struct frs_points p = { 2, 0, n, in };
+	frs_hsw *hw;
+	float *map;
+	uint32_t w, h;
+	char args[700];
+	FILE *fp;
+
+	(void)state;
+	assert_non_null(out);
+	assert_non_null(pdf);
+	assert_non_null(pdf2);
+	fp = fopen(pin, "wb");
+	assert_non_null(fp);
+	assert_int_equal(pts_write(fp, pin, &p, 0), 0);
+	assert_int_equal(fclose(fp), 0);
+	assert_int_equal(frs_hsw_new_f64(&hw, blob.v, blob.w, blob.h, 0,
+	    NULL), FRS_OK);
+	assert_int_equal(frs_hsw_warp(hw, in, out, pdf, n, 1, NULL), FRS_OK);
+	snprintf(args, sizeof args, "-i blob --input %s", pin);
+	compare_hsw(out, pdf, n, args);
+	assert_int_equal(frs_hsw_warp(hw, in, in, pdf2, n, 2, NULL), FRS_OK);
+	assert_memory_equal(in, out, 2 * n * sizeof *in);
+	assert_memory_equal(pdf, pdf2, n * sizeof *pdf);
+	frs_hsw_free(hw);
+	/* A float map from a file. */
+	assert_int_equal(frs_map_load(exr, 0, 0, &map, &w, &h, NULL), FRS_OK);
+	assert_int_equal(frs_hsw_new(&hw, map, w, h, 0, NULL), FRS_OK);
+	assert_int_equal(frs_hsw_draw(hw, FRS_HSW_HALTON, n, 9, out, pdf, 1,
+	    NULL), FRS_OK);
+	snprintf(args, sizeof args, "-i %s --input halton -S 9", exr);
+	compare_hsw(out, pdf, n, args);
+	frs_hsw_free(hw);
+	frs_map_free(map);
+	free(in);
+	free(out);
+	free(pdf);
+	free(pdf2);
+}
+
+/* Negative values count as zero: the points of the map with zeros. */
+static void test_hsw_negative(void **state)
+{
+	struct frs_imap m;
+	frs_hsw *a, *b;
+	size_t n = 3000;
+	double *xa = malloc(2 * n * sizeof *xa), *xb = malloc(2 * n * sizeof *xb);
+	double *pa = malloc(n * sizeof *pa), *pb = malloc(n * sizeof *pb);
+	int q, rc;
+
+	(void)state;
+	assert_int_equal(imap_load("blob", 32, 32, 0, &m), 0);
+	for (size_t i = 0; i < 1024; i += 3)
+		m.v[i] = -0.5;
+	q = quiet_begin();
+	rc = frs_hsw_new_f64(&a, m.v, 32, 32, 0, NULL);
+	quiet_end(q, "frs_hsw_new_f64");
+	if (rc != FRS_OK) {
+		print_error("frs_hsw_new_f64 refuses negative values\n");
+		imap_free(&m);
+		free(xa), free(xb), free(pa), free(pb);
+		fail();
+	}
+	for (size_t i = 0; i < 1024; i += 3)
+		m.v[i] = 0.0;
+	assert_int_equal(frs_hsw_new_f64(&b, m.v, 32, 32, 0, NULL), FRS_OK);
+	assert_int_equal(frs_hsw_draw(a, FRS_HSW_RANDOM, n, 1, xa, pa, 1,
+	    NULL), FRS_OK);
+	assert_int_equal(frs_hsw_draw(b, FRS_HSW_RANDOM, n, 1, xb, pb, 1,
+	    NULL), FRS_OK);
+	assert_memory_equal(xa, xb, 2 * n * sizeof *xa);
+	assert_memory_equal(pa, pb, n * sizeof *pa);
+	for (size_t i = 0; i < n; i++)
+		assert_true(pa[i] > 0.0);
+	frs_hsw_free(a);
+	frs_hsw_free(b);
+	imap_free(&m);
+	free(xa);
+	free(xb);
+	free(pa);
+	free(pb);
+}
+
+static void test_hsw_errors(void **state)
+{
+	double in[4] = { 0.5, 0.5, 0.25, 1.0 }, out[4], pdf[2], xy[8];
+	double one[4] = { 1, 1, 1, 1 };
+	frs_hsw *hw = NULL;
+
+	(void)state;
+	EXPECT(FRS_E_ARG, frs_hsw_new(NULL, NULL, 4, 4, 0, E));
+	EXPECT(FRS_E_ARG, frs_hsw_new(&hw, NULL, 0, 4, 0, E));
+	EXPECT(FRS_E_ARG, frs_hsw_new(&hw, NULL, 4, 0, 0, E));
+	EXPECT(FRS_E_ARG, frs_hsw_new_f64(NULL, one, 2, 2, 0, E));
+	EXPECT(FRS_E_ARG, frs_hsw_new_f64(&hw, one, 2, 2, 1, E));
+	EXPECT(FRS_E_LIMIT, frs_hsw_new(&hw, NULL, 1u << 20, 1u << 20, 0, E));
+	assert_int_equal(frs_hsw_new_f64(&hw, one, 2, 2, 0, NULL), FRS_OK);
+	EXPECT(FRS_E_ARG, frs_hsw_warp(NULL, in, out, pdf, 1, 1, E));
+	EXPECT(FRS_E_ARG, frs_hsw_warp(hw, NULL, out, pdf, 1, 1, E));
+	EXPECT(FRS_E_ARG, frs_hsw_warp(hw, in, NULL, pdf, 1, 1, E));
+	EXPECT(FRS_E_ARG, frs_hsw_warp(hw, in, out, pdf, 2, 1, E));
+	EXPECT(FRS_E_ARG, frs_hsw_warp(hw, in, out, pdf, 1, -1, E));
+	in[0] = NAN;
+	EXPECT(FRS_E_ARG, frs_hsw_warp(hw, in, out, pdf, 1, 1, E));
+	in[0] = -0.25;
+	EXPECT(FRS_E_ARG, frs_hsw_warp(hw, in, out, pdf, 1, 1, E));
+	EXPECT(FRS_OK, frs_hsw_warp(hw, in, out, pdf, 0, 1, E));
+	EXPECT(FRS_E_ARG, frs_hsw_draw(NULL, FRS_HSW_HALTON, 4, 1, xy, NULL, 1,
+	    E));
+	EXPECT(FRS_E_ARG, frs_hsw_draw(hw, FRS_HSW_HALTON, 4, 1, NULL, NULL, 1,
+	    E));
+	EXPECT(FRS_E_ARG, frs_hsw_draw(hw, (enum frs_hsw_input)5, 4, 1, xy,
+	    NULL, 1, E));
+	EXPECT(FRS_E_ARG, frs_hsw_draw(hw, (enum frs_hsw_input)-1, 4, 1, xy,
+	    NULL, 1, E));
+	EXPECT(FRS_E_ARG, frs_hsw_draw(hw, FRS_HSW_HALTON, 4, 1, xy, NULL, -3,
+	    E));
+	EXPECT(FRS_OK, frs_hsw_draw(hw, FRS_HSW_HALTON, 4, 1, xy, NULL, 1, E));
+	frs_hsw_free(hw);
+	frs_hsw_free(NULL);
+}
+
+/* A NULL sampler or mask for every function that takes one (last: a
+ * crash here would end the run). */
+static void test_null_handles(void **state)
+{
+	uint64_t n = 100, c64;
+	double xy[8], pdf[4];
+	uint32_t step[4];
+	struct frs_info in;
+	size_t c;
+	uint32_t w = 7, h = 7;
+
+	(void)state;
+	EXPECT(FRS_E_ARG, frs_draw(NULL, n, 1, xy, NULL, 4, &c, E));
+	EXPECT(FRS_E_ARG, frs_draw_progressive(NULL, &n, 1, 1, xy, pdf, step,
+	    4, &c, E));
+	EXPECT(FRS_E_ARG, frs_count(NULL, n, 1, &c64, E));
+	EXPECT(FRS_E_ARG, frs_sampler_info(NULL, n, 1, &in, E));
+	EXPECT(FRS_E_ARG, frs_draw_each(NULL, &n, 1, 3, 0, gather, NULL, E));
+	assert_null(frs_mask_note(NULL));
+	frs_mask_size(NULL, &w, &h);
+	assert_int_equal(w, 0);
+	assert_int_equal(h, 0);
+}
+
+/* ---- main ------------------------------------------------------------- */
+
+static int setup(void **state)
+{
+	frs_error e;
+
+	(void)state;
+	if (frs_mask_load(&mask, MATRIX, &e) != FRS_OK) {
+		fprintf(stderr, "%s: %s\n", MATRIX, e.message);
+		return -1;
+	}
+	return imap_load("blob", 0, 0, 0, &blob);
+}
+
+static int teardown(void **state)
+{
+	frs_mask_free(mask);
+	imap_free(&blob);
+	return tu_teardown(state);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_code_names),
+		cmocka_unit_test(test_const_map),
+		cmocka_unit_test(test_blob_defaults),
+		cmocka_unit_test(test_options),
+		cmocka_unit_test(test_progressive),
+		cmocka_unit_test(test_float_map),
+		cmocka_unit_test(test_stride),
+		cmocka_unit_test(test_threads_option),
+		cmocka_unit_test(test_count),
+		cmocka_unit_test(test_info),
+		cmocka_unit_test(test_wrap),
+		cmocka_unit_test(test_prepared),
+		cmocka_unit_test(test_mask_errors),
+		cmocka_unit_test(test_map_errors),
+		cmocka_unit_test(test_bad_maps),
+		cmocka_unit_test(test_sampler_errors),
+		cmocka_unit_test(test_draw_errors),
+		cmocka_unit_test(test_huge_n),
+		cmocka_unit_test(test_buffer),
+		cmocka_unit_test(test_each),
+		cmocka_unit_test_teardown(test_nomem, unset_max_mem),
+		cmocka_unit_test(test_thread_safety),
+		cmocka_unit_test(test_hsw_draw),
+		cmocka_unit_test(test_hsw_warp),
+		cmocka_unit_test(test_hsw_negative),
+		cmocka_unit_test(test_hsw_errors),
+		cmocka_unit_test(test_null_handles),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}
