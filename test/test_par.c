@@ -1,11 +1,13 @@
 /* Parallel loops: every index exactly once for any thread count, errors
- * stop the loop, and the progress bar draws rate and ETA. */
+ * stop the loop and reach the caller, counts and messages per thread, the
+ * team's many small jobs, and the progress bar draws rate and ETA. */
 #include "testutil.h"
 #include "cli.h"
 #include "par.h"
 #include "progress.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 
 struct ctx {
 	unsigned char *hit;
@@ -53,6 +55,65 @@ static void failure_stops(void **state)
 	free(c.hit);
 }
 
+/* A thread's own count and message: one thread's -j and failure do not
+ * reach another (libfrs(3) calls from many threads). */
+static void *other_thread(void *arg)
+{
+	int *seen = arg;
+	struct ctx c = { calloc(10, 1), 3 };
+
+	seen[0] = frs_threads();	/* a new thread starts with 1 */
+	frs_set_threads(2);
+	seen[1] = frs_parallel(10, 1, mark, &c, NULL);
+	free(c.hit);
+	return NULL;
+}
+
+static void per_thread(void **state)
+{
+	pthread_t t;
+	int seen[2];
+	(void)state;
+
+	frs_set_threads(3);
+	frs_fail("mine");
+	assert_int_equal(pthread_create(&t, NULL, other_thread, seen), 0);
+	pthread_join(t, NULL);
+	assert_int_equal(seen[0], 1);
+	assert_int_equal(seen[1], -1);
+	assert_int_equal(frs_threads(), 3);
+	assert_string_equal(frs_errmsg(), "mine");
+}
+
+/* The team: many small jobs one after another (as frd-gen runs them),
+ * each index once, whatever workers join late or never; a failure's
+ * message reaches the caller. */
+static void team_jobs(void **state)
+{
+	const uint64_t n = 257;
+	struct ctx c = { calloc(n, 1), UINT64_MAX };
+	(void)state;
+
+	for (int t = 1; t <= 4; t++) {
+		frs_set_threads(t);
+		assert_int_equal(frs_team_start(), 0);
+		for (int job = 0; job < 3000; job++) {
+			uint64_t m = 1 + (uint64_t)job % n;
+			memset(c.hit, 0, n);
+			assert_int_equal(frs_team_run(m, 1 + (uint64_t)job % 7,
+			    mark, &c), 0);
+			for (uint64_t i = 0; i < n; i++)
+				assert_int_equal(c.hit[i], i < m);
+		}
+		c.fail_at = 100;
+		assert_int_equal(frs_team_run(n, 4, mark, &c), -1);
+		assert_err_has("item 100 failed");
+		c.fail_at = UINT64_MAX;
+		frs_team_stop();
+	}
+	free(c.hit);
+}
+
 /* Draw into a file instead of the terminal and look at what came out. */
 static void progress_draws(void **state)
 {
@@ -97,6 +158,8 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(every_index_once),
 		cmocka_unit_test(failure_stops),
+		cmocka_unit_test(per_thread),
+		cmocka_unit_test(team_jobs),
 		cmocka_unit_test(progress_draws),
 	};
 	return cmocka_run_group_tests(tests, NULL, tu_teardown);

@@ -8,6 +8,7 @@
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <time.h>
 
 /* Per thread, so that library calls in different threads (libfrs(3))
  * each use their own count; threads started here run with 1. */
@@ -114,49 +115,79 @@ int frs_parallel(uint64_t n, uint64_t chunk,
 
 /* ---- a spinning team ---------------------------------------------- */
 
+/*
+ * The team's state, one atomic word: the job's generation (bits 17 and
+ * up), a closed bit (16) and the workers inside the job (bits 0-15).  A
+ * worker joins a job only while it is open, by raising the count; the
+ * caller, once every chunk is handed out, closes the job and waits only
+ * for the workers that joined.  A worker that the scheduler kept away
+ * (another process holds the core) thus never holds the caller up: it
+ * finds the job closed and waits for the next.
+ */
+#define ST_GEN_SHIFT 17
+#define ST_CLOSED ((uint64_t)1 << 16)
+#define ST_COUNT 0xffffu
+
 static struct team {
 	int size;			/* threads besides the caller */
 	pthread_t *tid;
-	atomic_uint_fast64_t gen;	/* bumped for each job; odd never */
-	atomic_int busy;		/* workers still on the current job */
+	atomic_uint_fast64_t state;
 	atomic_int quit;
-	struct job *job;
+	struct job *job;		/* valid while the job is open or
+					 * joined */
 } team;
+
+/* Spin, then yield, then sleep: an idle worker must not keep a core
+ * from other processes for long. */
+static void idle(unsigned *spins)
+{
+	struct timespec ts = { 0, 50000 };
+
+	if (++*spins < 2000)
+		return;
+	if (*spins < 20000)
+		sched_yield();
+	else
+		nanosleep(&ts, NULL);
+}
 
 static void *team_worker(void *arg)
 {
 	uint64_t seen = 0;
+	unsigned spins = 0;
 	(void)arg;
 
-	for (;;) {
-		uint64_t g;
-		unsigned spins = 0;
-		while ((g = atomic_load_explicit(&team.gen,
-		    memory_order_acquire)) == seen) {
-			if (atomic_load(&team.quit))
-				return NULL;
-			/* Spin a while, then let the core go. */
-			if (++spins > 20000)
-				sched_yield();
+	while (!atomic_load(&team.quit)) {
+		uint_fast64_t st = atomic_load_explicit(&team.state,
+		    memory_order_acquire);
+		uint64_t g = st >> ST_GEN_SHIFT;
+		if (g == seen || (st & ST_CLOSED)) {
+			seen = g;
+			idle(&spins);
+			continue;
 		}
+		if (!atomic_compare_exchange_weak_explicit(&team.state, &st,
+		    st + 1, memory_order_acq_rel, memory_order_relaxed))
+			continue;
 		seen = g;
+		spins = 0;
 		run(team.job, 0);
-		atomic_fetch_sub_explicit(&team.busy, 1, memory_order_release);
+		atomic_fetch_sub_explicit(&team.state, 1, memory_order_release);
 	}
+	return NULL;
 }
 
 int frs_team_start(void)
 {
 	team.size = 0;
-	atomic_init(&team.gen, 0);
-	atomic_init(&team.busy, 0);
+	atomic_init(&team.state, 0);
 	atomic_init(&team.quit, 0);
 	if (nthreads <= 1)
 		return 0;
 	team.tid = malloc((size_t)(nthreads - 1) * sizeof *team.tid);
 	if (team.tid == NULL)
 		return frs_fail("out of memory for threads");
-	for (int t = 0; t < nthreads - 1; t++) {
+	for (int t = 0; t < nthreads - 1 && t < (int)ST_COUNT; t++) {
 		if (pthread_create(&team.tid[t], NULL, team_worker, NULL) != 0)
 			break;
 		team.size++;
@@ -168,6 +199,8 @@ int frs_team_run(uint64_t n, uint64_t chunk,
     int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx)
 {
 	struct job j;
+	uint_fast64_t st;
+	unsigned spins = 0;
 
 	if (chunk == 0)
 		chunk = 1;
@@ -176,16 +209,19 @@ int frs_team_run(uint64_t n, uint64_t chunk,
 		run(&j, 1);
 		return job_result(&j);
 	}
+	/* The count is 0 here: the last job was closed and left. */
 	team.job = &j;
-	atomic_store(&team.busy, team.size);
-	atomic_fetch_add_explicit(&team.gen, 1, memory_order_release);
+	st = atomic_load_explicit(&team.state, memory_order_relaxed);
+	atomic_store_explicit(&team.state,
+	    ((st >> ST_GEN_SHIFT) + 1) << ST_GEN_SHIFT, memory_order_release);
 	run(&j, 1);
-	/* Spin a while, then let the core go: on a busy machine the worker
-	 * we wait for may need this very core to finish. */
-	for (unsigned spins = 0; atomic_load_explicit(&team.busy,
-	    memory_order_acquire) > 0; )
+	st = atomic_fetch_or_explicit(&team.state, ST_CLOSED,
+	    memory_order_acq_rel);
+	while ((st & ST_COUNT) != 0) {
 		if (++spins > 2000)
 			sched_yield();
+		st = atomic_load_explicit(&team.state, memory_order_acquire);
+	}
 	return job_result(&j);
 }
 
