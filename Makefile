@@ -36,7 +36,7 @@ PKG_LIBS = $(shell $(PKG_CONFIG) --libs libpng OpenEXR OpenCL 2>/dev/null) \
 CMOCKA_LIBS = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
 PROGS = imap frd-gen frd-prep frs-sample pts-render ref-sample hsw-sample \
-	discrepancy dda
+	discrepancy dda mc-error
 LIBSRC = $(wildcard src/lib/*.c)
 LIBCXXSRC = $(wildcard src/lib/*.cc)
 TESTSRC = $(wildcard test/test_*.c)

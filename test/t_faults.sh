@@ -196,6 +196,8 @@ hsw-sample -i blob -n 10
 $CL hsw-sample --device cl -i blob -n 10 -o /dev/full
 discrepancy -o /dev/full $T/s.pts
 discrepancy $T/s.pts
+mc-error -o /dev/full $T/s.pts
+mc-error $T/s.pts
 dda --size 10 -o /dev/full $T/s.pts
 dda --size 10 --png /dev/full -o $T/full/out $T/s.pts
 dda --size 10 --radial /dev/full -o $T/full/out $T/s.pts
@@ -204,7 +206,7 @@ dda --rdf $T/s.pts
 dda --size 10 $T/s.pts
 '
 for p in imap frd-gen frd-prep frs-sample pts-render ref-sample hsw-sample \
-    discrepancy dda; do
+    discrepancy dda mc-error; do
 	full_rows="$full_rows$p --version
 "
 done

@@ -5,12 +5,40 @@
 #include "ptsets.h"
 #include "ptsio.h"
 
+/* Keep buffer b (owned from now on); -1 without freeing it. */
+static int keep(struct pt_sets *s, double *b)
+{
+	double **nb = realloc(s->buf, (s->nbuf + 1) * sizeof *nb);
+
+	if (nb == NULL)
+		return -1;
+	s->buf = nb;
+	s->buf[s->nbuf++] = b;
+	return 0;
+}
+
+/* The first extra column into an array of its own, and x y packed. */
+static double *split(struct frs_points *p)
+{
+	size_t stride = 2 + p->extra;
+	double *w = NULL;
+
+	if (p->extra && (w = malloc(p->n * sizeof *w)) == NULL)
+		return NULL;
+	for (size_t i = 0; p->extra && i < p->n; i++) {
+		w[i] = p->x[stride * i + 2];
+		p->x[2 * i] = p->x[stride * i],
+		p->x[2 * i + 1] = p->x[stride * i + 1];
+	}
+	return w;
+}
+
 int pt_sets_add(struct pt_sets *s, const char *path, size_t per)
 {
 	struct frs_points p;
 	struct pt_set *ns;
-	double **nb;
-	size_t k, stride;
+	double *w;
+	size_t k;
 
 	if (pts_read(path, &p) < 0)
 		return -1;
@@ -30,26 +58,25 @@ int pt_sets_add(struct pt_sets *s, const char *path, size_t per)
 		return frs_fail("%s: %zu points are not a whole number of sets "
 		    "of %zu", path, cnt, per);
 	}
-	stride = 2 + p.extra;
-	for (size_t i = 0; p.extra && i < p.n; i++)
-		p.x[2 * i] = p.x[stride * i],
-		p.x[2 * i + 1] = p.x[stride * i + 1];
+	w = split(&p);
 	k = per ? p.n / per : 1;
 	per = per ? per : p.n;
 	ns = realloc(s->set, (s->n + k) * sizeof *ns);
 	if (ns != NULL)
 		s->set = ns;
-	nb = realloc(s->buf, (s->nbuf + 1) * sizeof *nb);
-	if (nb != NULL)
-		s->buf = nb;
-	if (ns == NULL || nb == NULL) {
+	if (ns == NULL || (p.extra && w == NULL) || keep(s, p.x) < 0) {
+		free(w);
 		pts_free(&p);
 		return frs_fail("no memory for %zu sets", s->n + k);
 	}
-	s->buf[s->nbuf++] = p.x;
+	if (w != NULL && keep(s, w) < 0) {
+		free(w);
+		return frs_fail("no memory for %zu sets", s->n + k);
+	}
 	for (size_t i = 0; i < k; i++) {
 		struct pt_set *t = &s->set[s->n++];
 		t->xy = p.x + 2 * per * i;
+		t->w = w ? w + per * i : NULL;
 		t->n = per;
 		t->file = path;
 	}

@@ -9,6 +9,8 @@
 
 struct pt_set {
 	const double *xy;	/* n points, x y packed */
+	const double *w;	/* the first extra value of each point (the
+				 * density of frs-sample --pdf), or NULL */
 	size_t n;
 	const char *file;	/* the name given, for messages and tables */
 };
@@ -20,9 +22,9 @@ struct pt_sets {
 	size_t nbuf;
 };
 
-/* Read path ("-": standard input), 2-D points only (extra values are
- * dropped), and append it as one set, or as sets of per points (per > 0;
- * the count must be a multiple).  An empty file is an error. */
+/* Read path ("-": standard input), 2-D points only (extra values but the
+ * first are dropped), and append it as one set, or as sets of per points
+ * (per > 0; the count must be a multiple).  An empty file is an error. */
 int pt_sets_add(struct pt_sets *s, const char *path, size_t per);
 void pt_sets_free(struct pt_sets *s);
 

@@ -22,6 +22,7 @@ int main_ref_sample(int, char **);
 int main_hsw_sample(int, char **);
 int main_discrepancy(int, char **);
 int main_dda(int, char **);
+int main_mc_error(int, char **);
 
 static const struct {
 	const char *name;
@@ -31,7 +32,7 @@ static const struct {
 	{ "frd-prep", main_frd_prep }, { "frs-sample", main_frs_sample },
 	{ "pts-render", main_pts_render }, { "ref-sample", main_ref_sample },
 	{ "hsw-sample", main_hsw_sample }, { "discrepancy", main_discrepancy },
-	{ "dda", main_dda },
+	{ "dda", main_dda }, { "mc-error", main_mc_error },
 };
 #define NPROG (sizeof prog / sizeof prog[0])
 #define MAXARG 32

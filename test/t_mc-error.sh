@@ -1,0 +1,150 @@
+#!/bin/sh
+# mc-error: estimates and errors against oracles, weights, sets, groups
+# and bad input.
+. "$(dirname "$0")/lib.sh"
+
+# col NAME FILE [ROW]: the value of column NAME in data row ROW (1).
+col() {
+	awk -F '\t' -v c="$1" -v r="${3:-1}" 'NR == 1 {
+		for (i = 1; i <= NF; i++) if ($i == c) k = i } NR == r + 1 {
+		print $k }' "$2"
+}
+
+# The exact values, computed here independently of the program.
+GAUSS=0.14112914561122003	# (0.15 sqrt(2 pi) erf(0.5 / (0.15 sqrt 2)))^2
+DISC=0.38484510006474967	# pi 0.35^2
+STEP=0.45			# 0.2 + 0.5 / 2
+
+ref-sample -k regular -n 4096 -T -q -o "$T/grid.txt"
+ref-sample -k random --sets 200 -n 256 -q -o "$T/rand.pts"
+ref-sample -k random -n 256 -S 3 -q -o "$T/r3.pts"
+
+check "default: all integrands" mc-error -o "$T/all" "$T/grid.txt"
+[ "$(head -n 1 "$T/all")" = "$(printf 'integrand\tn\tsets\testimate_mean\tabs_error\trmse\trel_rmse')" ] &&
+    ok "header" || nok "header: $(head -n 1 "$T/all")"
+[ "$(cut -f 1 "$T/all" | tail -n +2 | tr '\n' ' ')" = "gauss disc step " ] &&
+    ok "rows in fixed order" || nok "rows: $(cut -f 1 "$T/all")"
+
+# (1) The 64 x 64 grid is the midpoint rule: the mean equals an awk
+# midpoint sum, and the error is the midpoint rule's, about 1.3e-6
+# (h^2/24 times the jump of f' per axis); 1e-5 bounds it.
+mid=$(awk '!/^#/ && NF { n++; dx = $1 - 0.5; dy = $2 - 0.5
+	s += exp(-(dx * dx + dy * dy) / (2 * 0.15 * 0.15)) }
+	END { printf "%.17g", s / n }' "$T/grid.txt")
+mc-error -f gauss "$T/grid.txt" >"$T/g"
+near "$(col estimate_mean "$T/g")" "$mid" 1e-8 &&
+    ok "grid: gauss estimate = midpoint sum" ||
+    nok "grid: gauss $(col estimate_mean "$T/g"), midpoint $mid"
+near "$(col estimate_mean "$T/g")" "$GAUSS" 1e-5 &&
+    awk -v e="$(col abs_error "$T/g")" 'BEGIN { exit !(e > 0 && e < 1e-5) }' &&
+    ok "grid: gauss within 1e-5 of exact" ||
+    nok "grid: gauss error $(col abs_error "$T/g")"
+e=$(col estimate_mean "$T/g"); a=$(col abs_error "$T/g")
+awk -v e="$e" -v a="$a" -v x="$GAUSS" 'BEGIN { d = e - x; if (d < 0) d = -d
+	exit !(d - a < 1e-9 && a - d < 1e-9) }' &&
+    ok "abs_error = |estimate - exact|" || nok "abs_error $a, estimate $e"
+
+# (2) Uniform random points: the rmse of disc is the binomial
+# sqrt(p (1 - p) / n), p = pi r^2, within 20% (200 sets).
+check "--sets 256" mc-error -f disc --sets 256 -o "$T/d" "$T/rand.pts"
+[ "$(col sets "$T/d")" = 200 ] && [ "$(col n "$T/d")" = 256 ] &&
+    ok "--sets: 200 sets of 256" || nok "--sets row: $(sed -n 2p "$T/d")"
+th=$(awk -v p="$DISC" 'BEGIN { printf "%.9g", sqrt(p * (1 - p) / 256) }')
+near "$(col rmse "$T/d")" "$th" 0.2 &&
+    ok "disc rmse $(col rmse "$T/d") ~ $th" || nok "disc rmse $(col rmse "$T/d"), theory $th"
+r=$(awk -v a="$(col rmse "$T/d")" -v p="$DISC" 'BEGIN { printf "%.9g", a / p }')
+near "$(col rel_rmse "$T/d")" "$r" 1e-8 && ok "rel_rmse = rmse / exact" ||
+    nok "rel_rmse $(col rel_rmse "$T/d"), expected $r"
+# The mean over the sets of the per-set estimates: one set of 51200
+# points has the same mean (equal set sizes).
+mc-error -f disc "$T/rand.pts" >"$T/d1"
+near "$(col estimate_mean "$T/d1")" "$(col estimate_mean "$T/d")" 1e-9 &&
+    [ "$(col sets "$T/d1")" = 1 ] && ok "one set: same mean" || nok "one set"
+
+# step on random points: the estimate is the share below the line.
+mc-error -f step "$T/r3.pts" >"$T/s"
+ref-sample -k random -n 256 -S 3 -T -q -o "$T/r3.txt"
+share=$(awk '!/^#/ && NF { n++; if ($2 < 0.2 + 0.5 * $1) k++ }
+	END { printf "%.9g", k / n }' "$T/r3.txt")
+near "$(col estimate_mean "$T/s")" "$share" 1e-12 &&
+    ok "step: share below the line" || nok "step: $(col estimate_mean "$T/s"), share $share"
+
+# (3) Weights: f / pdf averaged, exactly.  step is 1 at the 1st, 3rd
+# and 4th point: (1/2 + 0 + 1/4 + 2) / 4 = 0.6875; unweighted 3/4.
+cat >"$T/w.txt" <<'EOF'
+#pts dims=2 extra=1 count=4
+0.1 0.1 2
+0.5 0.9 0.5
+0.9 0.3 4
+0.6 0.2 0.5
+EOF
+mc-error -f step "$T/w.txt" >"$T/w"
+[ "$(col estimate_mean "$T/w")" = 0.6875 ] && [ "$(col abs_error "$T/w")" = 0.2375 ] &&
+    ok "pdf column: weighted mean" || nok "weighted: $(sed -n 2p "$T/w")"
+mc-error -f step --weights "$T/w.txt" >"$T/w2"
+cmp -s "$T/w" "$T/w2" && ok "--weights = the default with a pdf" || nok "--weights"
+mc-error -f step --no-pdf "$T/w.txt" >"$T/w3"
+[ "$(col estimate_mean "$T/w3")" = 0.75 ] && ok "--no-pdf: plain mean" ||
+    nok "--no-pdf: $(sed -n 2p "$T/w3")"
+# gauss with a constant pdf 2: half the plain mean.
+awk '!/^#/ && NF { print $1, $2, 2 } /^#/ { print "#pts dims=2 extra=1" }' \
+    "$T/grid.txt" >"$T/g2.txt"
+mc-error -f gauss "$T/g2.txt" >"$T/g2"
+near "$(col estimate_mean "$T/g2")" "$(awk -v m="$mid" 'BEGIN { printf "%.17g", m / 2 }')" 1e-8 &&
+    ok "pdf 2: half the plain mean" || nok "pdf 2: $(col estimate_mean "$T/g2")"
+
+# --group, several files, determinism, text and standard input.
+mc-error --group file "$T/rand.pts" "$T/r3.pts" >"$T/gf"
+[ "$(wc -l <"$T/gf")" -eq 7 ] && [ "$(col n "$T/gf" 2)" = 256 ] &&
+    [ "$(col n "$T/gf" 1)" = 51200 ] && ok "--group file: a row per file and integrand" ||
+    nok "--group file: $(cat "$T/gf")"
+mc-error -f disc --sets 256 "$T/rand.pts" "$T/r3.pts" >"$T/gn"
+[ "$(wc -l <"$T/gn")" -eq 2 ] && [ "$(col sets "$T/gn")" = 201 ] &&
+    ok "--group n: sets of equal size together" || nok "--group n: $(cat "$T/gn")"
+mc-error -f disc --group all "$T/grid.txt" "$T/r3.pts" >"$T/ga"
+[ "$(wc -l <"$T/ga")" -eq 2 ] && [ "$(col n "$T/ga")" = 2176 ] &&
+    [ "$(col sets "$T/ga")" = 2 ] && ok "--group all: one row, n the mean" ||
+    nok "--group all: $(cat "$T/ga")"
+mc-error -f gauss -f disc,step --sets 256 "$T/rand.pts" >"$T/x1"
+mc-error --sets 256 "$T/rand.pts" >"$T/x2"
+cmp -s "$T/x1" "$T/x2" && ok "-f repeated and comma lists; deterministic" ||
+    nok "-f lists"
+mc-error - <"$T/grid.txt" >"$T/x3"
+cmp -s "$T/x3" "$T/all" && ok "standard input" || nok "standard input"
+
+# (4) Bad input: exit 1 naming the file, no output left.
+O=$T/o/out.tsv
+mkdir "$T/o"
+printf '#pts dims=3\n0.1 0.2 0.3\n' >"$T/d3.txt"
+printf '#pts dims=2\n0.1 1.5\n' >"$T/big.txt"
+printf '#pts dims=2 extra=1\n0.1 0.2 0\n' >"$T/p0.txt"
+printf '#pts dims=2 extra=1\n0.1 0.2 -1\n' >"$T/pneg.txt"
+printf '#pts dims=2 extra=1\n0.1 0.2 inf\n' >"$T/pinf.txt"
+printf '#pts dims=2 extra=1\n0.1 0.2 nan\n' >"$T/pnan.txt"
+: >"$T/empty.txt"
+expect_fail "missing file" 1 "$T/none.pts" "$O" mc-error -o "$O" "$T/none.pts"
+expect_fail "3-D points" 1 "$T/d3.txt" "$O" mc-error -o "$O" "$T/d3.txt"
+expect_fail "point outside [0,1)" 1 "$T/big.txt" "$O" mc-error -o "$O" "$T/big.txt"
+expect_fail "pdf 0" 1 "$T/p0.txt" "$O" mc-error -o "$O" "$T/p0.txt"
+expect_fail "pdf < 0" 1 "$T/pneg.txt" "$O" mc-error -o "$O" "$T/pneg.txt"
+expect_fail "pdf inf" 1 "$T/pinf.txt" "$O" mc-error -o "$O" "$T/pinf.txt"
+expect_fail "pdf nan" 1 "$T/pnan.txt" "$O" mc-error -o "$O" "$T/pnan.txt"
+expect_fail "empty file" 1 "$T/empty.txt" "$O" mc-error -o "$O" "$T/empty.txt"
+expect_fail "--sets not dividing" 1 "$T/r3.pts" "$O" \
+    mc-error --sets 100 -o "$O" "$T/rand.pts" "$T/r3.pts"
+expect_fail "--weights without a pdf" 1 "$T/r3.pts" "$O" \
+    mc-error --weights -o "$O" "$T/r3.pts"
+expect_fail "bad file after good" 1 "$T/d3.txt" "$O" \
+    mc-error -o "$O" "$T/r3.pts" "$T/d3.txt"
+
+# Usage errors: exit 2.
+expect_fail "unknown integrand" 2 "bogus" "$O" mc-error -f gauss,bogus -o "$O" "$T/r3.pts"
+expect_fail "empty -f" 2 "-f" "$O" mc-error -f , -o "$O" "$T/r3.pts"
+expect_fail "bad --group" 2 "--group" "$O" mc-error --group set -o "$O" "$T/r3.pts"
+expect_fail "--sets 0" 2 "--sets" "$O" mc-error --sets 0 -o "$O" "$T/r3.pts"
+expect_fail "--weights --no-pdf" 2 "exclude" "$O" \
+    mc-error --weights --no-pdf -o "$O" "$T/r3.pts"
+expect_fail "no files" 2 "no point files" "$O" mc-error -o "$O"
+expect_fail "unknown option" 2 "usage" "$O" mc-error --bogus -o "$O" "$T/r3.pts"
+check "-h" mc-error -h
+check "--version" mc-error --version
