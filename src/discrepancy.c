@@ -109,21 +109,9 @@ static void per_set_rows(FILE *fp, const struct disc_opts *o,
 	}
 }
 
-enum group { GROUP_N, GROUP_FILE, GROUP_ALL };
-
-static int same_group(enum group g, const struct pt_set *a,
-    const struct pt_set *b)
-{
-	switch (g) {
-	case GROUP_N: return a->n == b->n;
-	case GROUP_FILE: return a->file == b->file;
-	default: return 1;
-	}
-}
-
 /* One row per group of sets (Eq. 6.3), in order of first appearance;
  * n is the mean point count of the group. */
-static void group_rows(FILE *fp, const struct disc_opts *o, enum group g,
+static void group_rows(FILE *fp, const struct disc_opts *o, enum pt_group g,
     const struct pt_set *sets, const struct disc_result *res, size_t nsets,
     const char *meth, double tests)
 {
@@ -139,14 +127,14 @@ static void group_rows(FILE *fp, const struct disc_opts *o, enum group g,
 		if (done[i])
 			continue;
 		for (size_t j = i; j < nsets; j++)
-			if (same_group(g, &sets[i], &sets[j])) {
+			if (pt_same_group(g, &sets[i], &sets[j])) {
 				s1 += res[j].d2, sinf += res[j].dinf, m++;
 				sn += (double)sets[j].n;
 				smax = res[j].dinf > smax ? res[j].dinf : smax;
 			}
 		s1 /= m;
 		for (size_t j = i; j < nsets; j++)
-			if (same_group(g, &sets[i], &sets[j])) {
+			if (pt_same_group(g, &sets[i], &sets[j])) {
 				c1 = res[j].d2 - s1;
 				var += c1 * c1;
 				done[j] = 1;
@@ -167,7 +155,7 @@ int main(int argc, char **argv)
 {
 	struct disc_opts o = { .cls = DISC_STAR };
 	int c, have_grid = 0, have_shapes = 0, per_set = 0;
-	enum group group = GROUP_N;
+	enum pt_group group = PT_GROUP_N;
 	size_t per = 0, nsets;
 	struct pt_sets ps = { 0 };
 	const struct pt_set *sets;
@@ -203,15 +191,10 @@ int main(int argc, char **argv)
 			break;
 		case OPT_PER_SET: per_set = 1; break;
 		case OPT_GROUP:
-			if (strcmp(optarg, "n") == 0)
-				group = GROUP_N;
-			else if (strcmp(optarg, "file") == 0)
-				group = GROUP_FILE;
-			else if (strcmp(optarg, "all") == 0)
-				group = GROUP_ALL;
-			else
+			if ((c = pt_group_parse(optarg)) < 0)
 				cli_usage_error("--group: '%s' is not n, file "
 				    "or all", optarg);
+			group = (enum pt_group)c;
 			break;
 		default:
 			if (!cli_common_opt(c, optarg))

@@ -93,7 +93,6 @@ static const struct integrand {
 #define NFUN (sizeof fun / sizeof fun[0])
 
 enum pdfmode { PDF_AUTO, PDF_REQUIRE, PDF_IGNORE };
-enum group { GROUP_N, GROUP_FILE, GROUP_ALL };
 
 static void parse_functions(const char *arg, unsigned *mask)
 {
@@ -152,18 +151,8 @@ static double estimate(const struct integrand *g, const struct pt_set *s,
 	return sum / (double)s->n;
 }
 
-static int same_group(enum group g, const struct pt_set *a,
-    const struct pt_set *b)
-{
-	switch (g) {
-	case GROUP_N: return a->n == b->n;
-	case GROUP_FILE: return a->file == b->file;
-	default: return 1;
-	}
-}
-
 /* One row per group of sets, in order of first appearance. */
-static void rows(FILE *fp, const struct integrand *g, enum group grp,
+static void rows(FILE *fp, const struct integrand *g, enum pt_group grp,
     const struct pt_sets *s, const double *est, char *done)
 {
 	double exact = g->exact();
@@ -175,7 +164,7 @@ static void rows(FILE *fp, const struct integrand *g, enum group grp,
 			continue;
 		for (size_t j = i; j < s->n; j++) {
 			double e;
-			if (done[j] || !same_group(grp, &s->set[i], &s->set[j]))
+			if (done[j] || !pt_same_group(grp, &s->set[i], &s->set[j]))
 				continue;
 			e = est[j] - exact;
 			m++, sn += (double)s->set[j].n, se += est[j];
@@ -189,7 +178,7 @@ static void rows(FILE *fp, const struct integrand *g, enum group grp,
 	}
 }
 
-static void table(FILE *fp, unsigned mask, enum group grp,
+static void table(FILE *fp, unsigned mask, enum pt_group grp,
     const struct pt_sets *s, enum pdfmode mode)
 {
 	double *est = calloc(s->n, sizeof *est);
@@ -210,21 +199,19 @@ static void table(FILE *fp, unsigned mask, enum group grp,
 	free(done);
 }
 
-static enum group parse_group(const char *arg)
+static enum pt_group parse_group(const char *arg)
 {
-	if (strcmp(arg, "n") == 0)
-		return GROUP_N;
-	if (strcmp(arg, "file") == 0)
-		return GROUP_FILE;
-	if (strcmp(arg, "all") == 0)
-		return GROUP_ALL;
-	cli_usage_error("--group: '%s' is not n, file or all", arg);
+	int g = pt_group_parse(arg);
+
+	if (g < 0)
+		cli_usage_error("--group: '%s' is not n, file or all", arg);
+	return (enum pt_group)g;
 }
 
 int main(int argc, char **argv)
 {
 	unsigned mask = 0;
-	enum group grp = GROUP_N;
+	enum pt_group grp = PT_GROUP_N;
 	enum pdfmode mode = PDF_AUTO;
 	int c, weights = 0, nopdf = 0;
 	size_t per = 0;

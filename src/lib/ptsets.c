@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include <stdlib.h>
+#include <string.h>
 
 #include "err.h"
 #include "ptsets.h"
@@ -91,4 +92,24 @@ void pt_sets_free(struct pt_sets *s)
 	free(s->set);
 	s->buf = NULL, s->set = NULL;
 	s->n = s->nbuf = 0;
+}
+
+int pt_group_parse(const char *s)
+{
+	static const char *const name[] = { "n", "file", "all" };
+
+	for (int g = PT_GROUP_N; g <= PT_GROUP_ALL; g++)
+		if (strcmp(s, name[g]) == 0)
+			return g;
+	return -1;
+}
+
+int pt_same_group(enum pt_group g, const struct pt_set *a,
+    const struct pt_set *b)
+{
+	switch (g) {
+	case PT_GROUP_N: return a->n == b->n;
+	case PT_GROUP_FILE: return a->file == b->file;
+	default: return 1;
+	}
 }

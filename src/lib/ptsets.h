@@ -28,4 +28,12 @@ struct pt_sets {
 int pt_sets_add(struct pt_sets *s, const char *path, size_t per);
 void pt_sets_free(struct pt_sets *s);
 
+/* --group (discrepancy, mc-error): which sets one table row sums up. */
+enum pt_group { PT_GROUP_N, PT_GROUP_FILE, PT_GROUP_ALL };
+/* "n", "file" or "all"; -1 for anything else. */
+int pt_group_parse(const char *s);
+/* Sets a and b go in one row: the same count, file, or always. */
+int pt_same_group(enum pt_group g, const struct pt_set *a,
+    const struct pt_set *b);
+
 #endif
