@@ -8,18 +8,24 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cli.h"
 #include "err.h"
+#include "imap.h"
 #include "outfile.h"
 #include "ptsets.h"
 
 static const char usage[] =
     "usage: mc-error [-f NAME[,NAME...]] [--sets N] [--group n|file|all]\n"
-    "                [--weights | --no-pdf] [-q] [-o FILE] FILE...\n"
+    "                [--weights | --no-pdf] [--env MAP] [-q] [-o FILE]\n"
+    "                FILE...\n"
     "\n"
     "  -f, --function F  integrands, repeatable or a comma list: gauss,\n"
-    "                    disc, step (default all)\n"
+    "                    disc, step, env (default all but env; env too\n"
+    "                    with --env)\n"
+    "      --env MAP     env's environment map, equirectangular: PNG,\n"
+    "                    OpenEXR or a spec (default data/sunset.exr)\n"
     "      --sets N      split every file into sets of N points\n"
     "      --group G     a row per point count (n, default), per input\n"
     "                    file (file) or for all sets (all)\n"
@@ -29,7 +35,10 @@ static const char usage[] =
     "  -q, --quiet       no notes\n"
     "  -h, --help        this help;  --version  the version\n";
 
-enum { OPT_SETS = OPT_FIRST_PRIVATE, OPT_GROUP, OPT_WEIGHTS, OPT_NO_PDF };
+enum {
+	OPT_SETS = OPT_FIRST_PRIVATE, OPT_GROUP, OPT_WEIGHTS, OPT_NO_PDF,
+	OPT_ENV
+};
 
 static const struct option longopts[] = {
 	{ "function", required_argument, NULL, 'f' },
@@ -37,6 +46,7 @@ static const struct option longopts[] = {
 	{ "group", required_argument, NULL, OPT_GROUP },
 	{ "weights", no_argument, NULL, OPT_WEIGHTS },
 	{ "no-pdf", no_argument, NULL, OPT_NO_PDF },
+	{ "env", required_argument, NULL, OPT_ENV },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
@@ -81,6 +91,63 @@ static double exact_step(void)
 	return 0.2 + 0.5 / 2;
 }
 
+/* env's map: an equirectangular environment map, row 0 at the zenith. */
+static struct frs_imap envmap;
+
+/*
+ * The irradiance of an upward-facing diffuse surface: (u, v) is the
+ * direction phi = 2 pi u, theta = pi v, and 2 pi^2 sin(theta) the
+ * Jacobian from the unit square to the sphere.  L is piecewise constant,
+ * the pixel containing (u, v).
+ */
+static double f_env(double u, double v)
+{
+	double c = cos(PI * v);
+	size_t x = (size_t)(u * envmap.w), y = (size_t)(v * envmap.h);
+
+	if (!(c > 0))
+		return 0.0;
+	if (x >= envmap.w)
+		x = envmap.w - 1;
+	if (y >= envmap.h)
+		y = envmap.h - 1;
+	return envmap.v[y * envmap.w + x] * c * sin(PI * v) * 2 * PI * PI;
+}
+
+/*
+ * The exact integral of f_env over row y's band [a, b] of v, b clipped to
+ * 1/2, per unit of L averaged over the row: 2 pi^2 int_a^b cos sin dv =
+ * pi (sin^2(pi b) - sin^2(pi a)) = pi sin(pi (b - a)) sin(pi (a + b)),
+ * the last form free of cancellation.
+ */
+static double env_row_weight(uint32_t y, uint32_t h)
+{
+	double a = (double)y / h, b = (double)(y + 1) / h;
+
+	if (a >= 0.5)
+		return 0.0;
+	if (b > 0.5)
+		b = 0.5;
+	return PI * sin(PI * (b - a)) * sin(PI * (a + b));
+}
+
+/* The sum over pixels of L times its row's weight, in long double. */
+static double exact_env(void)
+{
+	long double total = 0;
+
+	for (uint32_t y = 0; y < envmap.h; y++) {
+		long double row = 0;
+		double wgt = env_row_weight(y, envmap.h);
+		if (wgt == 0)
+			break;
+		for (uint32_t x = 0; x < envmap.w; x++)
+			row += envmap.v[(size_t)y * envmap.w + x];
+		total += row / envmap.w * wgt;
+	}
+	return (double)total;
+}
+
 static const struct integrand {
 	const char *name;
 	double (*f)(double, double);
@@ -89,8 +156,10 @@ static const struct integrand {
 	{ "gauss", f_gauss, exact_gauss },
 	{ "disc", f_disc, exact_disc },
 	{ "step", f_step, exact_step },
+	{ "env", f_env, exact_env },
 };
 #define NFUN (sizeof fun / sizeof fun[0])
+#define ENV_BIT (1u << (NFUN - 1))
 
 enum pdfmode { PDF_AUTO, PDF_REQUIRE, PDF_IGNORE };
 
@@ -108,7 +177,7 @@ static void parse_functions(const char *arg, unsigned *mask)
 			;
 		if (i == NFUN)
 			cli_usage_error("-f: unknown integrand '%s' (gauss, "
-			    "disc or step)", tok);
+			    "disc, step or env)", tok);
 		*mask |= 1u << i;
 	}
 	if (*mask == 0)
@@ -199,6 +268,30 @@ static void table(FILE *fp, unsigned mask, enum pt_group grp,
 	free(done);
 }
 
+/* The default map: the source tree's, then the installed one. */
+static const char *default_env(void)
+{
+	static const char *const where[] = { FRS_SRCDATA "/sunset.exr",
+	    FRS_SHAREDIR "/sunset.exr" };
+
+	for (size_t i = 0; i < sizeof where / sizeof where[0]; i++)
+		if (access(where[i], R_OK) == 0)
+			return where[i];
+	cli_die("env: no default environment map (looked for %s and %s); "
+	    "give --env MAP", where[0], where[1]);
+}
+
+/* Load env's map when env is requested or --env given. */
+static void load_env(const char *src, unsigned mask)
+{
+	if (src == NULL && !(mask & ENV_BIT))
+		return;
+	if (src == NULL)
+		src = default_env();
+	if (imap_load(src, 0, 0, 0, &envmap) < 0)
+		cli_die_lib();
+}
+
 static enum pt_group parse_group(const char *arg)
 {
 	int g = pt_group_parse(arg);
@@ -214,6 +307,7 @@ int main(int argc, char **argv)
 	enum pt_group grp = PT_GROUP_N;
 	enum pdfmode mode = PDF_AUTO;
 	int c, weights = 0, nopdf = 0;
+	const char *env = NULL;
 	size_t per = 0;
 	struct pt_sets s = { 0 };
 	struct outfile of;
@@ -230,6 +324,7 @@ int main(int argc, char **argv)
 		case OPT_GROUP: grp = parse_group(optarg); break;
 		case OPT_WEIGHTS: weights = 1; break;
 		case OPT_NO_PDF: nopdf = 1; break;
+		case OPT_ENV: env = optarg; break;
 		default:
 			if (!cli_common_opt(c, optarg))
 				cli_usage(2);
@@ -241,9 +336,10 @@ int main(int argc, char **argv)
 		cli_usage_error("--weights and --no-pdf exclude each other");
 	mode = weights ? PDF_REQUIRE : nopdf ? PDF_IGNORE : PDF_AUTO;
 	if (mask == 0)
-		mask = (1u << NFUN) - 1;
+		mask = ((1u << NFUN) - 1) & (env ? ~0u : ~ENV_BIT);
 	cli_options_done();
 
+	load_env(env, mask);
 	for (int i = optind; i < argc; i++)
 		if (add_file(&s, argv[i], per, mode) < 0)
 			cli_die_lib();
@@ -253,5 +349,6 @@ int main(int argc, char **argv)
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
 	pt_sets_free(&s);
+	imap_free(&envmap);
 	return 0;
 }

@@ -148,3 +148,85 @@ expect_fail "no files" 2 "no point files" "$O" mc-error -o "$O"
 expect_fail "unknown option" 2 "usage" "$O" mc-error --bogus -o "$O" "$T/r3.pts"
 check "-h" mc-error -h
 check "--version" mc-error --version
+
+# env: the irradiance from an equirectangular map, (u, v) = (phi / 2 pi,
+# theta / pi), f = L cos+(theta) sin(theta) 2 pi^2.  Not in the default
+# set unless --env is given.
+# exact VAR FILE: I = rmse / rel_rmse of the first row.
+exact() {
+	awk -v a="$(col rmse "$1")" -v r="$(col rel_rmse "$1")" \
+	    'BEGIN { printf "%.12g", a / r }'
+}
+PI=3.14159265358979324
+mc-error --env const "$T/grid.txt" >"$T/e0"
+[ "$(cut -f 1 "$T/e0" | tail -n +2 | tr '\n' ' ')" = "gauss disc step env " ] &&
+    ok "--env adds env to the default set" || nok "--env rows: $(cut -f 1 "$T/e0")"
+# (1) L = 1: I = 2 pi^2 int_0^1/2 cos(pi v) sin(pi v) dv = pi.
+ref-sample -k regular -n 65536 -T -q -o "$T/g256.txt"
+mc-error -f env --env const "$T/g256.txt" >"$T/e1"
+near "$(exact "$T/e1")" "$PI" 1e-7 && ok "env const: exact pi" ||
+    nok "env const: exact $(exact "$T/e1")"
+near "$(col estimate_mean "$T/e1")" "$PI" 1e-3 &&
+    ok "env const: 256x256 grid within 1e-3 of pi" ||
+    nok "env const: estimate $(col estimate_mean "$T/e1")"
+# (2) ramp:angle=90 at 128x128: row j holds (j + 1/2) / 128.  The exact
+# value against a fine midpoint sum over v (4096 steps a row, so that no
+# step straddles a row) of the piecewise constant integrand, not the
+# closed form; both are near pi/4 = 2 pi^2 int_0^1/2 v cos sin dv.
+ref-sample -k regular -n 262144 -T -q -o "$T/g512.txt"
+mc-error -f env --env ramp:angle=90 "$T/g512.txt" >"$T/e2"
+orc=$(awk -v pi="$PI" 'BEGIN { n = 128 * 4096; h = 1 / n
+	for (k = 0; k < n / 2; k++) { v = (k + 0.5) * h
+		L = (int(v * 128) + 0.5) / 128
+		s += L * cos(pi * v) * sin(pi * v) }
+	printf "%.12g", s * h * 2 * pi * pi }')
+near "$(exact "$T/e2")" "$orc" 1e-8 && ok "env ramp: exact = midpoint sum $orc" ||
+    nok "env ramp: exact $(exact "$T/e2"), midpoint sum $orc"
+near "$(col estimate_mean "$T/e2")" "$orc" 1e-3 &&
+    ok "env ramp: 512x512 grid within 1e-3" ||
+    nok "env ramp: estimate $(col estimate_mean "$T/e2"), exact $orc"
+# An odd height: row 2 of 5 straddles the horizon v = 1/2 and counts
+# half; a constant map still gives pi, a ramp its midpoint sum.
+imap gen -q -s 8x5 --format exr -o "$T/c5.exr" const
+imap gen -q -s 8x5 --format exr -o "$T/r5.exr" ramp:angle=90
+mc-error -f env --env "$T/c5.exr" "$T/grid.txt" >"$T/e5"
+near "$(exact "$T/e5")" "$PI" 1e-7 && ok "env 8x5 const: exact pi" ||
+    nok "env 8x5 const: exact $(exact "$T/e5")"
+mc-error -f env --env "$T/r5.exr" "$T/grid.txt" >"$T/e6"
+orc=$(awk -v pi="$PI" 'BEGIN { n = 5 * 40000; h = 1 / n
+	for (k = 0; k < n / 2; k++) { v = (k + 0.5) * h
+		L = (int(v * 5) + 0.5) / 5
+		s += L * cos(pi * v) * sin(pi * v) }
+	printf "%.12g", s * h * 2 * pi * pi }')
+near "$(exact "$T/e6")" "$orc" 1e-7 && ok "env 8x5 ramp: exact = midpoint sum $orc" ||
+    nok "env 8x5 ramp: exact $(exact "$T/e6"), midpoint sum $orc"
+# -f env alone uses data/sunset.exr; so does --env data/sunset.exr.
+check "-f env: the default map" mc-error -f env -o "$T/e3" "$T/grid.txt"
+mc-error -f env --env data/sunset.exr "$T/grid.txt" >"$T/e4"
+cmp -s "$T/e3" "$T/e4" && ok "default map = data/sunset.exr" || nok "default map"
+# (3) FRS importance sampling of the map with --equirect --pdf against
+# uniform random points: within 2% of the exact value, and a far smaller
+# rmse (10 sets of about 20000 against 20).
+for i in 1 2 3 4 5 6 7 8 9 10; do
+	frs-sample -q -i data/sunset.exr --equirect --pdf -n 20000 \
+	    -S "$i" -o "$T/fe$i.pts"
+done
+ref-sample -k random --sets 20 -n 20000 -q -o "$T/re.pts"
+mc-error -f env --group all "$T"/fe*.pts >"$T/ef"
+mc-error -f env --sets 20000 "$T/re.pts" >"$T/er"
+I=$(exact "$T/ef")
+near "$(col estimate_mean "$T/ef")" "$I" 0.02 &&
+    ok "env FRS: estimate $(col estimate_mean "$T/ef") ~ $I" ||
+    nok "env FRS: estimate $(col estimate_mean "$T/ef"), exact $I"
+awk -v f="$(col rmse "$T/ef")" -v r="$(col rmse "$T/er")" \
+    'BEGIN { exit !(f > 0 && 3 * f < r) }' &&
+    ok "env: FRS rmse $(col rmse "$T/ef") < random $(col rmse "$T/er") / 3" ||
+    nok "env: FRS rmse $(col rmse "$T/ef"), random $(col rmse "$T/er")"
+# (4) A bad map: exit 1 naming it, no output.
+printf 'not an image\n' >"$T/bad.exr"
+expect_fail "--env: not an image" 1 "$T/bad.exr" "$O" \
+    mc-error --env "$T/bad.exr" -o "$O" "$T/r3.pts"
+expect_fail "--env: missing file" 1 "$T/none.exr" "$O" \
+    mc-error -f gauss --env "$T/none.exr" -o "$O" "$T/r3.pts"
+expect_fail "--env: all zero" 1 "const:0" "$O" \
+    mc-error --env const:0 -o "$O" "$T/r3.pts"
