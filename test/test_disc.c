@@ -3,6 +3,7 @@
  * double, closed forms for regular grids and single points, and the
  * expectation E[d(A)^2] = area(1 - area)/n of uniform random points. */
 #include "testutil.h"
+#include "discref.h"
 #include "disc.h"
 #include "discint.h"
 #include "discshape.h"
@@ -157,47 +158,6 @@ static void rect_regular(void **state)
 	}
 }
 
-/* Brute-force grid: every corner, every box, every point. */
-static void star_grid_brute(const double *xy, size_t n, uint32_t s,
-    double *d2, double *dinf)
-{
-	long double sum = 0;
-	*dinf = 0;
-	for (uint32_t i = 1; i <= s; i++)
-		for (uint32_t j = 1; j <= s; j++) {
-			double x = (double)i / s, y = (double)j / s, d;
-			size_t c = 0;
-			for (size_t k = 0; k < n; k++)
-				c += xy[2 * k] < x && xy[2 * k + 1] < y;
-			d = fabs((double)c / (double)n - x * y);
-			sum += (long double)d * d;
-			*dinf = d > *dinf ? d : *dinf;
-		}
-	*d2 = (double)sqrtl(sum / ((long double)s * s));
-}
-
-static void rect_grid_brute(const double *xy, size_t n, uint32_t s,
-    double *d2, double *dinf)
-{
-	long double sum = 0, cnt = 0;
-	*dinf = 0;
-	for (uint32_t a = 0; a < s; a++)
-	for (uint32_t b = a + 1; b < s; b++)
-	for (uint32_t c = 0; c < s; c++)
-	for (uint32_t e = c + 1; e < s; e++) {
-		double x0 = (double)a / (s - 1), x1 = (double)b / (s - 1);
-		double y0 = (double)c / (s - 1), y1 = (double)e / (s - 1), d;
-		size_t m = 0;
-		for (size_t k = 0; k < n; k++)
-			m += xy[2 * k] >= x0 && xy[2 * k] < x1 &&
-			    xy[2 * k + 1] >= y0 && xy[2 * k + 1] < y1;
-		d = fabs((double)m / (double)n - (x1 - x0) * (y1 - y0));
-		sum += (long double)d * d, cnt++;
-		*dinf = d > *dinf ? d : *dinf;
-	}
-	*d2 = (double)sqrtl(sum / cnt);
-}
-
 /* Points with coordinates on grid lines, repeated, 0 and 1 - ulp. */
 static double *hard_points(size_t n, uint32_t s, uint64_t seed)
 {
@@ -222,13 +182,13 @@ static void grids_brute(void **state)
 	for (size_t k = 0; k < sizeof ns / sizeof *ns; k++)
 		for (uint32_t s = 3; s <= 24; s += 7) {
 			double *xy = hard_points(ns[k], s, 200 + k), d2, di, v;
-			star_grid_brute(xy, ns[k], s, &d2, &di);
+			ref_star_grid(xy, ns[k], s, &d2, &di);
 			assert_near(disc_star_l2_grid(xy, ns[k], s), d2,
 			    1e-12 * d2 + 1e-15);
 			assert_int_equal(disc_star_dinf_grid(xy, ns[k], s, 1,
 			    &v), 0);
 			assert_near(v, di, 1e-15);
-			rect_grid_brute(xy, ns[k], s, &d2, &di);
+			ref_rect_grid(xy, ns[k], s, &d2, &di);
 			assert_near(disc_rect_l2_grid(xy, ns[k], s), d2,
 			    1e-12 * d2 + 1e-15);
 			assert_int_equal(disc_rect_dinf_grid(xy, ns[k], s, 1,

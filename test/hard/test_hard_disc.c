@@ -19,6 +19,7 @@
  *     methods by enumeration of every corner or box.
  */
 #include "testutil.h"
+#include "discref.h"
 #include "disc.h"
 #include "par.h"
 
@@ -144,51 +145,6 @@ static double rect_dinf(const double *p, size_t n)
 	return best;
 }
 
-/* Star grid: corners (i/s, j/s), i, j = 1..s, boxes [0,x) x [0,y). */
-static void star_grid(const double *p, size_t n, uint32_t s, double *d2,
-    double *dinf)
-{
-	long double sum = 0;
-
-	*dinf = 0;
-	for (uint32_t i = 1; i <= s; i++)
-		for (uint32_t j = 1; j <= s; j++) {
-			double x = (double)i / s, y = (double)j / s, d;
-			size_t c = 0;
-			for (size_t k = 0; k < n; k++)
-				c += p[2 * k] < x && p[2 * k + 1] < y;
-			d = fabs((double)c / n - x * y);
-			sum += (long double)d * d;
-			*dinf = fmax(*dinf, d);
-		}
-	*d2 = (double)sqrtl(sum / ((long double)s * s));
-}
-
-/* Rect grid: lines a/(s-1), boxes [x0,x1) x [y0,y1) between them. */
-static void rect_grid(const double *p, size_t n, uint32_t s, double *d2,
-    double *dinf)
-{
-	long double sum = 0, cnt = 0;
-
-	*dinf = 0;
-	for (uint32_t a = 0; a < s; a++)
-	for (uint32_t b = a + 1; b < s; b++)
-	for (uint32_t c = 0; c < s; c++)
-	for (uint32_t e = c + 1; e < s; e++) {
-		double x0 = (double)a / (s - 1), x1 = (double)b / (s - 1);
-		double y0 = (double)c / (s - 1), y1 = (double)e / (s - 1), d;
-		size_t m = 0;
-		for (size_t k = 0; k < n; k++)
-			m += p[2 * k] >= x0 && p[2 * k] < x1 &&
-			    p[2 * k + 1] >= y0 && p[2 * k + 1] < y1;
-		d = fabs((double)m / n - (x1 - x0) * (y1 - y0));
-		sum += (long double)d * d;
-		cnt += 1;
-		*dinf = fmax(*dinf, d);
-	}
-	*d2 = (double)sqrtl(sum / cnt);
-}
-
 /* The four exact methods of the library against the oracles. */
 static void exact_ok(const char *what, const double *p, size_t n)
 {
@@ -229,7 +185,7 @@ static void grid_ok(const char *what, const double *p, size_t n, uint32_t s)
 {
 	double d2, di, v;
 
-	star_grid(p, n, s, &d2, &di);
+	ref_star_grid(p, n, s, &d2, &di);
 	v = disc_star_l2_grid(p, n, s);
 	if (!(fabs(v - d2) <= 1e-12 * d2 + 1e-15)) {
 		print_error("%s, s %u: star grid D2 %.17g, enumerated %.17g\n",
@@ -242,7 +198,7 @@ static void grid_ok(const char *what, const double *p, size_t n, uint32_t s)
 		    what, s, v, di);
 		fail();
 	}
-	rect_grid(p, n, s, &d2, &di);
+	ref_rect_grid(p, n, s, &d2, &di);
 	v = disc_rect_l2_grid(p, n, s);
 	if (!(fabs(v - d2) <= 1e-12 * d2 + 1e-15)) {
 		print_error("%s, s %u: rect grid D2 %.17g, enumerated %.17g\n",

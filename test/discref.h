@@ -1,0 +1,58 @@
+/*
+ * Brute-force references of the grid discrepancies (test_disc and
+ * test/hard/test_hard_disc): every corner or box of the grid, every
+ * point, in long double.  The oracle the fast methods of disc.c are
+ * checked against.
+ */
+#ifndef FRS_DISCREF_H
+#define FRS_DISCREF_H
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* Star grid: corners (i/s, j/s), i, j = 1..s, boxes [0,x) x [0,y). */
+static inline void ref_star_grid(const double *xy, size_t n, uint32_t s,
+    double *d2, double *dinf)
+{
+	long double sum = 0;
+
+	*dinf = 0;
+	for (uint32_t i = 1; i <= s; i++)
+		for (uint32_t j = 1; j <= s; j++) {
+			double x = (double)i / s, y = (double)j / s, d;
+			size_t c = 0;
+			for (size_t k = 0; k < n; k++)
+				c += xy[2 * k] < x && xy[2 * k + 1] < y;
+			d = fabs((double)c / (double)n - x * y);
+			sum += (long double)d * d;
+			*dinf = d > *dinf ? d : *dinf;
+		}
+	*d2 = (double)sqrtl(sum / ((long double)s * s));
+}
+
+/* Rect grid: lines a/(s-1), boxes [x0,x1) x [y0,y1) between them. */
+static inline void ref_rect_grid(const double *xy, size_t n, uint32_t s,
+    double *d2, double *dinf)
+{
+	long double sum = 0, cnt = 0;
+
+	*dinf = 0;
+	for (uint32_t a = 0; a < s; a++)
+	for (uint32_t b = a + 1; b < s; b++)
+	for (uint32_t c = 0; c < s; c++)
+	for (uint32_t e = c + 1; e < s; e++) {
+		double x0 = (double)a / (s - 1), x1 = (double)b / (s - 1);
+		double y0 = (double)c / (s - 1), y1 = (double)e / (s - 1), d;
+		size_t m = 0;
+		for (size_t k = 0; k < n; k++)
+			m += xy[2 * k] >= x0 && xy[2 * k] < x1 &&
+			    xy[2 * k + 1] >= y0 && xy[2 * k + 1] < y1;
+		d = fabs((double)m / (double)n - (x1 - x0) * (y1 - y0));
+		sum += (long double)d * d, cnt++;
+		*dinf = d > *dinf ? d : *dinf;
+	}
+	*d2 = (double)sqrtl(sum / cnt);
+}
+
+#endif
