@@ -17,6 +17,18 @@
 # one run of m n points), the per-set time is that over m.  The empirical convergence rate is
 # the least-squares slope of log rmse on log n.
 #
+# The environment-lit case, where importance sampling matters: mc-error's
+# env integrand (a diffuse surface facing the zenith lit by ENVMAP,
+# default data/sunset.exr) for the uniform samplers random, jittered,
+# Halton and dart (plain mean) against importance samplers following the
+# map with the equirect (sin theta) weighting and their pdf column
+# (mc-error --weights): FRS (ifrs), jittered FRS (ijfrs) and HSW (ihsw,
+# Halton input, one deterministic set).  hsw-sample has no --equirect, so
+# imap convert --equirect makes the weighted map once, at the map's own
+# size (cache/mc/NAME-equirect.exr), and both FRS and HSW sample it:
+# the same density, and the pdf column (pixel / map mean) is the density
+# of that map, the p that mc-error divides by.
+#
 # Parameters per mode:
 #   tiny:  n = 2^4, 2^5, m = 4
 #   quick: n = 2^6..2^12, m = 32
@@ -25,8 +37,10 @@
 # Output (RES/mc/): rmse.tsv (sampler n sets integrand rmse rel_rmse
 #   abs_error time_s time_per_set), slopes.tsv (sampler slope_gauss
 #   slope_disc slope_step), slopes.md (the same as a table),
-#   rmse-gauss.png, rmse-disc.png, rmse-step.png (rmse against n) and
-#   rmse-time.png (rmse against the time per set).
+#   rmse-gauss.png, rmse-disc.png, rmse-step.png, rmse-env.png (rmse
+#   against n) and rmse-time.png (rmse against the time per set, for
+#   gauss, disc and step); env rows (integrand env) in rmse.tsv, a
+#   slope_env column in slopes.tsv (- where a sampler is not run).
 # ids: mc mc-error integration
 . "$(dirname "$0")/explib.sh"
 
@@ -35,57 +49,96 @@ KMIN=$(pick 4 6 4)
 KMAX=$(pick 5 12 16)
 SAMPLERS="frs jfrs hsw random jittered halton dart"
 FUNCS="gauss disc step"
+# the env samplers: importance FRS, jittered FRS, HSW, then uniform ones
+ESAMPLERS="ifrs ijfrs ihsw random jittered halton dart"
 D=$CACHE/mc
+envb=$(basename "$ENVMAP")
+envb=${envb%.*}
+EMAP=$D/$envb-equirect.exr	# ENVMAP weighted by sin theta (imap --equirect)
 
 base() { echo "$D/$1-n$2-m$M"; }	# base SAMPLER N
+ebase() { echo "$D/env-$envb-$1-n$2-m$M"; }	# ebase SAMPLER N (env)
 
-# run_one SAMPLER N: make the sets in a scratch directory, timing their
+# mc FILE...: mc-error on the sets, for the integrands of the family FAM
+# (uni: gauss, disc, step, plain mean; env: env on ENVMAP, the importance
+# samplers' pdf column as weights, the uniform ones' plain mean).
+mc() {
+	if [ "$FAM" = uni ]; then
+		mc-error -q "$@"
+	else
+		case $S in
+		i*) mc-error -q -f env --env "$ENVMAP" --weights "$@" ;;
+		*) mc-error -q -f env --env "$ENVMAP" --no-pdf "$@" ;;
+		esac
+	fi
+}
+
+# run_one FAM SAMPLER N: make the sets in a scratch directory, timing their
 # generation into BASE.time (seconds, sets made), and print mc-error's
-# table; the sets are removed afterwards.
+# table; the sets are removed afterwards.  FAM is uni (the uniform
+# integrands; samplers on the constant map) or env (the env integrand;
+# ifrs, ijfrs and ihsw sample EMAP with --pdf).
 run_one() {
-	b=$(base "$1" "$2")
+	FAM=$1
+	S=$2
+	shift
+	if [ "$FAM" = uni ]; then
+		b=$(base "$1" "$2")
+		imp=const
+		pdf=""
+	else
+		b=$(ebase "$1" "$2")
+		imp=$EMAP
+		pdf=--pdf
+	fi
 	w=$b.d
 	rm -rf "$w"
 	mkdir -p "$w"
 	t0=$(date +%s.%N)
-	case $1 in
+	case ${1#i} in
 	frs | jfrs)
 		j=none
-		[ "$1" = jfrs ] && j=random
-		frs-sample -q -j 1 -i const -n "$2" --sets "$M" --jitter "$j" \
-		    -o "$w/all.pts" ;;
+		[ "${1#i}" = jfrs ] && j=random
+		frs-sample -q -j 1 -i "$imp" -n "$2" --sets "$M" --jitter "$j" \
+		    $pdf -o "$w/all.pts" ;;
 	hsw)	# m sets' worth of points in one run, like --sets elsewhere
-		hsw-sample -q -j 1 -i const -n $(($2 * M)) -o "$w/timed.pts" ;;
+		hsw-sample -q -j 1 -i "$imp" -n $(($2 * M)) $pdf -o "$w/timed.pts" ;;
 	*)
 		ref-sample -q -j 1 -k "$1" -n "$2" --sets "$M" -o "$w/all.pts" ;;
 	esac
 	t1=$(date +%s.%N)
 	awk -v a="$t0" -v b="$t1" -v m="$M" \
 	    'BEGIN { printf "%.6f\t%d\n", b - a, m }' >"$b.time"
-	case $1 in
+	case ${1#i} in
 	frs | jfrs)
 		# The same sets again as text, cut into per-set files (untimed).
-		frs-sample -q -i const -n "$2" --sets "$M" --count-only >"$w/counts"
-		frs-sample -q -i const -n "$2" --sets "$M" --jitter "$j" -T |
+		frs-sample -q -i "$imp" -n "$2" --sets "$M" --count-only >"$w/counts"
+		frs-sample -q -i "$imp" -n "$2" --sets "$M" --jitter "$j" $pdf -T |
 		    awk -v dir="$w" 'NR == FNR { c[++k] = $1; next }
+			/^#pts / { h = $1 " " $2 " " $3; next }	# dims, extra
 			/^#/ { next }
 			{ while (left == 0) { s++; left = c[s]
-			      f = sprintf("%s/s%05d.txt", dir, s) }
+			      f = sprintf("%s/s%05d.txt", dir, s)
+			      if (h != "") print h " count=" left > f }
 			  print > f; left--
 			  if (left == 0) close(f) }' "$w/counts" -
-		mc-error -q --group all "$w"/s*.txt ;;
+		mc --group all "$w"/s*.txt ;;
 	hsw)	# the one deterministic set (untimed)
-		hsw-sample -q -i const -n "$2" -o "$w/all.pts"
-		mc-error -q "$w/all.pts" ;;
+		hsw-sample -q -i "$imp" -n "$2" $pdf -o "$w/all.pts"
+		mc "$w/all.pts" ;;
 	*)	# jittered makes a square count per set: the file's count / m
 		c=$(od -A n -t u8 -j 24 -N 8 "$w/all.pts" | tr -d ' ')
-		mc-error -q --sets $((c / M)) "$w/all.pts" ;;
+		mc --sets $((c / M)) "$w/all.pts" ;;
 	esac
 	rm -rf "$w"
 }
 
 if [ "${1:-}" = job ]; then	# worker: sh exp-mc.sh job SAMPLER N
-	cached "$(base "$2" "$3").tsv" run_one "$2" "$3"
+	cached "$(base "$2" "$3").tsv" run_one uni "$2" "$3"
+	exit 0
+fi
+if [ "${1:-}" = envjob ]; then	# worker: sh exp-mc.sh envjob SAMPLER N
+	cached "$(ebase "$2" "$3").tsv" run_one env "$2" "$3"
 	exit 0
 fi
 
@@ -95,20 +148,31 @@ fresh() { [ -s "$1" ] && { [ -z "$STAMP" ] || [ "$1" -nt "$STAMP" ]; }; }
 # NS: the counts, largest first (the longest jobs start first).
 NS=$(k=$KMAX; while [ $k -ge "$KMIN" ]; do echo $((1 << k)); k=$((k - 1)); done)
 exp_begin mc "Integration error (beyond the thesis)" \
-    "not in the thesis (issue 13); Monte Carlo rmse of gauss, disc and step by mc-error(1), n = 2^$KMIN..2^$KMAX, m = $M sets" \
+    "not in the thesis (issue 13); Monte Carlo rmse of gauss, disc and step, and of env lit by $(basename "$ENVMAP") with importance sampling, by mc-error(1), n = 2^$KMIN..2^$KMAX, m = $M sets" \
     "about an hour on 2 cores (dart throwing and FRS at n = 2^16 dominate)"
 mkdir -p "$D"
-for n in $NS; do for s in $SAMPLERS; do
-	b=$(base $s $n)
-	{ fresh "$b.tsv" && [ -s "$b.time" ]; } || echo "sh $0 job $s $n"
-done; done | par_run
+# the equirect-weighted map that FRS and HSW both sample, made once
+cached "$EMAP" imap convert -q --equirect --format exr "$ENVMAP" -
+for n in $NS; do
+	for s in $SAMPLERS; do
+		b=$(base $s $n)
+		{ fresh "$b.tsv" && [ -s "$b.time" ]; } || echo "sh $0 job $s $n"
+	done
+	for s in $ESAMPLERS; do
+		b=$(ebase $s $n)
+		{ fresh "$b.tsv" && [ -s "$b.time" ] && [ "$b.tsv" -nt "$EMAP" ]; } ||
+		    echo "sh $0 envjob $s $n"
+	done
+done | par_run
 
-# Gather: one row per sampler, n and integrand.
+# Gather: one row per sampler, n and integrand (the env rows last).
 {
 	printf 'sampler\tn\tsets\tintegrand\trmse\trel_rmse\tabs_error\ttime_s\ttime_per_set\n'
-	for s in $SAMPLERS; do
+	bf=base
+	for s in $SAMPLERS env $ESAMPLERS; do
+		[ "$s" = env ] && { bf=ebase; continue; }
 		for n in $(echo "$NS" | sort -n); do
-			b=$(base $s $n)
+			b=$($bf $s $n)
 			awk -F '\t' -v s="$s" 'NR == FNR { t = $1; m = $2; next }
 			    FNR > 1 { printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%.6g\n",
 				s, $2, $3, $1, $6, $7, $5, t, t / m }' \
@@ -126,10 +190,10 @@ slope() {	# slope SAMPLER INTEGRAND
 		else printf "%.2f\n", (k * sxy - sx * sy) / (k * sxx - sx * sx) }' \
 	    "$OUT/rmse.tsv"
 }
-printf 'sampler\tslope_gauss\tslope_disc\tslope_step\n' >"$OUT/slopes.tsv"
-for s in $SAMPLERS; do
-	printf '%s\t%s\t%s\t%s\n' "$s" "$(slope $s gauss)" "$(slope $s disc)" \
-	    "$(slope $s step)" >>"$OUT/slopes.tsv"
+printf 'sampler\tslope_gauss\tslope_disc\tslope_step\tslope_env\n' >"$OUT/slopes.tsv"
+for s in $SAMPLERS ifrs ijfrs ihsw; do
+	printf '%s\t%s\t%s\t%s\t%s\n' "$s" "$(slope $s gauss)" "$(slope $s disc)" \
+	    "$(slope $s step)" "$(slope $s env)" >>"$OUT/slopes.tsv"
 done
 
 label() {
@@ -137,17 +201,21 @@ label() {
 	frs) echo FRS ;; jfrs) echo "jittered FRS" ;; hsw) echo "HSW (Halton input)" ;;
 	random) echo "uniform random" ;; jittered) echo jittered ;;
 	halton) echo Halton ;; dart) echo "dart throwing" ;;
+	ifrs) echo "FRS (importance)" ;; ijfrs) echo "jittered FRS (importance)" ;;
+	ihsw) echo "HSW (importance)" ;;
 	esac
 }
 {
 	echo "Empirical convergence slopes, d log rmse / d log n (least squares over n = 2^$KMIN..2^$KMAX; random MC: -0.5):"
 	echo
-	echo "| sampler | gauss | disc | step |"
-	echo "| --- | --- | --- | --- |"
-	awk -F '\t' 'NR > 1 { print $1 "\t" $2 "\t" $3 "\t" $4 }' "$OUT/slopes.tsv" |
-	    while IFS="$(printf '\t')" read -r s a b c; do
-		echo "| $(label "$s") | $a | $b | $c |"
+	echo "| sampler | gauss | disc | step | env |"
+	echo "| --- | --- | --- | --- | --- |"
+	awk -F '\t' 'NR > 1 { print $1 "\t" $2 "\t" $3 "\t" $4 "\t" $5 }' "$OUT/slopes.tsv" |
+	    while IFS="$(printf '\t')" read -r s a b c e; do
+		echo "| $(label "$s") | $a | $b | $c | $e |"
 	    done
+	echo
+	echo "env: $(basename "$ENVMAP") lighting a diffuse surface; the importance samplers follow the map weighted by sin theta (imap convert --equirect) and divide by their pdf column."
 	echo
 } >"$OUT/slopes.md"
 # The table goes into the summary, after the head (exp_end composes it).
@@ -155,31 +223,48 @@ cat "$OUT/slopes.md" >>"$OUT/head.md"
 
 # Plots: rmse against n, one per integrand; rmse against time per set.
 COLS="#d62728 #ff7f0e #8c564b #7f7f7f #2ca02c #9467bd #1f77b4"
+# color SAMPLER: its curve's color (an importance sampler takes that of
+# its uniform namesake, which the env plot does not show).
+color() {
+	i=1
+	for c in $SAMPLERS; do
+		[ "$c" = "${1#i}" ] && break
+		i=$((i + 1))
+	done
+	echo "$COLS" | cut -d' ' -f$i
+}
 # blocks: the curves' data as gnuplot data blocks $S_F (x, rmse).
 blocks() {
-	for bs in $SAMPLERS; do for bf in $FUNCS; do
-		echo "\$${bs}_$bf << EOD"
-		# a header line (gp_png: columnhead), then n, time, rmse
-		awk -F '\t' -v s="$bs" -v f="$bf" 'NR == 1 { print "n\ttime\trmse" }
-		    $1 == s && $4 == f { print $2 "\t" $9 "\t" $5 }' "$OUT/rmse.tsv"
-		echo "EOD"
-	done; done
+	for bs in $SAMPLERS; do for bf in $FUNCS; do block $bs $bf; done; done
+	for bs in $ESAMPLERS; do block $bs env; done
+}
+block() {	# block SAMPLER INTEGRAND
+	echo "\$${1}_$2 << EOD"
+	# a header line (gp_png: columnhead), then n, time, rmse
+	awk -F '\t' -v s="$1" -v f="$2" 'NR == 1 { print "n\ttime\trmse" }
+	    $1 == s && $4 == f { print $2 "\t" $9 "\t" $5 }' "$OUT/rmse.tsv"
+	echo "EOD"
 }
 curves() {	# curves INTEGRAND XCOLUMN: the plot command's curves
+	cs=$SAMPLERS
+	[ "$1" = env ] && cs=$ESAMPLERS
 	i=1
-	for s in $SAMPLERS; do
+	for s in $cs; do
 		[ $i = 1 ] || printf ', '
-		col=$(echo "$COLS" | cut -d' ' -f$i)
 		printf "\$%s_%s using %s:3 with linespoints lw 2 lc rgb '%s' pt 7 ps 0.7 title '%s'" \
-		    "$s" "$1" "$2" "$col" "$(label $s)"
+		    "$s" "$1" "$2" "$(color $s)" "$(label $s)"
 		i=$((i + 1))
 	done
 }
-for f in $FUNCS; do
+for f in $FUNCS env; do
 	{
 		gp_png "$OUT/rmse-$f.png"
 		blocks
-		echo "set title 'Integration error of $f ($M sets; dashed: n^{-1/2}, n^{-3/4}, n^{-1})'"
+		if [ "$f" = env ]; then
+			echo "set title 'Integration error of env, $(basename "$ENVMAP") lighting ($M sets; importance: pdf weights; dashed: n^{-1/2}, n^{-3/4}, n^{-1})'"
+		else
+			echo "set title 'Integration error of $f ($M sets; dashed: n^{-1/2}, n^{-3/4}, n^{-1})'"
+		fi
 		echo "set logscale xy; set xlabel 'n'; set ylabel 'rmse'"
 		echo "set format y '10^{%L}'; set grid; set key outside right"
 		# Reference slopes through the random rmse at the smallest n.
@@ -218,6 +303,10 @@ for f in $FUNCS; do
 	row "$f: rmse slope frs/jfrs/hsw/random/jittered/halton/dart" "$o" "$th"
 	i=$((i + 1))
 done
+o=""
+for s in $ESAMPLERS; do o="$o${o:+ / }$(sl $s 5)"; done
+row "env: rmse slope ifrs/ijfrs/ihsw/random/jittered/halton/dart" "$o" \
+    'not in the thesis; theory: random -0.5; importance sampling by L sin(theta) leaves f/p ~ max(0, cos theta), which lowers the rmse by a constant factor'
 big() {	# big SAMPLER INTEGRAND: rmse at the largest n
 	awk -F '\t' -v s="$1" -v f="$2" 'NR > 1 && $1 == s && $4 == f { v = $5 } END { print v }' "$OUT/rmse.tsv"
 }
@@ -226,6 +315,9 @@ for f in $FUNCS; do
 	for s in $SAMPLERS; do o="$o${o:+ / }$(big $s $f)"; done
 	row "$f: rmse at n = 2^$KMAX frs/jfrs/hsw/random/jittered/halton/dart" "$o" "-"
 done
+o=""
+for s in $ESAMPLERS; do o="$o${o:+ / }$(big $s env)"; done
+row "env: rmse at n = 2^$KMAX ifrs/ijfrs/ihsw/random/jittered/halton/dart" "$o" "-"
 
 # Verdict: random converges as n^-1/2, and FRS, jittered FRS and the
 # stratified samplers beat it on every integrand at the largest n.
