@@ -1,9 +1,11 @@
-/* Matrices and maps for the FRS tests (test_frs, test_frscl). */
+/* Matrices, maps and results for the FRS and FRD tests (test_frs,
+ * test_frscl, test_frdgen, test_frdgencl, test/hard). */
 #ifndef FRS_TEST_FRSUTIL_H
 #define FRS_TEST_FRSUTIL_H
 
 #include "testutil.h"
 #include "frdio.h"
+#include "frscore.h"
 #include "imap.h"
 #include "rng.h"
 
@@ -30,6 +32,49 @@ static inline void tu_map_of(const char *spec, uint32_t w, uint32_t h,
 	if (imap_load(spec, w, h, 0, m) != 0)
 		print_error("%s\n", frs_errmsg());
 	assert_non_null(m->v);
+}
+
+/* Every value 0 .. n-1 exactly once. */
+static inline void tu_assert_permutation(const struct frs_matrix *m)
+{
+	unsigned char *seen = calloc(m->n, 1);
+
+	assert_non_null(seen);
+	for (size_t i = 0; i < m->n; i++) {
+		assert_true(m->v[i] < m->n);
+		assert_int_equal(seen[m->v[i]], 0);
+		seen[m->v[i]] = 1;
+	}
+	free(seen);
+}
+
+/* Elements by position: y, x, then step. */
+static inline int tu_elem_cmp(const void *a, const void *b)
+{
+	const struct frs_elem *x = a, *y = b;
+	if (x->y != y->y)
+		return x->y < y->y ? -1 : 1;
+	if (x->x != y->x)
+		return x->x < y->x ? -1 : 1;
+	return (int)x->step - (int)y->step;
+}
+
+/* All elements of a result in one array: in their order, or sorted by
+ * position (tu_elem_cmp). */
+static inline struct frs_elem *tu_elems(const struct frs_result *r,
+    int sorted)
+{
+	struct frs_elem *e = malloc((r->count + 1) * sizeof *e);
+	uint64_t k = 0;
+
+	assert_non_null(e);
+	for (uint64_t c = 0; c < r->nchunk; c++)
+		for (uint64_t i = 0; i < r->chunk[c].n; i++)
+			e[k++] = r->chunk[c].e[i];
+	assert_true(k == r->count);
+	if (sorted)
+		qsort(e, k, sizeof *e, tu_elem_cmp);
+	return e;
 }
 
 #endif

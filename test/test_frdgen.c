@@ -2,21 +2,11 @@
  * definition (Listing 3.1 with the documented rank and tie rules), and
  * the quality properties of what it makes. */
 #include "testutil.h"
+#include "frsutil.h"
 #include "fft.h"
 #include "frdgen.h"
 #include "frdq.h"
 #include "rng.h"
-
-static void perm_ok(const struct frs_matrix *m)
-{
-	unsigned char *seen = calloc(m->n, 1);
-	for (size_t i = 0; i < m->n; i++) {
-		assert_true(m->v[i] < m->n);
-		assert_int_equal(seen[m->v[i]], 0);
-		seen[m->v[i]] = 1;
-	}
-	free(seen);
-}
 
 static void params(struct frdgen_params *pr, uint32_t w, uint32_t h,
     uint32_t d, double p, double tol)
@@ -43,7 +33,7 @@ static void permutations(void **state)
 		struct frs_matrix m;
 		params(&pr, sz[i][0], sz[i][1], sz[i][2], sz[i][3] / 100.0, 1e-4);
 		assert_int_equal(frdgen_run(&pr, &m, NULL), 0);
-		perm_ok(&m);
+		tu_assert_permutation(&m);
 		frd_free(&m);
 	}
 }
@@ -137,7 +127,7 @@ static void spread(void **state)
 
 	params(&pr, 256, 256, 1, 0.5, 1e-4);
 	assert_int_equal(frdgen_run(&pr, &m, NULL), 0);
-	perm_ok(&m);
+	tu_assert_permutation(&m);
 	for (size_t i = 0; i < m.n; i++)
 		if (m.v[i] < 1024) {
 			pos[m.v[i]][0] = (uint32_t)(i % 256);

@@ -3,6 +3,7 @@
  * tolerances, non-square and 3-D matrices; a permutation; checkpoints
  * and devices without fp64 refused with a message. */
 #include "testutil.h"
+#include "frsutil.h"
 #include "frdgen.h"
 #include "frdgencl.h"
 
@@ -19,18 +20,6 @@ static int teardown(void **state)
 	(void)state;
 	ocl_close(&o);
 	return 0;
-}
-
-static void is_permutation(const struct frs_matrix *m)
-{
-	unsigned char *seen = calloc(m->n, 1);
-	assert_non_null(seen);
-	for (size_t i = 0; i < m->n; i++) {
-		assert_true(m->v[i] < m->n);
-		assert_int_equal(seen[m->v[i]], 0);
-		seen[m->v[i]] = 1;
-	}
-	free(seen);
 }
 
 /* CPU and OpenCL give the same values for these parameters. */
@@ -51,7 +40,7 @@ static void same(const struct frdgen_params *pr)
 		    (unsigned long long)pr->seed, pr->tol, pr->reach, i, a.v[i],
 		    b.v[i]);
 	}
-	is_permutation(&b);
+	tu_assert_permutation(&b);
 	frd_free(&a);
 	frd_free(&b);
 }

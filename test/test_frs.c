@@ -51,29 +51,6 @@ static void setup_closed_form(void **state)
 	imap_free(&map);
 }
 
-static int elem_cmp(const void *a, const void *b)
-{
-	const struct frs_elem *x = a, *y = b;
-	if (x->y != y->y)
-		return x->y < y->y ? -1 : 1;
-	if (x->x != y->x)
-		return x->x < y->x ? -1 : 1;
-	return (int)x->step - (int)y->step;
-}
-
-/* All elements of a result, sorted. */
-static struct frs_elem *collect(const struct frs_result *r)
-{
-	struct frs_elem *e = malloc((r->count + 1) * sizeof *e);
-	uint64_t k = 0;
-	for (uint64_t c = 0; c < r->nchunk; c++)
-		for (uint64_t i = 0; i < r->chunk[c].n; i++)
-			e[k++] = r->chunk[c].e[i];
-	assert_true(k == r->count);
-	qsort(e, k, sizeof *e, elem_cmp);
-	return e;
-}
-
 static void run(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *m, enum frs_algo a, const uint64_t *steps,
     unsigned nsteps, struct frs_result *r)
@@ -112,7 +89,7 @@ static void implementations_agree(void **state)
 			s.rule = ni == 2 ? FRS_THESIS : FRS_UNBIASED;
 			frs_set_threads(1);
 			run(&s, &map, &m, FRS_NAIVE, &n, 1, &ref);
-			re = collect(&ref);
+			re = tu_elems(&ref, 1);
 			for (int a = FRS_STACK; a < FRS_NALGO; a++) {
 				struct frs_result r;
 				struct frs_elem *e;
@@ -125,7 +102,7 @@ static void implementations_agree(void **state)
 					    (unsigned long long)r.count,
 					    (unsigned long long)ref.count);
 				assert_true(r.count == ref.count);
-				e = collect(&r);
+				e = tu_elems(&r, 1);
 				assert_memory_equal(e, re, r.count * sizeof *e);
 				free(e);
 				frs_result_free(&r);
@@ -186,8 +163,8 @@ static void progressive(void **state)
 	run(&s, &map, &m, FRS_SORTED, steps + 2, 1, &one);
 	run(&s, &map, &m, FRS_SORTED, steps, 3, &prog);
 	assert_true(one.count == prog.count);
-	a = collect(&one);
-	b = collect(&prog);
+	a = tu_elems(&one, 1);
+	b = tu_elems(&prog, 1);
 	for (uint64_t i = 0; i < one.count; i++) {
 		assert_true(a[i].x == b[i].x && a[i].y == b[i].y);
 		cnt[b[i].step]++;

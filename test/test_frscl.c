@@ -31,19 +31,6 @@ static int teardown(void **state)
 	return 0;
 }
 
-/* All elements of a result in their order. */
-static struct frs_elem *flat(const struct frs_result *r)
-{
-	struct frs_elem *e = malloc((r->count + 1) * sizeof *e);
-	uint64_t k = 0;
-	assert_non_null(e);
-	for (uint64_t c = 0; c < r->nchunk; c++)
-		for (uint64_t i = 0; i < r->chunk[c].n; i++)
-			e[k++] = r->chunk[c].e[i];
-	assert_true(k == r->count);
-	return e;
-}
-
 static void same(const struct frs_result *a, const struct frs_result *b,
     const char *what)
 {
@@ -52,8 +39,8 @@ static void same(const struct frs_result *a, const struct frs_result *b,
 		print_error("%s: %llu elements vs %llu\n", what,
 		    (unsigned long long)a->count, (unsigned long long)b->count);
 	assert_true(a->count == b->count);
-	ea = flat(a);
-	eb = flat(b);
+	ea = tu_elems(a, 0);
+	eb = tu_elems(b, 0);
 	for (uint64_t i = 0; i < a->count; i++)
 		if (memcmp(&ea[i], &eb[i], sizeof *ea) != 0) {
 			print_error("%s: element %llu: (%u %u %u) vs (%u %u %u)\n",
@@ -119,7 +106,7 @@ static void implementations_match_cpu(void **state)
 				same(&r, &cpu[ref], what);
 				/* The points too (jitter is the host's). */
 				if (r.count > 0) {
-					struct frs_elem *e0 = flat(&r), *e1 = flat(&cpu[ref]);
+					struct frs_elem *e0 = tu_elems(&r, 0), *e1 = tu_elems(&cpu[ref], 0);
 					for (uint64_t i = 0; i < r.count; i += 97) {
 						double x0, y0, x1, y1;
 						frs_point(&s, &e0[i], &x0, &y0);

@@ -21,15 +21,7 @@
 
 static void perm_ok(const struct frs_matrix *m)
 {
-	unsigned char *seen = calloc(m->n, 1);
-
-	assert_non_null(seen);
-	for (size_t i = 0; i < m->n; i++) {
-		assert_true(m->v[i] < m->n);
-		assert_int_equal(seen[m->v[i]], 0);
-		seen[m->v[i]] = 1;
-	}
-	free(seen);
+	tu_assert_permutation(m);
 	assert_int_equal(frd_check_permutation(m, "m"), 0);
 }
 

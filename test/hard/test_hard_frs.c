@@ -17,29 +17,6 @@
 
 /* ---- helpers ------------------------------------------------------- */
 
-static int elem_cmp(const void *a, const void *b)
-{
-	const struct frs_elem *x = a, *y = b;
-	if (x->y != y->y)
-		return x->y < y->y ? -1 : 1;
-	return x->x < y->x ? -1 : x->x > y->x;
-}
-
-/* The elements of a result, sorted by position. */
-static struct frs_elem *sorted_elems(const struct frs_result *r)
-{
-	struct frs_elem *e = malloc((r->count + 1) * sizeof *e);
-	uint64_t k = 0;
-
-	assert_non_null(e);
-	for (uint64_t c = 0; c < r->nchunk; c++)
-		for (uint64_t i = 0; i < r->chunk[c].n; i++)
-			e[k++] = r->chunk[c].e[i];
-	assert_true(k == r->count);
-	qsort(e, k, sizeof *e, elem_cmp);
-	return e;
-}
-
 /* |count - n| within 5 standard deviations of a Poisson count. */
 static void total_ok(const char *what, uint64_t count, uint64_t n)
 {
@@ -155,8 +132,8 @@ static void single_pixel_large_map(void **state)
 	hd_frs(&map, &m, 5000, 4, FRS_SORTED, 0, &s, &r);
 	hd_frs(&map, &m, 5000, 4, FRS_NAIVE, 0, &s, &nv);
 	assert_true(r.count == nv.count);
-	a = sorted_elems(&r);
-	b = sorted_elems(&nv);
+	a = tu_elems(&r, 1);
+	b = tu_elems(&nv, 1);
 	assert_memory_equal(a, b, r.count * sizeof *a);
 	free(a);
 	free(b);
