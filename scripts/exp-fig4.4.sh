@@ -88,10 +88,6 @@ for jit in none random; do
 		cp "$C/dda-m$s-sig$SIG-$jit-sets$SETS.png" "$OUT/img/$(sname $jit)-m$s.png"
 	done
 done
-# points per set, for the stats
-npts() { # SIZE JIT
-	mean_points $(for seed in $(seq 1 $SETS); do pts $1 $2 $seed; done)
-}
 # peak of the radial mean beyond 0.3 spacings, mean anisotropy of the
 # annuli from 0.5 to 6 spacings, RMS difference to dart's radial mean
 # from 0 to 6 spacings (over dart's annuli; an annulus that dda leaves
@@ -101,30 +97,19 @@ npts() { # SIZE JIT
 	printf 'sampler\tS_M\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_dart\trms_frs_jitter\n'
 	awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(
 		for jit in none random; do for s in $SIZES; do
-			printf '%s:%s:%s ' "$(sname $jit)" $s "$(npts $s $jit)"
-		done; done)" '
-	BEGIN { k = split(pts_list, a, " "); for (i = 1; i <= k; i++) { split(a[i], b, ":"); np[b[1] SUBSEP b[2]] = b[3] } }
-	NR == 1 { next }
-	{
-		key = $1 SUBSEP $2
-		if (!(key in seen)) { seen[key] = 1; order[++no] = key; nm[key] = $1; sm[key] = $2 }
-		d = $3 + 0; p = $4 + 0
-		if ($1 == "dart") ref[d] = p
-		val[key, d] = p
-		if (d >= 0.3 && p > pk[key]) { pk[key] = p; pd[key] = d }
-		if (d >= 0.5 && d <= 6) { an[key] += $5; na[key]++ }
-		if (d <= 6 && $1 == "dart") ds[++nd] = d
-	}
+			printf '%s:%s:%s ' "$(sname $jit)" $s "$(set_points $s $jit)"
+		done; done)" "$RADIAL_AWK"'
+	$1 == "dart" { ref[$3 + 0] = $4 + 0 }
 	END {
 		for (i = 1; i <= no; i++) {
 			key = order[i]; s2 = 0; t2 = 0
-			other = (nm[key] == "frs" ? "frs-jitter" : "frs") SUBSEP sm[key]
+			other = (nm[key] == "frs" ? "frs-jitter" : "frs") SUBSEP pm[key]
 			for (j = 1; j <= nd; j++) {
 				d = ds[j]; e = val[key, d] - ref[d]; s2 += e * e
 				e = val[key, d] - val[other, d]; t2 += e * e
 			}
 			pn = nm[key] == "dart" ? n : np[key]
-			printf "%s\t%s\t%d\t%s\t%.4g\t%.4g\t%.2f\t%.4f\t%s\n", nm[key], sm[key], sets, pn,
+			printf "%s\t%s\t%d\t%s\t%.4g\t%.4g\t%.2f\t%.4f\t%s\n", nm[key], pm[key], sets, pn,
 			    pd[key], pk[key], an[key] / na[key], sqrt(s2 / nd),
 			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(t2 / nd))
 		}
@@ -134,16 +119,11 @@ npts() { # SIZE JIT
 # 5. figures
 NS=$(echo $SIZES | wc -w)
 {
-	gp_png "$OUT/fig4.4-dda.png"
-	echo "set terminal png size $((170 * (NS + 1))),380 font ',9'"
-	echo "set multiplot layout 2,$((NS + 1)) title 'DDA, +-6 spacings (grey: -10..+10 dB; top: FRS, bottom: jittered FRS)'"
-	echo "unset key; unset tics; unset border; set size ratio -1"
-	echo "h = 12./128; set xrange [-6:6]; set yrange [-6:6]"
-	img() { echo "set title '$2'; plot '$1' binary filetype=png dx=h dy=h origin=(-12,-12) with rgbimage notitle"; }
-	img "$OUT/img/dart.png" "dart throwing"
-	for s in $SIZES; do img "$OUT/img/frs-m$s.png" "FRS S_M=$s"; done
+	dda_grid "$OUT/fig4.4-dda.png" $((NS + 1)) 'DDA, +-6 spacings (grey: -10..+10 dB; top: FRS, bottom: jittered FRS)'
+	dda_img "$OUT/img/dart.png" "dart throwing"
+	for s in $SIZES; do dda_img "$OUT/img/frs-m$s.png" "FRS S_M=$s"; done
 	echo "set multiplot next"
-	for s in $SIZES; do img "$OUT/img/frs-jitter-m$s.png" "jittered S_M=$s"; done
+	for s in $SIZES; do dda_img "$OUT/img/frs-jitter-m$s.png" "jittered S_M=$s"; done
 	echo "unset multiplot"
 } | gnuplot
 {

@@ -97,9 +97,6 @@ for jit in none random; do
 		cp "$C/$(dname $sig $jit).png" "$OUT/img/$(sname $jit)-sigma$sig.png"
 	done
 done
-npts() { # SIGMA JIT
-	mean_points $(for seed in $(seq 1 $SETS); do pts $1 $2 $seed; done)
-}
 # peak of the radial mean beyond 0.3 spacings, mean anisotropy of the
 # annuli from 0.5 to 6 spacings, RMS differences of the radial mean from
 # 0 to 6 spacings to the grid (FRS: regular, jittered FRS: jittered grid)
@@ -109,19 +106,8 @@ npts() { # SIGMA JIT
 	printf 'sampler\tsigma\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_grid\trms_vs_dart\n'
 	awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(
 		for jit in none random; do for sig in $SIGMAS; do
-			printf '%s:%s:%s ' "$(sname $jit)" $sig "$(npts $sig $jit)"
-		done; done)" '
-	BEGIN { k = split(pts_list, a, " "); for (i = 1; i <= k; i++) { split(a[i], b, ":"); np[b[1] SUBSEP b[2]] = b[3] } }
-	NR == 1 { next }
-	{
-		key = $1 SUBSEP $2
-		if (!(key in seen)) { seen[key] = 1; order[++no] = key; nm[key] = $1; sg[key] = $2 }
-		d = $3 + 0; p = $4 + 0
-		val[key, d] = p
-		if (d >= 0.3 && p > pk[key]) { pk[key] = p; pd[key] = d }
-		if (d >= 0.5 && d <= 6) { an[key] += $5; na[key]++ }
-		if (d <= 6 && $1 == "dart") ds[++nd] = d
-	}
+			printf '%s:%s:%s ' "$(sname $jit)" $sig "$(set_points $sig $jit)"
+		done; done)" "$RADIAL_AWK"'
 	END {
 		for (i = 1; i <= no; i++) {
 			key = order[i]; s2 = 0; t2 = 0
@@ -132,7 +118,7 @@ npts() { # SIGMA JIT
 				e = val[key, d] - val[g, d]; s2 += e * e
 				e = val[key, d] - val[r, d]; t2 += e * e
 			}
-			printf "%s\t%s\t%d\t%s\t%.4g\t%.4g\t%.2f\t%s\t%.4f\n", nm[key], sg[key],
+			printf "%s\t%s\t%d\t%s\t%.4g\t%.4g\t%.2f\t%s\t%.4f\n", nm[key], pm[key],
 			    nm[key] == "regular" ? 1 : sets, nm[key] == "regular" || nm[key] == "dart" || nm[key] == "jittered-grid" ? n : np[key],
 			    pd[key], pk[key], an[key] / na[key],
 			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(s2 / nd)), sqrt(t2 / nd)
@@ -143,16 +129,11 @@ npts() { # SIGMA JIT
 # 5. figures
 NS=$(echo $SIGMAS | wc -w)
 {
-	gp_png "$OUT/fig4.5-4.6-dda.png"
-	echo "set terminal png size $((170 * (NS + 1))),380 font ',9'"
-	echo "set multiplot layout 2,$((NS + 1)) title 'DDA, S_M=$SM, +-6 spacings (grey: -10..+10 dB; top: FRS (Fig. 4.5), bottom: jittered FRS (Fig. 4.6))'"
-	echo "unset key; unset tics; unset border; set size ratio -1"
-	echo "h = 12./128; set xrange [-6:6]; set yrange [-6:6]"
-	img() { echo "set title '$2'; plot '$1' binary filetype=png dx=h dy=h origin=(-12,-12) with rgbimage notitle"; }
-	img "$OUT/img/regular.png" "regular grid"
-	for sig in $SIGMAS; do img "$OUT/img/frs-sigma$sig.png" "FRS sigma=$sig"; done
-	img "$OUT/img/jittered-grid.png" "jittered grid"
-	for sig in $SIGMAS; do img "$OUT/img/frs-jitter-sigma$sig.png" "jittered FRS sigma=$sig"; done
+	dda_grid "$OUT/fig4.5-4.6-dda.png" $((NS + 1)) "DDA, S_M=$SM, +-6 spacings (grey: -10..+10 dB; top: FRS (Fig. 4.5), bottom: jittered FRS (Fig. 4.6))"
+	dda_img "$OUT/img/regular.png" "regular grid"
+	for sig in $SIGMAS; do dda_img "$OUT/img/frs-sigma$sig.png" "FRS sigma=$sig"; done
+	dda_img "$OUT/img/jittered-grid.png" "jittered grid"
+	for sig in $SIGMAS; do dda_img "$OUT/img/frs-jitter-sigma$sig.png" "jittered FRS sigma=$sig"; done
 	echo "unset multiplot"
 } | gnuplot
 {

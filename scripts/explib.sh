@@ -118,6 +118,45 @@ mean_points() {
 	done | awk '{ t += $1; c++ } END { printf "%.1f", t / c }'
 }
 
+# set_points A B: the mean point count of the SETS sets that the
+# experiment's own function "pts A B SEED" names.
+set_points() {
+	mean_points $(for seed in $(seq 1 $SETS); do pts $1 $2 $seed; done)
+}
+
+# The radial statistics of the DDA experiments (fig4.4, fig4.5-4.6): awk
+# rules over rows "sampler param distance power anisotropy" (header
+# first) that keep, per sampler and param (key, in order[1..no], names
+# nm[] and pm[]): the peak beyond 0.3 spacings (pk, at pd), the summed
+# anisotropy from 0.5 to 6 spacings (an over na), every value val[key,d],
+# and dart's distances up to 6 spacings (ds[1..nd]); np[] from -v
+# pts_list "sampler:param:points ...".  The experiment adds its END.
+RADIAL_AWK='
+	BEGIN { k = split(pts_list, a, " "); for (i = 1; i <= k; i++) { split(a[i], b, ":"); np[b[1] SUBSEP b[2]] = b[3] } }
+	NR == 1 { next }
+	{
+		key = $1 SUBSEP $2
+		if (!(key in seen)) { seen[key] = 1; order[++no] = key; nm[key] = $1; pm[key] = $2 }
+		d = $3 + 0; p = $4 + 0
+		val[key, d] = p
+		if (d >= 0.3 && p > pk[key]) { pk[key] = p; pd[key] = d }
+		if (d >= 0.5 && d <= 6) { an[key] += $5; na[key]++ }
+		if (d <= 6 && $1 == "dart") ds[++nd] = d
+	}'
+
+# dda_grid PNG COLS TITLE: the preamble of a gnuplot page of DDA pictures
+# (2 rows of COLS, +-6 spacings); then dda_img FILE TITLE for each.
+dda_grid() {
+	gp_png "$1"
+	echo "set terminal png size $((170 * $2)),380 font ',9'"
+	echo "set multiplot layout 2,$2 title '$3'"
+	echo "unset key; unset tics; unset border; set size ratio -1"
+	echo "h = 12./128; set xrange [-6:6]; set yrange [-6:6]"
+}
+dda_img() {
+	echo "set title '$2'; plot '$1' binary filetype=png dx=h dy=h origin=(-12,-12) with rgbimage notitle"
+}
+
 # gp_png FILE: the preamble of a gnuplot script writing a PNG.
 gp_png() {
 	echo "set terminal png size 900,600 font ',10'"
