@@ -131,15 +131,9 @@ done
 	for m in $MAPS; do
 		r1=$(awk -F '\t' 'NR > 1 && $2 > bp { bp = $2; bf = $1 } END { print bf }' "$OUT/radial-$m-ref.tsv")
 		for d in $DISTS; do
-			awk -F '\t' -v m="$m" -v d="$d" -v r1="$r1" '
+			awk -F '\t' -v m="$m" -v d="$d" -v r1="$r1" "$BEST_AWK"'
 			NR > 1 { n++; f[n] = $1; p[n] = $2 }
 			NR > 1 && $1 >= r1 && $1 <= 6 { na++; a += $3 }
-			function best(lo, hi,   i, bf) {
-				bp = -1; bf = -1
-				for (i = 1; i <= n; i++)
-					if (f[i] >= lo && f[i] < hi && p[i] > bp) { bp = p[i]; bf = f[i] }
-				return bf
-			}
 			END {
 				f1 = best(0, 1e9); p1 = bp
 				f2 = best(1.5 * f1, 2.5 * f1); p2 = bp

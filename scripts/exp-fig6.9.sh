@@ -79,14 +79,8 @@ done
 {
 	printf 'dist\tpeak1_freq\tpeak1_power\tpeak2_freq\tpeak2_power\tpeak3_freq\tpeak3_power\tmean_aniso_db\n'
 	for d in $DISTS; do
-		awk -F '\t' -v d="$d" '
+		awk -F '\t' -v d="$d" "$BEST_AWK"'
 		NR > 1 && $1 >= 4 { n++; f[n] = $1; p[n] = $2; a += $3 }
-		function best(lo, hi,   i, bf) {
-			bp = -1; bf = -1
-			for (i = 1; i <= n; i++)
-				if (f[i] >= lo && f[i] < hi && p[i] > bp) { bp = p[i]; bf = f[i] }
-			return bf
-		}
 		END {
 			f1 = best(0, 1e9); p1 = bp
 			f2 = best(1.5 * f1, 2.5 * f1); p2 = bp

@@ -144,6 +144,17 @@ RADIAL_AWK='
 		if (d <= 6 && $1 == "dart") ds[++nd] = d
 	}'
 
+# awk function best(lo, hi) over the annuli f[1..n] with powers p[]: the
+# annulus of the highest power in [lo, hi), that power left in bp (the
+# radial peaks of fig6.9 and fig6.10-6.11).
+BEST_AWK='
+	function best(lo, hi,   i, bf) {
+		bp = -1; bf = -1
+		for (i = 1; i <= n; i++)
+			if (f[i] >= lo && f[i] < hi && p[i] > bp) { bp = p[i]; bf = f[i] }
+		return bf
+	}'
+
 # dda_grid PNG COLS TITLE: the preamble of a gnuplot page of DDA pictures
 # (2 rows of COLS, +-6 spacings); then dda_img FILE TITLE for each.
 dda_grid() {
