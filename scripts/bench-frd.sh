@@ -95,3 +95,30 @@ else
 	echo "data/default.frd: missing"
 fi
 echo "(thesis: 2048^2 took over 4 hours = 14400 s on a GTX 680)"
+
+. "$(dirname "$0")/benchlib.sh"
+echo
+echo "void-and-cluster baseline (--method vac: sigma 1.5, tol 1e-4, one thread)"
+echo "against frd (defaults, $(nproc) threads)"
+printf '%-9s %9s %9s %8s %8s %8s %8s %8s\n' size frd_s vac_s vac/frd \
+    sp16_frd sp16_vac lp_frd lp_vac
+# vrow K SIZE: both methods at one size; time (benchlib.sh's timed, to the
+# millisecond) and two quality figures each.
+vrow() {
+	timed /dev/null "$GEN" -q -k "$1" -s "$2" -o "$T/f.frd"
+	tf=$SEC
+	timed /dev/null "$GEN" -q --method vac -k "$1" -s "$2" -o "$T/v.frd"
+	"$GEN" --quality "$T/f.frd" >"$T/qf"
+	"$GEN" --quality "$T/v.frd" >"$T/qv"
+	awk -v s="$2" -v a="$tf" -v b="$SEC" -v qf="$T/qf" -v qv="$T/qv" 'BEGIN {
+		while ((getline l < qf) > 0) { split(l, x, " "); f[x[1]] = x[2] }
+		while ((getline l < qv) > 0) { split(l, x, " "); v[x[1]] = x[2] }
+		k = "lowpass_first_10%"
+		if (!(k in f)) f[k] = v[k] = "-"
+		printf "%-9s %9.3f %9.3f %8.2f %8s %8s %8s %8s\n", s, a, b,
+		    (a > 0 ? b / a : 0), f["spread_16"], v["spread_16"], f[k], v[k] }'
+}
+for s in 64 128 256; do vrow 2 $s; done
+vrow 3 32x32x32
+echo "(vac/frd: time ratio; sp16: spread of the first 16 values; lp: low-frequency"
+echo " power of the first 10 %, white noise 1; '-' where the measure is 2-D only)"

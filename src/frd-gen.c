@@ -18,21 +18,30 @@
 #include "outfile.h"
 #include "parse.h"
 #include "progress.h"
+#include "vac.h"
 
 static const char usage[] =
     "usage: frd-gen -s SIZE [-k 2|3] [-p P] [--tol EPS | --exact] [-S SEED]\n"
     "               [-j N] [--checkpoint FILE] [--device cpu|cl|cl:N] [-v]\n"
     "               [-o FILE]\n"
+    "       frd-gen --method vac -s SIZE [-k 2|3] [--vac-sigma S]\n"
+    "               [--tol EPS | --exact] [-S SEED] [-v] [-o FILE]\n"
     "       frd-gen --quality FILE\n"
     "       frd-gen --list-devices\n"
     "\n"
     "  -s, --size SIZE     N (N x N, or N^3 with -k 3), WxH or WxHxD\n"
     "  -k, --dims K        2 (default) or 3\n"
+    "      --method M      frd (default: Forced Random Dithering) or vac\n"
+    "                      (Ulichney's void-and-cluster, a baseline)\n"
+    "      --vac-sigma S   vac: Gaussian filter sigma in cells (default 1.5)\n"
     "  -p, --fraction P    candidate fraction in (0, 1] (default 0.5;\n"
     "                      1 = always the global minimum)\n"
     "      --tol EPS       neglect forces below EPS * f(0) (default 1e-3;\n"
-    "                      radius (ln 1/EPS)^2 / 2 cells for the default f)\n"
-    "      --exact         keep every contribution (O(N^2))\n"
+    "                      radius (ln 1/EPS)^2 / 2 cells for the default f);\n"
+    "                      vac: the filter below EPS (default 1e-4, radius\n"
+    "                      S sqrt(2 ln 1/EPS))\n"
+    "      --exact         keep every contribution (frd: O(N^2); vac: the\n"
+    "                      whole torus)\n"
     "      --reach R       radius at least R times the spacing of the values\n"
     "                      inserted so far (default 0.7, 0 = off)\n"
     "      --force-s S     force f(r) = exp(-(r/S)^Q), default S = 0.5\n"
@@ -55,7 +64,8 @@ static const char usage[] =
 
 enum {
 	OPT_TOL = OPT_FIRST_PRIVATE, OPT_EXACT, OPT_REACH, OPT_FS, OPT_FQ,
-	OPT_CKPT, OPT_CKPT_EVERY, OPT_QUALITY, OPT_DEVICE, OPT_LIST
+	OPT_CKPT, OPT_CKPT_EVERY, OPT_QUALITY, OPT_DEVICE, OPT_LIST,
+	OPT_METHOD, OPT_VAC_SIGMA
 };
 
 static const struct option longopts[] = {
@@ -72,6 +82,8 @@ static const struct option longopts[] = {
 	{ "quality", required_argument, NULL, OPT_QUALITY },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST },
+	{ "method", required_argument, NULL, OPT_METHOD },
+	{ "vac-sigma", required_argument, NULL, OPT_VAC_SIGMA },
 
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
@@ -140,13 +152,102 @@ static int quality(const char *path)
 	return 0;
 }
 
-static void check_memory(const struct frdgen_params *pr)
+static void check_memory(const struct frdgen_params *pr, uint64_t bytes)
 {
 	char what[64];
 
 	snprintf(what, sizeof what, "-s %ux%ux%u", pr->w, pr->h, pr->d);
-	if (mem_check(what, frdgen_memory(pr), 1) < 0)
+	if (mem_check(what, bytes, 1) < 0)
 		cli_die_lib();
+}
+
+/* What the options asked for beyond struct frdgen_params. */
+struct method_opts {
+	int vac;		/* --method vac */
+	int tol_set;		/* --tol or --exact given */
+	double vac_sigma;	/* --vac-sigma, 0 when not given */
+	const char *frd_only;	/* an option given that only frd uses */
+};
+
+static int parse_method(const char *s)
+{
+	if (strcmp(s, "frd") == 0)
+		return 0;
+	if (strcmp(s, "vac") != 0)
+		cli_usage_error("--method: '%s' is not frd or vac", s);
+	return 1;
+}
+
+/* Options of the other method are refused, not silently ignored. */
+static void check_method(const struct method_opts *mo, int use_cl)
+{
+	if (!mo->vac) {
+		if (mo->vac_sigma > 0.0)
+			cli_usage_error("--vac-sigma: only with --method vac");
+		return;
+	}
+	if (mo->frd_only != NULL)
+		cli_usage_error("%s: not used by --method vac", mo->frd_only);
+	if (use_cl)
+		cli_usage_error("--device: --method vac runs on the CPU only");
+}
+
+/* Write a finished matrix to the open output, or die removing it. */
+static void write_matrix(struct outfile *of, const struct frs_matrix *m)
+{
+	if (frd_write(of->fp, of->name, m) < 0) {
+		outfile_abort(of);
+		cli_die_lib();
+	}
+	if (outfile_commit(of) < 0)
+		cli_die_lib();
+}
+
+/* --method vac: the void-and-cluster baseline (vac.h). */
+static int run_vac(const struct frdgen_params *pr,
+    const struct method_opts *mo, int verbose)
+{
+	struct vac_params vp;
+	struct vac_stats st;
+	struct frs_matrix m;
+	struct outfile of;
+	struct progress prog;
+	double t0;
+
+	vac_defaults(&vp);
+	vp.dims = pr->dims;
+	vp.w = pr->w;
+	vp.h = pr->h;
+	vp.d = pr->d;
+	vp.seed = pr->seed;
+	if (mo->vac_sigma > 0.0)
+		vp.sigma = mo->vac_sigma;
+	if (mo->tol_set)
+		vp.tol = pr->tol;
+	if (vac_check(&vp) < 0)
+		cli_usage_error("%s", frs_errmsg());
+	check_memory(pr, vac_memory(&vp));
+	cli_options_done();
+	if (outfile_open(&of, cli.out, 1) < 0)
+		cli_die_lib();
+	t0 = progress_now();
+	progress_begin(&prog, "void-and-cluster", (uint64_t)vp.w * vp.h * vp.d);
+	if (vac_run(&vp, &m, &prog, &st) < 0) {
+		progress_end(&prog);
+		outfile_abort(&of);
+		cli_die_lib();
+	}
+	progress_end(&prog);
+	write_matrix(&of, &m);
+	if (verbose) {
+		fprintf(stderr, "frd-gen: void-and-cluster %ux%ux%u in %.3f s "
+		    "(sigma %g, radius %.1f, %llu initial cells, %llu moves)\n",
+		    vp.w, vp.h, vp.d, progress_now() - t0, vp.sigma, st.radius,
+		    (unsigned long long)st.ones, (unsigned long long)st.moves);
+		print_quality(stderr, &m, cli.out ? cli.out : "<stdout>");
+	}
+	frd_free(&m);
+	return 0;
 }
 
 int main(int argc, char **argv)
@@ -158,6 +259,7 @@ int main(int argc, char **argv)
 	const char *size = NULL;
 	int c, verbose = 0, use_cl = 0, dev = -1;
 	struct ocl o;
+	struct method_opts mo = { 0, 0, 0.0, NULL };
 	double t0;
 
 	cli_init("frd-gen", usage);
@@ -175,31 +277,47 @@ int main(int argc, char **argv)
 			pr.p = cli_double("-p", optarg, 0.0, 1.0);
 			if (pr.p <= 0.0)
 				cli_usage_error("-p: %s is outside (0, 1]", optarg);
+			mo.frd_only = "-p";
 			break;
 		case OPT_TOL:
 			pr.tol = cli_double("--tol", optarg, 0.0, 0.999999);
 			if (pr.tol <= 0.0)
 				cli_usage_error("--tol: must be above 0 (use "
 				    "--exact to keep every contribution)");
+			mo.tol_set = 1;
 			break;
 		case OPT_EXACT:
 			pr.tol = 0.0;
+			mo.tol_set = 1;
 			break;
 		case OPT_REACH:
 			pr.reach = cli_double("--reach", optarg, 0.0, 1e6);
+			mo.frd_only = "--reach";
 			break;
 		case OPT_FS:
 			pr.s = cli_double("--force-s", optarg, 1e-6, 1e6);
+			mo.frd_only = "--force-s";
 			break;
 		case OPT_FQ:
 			pr.q = cli_double("--force-q", optarg, 1e-3, 100.0);
+			mo.frd_only = "--force-q";
 			break;
 		case OPT_CKPT:
 			pr.checkpoint = optarg;
+			mo.frd_only = "--checkpoint";
 			break;
 		case OPT_CKPT_EVERY:
 			pr.checkpoint_every = cli_double("--checkpoint-every", optarg,
 			    0.0, 1e9);
+			mo.frd_only = "--checkpoint-every";
+			break;
+		case OPT_METHOD:
+			mo.vac = parse_method(optarg);
+			break;
+		case OPT_VAC_SIGMA:
+			mo.vac_sigma = cli_double("--vac-sigma", optarg, 0.0, 1e6);
+			if (mo.vac_sigma <= 0.0)
+				cli_usage_error("--vac-sigma: must be above 0");
 			break;
 		case OPT_QUALITY:
 			cli_options_done();
@@ -224,11 +342,14 @@ int main(int argc, char **argv)
 		cli_usage_error("-s SIZE is required");
 	parse_dims(size, &pr);
 	pr.seed = cli.seed;
+	check_method(&mo, use_cl);
+	if (mo.vac)
+		return run_vac(&pr, &mo, verbose);
 	if (frdgen_check(&pr) < 0)
 		cli_usage_error("%s", frs_errmsg());
 	if (use_cl && pr.checkpoint != NULL)
 		cli_usage_error("--checkpoint: not available with --device cl");
-	check_memory(&pr);
+	check_memory(&pr, frdgen_memory(&pr));
 	cli_options_done();
 	/* The device before the output: a missing one fails at once. */
 	if (use_cl && ocl_open(&o, dev) < 0)
@@ -247,12 +368,7 @@ int main(int argc, char **argv)
 	progress_end(&prog);
 	if (use_cl)
 		ocl_close(&o);
-	if (frd_write(of.fp, of.name, &m) < 0) {
-		outfile_abort(&of);
-		cli_die_lib();
-	}
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
+	write_matrix(&of, &m);
 	if (pr.checkpoint != NULL)
 		unlink(pr.checkpoint);
 	if (verbose) {

@@ -79,6 +79,59 @@ expect_fail "full disk" 1 "No space left" - frd-gen -s 16 -o /dev/full
 : >"$T/empty.frd"
 expect_fail "--quality of an empty file" 1 "empty.frd: empty file" - frd-gen --quality "$T/empty.frd"
 
+# --method vac: the void-and-cluster baseline (src/lib/vac.h).
+params() { # the parameter text of an .frd file
+	plen=$(od -A n -t u4 -j 28 -N 4 "$1" | tr -d ' ')
+	head -c $((32 + plen)) "$1" | tail -c "$plen"
+}
+check "--method vac -s 64" frd-gen --method vac -s 64 -o "$T/v.frd"
+check "vac: a permutation (frd-prep --check)" frd-prep --check -a none \
+    -o "$T/vc.frd" "$T/v.frd"
+params "$T/v.frd" >"$T/vp"
+grep -q '^method=vac$' "$T/vp" && grep -q '^sigma=1.5$' "$T/vp" &&
+    grep -q '^tol=0.0001$' "$T/vp" && ok "vac: method and defaults in the header" ||
+    nok "vac: method and defaults in the header"
+frd-gen --method vac -s 96x64 -j 1 -o "$T/vj1.frd" &&
+    frd-gen --method vac -s 96x64 -j 2 -o "$T/vj2.frd" &&
+    cmp -s "$T/vj1.frd" "$T/vj2.frd" && ok "vac: -j 1 and -j 2 give the same bytes" ||
+    nok "vac: -j 1 and -j 2 give the same bytes"
+frd-gen --method vac -s 96x64 -S 2 -o "$T/vs2.frd" && ! cmp -s "$T/vj1.frd" "$T/vs2.frd" &&
+    ok "vac: another seed gives another matrix" || nok "vac: another seed gives another matrix"
+cmp -s "$T/v.frd" "$T/a.frd" && nok "vac differs from frd" || ok "vac differs from frd"
+check "vac -k 3 -s 10x8x6" frd-gen --method vac -k 3 -s 10x8x6 -o "$T/v3.frd"
+check "vac 3-D: a permutation" frd-prep --check -a none -o "$T/v3c.frd" "$T/v3.frd"
+frd-gen --method vac -s 40x24 --exact --vac-sigma 2.5 -o "$T/ve.frd" &&
+    frd-prep --check -a none -o "$T/vec.frd" "$T/ve.frd" && params "$T/ve.frd" >"$T/vp" &&
+    grep -q '^tol=0$' "$T/vp" && grep -q '^sigma=2.5$' "$T/vp" &&
+    ok "vac --exact --vac-sigma 2.5: a permutation, recorded" ||
+    nok "vac --exact --vac-sigma 2.5: a permutation, recorded"
+frd-gen --method vac -s 32 --tol 1e-2 -o "$T/vt.frd" && params "$T/vt.frd" |
+    grep -q '^tol=0.01$' && ok "vac --tol recorded" || nok "vac --tol recorded"
+frd-gen --method frd -s 64 -o "$T/f.frd" && cmp -s "$T/f.frd" "$T/a.frd" &&
+    ok "--method frd is the default" || nok "--method frd is the default"
+expect_fail "--method foo" 2 "--method: 'foo' is not frd or vac" "$T/o.frd" \
+    frd-gen --method foo -s 16 -o "$T/o.frd"
+expect_fail "--vac-sigma 0" 2 "--vac-sigma: must be above 0" "$T/o.frd" \
+    frd-gen --method vac --vac-sigma 0 -s 16 -o "$T/o.frd"
+expect_fail "--vac-sigma -1" 2 "--vac-sigma" "$T/o.frd" \
+    frd-gen --method vac --vac-sigma -1 -s 16 -o "$T/o.frd"
+expect_fail "--vac-sigma nan" 2 "not a finite number" "$T/o.frd" \
+    frd-gen --method vac --vac-sigma nan -s 16 -o "$T/o.frd"
+expect_fail "--vac-sigma abc" 2 "--vac-sigma: 'abc' is not a number" "$T/o.frd" \
+    frd-gen --method vac --vac-sigma abc -s 16 -o "$T/o.frd"
+expect_fail "--vac-sigma without vac" 2 "only with --method vac" "$T/o.frd" \
+    frd-gen --vac-sigma 2 -s 16 -o "$T/o.frd"
+expect_fail "-p with vac" 2 "-p: not used by --method vac" "$T/o.frd" \
+    frd-gen --method vac -p 0.5 -s 16 -o "$T/o.frd"
+expect_fail "--checkpoint with vac" 2 "--checkpoint: not used by --method vac" \
+    "$T/o.frd" frd-gen --method vac --checkpoint "$T/ck" -s 16 -o "$T/o.frd"
+expect_fail "--device cl with vac" 2 "CPU only" "$T/o.frd" \
+    frd-gen --method vac --device cl -s 16 -o "$T/o.frd"
+expect_fail "vac size 1" 2 "at least 2 cells" "$T/o.frd" \
+    frd-gen --method vac -s 1x16 -o "$T/o.frd"
+expect_fail "vac memory that cannot be had" 1 "above the memory limit" "$T/o.frd" \
+    env FRS_MAX_MEM=1M frd-gen --method vac -s 1024 -o "$T/o.frd"
+
 # OpenCL (issue 9): the same bytes as the CPU, the device list, a device
 # that does not exist, a device name that is not one.
 frd-gen -s 32 --device cpu -o "$T/cpu32.frd" &&
