@@ -220,7 +220,8 @@ install: progs libs
 	    $(DESTDIR)$(PKGCONFIGDIR) $(DESTDIR)$(PREFIX)/share/frs
 	for p in $(PROGS); do \
 	    install -m 755 $(B)/bin/$$p $(DESTDIR)$(BINDIR)/ || exit 1; done
-	install -m 644 data/default.frd data/sunset.exr $(DESTDIR)$(PREFIX)/share/frs/
+	install -m 644 data/default.frd data/default3.frd data/sunset.exr \
+	    $(DESTDIR)$(PREFIX)/share/frs/
 	install -m 644 src/lib/frs.h $(DESTDIR)$(INCDIR)/
 	install -m 644 $(B)/libfrs.a $(INSTLIB)/
 	install -m 755 $(B)/$(SOFILE) $(INSTLIB)/
@@ -235,6 +236,7 @@ install: progs libs
 uninstall:
 	for p in $(PROGS); do rm -f $(DESTDIR)$(BINDIR)/$$p; done
 	rm -f $(DESTDIR)$(PREFIX)/share/frs/default.frd \
+	    $(DESTDIR)$(PREFIX)/share/frs/default3.frd \
 	    $(DESTDIR)$(PREFIX)/share/frs/sunset.exr
 	rm -f $(DESTDIR)$(INCDIR)/frs.h $(INSTLIB)/libfrs.a \
 	    $(INSTLIB)/$(SOFILE) $(INSTLIB)/$(SONAME) $(INSTLIB)/libfrs.so \

@@ -13,25 +13,29 @@
 #include "frdio.h"
 #include "frscore.h"
 #include "frscl.h"
+#include "frs3.h"
 #include "imap.h"
 #include "mem.h"
 #include "outfile.h"
 #include "progress.h"
 #include "ptsio.h"
+#include "vol.h"
 
 static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
     "                  [--sigma S] [--jitter none|halton|random] [--pdf]\n"
     "                  [--progressive N1,N2,...] [--threshold unbiased|thesis]\n"
-    "                  [--count-only] [--sets M] [-s WxH] [-S SEED] [-j N]\n"
+    "                  [--count-only] [--sets M] [-s SIZE] [-S SEED] [-j N]\n"
     "                  [--device cpu|cl|cl:N] [-T] [-v] [-o FILE]\n"
     "       frs-sample --list-devices\n"
     "\n"
     "  -n, --count N        samples to make (about; see frs-sample(1))\n"
     "  -i, --importance M   map: PNG, OpenEXR or a spec such as blob\n"
-    "                       (default const: uniform sampling)\n"
+    "                       (default const: uniform sampling); with a\n"
+    "                       3-D matrix a volume: .frv or blob3, ramp3...\n"
     "  -m, --matrix FILE    threshold matrix .frd (default: the shipped\n"
-    "                       2048x2048 data/default.frd)\n"
+    "                       2048x2048 data/default.frd; for a volume the\n"
+    "                       64x64x64 data/default3.frd)\n"
     "  -a, --algo A         naive, stack, level1, level2, sorted (default)\n"
     "                       or flat1 (OpenCL only)\n"
     "      --sigma S        sparsity: one of S^2 window elements passes at\n"
@@ -47,7 +51,8 @@ static const char usage[] =
     "                       with seed S+i (default 1; not with\n"
     "                       --progressive)\n"
     "  -s, --size WxH       size at which procedural maps are evaluated\n"
-    "                       (default 128x128), or files resampled\n"
+    "                       (default 128x128), or files resampled;\n"
+    "                       N or WxHxD for volumes (default 32^3)\n"
     "      --equirect       weight map rows by sin(theta)\n"
     "      --strict         negative importance is an error\n"
     "      --device D       cpu (default), cl (the first OpenCL device) or\n"
@@ -103,6 +108,8 @@ struct opts {
 	enum frs_rule rule;
 	int pdf, count_only, verbose, flags;
 	uint32_t w, h;
+	uint32_t vsz[3];	/* -s for volumes, 0 if not given */
+	int nsz;		/* sizes -s gave: 0, 1 (N), 2 or 3 */
 	uint64_t sets;		/* --sets, default 1 */
 	int cl, dev;		/* --device: OpenCL, its index (-1 first) */
 };
@@ -148,7 +155,9 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 				cli_usage_error("%s", frs_errmsg());
 			break;
 		case 's':
-			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->w, &o->h);
+			o->nsz = cli_size3("-s", optarg, IMAP_MAX_SIDE, o->vsz);
+			o->w = o->vsz[0];
+			o->h = o->vsz[1];
 			break;
 		case OPT_SIGMA:
 			o->sigma = cli_double("--sigma", optarg, 1.0, 1024.0);
@@ -219,20 +228,22 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		    (unsigned long long)cli.seed);
 }
 
-/* The default matrix: $FRS_MATRIX, the source tree, the installed one. */
-static const char *default_matrix(void)
+/* The default matrix: $FRS_MATRIX (or $FRS_MATRIX3 for a volume), the
+ * source tree, the installed one. */
+static const char *default_matrix(int volume)
 {
-	static const char *const where[] = { FRS_SRCDATA "/default.frd",
-	    FRS_SHAREDIR "/default.frd" };
-	const char *env = getenv("FRS_MATRIX");
+	static const char *const where[2][2] = {
+		{ FRS_SRCDATA "/default.frd", FRS_SHAREDIR "/default.frd" },
+		{ FRS_SRCDATA "/default3.frd", FRS_SHAREDIR "/default3.frd" } };
+	const char *env = getenv(volume ? "FRS_MATRIX3" : "FRS_MATRIX");
 
 	if (env != NULL && *env)
 		return env;
-	for (size_t i = 0; i < sizeof where / sizeof where[0]; i++)
-		if (access(where[i], R_OK) == 0)
-			return where[i];
-	cli_die("no default matrix (looked for %s and %s); give -m MATRIX",
-	    where[0], where[1]);
+	for (size_t i = 0; i < 2; i++)
+		if (access(where[volume][i], R_OK) == 0)
+			return where[volume][i];
+	cli_die("no default %smatrix (looked for %s and %s); give -m MATRIX",
+	    volume ? "3-D " : "", where[volume][0], where[volume][1]);
 }
 
 static void print_setup(const struct frs_setup *s, const char *mname)
@@ -496,10 +507,164 @@ static void report(const struct opts *o, const struct frs_setup *s0,
 		    u->ct.kernel, u->ct.download);
 }
 
+/* ---- 3-D matrices: volumes -------------------------------------- */
+
+static void check3(const struct opts *o)
+{
+	if (o->cl)
+		cli_die("--device: %s is a 3-D matrix; 3-D sampling runs on the "
+		    "CPU only", o->matrix);
+	if (o->algo != FRS_NAIVE && o->algo != FRS_SORTED)
+		cli_die("-a %s: %s is a 3-D matrix; 3-D sampling has naive and "
+		    "sorted", frscl_algo_name(o->algo), o->matrix);
+	if (o->flags & IMAP_EQUIRECT)
+		cli_die("--equirect: %s is a 3-D matrix; volumes have no "
+		    "equirectangular form", o->matrix);
+	if (o->nsz == 2)
+		cli_die("-s %ux%u: %s is a 3-D matrix; give -s N or WxHxD",
+		    o->w, o->h, o->matrix);
+}
+
+static void load3(const struct opts *o, struct frs_matrix *m,
+    struct frs_vol *v)
+{
+	if (frd_read(o->matrix, m) < 0 ||
+	    frd_check_permutation(m, o->matrix) < 0)
+		cli_die_lib();
+	if (vol_load(o->imp ? o->imp : "const", o->nsz ? o->vsz[0] : 0,
+	    o->vsz[1], o->vsz[2], o->flags, v) < 0)
+		cli_die_lib();
+}
+
+/* The records of one set: x, y, z [, pdf] [, step + 1], steps in turn. */
+static int put3(struct pts_writer *w, const struct opts *o,
+    const struct frs3_setup *s, const struct frs_vol *v,
+    const struct frs3_result *r)
+{
+	double rec[5];
+
+	for (uint32_t step = 0; step < o->nsteps; step++)
+		for (uint64_t c = 0; c < r->nchunk; c++)
+			for (uint64_t i = 0; i < r->chunk[c].n; i++) {
+				const struct frs3_elem *e = &r->chunk[c].e[i];
+				unsigned k = 3;
+				if (e->step != step)
+					continue;
+				frs3_point(s, e, rec);
+				if (o->pdf)
+					rec[k++] = frs3_pdf(s, v, e);
+				if (o->nsteps > 1)
+					rec[k++] = (double)(e->step + 1);
+				if (pts_writer_put(w, rec) < 0)
+					return -1;
+			}
+	return 0;
+}
+
+static void setup3(const struct opts *o, const struct frs_vol *v,
+    const struct frs_matrix *m, uint64_t seed, struct frs3_setup *s)
+{
+	if (frs3_setup(s, v, m, o->steps[o->nsteps - 1], o->sigma, seed) < 0)
+		cli_die("%s", frs_errmsg());
+	s->rule = o->rule;
+	s->jitter = o->jitter;
+}
+
+static void print_setup3(const struct frs3_setup *s, const char *mname)
+{
+	fprintf(stderr, "frs-sample: matrix %s %ux%ux%u, volume %ux%ux%u, "
+	    "mean %.6g, max %.6g\n", mname, s->mw, s->mh, s->md, s->iw, s->ih,
+	    s->id, s->mean, s->max);
+	fprintf(stderr, "frs-sample: n %llu, sigma %g, n_s %u, window "
+	    "%llux%llux%llu at (%llu, %llu, %llu), tau %.9g\n",
+	    (unsigned long long)s->n, s->sigma, s->ns, (unsigned long long)s->sw,
+	    (unsigned long long)s->sh, (unsigned long long)s->sd,
+	    (unsigned long long)s->wx, (unsigned long long)s->wy,
+	    (unsigned long long)s->wz, s->tau);
+}
+
+/* Sample every set and write it; the total count, UINT64_MAX on a write
+ * error (the library's message). */
+static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
+    const struct frs_matrix *m, const struct frs3_prep *p,
+    struct outfile *of)
+{
+	struct pts_writer w;
+	uint64_t total = 0;
+
+	for (uint64_t set = 0; set < o->sets; set++) {
+		struct frs3_setup s;
+		struct frs3_result r;
+		int rc = 0;
+		setup3(o, v, m, cli.seed + set, &s);
+		if (frs3_sample(&s, v, p, (enum frs_algo)o->algo, o->steps,
+		    o->nsteps, o->count_only, &r) < 0)
+			cli_die("%s", frs_errmsg());
+		if (set == 0 && !o->count_only)
+			rc = pts_writer_begin(&w, of->fp, of->name, 3,
+			    (unsigned)o->pdf + (o->nsteps > 1),
+			    o->sets == 1 ? r.count : 0, cli.text);
+		if (rc == 0 && !o->count_only)
+			rc = put3(&w, o, &s, v, &r);
+		total += r.count;
+		frs3_result_free(&r);
+		if (rc < 0)
+			return UINT64_MAX;
+	}
+	if (o->count_only)
+		return fprintf(of->fp, "%llu\n", (unsigned long long)total) < 0 ?
+		    (frs_fail_errno("%s: write error", of->name), UINT64_MAX) : total;
+	return pts_writer_end(&w) < 0 ? UINT64_MAX : total;
+}
+
+static int main3(const struct opts *o)
+{
+	struct frs_matrix m;
+	struct frs_vol v;
+	struct frs3_setup s0;
+	struct frs3_prep p;
+	struct outfile of;
+	uint64_t total;
+	double t0 = progress_now(), tsetup;
+
+	check3(o);
+	load3(o, &m, &v);
+	setup3(o, &v, &m, cli.seed, &s0);
+	if ((double)s0.n > frs3_unique(&s0))
+		frs_warn("%llu samples from a %ux%ux%u matrix with sigma %g repeat "
+		    "its patterns (it gives %.0f without repetition)",
+		    (unsigned long long)s0.n, s0.mw, s0.mh, s0.md, s0.sigma,
+		    frs3_unique(&s0));
+	if (frs3_prepare(&p, &m, o->algo == FRS_SORTED ? frs3_block(&s0) : 0) < 0)
+		cli_die("%s: %s", o->matrix, frs_errmsg());
+	tsetup = progress_now() - t0;
+	if (outfile_open(&of, cli.out, !o->count_only && !cli.text) < 0)
+		cli_die_lib();
+	t0 = progress_now();
+	total = sets3(o, &v, &m, &p, &of);
+	if (total == UINT64_MAX) {
+		outfile_abort(&of);
+		cli_die_lib();
+	}
+	if (outfile_commit(&of) < 0)
+		cli_die_lib();
+	if (o->verbose) {
+		print_setup3(&s0, o->matrix);
+		fprintf(stderr, "frs-sample: %llu samples (%s); setup %.6f s, "
+		    "sampling and output %.6f s\n", (unsigned long long)total,
+		    frscl_algo_name(o->algo), tsetup, progress_now() - t0);
+	}
+	frs3_prep_free(&p);
+	vol_free(&v);
+	frd_free(&m);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
-	struct opts o = { NULL, NULL, { 0 }, 0, FRS_SORTED, 8.0,
-	    FRS_JITTER_NONE, FRS_UNBIASED, 0, 0, 0, 0, 0, 0, 1, 0, -1 };
+	struct opts o = { .algo = FRS_SORTED, .sigma = 8.0,
+	    .jitter = FRS_JITTER_NONE, .rule = FRS_UNBIASED, .sets = 1,
+	    .dev = -1 };
 	struct ocl ocl = { NULL, NULL, NULL, NULL, "", 0 };
 	struct frs_imap map;
 	struct frs_setup s0;
@@ -515,7 +680,12 @@ int main(int argc, char **argv)
 	check_room(&o);
 	cli_options_done();
 	if (o.matrix == NULL)
-		o.matrix = default_matrix();
+		o.matrix = default_matrix((o.imp && vol_is_volume(o.imp)) || o.nsz == 3);
+	if (frd_peek_dims(o.matrix) == 3)
+		return main3(&o);
+	if (o.nsz == 3)
+		cli_die("-s %ux%ux%u: a volume size, but %s is a 2-D matrix",
+		    o.vsz[0], o.vsz[1], o.vsz[2], o.matrix);
 	if (imap_load(o.imp ? o.imp : "const", o.w, o.h, o.flags, &map) < 0)
 		cli_die_lib();
 	if (o.cl && ocl_open(&ocl, o.dev) < 0)

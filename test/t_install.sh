@@ -36,7 +36,8 @@ for p in $progs; do
 	[ -x "$U/bin/$p" ] || missing="$missing bin/$p"
 done
 for f in include/frs.h lib/libfrs.a lib/libfrs.so.1.0.0 \
-    lib/pkgconfig/frs.pc share/frs/default.frd share/frs/sunset.exr; do
+    lib/pkgconfig/frs.pc share/frs/default.frd share/frs/default3.frd \
+    share/frs/sunset.exr; do
 	[ -f "$U/$f" ] || missing="$missing $f"
 done
 for f in "$TOP"/man/man[1357]/*.[1357]; do

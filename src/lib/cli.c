@@ -202,6 +202,27 @@ void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
 		cli_usage_error("%s", frs_errmsg());
 }
 
+int cli_size3(const char *opt, const char *s, uint32_t max, uint32_t sz[3])
+{
+	const char *x1 = strchr(s, 'x'), *x2 = x1 ? strchr(x1 + 1, 'x') : NULL;
+	char buf[64];
+	size_t len;
+
+	if (x2 == NULL) {
+		cli_size(opt, s, max, &sz[0], &sz[1]);
+		sz[2] = sz[0];
+		return x1 == NULL ? 1 : 2;
+	}
+	len = (size_t)(x2 - s);
+	if (len >= sizeof buf)
+		cli_usage_error("%s: '%s' is not a size (N, WxH or WxHxD)", opt, s);
+	memcpy(buf, s, len);
+	buf[len] = '\0';
+	cli_size(opt, buf, max, &sz[0], &sz[1]);
+	sz[2] = (uint32_t)cli_ll(opt, x2 + 1, 1, max);
+	return 3;
+}
+
 int cli_device(const char *arg, int *index)
 {
 	int cl = ocl_parse_device(arg, index);

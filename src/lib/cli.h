@@ -67,6 +67,9 @@ uint64_t cli_u64(const char *opt, const char *s, uint64_t min, uint64_t max);
 double cli_double(const char *opt, const char *s, double min, double max);
 void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
     uint32_t *h);
+/* "N", "WxH" or "WxHxD": the number of sizes given; "N" fills all three,
+ * "WxH" sets sz[2] = W. */
+int cli_size3(const char *opt, const char *s, uint32_t max, uint32_t sz[3]);
 
 /* --device VALUE: 0 for cpu, 1 for OpenCL with *index (-1: the first
  * device); a bad value is a usage error. */

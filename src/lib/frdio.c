@@ -161,6 +161,21 @@ int frd_read(const char *path, struct frs_matrix *m)
 	return rc;
 }
 
+int frd_peek_dims(const char *path)
+{
+	unsigned char h[FRD_HEADER];
+	FILE *fp;
+	size_t got;
+
+	if (strcmp(path, "-") == 0 || (fp = fopen(path, "rb")) == NULL)
+		return 0;
+	got = fread(h, 1, sizeof h, fp);
+	fclose(fp);
+	if (got != sizeof h || memcmp(h, FRD_MAGIC, 8) != 0)
+		return 0;
+	return (int)io_get_u32(h + 12);
+}
+
 int frd_write(FILE *fp, const char *name, const struct frs_matrix *m)
 {
 	unsigned char h[FRD_HEADER];

@@ -44,6 +44,9 @@ void frd_free(struct frs_matrix *m);
  * that every value is below n.  path "-" is standard input. */
 int frd_read(const char *path, struct frs_matrix *m);
 int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m);
+/* The dimension count in a .frd file's header; 0 when it cannot tell
+ * (standard input, unreadable, not a .frd): the reader will say why. */
+int frd_peek_dims(const char *path);
 int frd_write(FILE *fp, const char *name, const struct frs_matrix *m);
 
 /* Check that the values are a permutation of 0..n-1; the message names

@@ -244,15 +244,7 @@ int frs_prepare(struct frs_prep *p, const struct frs_matrix *m, int minmap,
 
 /* ---- thresholds --------------------------------------------------- */
 
-/* The threshold of one pixel for one step. */
-struct thr {
-	uint64_t lim;	/* values below lim may pass, values from lim never */
-	uint64_t tf;	/* floor(T) */
-	double frac;	/* T - floor(T) */
-	double t;	/* T */
-};
-
-static void make_thr(struct thr *th, double t, enum frs_rule rule)
+void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule)
 {
 	/* Past 2^33 every value of a uint32 matrix passes. */
 	if (!(t < 0x1p33))
@@ -266,19 +258,21 @@ static void make_thr(struct thr *th, double t, enum frs_rule rule)
 		th->lim = th->tf + (th->frac > 0.0);
 }
 
-static double coin(const struct frs_setup *s, uint64_t x, uint64_t y)
+int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
+    uint64_t seed, uint64_t id)
 {
-	return frs_rand01(s->seed, FRS_STREAM_COIN, y * s->sw + x);
-}
-
-static int passes(const struct frs_setup *s, const struct thr *th, uint64_t v,
-    uint64_t x, uint64_t y)
-{
-	if (s->rule == FRS_THESIS)
+	if (rule == FRS_THESIS)
 		return (double)v < th->t;
 	if (v < th->tf)
 		return 1;
-	return v == th->tf && th->frac > 0.0 && coin(s, x, y) < th->frac;
+	return v == th->tf && th->frac > 0.0 &&
+	    frs_rand01(seed, FRS_STREAM_COIN, id) < th->frac;
+}
+
+static int passes(const struct frs_setup *s, const struct frs_thr *th,
+    uint64_t v, uint64_t x, uint64_t y)
+{
+	return frs_thr_passes(s->rule, th, v, s->seed, y * s->sw + x);
 }
 
 /* ---- the implementations ------------------------------------------ */
@@ -298,7 +292,7 @@ struct run {
 struct pix {
 	const struct run *run;
 	struct frs_chunk *c;
-	struct thr th[16];	/* per step; th[nsteps - 1] is the last */
+	struct frs_thr th[16];	/* per step; th[nsteps - 1] is the last */
 	uint64_t lim;
 	uint64_t x0, y0;	/* the pixel's first window element */
 };
@@ -524,7 +518,7 @@ static int rows_task(void *ctx, uint64_t b, uint64_t e)
 				if (!(imp > 0.0))
 					continue;	/* zero importance costs nothing */
 				for (unsigned k = 0; k < run->nsteps; k++)
-					make_thr(&px.th[k], run->tau[k] *
+					frs_thr_make(&px.th[k], run->tau[k] *
 					    (imp * s->iscale), s->rule);
 				px.lim = px.th[run->nsteps - 1].lim;
 				if (px.lim == 0)
@@ -603,7 +597,7 @@ void frs_result_free(struct frs_result *r)
 
 /* ---- points ------------------------------------------------------- */
 
-static double radical_inverse(uint64_t i, unsigned base)
+double frs_radical_inverse(uint64_t i, unsigned base)
 {
 	double inv = 1.0 / base, f = inv, r = 0.0;
 	while (i > 0) {
@@ -614,7 +608,7 @@ static double radical_inverse(uint64_t i, unsigned base)
 	return r;
 }
 
-static double below_one(double v)
+double frs_below_one(double v)
 {
 	return v < 1.0 ? v : 0x1.fffffffffffffp-1;
 }
@@ -633,11 +627,11 @@ void frs_point(const struct frs_setup *s, const struct frs_elem *e,
 		 * (Cranley-Patterson), so it depends on nothing but both. */
 		double rx = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX);
 		double ry = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX - 1);
-		jx = radical_inverse(id + 1, 2) + rx;
-		jy = radical_inverse(id + 1, 3) + ry;
+		jx = frs_radical_inverse(id + 1, 2) + rx;
+		jy = frs_radical_inverse(id + 1, 3) + ry;
 		jx -= floor(jx);
 		jy -= floor(jy);
 	}
-	*x = below_one(((double)e->x + jx) / (double)s->sw);
-	*y = below_one(((double)e->y + jy) / (double)s->sh);
+	*x = frs_below_one(((double)e->x + jx) / (double)s->sw);
+	*y = frs_below_one(((double)e->y + jy) / (double)s->sh);
 }

@@ -126,6 +126,21 @@ int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
     int algo, const char *name, const uint64_t *steps, unsigned nsteps,
     int count_only, double *tau);
 
+/* The threshold of one pixel (or voxel) for one step. */
+struct frs_thr {
+	uint64_t lim;	/* values below lim may pass, values from lim never */
+	uint64_t tf;	/* floor(T) */
+	double frac;	/* T - floor(T) */
+	double t;	/* T */
+};
+void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule);
+/* Whether value v passes; id numbers the window element for its coin. */
+int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
+    uint64_t seed, uint64_t id);
+/* Radical inverse of i in the base; v, or the double below 1 if v is 1. */
+double frs_radical_inverse(uint64_t i, unsigned base);
+double frs_below_one(double v);
+
 /* The point of an element, in [0, 1)^2, with the setup's jitter. */
 void frs_point(const struct frs_setup *s, const struct frs_elem *e,
     double *x, double *y);

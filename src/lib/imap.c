@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "imap.h"
+#include "vol.h"
 #include "err.h"
 #include "io.h"
 #include "mem.h"
@@ -255,6 +256,9 @@ static int load_file(const char *path, int flags, struct frs_imap *m)
 		rc = imap_read_png_mem(buf, len, name, flags & IMAP_SRGB, m);
 	else if (len >= 4 && memcmp(buf, "\166\057\061\001", 4) == 0)
 		rc = imap_read_exr_mem(buf, len, name, m);
+	else if (len >= 8 && memcmp(buf, FRV_MAGIC, 8) == 0)
+		rc = frs_fail("%s: a volume (.frv) where a 2-D map is needed "
+		    "(volumes go with 3-D matrices)", name);
 	else
 		rc = frs_fail("%s: not a PNG or OpenEXR file", name);
 	free(buf);

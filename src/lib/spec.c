@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "imap.h"
+#include "vol.h"
 #include "err.h"
 #include "parse.h"
 #include "par.h"
@@ -25,6 +26,9 @@ struct spec {
 	/* Fill rows [y0, y1) of a w x h map; out points at row 0. */
 	int (*eval)(const double *p, uint32_t w, uint32_t h, uint32_t y0,
 	    uint32_t y1, double *out);
+	/* Volumes: fill slices [z0, z1) of a w x h x d volume. */
+	int (*eval3)(const double *p, uint32_t w, uint32_t h, uint32_t d,
+	    uint32_t z0, uint32_t z1, double *out);
 };
 
 /* ---- evaluators: each fills w*h pixel means ------------------------- */
@@ -154,47 +158,58 @@ static int eval_sky(const double *p, uint32_t w, uint32_t h, uint32_t y0,
 
 static const struct spec specs[] = {
 	{ "const", "constant importance", {
-	    { "v", 1.0, 0.0, 1e300, "the value" } }, eval_const },
+	    { "v", 1.0, 0.0, 1e300, "the value" } }, eval_const, NULL },
 	{ "blob", "Gaussian blob (exact pixel means)", {
 	    { "x", 0.5, -10.0, 10.0, "centre x" },
 	    { "y", 0.5, -10.0, 10.0, "centre y" },
 	    { "sigma", 0.15, 1e-6, 100.0, "standard deviation" },
 	    { "floor", 0.0, 0.0, 1e300, "constant added everywhere" },
 	    { "peak", 1.0, 1e-300, 1e300, "height of the Gaussian" } },
-	    eval_blob },
+	    eval_blob, NULL },
 	{ "ramp", "linear gradient", {
 	    { "from", 0.0, 0.0, 1e300, "value at the start edge" },
 	    { "to", 1.0, 0.0, 1e300, "value at the end edge" },
 	    { "angle", 0.0, -360.0, 360.0,
 	      "direction in degrees, 0 = left to right, 90 = top to bottom" } },
-	    eval_ramp },
+	    eval_ramp, NULL },
 	{ "aniso", "thin ridge along a line through the centre", {
 	    { "angle", 30.0, -360.0, 360.0, "direction of the ridge, degrees" },
 	    { "width", 0.02, 1e-4, 10.0, "Gaussian width across the ridge" },
 	    { "floor", 0.001, 0.0, 1e300, "constant added everywhere" } },
-	    eval_aniso },
+	    eval_aniso, NULL },
 	{ "sky", "equirectangular HDR sky with a sun", {
 	    { "elev", 30.0, -90.0, 90.0, "sun elevation, degrees" },
 	    { "azim", 90.0, -360.0, 360.0, "sun azimuth, degrees (x = azim/360)" },
 	    { "size", 2.0, 0.05, 90.0, "angular radius of the sun lobe, degrees" },
 	    { "sun", 1e5, 0.0, 1e300, "sun peak over the zenith sky" },
 	    { "ground", 0.05, 0.0, 1e300, "ground value below the horizon" } },
-	    eval_sky },
+	    eval_sky, NULL },
 };
 #define NSPECS (sizeof specs / sizeof specs[0])
 
-static const struct spec *find_spec(const char *s, size_t len)
+/* A family of procedural sources: the maps or the volumes. */
+struct family {
+	const struct spec *spec;
+	size_t n;
+	const char *names;	/* for messages */
+	const char *what;
+};
+
+static const struct family maps = { specs, NSPECS,
+	"const, blob, ramp, aniso, sky", "map" };
+static const struct spec *find_spec(const struct family *f, const char *s,
+    size_t len)
 {
-	for (size_t i = 0; i < NSPECS; i++)
-		if (strlen(specs[i].name) == len &&
-		    strncmp(specs[i].name, s, len) == 0)
-			return &specs[i];
+	for (size_t i = 0; i < f->n; i++)
+		if (strlen(f->spec[i].name) == len &&
+		    strncmp(f->spec[i].name, s, len) == 0)
+			return &f->spec[i];
 	return NULL;
 }
 
 int imap_is_spec(const char *src)
 {
-	return find_spec(src, strcspn(src, ":")) != NULL;
+	return find_spec(&maps, src, strcspn(src, ":")) != NULL;
 }
 
 static int set_param(const struct spec *sp, const char *spec, char *item,
@@ -230,16 +245,17 @@ static int set_param(const struct spec *sp, const char *spec, char *item,
 	return 0;
 }
 
-static int parse_spec(const char *spec, const struct spec **out, double *val)
+static int parse_spec(const struct family *f, const char *spec,
+    const struct spec **out, double *val)
 {
 	size_t nlen = strcspn(spec, ":");
-	const struct spec *sp = find_spec(spec, nlen);
+	const struct spec *sp = find_spec(f, spec, nlen);
 	char *copy, *item, *save = NULL;
 	int pos = 0, rc = 0;
 
 	if (sp == NULL)
-		return frs_fail("%s: unknown map '%.*s' (const, blob, ramp, "
-		    "aniso, sky)", spec, (int)nlen, spec);
+		return frs_fail("%s: unknown %s '%.*s' (%s)", spec, f->what,
+		    (int)nlen, spec, f->names);
 	for (int i = 0; i < MAXPARAM; i++)
 		val[i] = sp->p[i].def;
 	*out = sp;
@@ -280,7 +296,7 @@ int imap_spec(const char *spec, uint32_t w, uint32_t h, struct frs_imap *m)
 	int rc;
 
 	memset(m, 0, sizeof *m);
-	if (parse_spec(spec, &sp, val) < 0)
+	if (parse_spec(&maps, spec, &sp, val) < 0)
 		return -1;
 	if (imap_alloc(m, w, h) < 0)
 		return frs_fail_context(spec);
@@ -297,20 +313,187 @@ int imap_spec(const char *spec, uint32_t w, uint32_t h, struct frs_imap *m)
 	return 0;
 }
 
+static void family_help(const struct family *f, char *buf, size_t size)
+{
+	size_t len = 0;
+
+	for (size_t i = 0; i < f->n && len < size; i++) {
+		const struct spec *sp = &f->spec[i];
+		len += (size_t)snprintf(buf + len, size - len, "  %-6s %s\n",
+		    sp->name, sp->help);
+		for (int k = 0; k < MAXPARAM && sp->p[k].key && len < size; k++)
+			len += (size_t)snprintf(buf + len, size - len,
+			    "         %s=%g  %s\n", sp->p[k].key, sp->p[k].def,
+			    sp->p[k].help);
+	}
+}
+
 const char *imap_spec_help(void)
 {
 	static char buf[4096];
-	size_t len = 0;
 
-	if (buf[0])
-		return buf;
-	for (size_t i = 0; i < NSPECS; i++) {
-		len += (size_t)snprintf(buf + len, sizeof buf - len, "  %-6s %s\n",
-		    specs[i].name, specs[i].help);
-		for (int k = 0; k < MAXPARAM && specs[i].p[k].key; k++)
-			len += (size_t)snprintf(buf + len, sizeof buf - len,
-			    "         %s=%g  %s\n", specs[i].p[k].key,
-			    specs[i].p[k].def, specs[i].p[k].help);
+	if (buf[0] == '\0')
+		family_help(&maps, buf, sizeof buf);
+	return buf;
+}
+
+/* ---- volumes: each fills voxel means of slices [z0, z1) ------------- */
+
+static int eval3_const(const double *p, uint32_t w, uint32_t h, uint32_t d,
+    uint32_t z0, uint32_t z1, double *out)
+{
+	(void)d;
+	for (size_t i = (size_t)z0 * w * h; i < (size_t)z1 * w * h; i++)
+		out[i] = p[0];
+	return 0;
+}
+
+static int eval3_blob(const double *p, uint32_t w, uint32_t h, uint32_t d,
+    uint32_t z0, uint32_t z1, double *out)
+{
+	double *gx = malloc(w * sizeof *gx), *gy = malloc(h * sizeof *gy);
+
+	if (gx == NULL || gy == NULL) {
+		free(gx);
+		free(gy);
+		return frs_fail("out of memory");
 	}
+	for (uint32_t i = 0; i < w; i++)
+		gx[i] = gauss_mean((double)i / w, (double)(i + 1) / w, p[0], p[3]);
+	for (uint32_t j = 0; j < h; j++)
+		gy[j] = gauss_mean((double)j / h, (double)(j + 1) / h, p[1], p[3]);
+	for (uint32_t l = z0; l < z1; l++) {
+		double gz = gauss_mean((double)l / d, (double)(l + 1) / d, p[2],
+		    p[3]);
+		for (uint32_t j = 0; j < h; j++)
+			for (uint32_t i = 0; i < w; i++)
+				out[((size_t)l * h + j) * w + i] =
+				    p[5] * gx[i] * gy[j] * gz + p[4];
+	}
+	free(gx);
+	free(gy);
+	return 0;
+}
+
+/* Linear along one axis, so the voxel mean is the value at its centre. */
+static int eval3_ramp(const double *p, uint32_t w, uint32_t h, uint32_t d,
+    uint32_t z0, uint32_t z1, double *out)
+{
+	int axis = (int)p[2];
+	uint32_t n = axis == 0 ? w : axis == 1 ? h : d;
+
+	if (p[2] != axis)
+		return frs_fail("ramp3: axis %g is not 0 (x), 1 (y) or 2 (z)", p[2]);
+	for (uint32_t l = z0; l < z1; l++)
+		for (uint32_t j = 0; j < h; j++)
+			for (uint32_t i = 0; i < w; i++) {
+				uint32_t c = axis == 0 ? i : axis == 1 ? j : l;
+				double t = (c + 0.5) / n;
+				out[((size_t)l * h + j) * w + i] = p[0] + (p[1] - p[0]) * t;
+			}
+	return 0;
+}
+
+/* A spherical shell around the centre: floor + exp(-(r - R)^2 / 2w^2),
+ * voxel means by s^3 stratified supersampling. */
+static int eval3_shell(const double *p, uint32_t w, uint32_t h, uint32_t d,
+    uint32_t z0, uint32_t z1, double *out)
+{
+	uint32_t side = w < h ? (w < d ? w : d) : (h < d ? h : d);
+	uint32_t s = ss_for(p[1], side, side);
+
+	s = s > 16 ? 16 : s;
+	for (uint32_t l = z0; l < z1; l++)
+		for (uint32_t j = 0; j < h; j++)
+			for (uint32_t i = 0; i < w; i++) {
+				double acc = 0.0;
+				for (uint32_t c = 0; c < s * s * s; c++) {
+					double x = (i + (c % s + 0.5) / s) / w - 0.5;
+					double y = (j + (c / s % s + 0.5) / s) / h - 0.5;
+					double z = (l + (c / (s * s) + 0.5) / s) / d - 0.5;
+					double r = sqrt(x * x + y * y + z * z) - p[0];
+					acc += exp(-r * r / (2.0 * p[1] * p[1]));
+				}
+				out[((size_t)l * h + j) * w + i] =
+				    p[2] + acc / ((double)s * s * s);
+			}
+	return 0;
+}
+
+static const struct spec vspecs[] = {
+	{ "const", "constant importance", {
+	    { "v", 1.0, 0.0, 1e300, "the value" } }, NULL, eval3_const },
+	{ "blob3", "3-D Gaussian blob (exact voxel means)", {
+	    { "x", 0.5, -10.0, 10.0, "centre x" },
+	    { "y", 0.5, -10.0, 10.0, "centre y" },
+	    { "z", 0.5, -10.0, 10.0, "centre z" },
+	    { "sigma", 0.15, 1e-6, 100.0, "standard deviation" },
+	    { "floor", 0.0, 0.0, 1e300, "constant added everywhere" },
+	    { "peak", 1.0, 1e-300, 1e300, "height of the Gaussian" } },
+	    NULL, eval3_blob },
+	{ "ramp3", "linear gradient along one axis", {
+	    { "from", 0.0, 0.0, 1e300, "value at coordinate 0" },
+	    { "to", 1.0, 0.0, 1e300, "value at coordinate 1" },
+	    { "axis", 2.0, 0.0, 2.0, "0 = x, 1 = y, 2 = z" } },
+	    NULL, eval3_ramp },
+	{ "shell3", "spherical shell around the centre", {
+	    { "r", 0.3, 0.0, 2.0, "radius" },
+	    { "width", 0.03, 1e-4, 10.0, "Gaussian width across the shell" },
+	    { "floor", 0.01, 0.0, 1e300, "constant added everywhere" } },
+	    NULL, eval3_shell },
+};
+
+static const struct family vols = { vspecs,
+	sizeof vspecs / sizeof vspecs[0], "const, blob3, ramp3, shell3",
+	"volume" };
+
+int vol_is_spec(const char *src)
+{
+	return find_spec(&vols, src, strcspn(src, ":")) != NULL;
+}
+
+struct vol_job {
+	const struct spec *sp;
+	const double *val;
+	struct frs_vol *m;
+};
+
+static int eval_slices(void *ctx, uint64_t z0, uint64_t z1)
+{
+	struct vol_job *j = ctx;
+	return j->sp->eval3(j->val, j->m->w, j->m->h, j->m->d, (uint32_t)z0,
+	    (uint32_t)z1, j->m->v);
+}
+
+int vol_spec(const char *spec, uint32_t w, uint32_t h, uint32_t d,
+    struct frs_vol *m)
+{
+	const struct spec *sp = NULL;
+	double val[MAXPARAM];
+	struct vol_job job;
+
+	memset(m, 0, sizeof *m);
+	if (parse_spec(&vols, spec, &sp, val) < 0)
+		return -1;
+	if (w == 0)
+		w = h = d = VOL_DEFAULT_SIDE;
+	if (vol_alloc(m, w, h, d) < 0)
+		return frs_fail_context(spec);
+	job.sp = sp;
+	job.val = val;
+	job.m = m;
+	if (frs_parallel(d, 1, eval_slices, &job, NULL) < 0) {
+		vol_free(m);
+		return frs_fail_context(spec);
+	}
+	return 0;
+}
+
+const char *vol_spec_help(void)
+{
+	static char buf[4096];
+
+	if (buf[0] == '\0')
+		family_help(&vols, buf, sizeof buf);
 	return buf;
 }

@@ -1,0 +1,134 @@
+#!/bin/sh
+# 3-D Forced Random Sampling: frs-sample with a 3-D matrix and an
+# importance volume, imap's volumes (.frv), and their bad input.
+. "$(dirname "$0")/lib.sh"
+
+frd-gen -k 3 -s 16 --tol 1e-2 -o "$T/m3.frd"
+M=$T/m3.frd
+DATA=$(dirname "$0")/../data
+
+check "blob3, 2000 samples" frs-sample -m "$M" -i blob3 -n 2000 -q -o "$T/a.pts"
+dims=$(od -A n -t u4 -j 12 -N 4 "$T/a.pts" | tr -d ' ')
+cnt=$(od -A n -t u8 -j 24 -N 8 "$T/a.pts" | tr -d ' ')
+[ "$dims" = 3 ] && ok "3 coordinates a point" || nok "3 coordinates a point ($dims)"
+[ "$cnt" -gt 1900 ] && [ "$cnt" -lt 2100 ] && ok "about n samples ($cnt)" ||
+    nok "about n samples ($cnt)"
+[ "$(wc -c <"$T/a.pts")" -eq $((32 + 24 * cnt)) ] && ok "binary .pts layout" ||
+    nok "binary .pts layout"
+
+# Same bytes for any thread count; naive and sorted give the same set.
+frs-sample -m "$M" -i blob3 -n 3000 -q -j 1 -T -o "$T/j1.txt"
+frs-sample -m "$M" -i blob3 -n 3000 -q -j 2 -T -o "$T/j2.txt"
+cmp -s "$T/j1.txt" "$T/j2.txt" && ok "-j 1 and -j 2 give the same bytes" ||
+    nok "-j 1 and -j 2 give the same bytes"
+frs-sample -m "$M" -i blob3 -n 3000 -q -a naive -T | grep -v '^#' | sort >"$T/naive.s"
+grep -v '^#' "$T/j1.txt" | sort >"$T/sorted.s"
+cmp -s "$T/naive.s" "$T/sorted.s" && ok "naive and sorted give the same points" ||
+    nok "naive and sorted give the same points"
+
+# Density follows the volume: a z ramp from 0 to 1 puts the mean z at
+# 2/3 (voxel centres of 32 slices: 0.66654), a constant one at 1/2.
+frs-sample -m "$M" -i ramp3 -n 20000 -q -T -o "$T/ramp.txt"
+mz=$(awk '!/^#/ { s += $3; n++ } END { printf "%.5f", s / n }' "$T/ramp.txt")
+near "$mz" 0.66654 0.01 && ok "ramp3: mean z $mz" || nok "ramp3: mean z $mz"
+# A constant volume: every slice along every axis gets n/8 of the points
+# (where they sit inside a voxel is the matrix's business).
+frs-sample -m "$M" -n 5000 -s 8 -q -T -o "$T/const.txt"
+awk '!/^#/ { for (i = 1; i <= 3; i++) { if ($i < 0 || $i >= 1) bad = 1; c[i, int($i * 8)]++ }; n++ }
+    END { for (i = 1; i <= 3; i++) for (b = 0; b < 8; b++)
+        if (c[i, b] < 0.9 * n / 8 || c[i, b] > 1.1 * n / 8) bad = 1; exit bad }' \
+    "$T/const.txt" && ok "const: points in the cube, n/8 a slice" ||
+    nok "const: points in the cube, n/8 a slice"
+
+# Columns: --pdf is I / mean I, progressive steps; the union of the steps
+# is the one-shot set.
+frs-sample -m "$M" -i const -n 500 --pdf -q -T -o "$T/pdf.txt"
+head -n 1 "$T/pdf.txt" | grep -q 'dims=3 extra=1' &&
+    awk '!/^#/ && ($4 < 0.999999 || $4 > 1.000001) { bad = 1 } END { exit bad }' "$T/pdf.txt" &&
+    ok "--pdf of a constant volume is 1" || nok "--pdf of a constant volume is 1"
+frs-sample -m "$M" -i blob3 --progressive 200,800,2000 -q -T -o "$T/prog.txt"
+frs-sample -m "$M" -i blob3 -n 2000 -q -T -o "$T/one.txt"
+awk '!/^#/ { print $1, $2, $3 }' "$T/prog.txt" | sort >"$T/prog.s"
+grep -v '^#' "$T/one.txt" | sort >"$T/one.s"
+cmp -s "$T/prog.s" "$T/one.s" && ok "progressive union equals one shot" ||
+    nok "progressive union equals one shot"
+frs-sample -m "$M" -i blob3 -n 1000 --jitter random -q -T -o "$T/jr.txt" &&
+    frs-sample -m "$M" -i blob3 -n 1000 -q -T -o "$T/jn.txt" &&
+    [ "$(grep -vc '^#' "$T/jr.txt")" = "$(grep -vc '^#' "$T/jn.txt")" ] &&
+    ! cmp -s "$T/jr.txt" "$T/jn.txt" && ok "jitter moves points, keeps the count" ||
+    nok "jitter moves points, keeps the count"
+frs-sample -m "$M" -i blob3 -n 700 --sets 3 -q -T -o "$T/sets.txt" &&
+    frs-sample -m "$M" -i blob3 -n 700 -S 2 -q -T -o "$T/s2.txt" &&
+    grep -v '^#' "$T/s2.txt" >"$T/s2.s" && grep -v '^#' "$T/sets.txt" | grep -qxFf "$T/s2.s" &&
+    ok "--sets: set 2 is seed 2" || nok "--sets: set 2 is seed 2"
+
+# Count only past 2^32 window elements (n = 2^30 on a 2^3 volume).
+n=$(frs-sample -m "$M" -i const -s 2 -n 1073741824 --count-only -q)
+awk -v n="$n" 'BEGIN { exit !(n > 0.999 * 1073741824 && n < 1.001 * 1073741824) }' &&
+    ok "--count-only at 2^30 ($n)" || nok "--count-only at 2^30 ($n)"
+frs-sample -m "$M" -i blob3 -n 5000 2>"$T/warn" >/dev/null
+grep -q 'repeat' "$T/warn" && ok "warning past the matrix's unique samples" ||
+    nok "warning past the matrix's unique samples"
+
+# The shipped 64^3 matrix is the default for volumes.
+check "default 3-D matrix" frs-sample -i shell3 -n 300 -q -o "$T/d.pts"
+[ "$(od -A n -t u4 -j 12 -N 4 "$T/d.pts" | tr -d ' ')" = 3 ] &&
+    ok "default 3-D matrix: 3-D points" || nok "default 3-D matrix: 3-D points"
+
+# imap volumes: gen, info, round trip through frs-sample.
+check "imap gen blob3" imap gen blob3:sigma=0.2 -s 8x6x4 -o "$T/b.frv"
+[ "$(wc -c <"$T/b.frv")" -eq $((32 + 4 * 8 * 6 * 4)) ] && ok ".frv size" || nok ".frv size"
+imap info "$T/b.frv" >"$T/info"
+[ "$(value depth "$T/info")" = 4 ] && [ "$(value voxels "$T/info")" = 192 ] &&
+    ok "imap info of a volume" || nok "imap info of a volume"
+imap info blob3:sigma=0.2 -s 8x6x4 >"$T/info2"
+near "$(value mean "$T/info")" "$(value mean "$T/info2")" 1e-6 &&
+    ok "the file holds the spec's values (float)" || nok "the file holds the spec's values (float)"
+frs-sample -m "$M" -i "$T/b.frv" -n 800 -q -T -o "$T/f.txt" &&
+    frs-sample -m "$M" -i blob3:sigma=0.2 -s 8x6x4 -n 800 -q -T -o "$T/g.txt" &&
+    [ "$(grep -vc '^#' "$T/f.txt")" -gt 700 ] &&
+    ok "sampling a .frv file" || nok "sampling a .frv file"
+imap gen const -s 4 --format frv -o "$T/c.frv" && [ "$(wc -c <"$T/c.frv")" -eq 288 ] &&
+    ok "imap gen const as a volume" || nok "imap gen const as a volume"
+
+# Bad input: the message names the file or option, status 1 (2 for
+# usage), no output left.
+head -c 100 "$T/b.frv" >"$T/short.frv"
+expect_fail "truncated .frv" 1 "short.frv" "$T/o.pts" frs-sample -m "$M" -i "$T/short.frv" -n 10 -o "$T/o.pts"
+{ printf '\211FRV\r\n\032\n'; printf '\002\000\000\000'; tail -c +13 "$T/b.frv"; } >"$T/ver.frv"
+expect_fail ".frv version 2" 1 "version 2" "$T/o.pts" frs-sample -m "$M" -i "$T/ver.frv" -n 10 -o "$T/o.pts"
+{ head -c 12 "$T/b.frv"; printf '\000\000\000\000'; tail -c +17 "$T/b.frv"; } >"$T/zero.frv"
+expect_fail ".frv of width 0" 1 "impossible size" "$T/o.pts" frs-sample -m "$M" -i "$T/zero.frv" -n 10 -o "$T/o.pts"
+{ cat "$T/b.frv"; printf 'x'; } >"$T/long.frv"
+expect_fail ".frv with trailing bytes" 1 "long.frv" "$T/o.pts" frs-sample -m "$M" -i "$T/long.frv" -n 10 -o "$T/o.pts"
+# A NaN voxel (float 0x7fc00000) at voxel (1, 0, 0).
+{ head -c 36 "$T/b.frv"; printf '\000\000\300\177'; tail -c +41 "$T/b.frv"; } >"$T/nan.frv"
+expect_fail "NaN voxel" 1 "voxel (1, 0, 0) is NaN" "$T/o.pts" frs-sample -m "$M" -i "$T/nan.frv" -n 10 -o "$T/o.pts"
+{ head -c 36 "$T/b.frv"; printf '\000\000\200\277'; tail -c +41 "$T/b.frv"; } >"$T/neg.frv"
+frs-sample -m "$M" -i "$T/neg.frv" -n 10 -o "$T/o.pts" 2>"$T/err" && grep -q "1 negative voxels clamped" "$T/err" &&
+    ok "a negative voxel is clamped with a warning" || nok "a negative voxel is clamped with a warning"
+rm -f "$T/o.pts"
+expect_fail "--strict: a negative voxel" 1 "voxel (1, 0, 0) is negative" "$T/o.pts" \
+    frs-sample -m "$M" -i "$T/neg.frv" --strict -n 10 -o "$T/o.pts"
+imap gen const:0 -s 4 -o "$T/z.frv"
+expect_fail "all-zero volume" 1 "zero everywhere" "$T/o.pts" frs-sample -m "$M" -i "$T/z.frv" -n 10 -o "$T/o.pts"
+expect_fail "a 2-D map for a 3-D matrix" 1 "a 2-D map where a volume is needed" "$T/o.pts" \
+    frs-sample -m "$M" -i blob -n 10 -o "$T/o.pts"
+expect_fail "a PNG for a 3-D matrix" 1 "not an importance volume" "$T/o.pts" \
+    frs-sample -m "$M" -i "$DATA/sunset.exr" -n 10 -o "$T/o.pts"
+expect_fail "-s WxH for a volume" 1 "give -s N or WxHxD" "$T/o.pts" frs-sample -m "$M" -s 4x4 -n 10 -o "$T/o.pts"
+expect_fail "-s WxHxD for a 2-D matrix" 1 "2-D matrix" "$T/o.pts" \
+    frs-sample -m "$DATA/default.frd" -i blob -s 4x4x4 -n 10 -o "$T/o.pts"
+expect_fail "-s of another size than the file" 1 "not the 5x5x5" "$T/o.pts" \
+    frs-sample -m "$M" -i "$T/b.frv" -s 5 -n 10 -o "$T/o.pts"
+expect_fail "-a stack in 3-D" 1 "naive and sorted" "$T/o.pts" frs-sample -m "$M" -a stack -n 10 -o "$T/o.pts"
+expect_fail "--device cl in 3-D" 1 "CPU only" "$T/o.pts" frs-sample -m "$M" --device cl -n 10 -o "$T/o.pts"
+expect_fail "--equirect in 3-D" 1 "--equirect" "$T/o.pts" frs-sample -m "$M" --equirect -n 10 -o "$T/o.pts"
+expect_fail "a volume into a 2-D matrix" 1 "2-D" "$T/o.pts" frs-sample -m "$DATA/default.frd" -i "$T/b.frv" -n 10 -o "$T/o.pts"
+expect_fail "ramp3 axis 1.5" 1 "axis" "$T/o.pts" frs-sample -m "$M" -i ramp3:axis=1.5 -n 10 -o "$T/o.pts"
+expect_fail "unknown volume parameter" 1 "unknown parameter" "$T/o.pts" frs-sample -m "$M" -i blob3:q=1 -n 10 -o "$T/o.pts"
+expect_fail "imap gen blob3 as PNG" 2 "volume" "$T/v.png" imap gen blob3 -o "$T/v.png"
+expect_fail "imap gen blob -s 4x4x4" 2 "volume size" "$T/v.png" imap gen blob -s 4x4x4 -o "$T/v.png"
+expect_fail "imap convert of a volume" 2 "not converted" "$T/v.png" imap convert "$T/b.frv" "$T/v.png"
+expect_fail "imap gen blob3 -s 4x4" 2 "WxHxD" "$T/v.frv" imap gen blob3 -s 4x4 -o "$T/v.frv"
+
