@@ -41,25 +41,12 @@ D=$CACHE/fig6.3-6.8
 # "FILE" (one file of equal sets) or the list of per-set files (FRS).
 setname() { echo "$D/$1-n$2-m$M"; }
 
-# split_frs JITTER N DIR: the per-set text files of FRS, listed.
-split_frs() {
-	mkdir -p "$3"
-	frs-sample -q -i const -n "$2" --sets "$M" --count-only >"$3/counts"
-	frs-sample -q -i const -n "$2" --sets "$M" --jitter "$1" -T |
-	    awk -v dir="$3" 'NR == FNR { c[++k] = $1; next }
-		/^#/ { next }
-		{ while (left == 0) { s++; left = c[s]
-		      f = sprintf("%s/s%05d.txt", dir, s) }
-		  print > f; left--
-		  if (left == 0) close(f) }' "$3/counts" -
-	ls "$3"/s*.txt
-}
-
 gen() {	# gen DIST N
 	b=$(setname "$1" "$2")
 	case $1 in
-	frs) cached "$b/list" split_frs none "$2" "$b" ;;
-	jfrs) cached "$b/list" split_frs random "$2" "$b" ;;
+	frs) cached "$b/list" split_frs "$b" -i const -n "$2" --sets "$M" ;;
+	jfrs) cached "$b/list" split_frs "$b" -i const -n "$2" --sets "$M" \
+	    --jitter random ;;
 	regular) cached "$b.pts" ref-sample -q -k regular -n "$2" ;;
 	*) cached "$b.pts" ref-sample -q -k "$1" -n "$2" --sets "$M" ;;
 	esac

@@ -3,7 +3,8 @@
 # uniform sample distributions against the point count n, by mc-error(1)
 # on its test integrands gauss (smooth), disc and step (discontinuous),
 # for FRS (frs-sample -i const, the default matrix), jittered FRS
-# (--jitter random), HSW (hsw-sample -i const with its default input,
+# (--jitter random), FRS on a void-and-cluster matrix (vfrs: frd-gen
+# --method vac, 1024^2 in quick mode, 2048^2 in full; see exp-vac.sh), HSW (hsw-sample -i const with its default input,
 # Halton, which the constant map leaves unchanged), uniform random,
 # jittered, Halton (Cranley-Patterson rotated by the seed) and dart
 # throwing (ref-sample -k random|jittered|halton|dart; jittered rounds n
@@ -47,11 +48,16 @@
 M=$(pick 4 32 256)
 KMIN=$(pick 4 6 4)
 KMAX=$(pick 5 12 16)
-SAMPLERS="frs jfrs hsw random jittered halton dart"
+SAMPLERS="frs jfrs vfrs hsw random jittered halton dart"
 FUNCS="gauss disc step"
 # the env samplers: importance FRS, jittered FRS, HSW, then uniform ones
 ESAMPLERS="ifrs ijfrs ihsw random jittered halton dart"
 D=$CACHE/mc
+# FRS on a void-and-cluster matrix (frd-gen --method vac, seed 1; the
+# same file exp-vac.sh makes at that size): large enough that the
+# largest n does not repeat it (S^2 / 64 unique samples).
+VS=$(pick 128 1024 2048)
+VACM=$CACHE/vac/vac-$VS.frd
 envb=$(basename "$ENVMAP")
 envb=${envb%.*}
 EMAP=$D/$envb-equirect.exr	# ENVMAP weighted by sin theta (imap --equirect)
@@ -96,10 +102,13 @@ run_one() {
 	mkdir -p "$w"
 	t0=$(date +%s.%N)
 	case ${1#i} in
-	frs | jfrs)
+	frs | jfrs | vfrs)
 		j=none
 		[ "${1#i}" = jfrs ] && j=random
-		frs-sample -q -j 1 -i "$imp" -n "$2" --sets "$M" --jitter "$j" \
+		mo=""
+		[ "$1" = vfrs ] && mo="-m $VACM"
+		# shellcheck disable=SC2086
+		frs-sample -q -j 1 $mo -i "$imp" -n "$2" --sets "$M" --jitter "$j" \
 		    $pdf -o "$w/all.pts" ;;
 	hsw)	# m sets' worth of points in one run, like --sets elsewhere
 		hsw-sample -q -j 1 -i "$imp" -n $(($2 * M)) $pdf -o "$w/timed.pts" ;;
@@ -110,18 +119,11 @@ run_one() {
 	awk -v a="$t0" -v b="$t1" -v m="$M" \
 	    'BEGIN { printf "%.6f\t%d\n", b - a, m }' >"$b.time"
 	case ${1#i} in
-	frs | jfrs)
+	frs | jfrs | vfrs)
 		# The same sets again as text, cut into per-set files (untimed).
-		frs-sample -q -i "$imp" -n "$2" --sets "$M" --count-only >"$w/counts"
-		frs-sample -q -i "$imp" -n "$2" --sets "$M" --jitter "$j" $pdf -T |
-		    awk -v dir="$w" 'NR == FNR { c[++k] = $1; next }
-			/^#pts / { h = $1 " " $2 " " $3; next }	# dims, extra
-			/^#/ { next }
-			{ while (left == 0) { s++; left = c[s]
-			      f = sprintf("%s/s%05d.txt", dir, s)
-			      if (h != "") print h " count=" left > f }
-			  print > f; left--
-			  if (left == 0) close(f) }' "$w/counts" -
+		# shellcheck disable=SC2086
+		split_frs "$w" $mo -i "$imp" -n "$2" --sets "$M" --jitter "$j" \
+		    $pdf >/dev/null
 		mc --group all "$w"/s*.txt ;;
 	hsw)	# the one deterministic set (untimed)
 		hsw-sample -q -i "$imp" -n "$2" $pdf -o "$w/all.pts"
@@ -151,6 +153,7 @@ exp_begin mc "Integration error (beyond the thesis)" \
     "not in the thesis (issue 13); Monte Carlo rmse of gauss, disc and step, and of env lit by $(basename "$ENVMAP") with importance sampling, by mc-error(1), n = 2^$KMIN..2^$KMAX, m = $M sets" \
     "about an hour on 2 cores (dart throwing and FRS at n = 2^16 dominate)"
 mkdir -p "$D"
+cached "$VACM" frd-gen -q --method vac -s "$VS" -S 1
 # the equirect-weighted map that FRS and HSW both sample, made once
 cached "$EMAP" imap convert -q --equirect --format exr "$ENVMAP" -
 for n in $NS; do
@@ -199,6 +202,7 @@ done
 label() {
 	case $1 in
 	frs) echo FRS ;; jfrs) echo "jittered FRS" ;; hsw) echo "HSW (Halton input)" ;;
+	vfrs) echo "FRS, void-and-cluster matrix" ;;
 	random) echo "uniform random" ;; jittered) echo jittered ;;
 	halton) echo Halton ;; dart) echo "dart throwing" ;;
 	ifrs) echo "FRS (importance)" ;; ijfrs) echo "jittered FRS (importance)" ;;
@@ -222,7 +226,7 @@ label() {
 cat "$OUT/slopes.md" >>"$OUT/head.md"
 
 # Plots: rmse against n, one per integrand; rmse against time per set.
-COLS="#d62728 #ff7f0e #8c564b #7f7f7f #2ca02c #9467bd #1f77b4"
+COLS="#d62728 #ff7f0e #17becf #8c564b #7f7f7f #2ca02c #9467bd #1f77b4"
 # color SAMPLER: its curve's color (an importance sampler takes that of
 # its uniform namesake, which the env plot does not show).
 color() {
@@ -300,7 +304,7 @@ for f in $FUNCS; do
 	gauss) th="not in the thesis; theory: random -0.5, jittered -1.0 (smooth f), Halton ~ -1 (up to log n)" ;;
 	*) th="not in the thesis; theory: random -0.5, jittered and QMC ~ -0.75 (discontinuity along a curve)" ;;
 	esac
-	row "$f: rmse slope frs/jfrs/hsw/random/jittered/halton/dart" "$o" "$th"
+	row "$f: rmse slope $(echo $SAMPLERS | tr ' ' /)" "$o" "$th"
 	i=$((i + 1))
 done
 o=""
@@ -313,7 +317,7 @@ big() {	# big SAMPLER INTEGRAND: rmse at the largest n
 for f in $FUNCS; do
 	o=""
 	for s in $SAMPLERS; do o="$o${o:+ / }$(big $s $f)"; done
-	row "$f: rmse at n = 2^$KMAX frs/jfrs/hsw/random/jittered/halton/dart" "$o" "-"
+	row "$f: rmse at n = 2^$KMAX $(echo $SAMPLERS | tr ' ' /)" "$o" "-"
 done
 o=""
 for s in $ESAMPLERS; do o="$o${o:+ / }$(big $s env)"; done

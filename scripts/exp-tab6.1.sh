@@ -38,22 +38,6 @@ spec() {	# the map option words of a column ("" for uniform)
 	esac
 }
 
-# split_frs MAP JITTER DIR: per-set text files of FRS; prints their names.
-split_frs() {
-	mkdir -p "$3"
-	# shellcheck disable=SC2046
-	frs-sample -q $(spec "$1") -n "$N" --sets "$M" --count-only >"$3/counts"
-	# shellcheck disable=SC2046
-	frs-sample -q $(spec "$1") -n "$N" --sets "$M" --jitter "$2" -T |
-	    awk -v dir="$3" 'NR == FNR { c[++k] = $1; next }
-		/^#/ { next }
-		{ while (left == 0) { s++; left = c[s]
-		      f = sprintf("%s/s%03d.txt", dir, s) }
-		  print > f; left--
-		  if (left == 0) close(f) }' "$3/counts" -
-	ls "$3"/s*.txt
-}
-
 # hsw_sets MAP KIND: M sets of HSW-warped KIND points (seeds 1..M), text.
 hsw_sets() {
 	s=1
@@ -73,7 +57,8 @@ density() {
 	frs | jfrs)
 		j=none
 		[ "$1" = jfrs ] && j=random
-		cached "$b/list" split_frs "$2" $j "$b"
+		# shellcheck disable=SC2086
+		cached "$b/list" split_frs "$b" $mo -n "$N" --sets "$M" --jitter $j
 		# shellcheck disable=SC2046,SC2086
 		cached "$b.tsv" dda --density -q -j 1 $mo $(cat "$b/list") ;;
 	reference)

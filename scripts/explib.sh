@@ -118,6 +118,27 @@ mean_points() {
 	done | awk '{ t += $1; c++ } END { printf "%.1f", t / c }'
 }
 
+# split_frs DIR ARGS...: the sets of "frs-sample ARGS" (with --sets) as
+# per-set text files DIR/s00001.txt, ... (each with its header line, so
+# extra columns keep their meaning), listed.  FRS sets vary in size with
+# the seed: a --count-only run of the same ARGS gives the sizes.
+split_frs() {
+	sdir=$1
+	shift
+	mkdir -p "$sdir"
+	frs-sample -q "$@" --count-only >"$sdir/counts"
+	frs-sample -q "$@" -T |
+	    awk -v dir="$sdir" 'NR == FNR { c[++k] = $1; next }
+		/^#pts / { h = $1 " " $2 " " $3; next }	# dims, extra
+		/^#/ { next }
+		{ while (left == 0) { s++; left = c[s]
+		      f = sprintf("%s/s%05d.txt", dir, s)
+		      if (h != "") print h " count=" left > f }
+		  print > f; left--
+		  if (left == 0) close(f) }' "$sdir/counts" -
+	ls "$sdir"/s*.txt
+}
+
 # set_points A B: the mean point count of the SETS sets that the
 # experiment's own function "pts A B SEED" names.
 set_points() {
