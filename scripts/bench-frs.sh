@@ -53,6 +53,36 @@ for map in $MAPS; do
 done
 
 echo
+echo "3-D FRS: data/default3.frd (64^3), blob3 and shell3 volumes at 32^3, sigma 8"
+printf '%-7s %-6s %-7s %3s %10s %11s %9s %9s %9s\n' volume log2n algo thr \
+    samples threshold_s Msamp/s process_s vs_naive
+if [ -n "${BENCH_QUICK:-}" ]; then NS3="10 16"; else NS3="10 14 18 22"; fi
+for vol in blob3 shell3; do
+	for e in $NS3; do
+		n=$((1 << e))
+		naive=""
+		for a in naive sorted; do
+			# Naive visits sigma^3 n max/mean elements: minutes past 2^18.
+			[ $a = naive ] && [ "$e" -gt 14 ] && continue
+			for j in 1 $ALL; do
+				$TIME -f "%e" -o "$T/t" "$FRS" -q -i $vol -n $n -a $a -j $j \
+				    -v -o /dev/null 2>"$T/v"
+				line=$(grep 'samples (' "$T/v")
+				cnt=$(echo "$line" | awk '{ print $2 }')
+				th=$(echo "$line" | sed 's/.*thresholding \([0-9.]*\) s.*/\1/')
+				[ $a = naive ] && [ $j = 1 ] && naive=$th
+				awk -v m=$vol -v e=$e -v a=$a -v j=$j -v c=$cnt -v t=$th \
+				    -v p="$(cat "$T/t")" -v nv="$naive" 'BEGIN {
+					r = (nv != "" && t > 0) ? sprintf("%.1f", nv / t) : "-"
+					rate = (t > 0) ? c / t / 1e6 : 0
+					printf "%-7s %-6s %-7s %3s %10d %11.6f %9.1f %9.2f %9s\n", m, e, a, j, c, t, rate, p, r }'
+				[ "$j" = "$ALL" ] && break
+			done
+		done
+	done
+done
+
+echo
 echo "hsw-sample (Halton input): seconds to warp (-v) and whole process, same maps"
 printf '%-7s %-6s %3s %10s %11s %9s %9s\n' map log2n thr samples warp_s Msamp/s process_s
 for map in $MAPS; do

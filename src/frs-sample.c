@@ -584,10 +584,11 @@ static void print_setup3(const struct frs3_setup *s, const char *mname)
 }
 
 /* Sample every set and write it; the total count, UINT64_MAX on a write
- * error (the library's message). */
+ * error (the library's message).  t[0] gets the seconds spent
+ * thresholding, t[1] those spent writing. */
 static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
     const struct frs_matrix *m, const struct frs3_prep *p,
-    struct outfile *of)
+    struct outfile *of, double t[2])
 {
 	struct pts_writer w;
 	uint64_t total = 0;
@@ -596,10 +597,13 @@ static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
 		struct frs3_setup s;
 		struct frs3_result r;
 		int rc = 0;
+		double t0 = progress_now();
 		setup3(o, v, m, cli.seed + set, &s);
 		if (frs3_sample(&s, v, p, (enum frs_algo)o->algo, o->steps,
 		    o->nsteps, o->count_only, &r) < 0)
 			cli_die("%s", frs_errmsg());
+		t[0] += progress_now() - t0;
+		t0 = progress_now();
 		if (set == 0 && !o->count_only)
 			rc = pts_writer_begin(&w, of->fp, of->name, 3,
 			    (unsigned)o->pdf + (o->nsteps > 1),
@@ -608,6 +612,7 @@ static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
 			rc = put3(&w, o, &s, v, &r);
 		total += r.count;
 		frs3_result_free(&r);
+		t[1] += progress_now() - t0;
 		if (rc < 0)
 			return UINT64_MAX;
 	}
@@ -625,7 +630,7 @@ static int main3(const struct opts *o)
 	struct frs3_prep p;
 	struct outfile of;
 	uint64_t total;
-	double t0 = progress_now(), tsetup;
+	double t0 = progress_now(), tsetup, t[2] = { 0.0, 0.0 };
 
 	check3(o);
 	load3(o, &m, &v);
@@ -640,19 +645,21 @@ static int main3(const struct opts *o)
 	tsetup = progress_now() - t0;
 	if (outfile_open(&of, cli.out, !o->count_only && !cli.text) < 0)
 		cli_die_lib();
-	t0 = progress_now();
-	total = sets3(o, &v, &m, &p, &of);
+	total = sets3(o, &v, &m, &p, &of, t);
 	if (total == UINT64_MAX) {
 		outfile_abort(&of);
 		cli_die_lib();
 	}
+	t0 = progress_now();
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
+	t[1] += progress_now() - t0;
 	if (o->verbose) {
 		print_setup3(&s0, o->matrix);
 		fprintf(stderr, "frs-sample: %llu samples (%s); setup %.6f s, "
-		    "sampling and output %.6f s\n", (unsigned long long)total,
-		    frscl_algo_name(o->algo), tsetup, progress_now() - t0);
+		    "thresholding %.6f s, output %.6f s\n",
+		    (unsigned long long)total, frscl_algo_name(o->algo), tsetup,
+		    t[0], t[1]);
 	}
 	frs3_prep_free(&p);
 	vol_free(&v);
