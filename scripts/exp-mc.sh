@@ -222,6 +222,26 @@ label() {
 	echo "env: $(basename "$ENVMAP") lighting a diffuse surface; the importance samplers follow the map weighted by sin theta (imap convert --equirect) and divide by their pdf column."
 	echo
 } >"$OUT/slopes.md"
+sl() { awk -F '\t' -v s="$1" -v c="$2" '$1 == s { print $c }' "$OUT/slopes.tsv"; }
+# Beside the discrepancy slopes of fig6.3-6.8 (when it has run): by
+# Koksma-Hlawka the error of a smooth integrand is bounded through the
+# star discrepancy, that of an indicator through the discrepancy of its
+# shape class (disc: circles, step: halfplanes).
+DS=$RES/fig6.3-6.8/slopes.tsv
+if [ -s "$DS" ]; then
+	dsl() { awk -F '\t' -v c="$1" -v d="$2" '$1 == c && $2 == d { print $3 }' "$DS"; }
+	{
+		echo "The same slopes beside those of the D2 discrepancy in fig6.3-6.8 (its n range; $(sed -n 's/^Thesis: .*Mode: \(.*\)\.$/\1/p' "$RES/fig6.3-6.8/summary.md" 2>/dev/null || echo unknown) mode), per integrand and its shape class:"
+		echo
+		echo "| sampler | gauss | star D2 | disc | circle D2 | step | half D2 |"
+		echo "| --- | --- | --- | --- | --- | --- | --- |"
+		for x in frs jfrs random halton dart; do
+			echo "| $(label $x) | $(sl $x 2) | $(dsl star $x) | $(sl $x 3) | $(dsl circle $x) | $(sl $x 4) | $(dsl half $x) |"
+		done
+		echo
+	} >"$OUT/beside.md"
+	cat "$OUT/beside.md" >>"$OUT/slopes.md"
+fi
 # The table goes into the summary, after the head (exp_end composes it).
 cat "$OUT/slopes.md" >>"$OUT/head.md"
 
@@ -295,7 +315,6 @@ done
 } | gnuplot
 
 # Rows: slopes beside what theory leads one to expect.
-sl() { awk -F '\t' -v s="$1" -v c="$2" '$1 == s { print $c }' "$OUT/slopes.tsv"; }
 i=2
 for f in $FUNCS; do
 	o=""
