@@ -1,7 +1,7 @@
 /*
- * ref-sample: uniform 2-D reference point sets (random, regular,
+ * ref-sample: uniform 2-D and 3-D reference point sets (random, regular,
  * jittered, Halton, Hammersley, Owen-scrambled Sobol', dart throwing)
- * and adaptive relaxation dart throwing by an importance map.
+ * and adaptive 2-D relaxation dart throwing by an importance map.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdint.h>
@@ -18,12 +18,15 @@
 #include "refsamp.h"
 
 static const char usage[] =
-    "usage: ref-sample -n COUNT [-k KIND] [-i IMPORTANCE] [-s WxH] [--strict]\n"
-    "                  [--equirect] [--max-failures F] [-S SEED] [-T] [-q]\n"
-    "                  [--sets M] [-o FILE]\n"
+    "usage: ref-sample -n COUNT [-d DIMS] [-k KIND] [-i IMPORTANCE] [-s WxH]\n"
+    "                  [--strict] [--equirect] [--max-failures F] [-S SEED]\n"
+    "                  [-T] [-q] [--sets M] [-o FILE]\n"
     "\n"
     "  -n, --count N        points to make (regular and jittered: the\n"
-    "                       nearest square, round(sqrt N)^2)\n"
+    "                       nearest square, round(sqrt N)^2, or in 3-D\n"
+    "                       cube, round(cbrt N)^3)\n"
+    "  -d, --dims K         2 (default): points in [0,1)^2; 3: in [0,1)^3\n"
+    "                       (every kind but relaxed-dart, no -i)\n"
     "      --sets M         write M sets one after another, set i made\n"
     "                       with seed S+i (default 1)\n"
     "  -k, --kind K         random (default), regular, jittered, halton,\n"
@@ -50,13 +53,14 @@ enum {
 	OPT_SETS
 };
 
-/* Most points in all the sets of one file: M * count records of 16
- * bytes (up to 4 columns of 8 bytes elsewhere) stay far inside a 64-bit
- * file offset. */
+/* Most points in all the sets of one file: M * count records of 16 or
+ * 24 bytes (up to 4 columns of 8 bytes elsewhere) stay far inside a
+ * 64-bit file offset. */
 #define SETS_MAX_TOTAL ((uint64_t)1 << 56)
 
 static const struct option longopts[] = {
 	{ "count", required_argument, NULL, 'n' },
+	{ "dims", required_argument, NULL, 'd' },
 	{ "kind", required_argument, NULL, 'k' },
 	{ "max-failures", required_argument, NULL, OPT_MAX_FAILURES },
 	{ "importance", required_argument, NULL, 'i' },
@@ -69,8 +73,9 @@ static const struct option longopts[] = {
 };
 
 /* One set with the given seed into xy; *placed gets its size. */
-static int make_set(enum refsamp_kind kind, uint64_t n, uint64_t seed,
-    uint64_t maxf, const struct frs_imap *map, double *xy, uint64_t *placed)
+static int make_set(enum refsamp_kind kind, unsigned dims, uint64_t n,
+    uint64_t seed, uint64_t maxf, const struct frs_imap *map, double *xy,
+    uint64_t *placed)
 {
 	if (kind == REFSAMP_RELAXED_DART) {
 		if (refsamp_relaxed_dart(n, seed, maxf, map, xy, NULL) < 0)
@@ -78,13 +83,56 @@ static int make_set(enum refsamp_kind kind, uint64_t n, uint64_t seed,
 		*placed = n;
 		return 0;
 	}
-	return refsamp_gen(kind, n, seed, maxf, xy, placed);
+	return refsamp_gen_dims(kind, dims, n, seed, maxf, xy, placed);
+}
+
+/* -d: exactly "2" or "3". */
+static unsigned parse_dims(const char *s)
+{
+	if (strcmp(s, "2") == 0 || strcmp(s, "3") == 0)
+		return (unsigned)(s[0] - '0');
+	cli_usage_error("-d: '%s' is not 2 or 3 (points in [0,1)^2 or "
+	    "[0,1)^3)", s);
+}
+
+/* What 3-D cannot do, as usage errors: both need an importance map,
+ * which is an image. */
+static void check_dims(unsigned dims, enum refsamp_kind kind,
+    const char *imp)
+{
+	if (dims != 3)
+		return;
+	if (kind == REFSAMP_RELAXED_DART)
+		cli_usage_error("-d 3: relaxed-dart is two-dimensional only (it "
+		    "follows an importance map); -k dart makes 3-D Poisson-disk "
+		    "points");
+	if (imp != NULL)
+		cli_usage_error("-d 3: -i is two-dimensional only (importance "
+		    "maps are images); the 3-D kinds are uniform");
+}
+
+/* The note on a grid count that differs from -n. */
+static void note_grid(enum refsamp_kind kind, unsigned dims, uint64_t n,
+    uint64_t count)
+{
+	unsigned long long s = dims == 3 ? refsamp_cube_side(n) :
+	    refsamp_grid_side(n);
+
+	if (dims == 3)
+		cli_note("%s: %llu points, the nearest cubic grid "
+		    "(%llux%llux%llu) to %llu", refsamp_name(kind),
+		    (unsigned long long)count, s, s, s, (unsigned long long)n);
+	else
+		cli_note("%s: %llu points, the nearest square grid (%llux%llu) "
+		    "to %llu", refsamp_name(kind), (unsigned long long)count,
+		    s, s, (unsigned long long)n);
 }
 
 int main(int argc, char **argv)
 {
 	enum refsamp_kind kind = REFSAMP_RANDOM;
 	uint64_t n = 0, maxf = 0, count, placed, sets = 1;
+	unsigned dims = 2;
 	int c, have_n = 0, flags = 0;
 	const char *imp = NULL;
 	uint32_t mw = 0, mh = 0;
@@ -97,13 +145,14 @@ int main(int argc, char **argv)
 	struct progress pr;
 
 	cli_init("ref-sample", usage);
-	while ((c = getopt_long(argc, argv, "n:k:i:s:" CLI_COMMON_SHORTOPTS,
+	while ((c = getopt_long(argc, argv, "n:d:k:i:s:" CLI_COMMON_SHORTOPTS,
 	    longopts, NULL)) != -1) {
 		switch (c) {
 		case 'n':
 			n = cli_u64("-n", optarg, 1, REFSAMP_MAX_N);
 			have_n = 1;
 			break;
+		case 'd': dims = parse_dims(optarg); break;
 		case 'k':
 			if (refsamp_parse(optarg, &kind) < 0)
 				cli_usage_error("-k: %s", frs_errmsg());
@@ -130,10 +179,11 @@ int main(int argc, char **argv)
 		cli_usage_error("unexpected argument '%s'", argv[optind]);
 	if (!have_n)
 		cli_usage_error("-n COUNT is required");
+	check_dims(dims, kind, imp);
 	if (maxf == 0)
 		maxf = kind == REFSAMP_RELAXED_DART ? REFSAMP_RELAXED_FAILURES :
 		    REFSAMP_DART_FAILURES;
-	count = refsamp_count(kind, n);
+	count = refsamp_count_dims(kind, n, dims);
 	if (sets > SETS_MAX_TOTAL / count)
 		cli_usage_error("--sets %llu: %llu sets of %llu points exceed "
 		    "the 2^56 points one file can hold",
@@ -144,14 +194,10 @@ int main(int argc, char **argv)
 		    "2^64-1", (unsigned long long)sets,
 		    (unsigned long long)cli.seed);
 	if (count != n)
-		cli_note("%s: %llu points, the nearest square grid (%llux%llu) "
-		    "to %llu", refsamp_name(kind), (unsigned long long)count,
-		    (unsigned long long)refsamp_grid_side(n),
-		    (unsigned long long)refsamp_grid_side(n),
-		    (unsigned long long)n);
+		note_grid(kind, dims, n, count);
 	cli_options_done();
 	snprintf(what, sizeof what, "%llu points", (unsigned long long)count);
-	if ((xy = mem_calloc(what, count, 2 * sizeof *xy)) == NULL)
+	if ((xy = mem_calloc(what, count, dims * sizeof *xy)) == NULL)
 		cli_die_lib();
 	if (kind == REFSAMP_RELAXED_DART) {
 		if (imap_load(imp ? imp : "const", mw, mh, flags, &map) < 0) {
@@ -162,8 +208,8 @@ int main(int argc, char **argv)
 	}
 	/* Set 0 before the output opens: with one set its size goes into
 	 * the header, as without --sets. */
-	if (make_set(kind, n, cli.seed, maxf, have_map ? &map : NULL, xy,
-	    &placed) < 0) {
+	if (make_set(kind, dims, n, cli.seed, maxf, have_map ? &map : NULL,
+	    xy, &placed) < 0) {
 		if (have_map)
 			imap_free(&map);
 		free(xy);
@@ -187,15 +233,15 @@ int main(int argc, char **argv)
 	}
 	if (outfile_open(&of, cli.out, !cli.text) < 0)
 		cli_die_lib();
-	if (pts_writer_begin(&w, of.fp, of.name, 2, 0,
+	if (pts_writer_begin(&w, of.fp, of.name, dims, 0,
 	    sets > 1 ? sets * count : placed, cli.text) < 0)
 		goto fail;
 	progress_begin(&pr, "sets", sets);
 	for (uint64_t set = 0; set < sets; set++) {
 		if (set > 0) {
 			uint64_t seed = cli.seed + set;
-			if (make_set(kind, n, seed, maxf, have_map ? &map : NULL,
-			    xy, &placed) < 0) {
+			if (make_set(kind, dims, n, seed, maxf,
+			    have_map ? &map : NULL, xy, &placed) < 0) {
 				outfile_abort(&of);
 				free(xy);
 				cli_die("%s", frs_errmsg());
@@ -214,7 +260,7 @@ int main(int argc, char **argv)
 			}
 		}
 		for (uint64_t i = 0; i < placed; i++)
-			if (pts_writer_put(&w, xy + 2 * i) < 0)
+			if (pts_writer_put(&w, xy + dims * i) < 0)
 				goto fail;
 		progress_update(&pr, set + 1);
 	}

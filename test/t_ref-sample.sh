@@ -1,5 +1,6 @@
 #!/bin/sh
-# ref-sample: every kind, text output, determinism and bad input.
+# ref-sample: every kind in 2-D and 3-D (-d 3), text output, determinism,
+# 2-D golden bytes and bad input.
 . "$(dirname "$0")/lib.sh"
 
 count() { od -A n -t u8 -j 24 -N 8 "$1" | tr -d ' '; }
@@ -137,3 +138,103 @@ else
 fi
 expect_fail "relaxed-dart: bad -i file" 1 "nosuchmap" "$T/rdbad.pts" \
     ref-sample -k relaxed-dart -n 10 -i "$T/nosuchmap.png" -o "$T/rdbad.pts"
+
+# 2-D bytes are unchanged by -d: cksums of sets made before 3-D existed.
+golden() {
+	want=$1
+	shift
+	ref-sample "$@" -q -o "$T/g.pts"
+	got=$(cksum <"$T/g.pts" | awk '{ print $1, $2 }')
+	[ "$got" = "$want" ] && ok "2-D golden: $*" || nok "2-D golden: $* ($got, expected $want)"
+}
+golden "4009183281 1056" -k halton -n 64 -S 3
+golden "3920019431 4832" -k hammersley -n 300 -S 7
+golden "2807293975 4832" -k sobol -n 300 -S 7
+golden "929511525 4832" -k random -n 300 -S 1
+golden "1198773776 4656" -k jittered -n 300 -S 1
+golden "3194837724 4832" -k dart -n 300 -S 1
+golden "4009183281 1056" -d 2 -k halton -n 64 -S 3
+
+# -d 3: every kind, a binary file with k = 3 and the right count.
+for k in random regular jittered halton hammersley sobol dart; do
+	case $k in regular|jittered) want=1000 ;; *) want=900 ;; esac
+	if ref-sample -d 3 -k $k -n 900 -q -o "$T/$k.3.pts" 2>"$T/err"; then
+		cnt=$(count "$T/$k.3.pts")
+		dims=$(od -A n -t u4 -j 12 -N 4 "$T/$k.3.pts" | tr -d ' ')
+		size=$(wc -c <"$T/$k.3.pts")
+		if [ "$cnt" = "$want" ] && [ "$dims" = 3 ] &&
+		    [ "$size" -eq $((32 + 24 * want)) ]; then
+			ok "-d 3 -k $k: $want points of 3 coordinates"
+		else
+			nok "-d 3 -k $k: count $cnt, dims $dims, size $size, expected $want"
+		fi
+	else
+		nok "-d 3 -k $k"
+		sed 's/^/# /' "$T/err"
+	fi
+	ref-sample -d 3 -k $k -n 500 -q -T -o "$T/$k.3.txt"
+	head -n 1 "$T/$k.3.txt" | grep -q '^#pts dims=3 extra=0 count=' &&
+	awk '!/^#/ { n++; if (NF != 3) bad = 1
+	    for (i = 1; i <= 3; i++) if ($i < 0 || $i >= 1) bad = 1 }
+	    END { exit bad || n < 500 }' "$T/$k.3.txt" &&
+	    ok "-d 3 -k $k -T: dims=3 header, points in [0,1)^3" ||
+	    nok "-d 3 -k $k -T: dims=3 header, points in [0,1)^3"
+done
+ref-sample -d 3 -k jittered -n 900 -o /dev/null 2>"$T/err"
+grep -q 'nearest cubic grid (10x10x10) to 900' "$T/err" &&
+    ok "-d 3 jittered notes 1000 for 900" || nok "-d 3 jittered notes 1000 for 900"
+ref-sample -d 3 -k regular -n 27 -T -o "$T/r27.txt" 2>"$T/err"
+[ ! -s "$T/err" ] && [ "$(sed -n 2p "$T/r27.txt")" = "0.16666666666666666 0.16666666666666666 0.16666666666666666" ] &&
+    [ "$(sed -n 3p "$T/r27.txt")" = "0.5 0.16666666666666666 0.16666666666666666" ] &&
+    ok "-d 3 regular -n 27: cell centres of 3x3x3, no note" ||
+    nok "-d 3 regular -n 27: cell centres of 3x3x3, no note"
+
+# Classical sequences with -S 0: Halton (1/2, 1/3, 1/5); Sobol' as in Joe
+# and Kuo's published example (web.maths.unsw.edu.au/~fkuo/sobol/).
+ref-sample -d 3 -k halton -n 2 -S 0 -T | sed -n 2p |
+    awk '{ exit !($1 == 0.5 && $2 == 1 / 3 && $3 == 0.2) }' &&
+    ok "-d 3 -S 0 halton starts at (1/2, 1/3, 1/5)" ||
+    nok "-d 3 -S 0 halton starts at (1/2, 1/3, 1/5)"
+ref-sample -d 3 -k sobol -n 6 -S 0 -T | grep -v '^#' >"$T/sob.txt"
+printf '0 0 0\n0.5 0.5 0.5\n0.75 0.25 0.25\n0.25 0.75 0.75\n0.375 0.375 0.625\n0.875 0.875 0.125\n' |
+    cmp -s - "$T/sob.txt" && ok "-d 3 -S 0 sobol: Joe and Kuo's first points" ||
+    nok "-d 3 -S 0 sobol: Joe and Kuo's first points"
+ref-sample -d 3 -k hammersley -n 4 -S 0 -T | sed -n 3p |
+    awk '{ exit !($1 == 0.375 && $2 == 0.5 && $3 == 1 / 3) }' &&
+    ok "-d 3 -S 0 hammersley point 1 is (3/8, 1/2, 1/3)" ||
+    nok "-d 3 -S 0 hammersley point 1 is (3/8, 1/2, 1/3)"
+
+# Same seed same bytes, for any -j; another seed other points.
+for k in random jittered halton sobol dart; do
+	ref-sample -d 3 -k $k -n 400 -S 5 -j 1 -q -o "$T/a.pts"
+	ref-sample -d 3 -k $k -n 400 -S 5 -j 8 -q -o "$T/b.pts"
+	ref-sample -d 3 -k $k -n 400 -S 6 -q -o "$T/c.pts"
+	cmp -s "$T/a.pts" "$T/b.pts" && ok "-d 3 -k $k: same seed, same bytes (-j 1, -j 8)" ||
+	    nok "-d 3 -k $k: same seed, same bytes (-j 1, -j 8)"
+	cmp -s "$T/a.pts" "$T/c.pts" && nok "-d 3 -k $k: another seed, other points" ||
+	    ok "-d 3 -k $k: another seed, other points"
+done
+
+# --sets in 3-D: the sets of -S 5, 6 under one header.
+ref-sample -d 3 -k dart -n 200 -S 5 --sets 2 -q -o "$T/sets3.pts"
+{ ref-sample -d 3 -k dart -n 200 -S 5 | tail -c +33
+  ref-sample -d 3 -k dart -n 200 -S 6 | tail -c +33; } >"$T/cat3.bin"
+tail -c +33 "$T/sets3.pts" | cmp -s - "$T/cat3.bin" && [ "$(count "$T/sets3.pts")" = 400 ] &&
+    ok "-d 3 --sets 2: the sets of -S 5 and 6, count 400" ||
+    nok "-d 3 --sets 2: the sets of -S 5 and 6, count 400"
+
+# Dart that gives up in 3-D says so.
+ref-sample -d 3 -k dart -n 20000 --max-failures 1 -o "$T/few3.pts" 2>"$T/err"
+cnt=$(count "$T/few3.pts")
+[ "$cnt" -lt 20000 ] && grep -q "placed $cnt of 20000" "$T/err" &&
+    ok "-d 3 dart stops early and says how many ($cnt)" ||
+    nok "-d 3 dart stops early and says how many ($cnt)"
+
+# Bad -d and what 3-D refuses.
+expect_fail "-d 4" 2 "-d: '4' is not 2 or 3" "$T/o.pts" ref-sample -d 4 -n 10 -o "$T/o.pts"
+expect_fail "-d 1" 2 "-d: '1' is not 2 or 3" "$T/o.pts" ref-sample -d 1 -n 10 -o "$T/o.pts"
+expect_fail "-d 3x" 2 "-d: '3x' is not 2 or 3" "$T/o.pts" ref-sample --dims 3x -n 10 -o "$T/o.pts"
+expect_fail "-d 3 -k relaxed-dart" 2 "relaxed-dart is two-dimensional only" "$T/o.pts" \
+    ref-sample -d 3 -k relaxed-dart -n 10 -o "$T/o.pts"
+expect_fail "-d 3 -i blob" 2 "-i is two-dimensional only" "$T/o.pts" \
+    ref-sample -d 3 -k dart -i blob -n 10 -o "$T/o.pts"

@@ -1,6 +1,7 @@
 /*
  * Reference point sets: random, regular, jittered, Halton, Hammersley,
- * Owen-scrambled Sobol' and dart throwing.  See refsamp.h.
+ * Owen-scrambled Sobol' and dart throwing, in 2-D and 3-D.  See
+ * refsamp.h.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "refsamp.h"
@@ -11,6 +12,7 @@
 
 #include "err.h"
 #include "imap.h"
+#include "mem.h"
 #include "rng.h"
 
 static const char *const names[] = { "random", "regular", "jittered",
@@ -56,6 +58,31 @@ uint64_t refsamp_count(enum refsamp_kind k, uint64_t n)
 double refsamp_dart_radius(uint64_t n)
 {
 	return 0.7 * sqrt(2.0 / (sqrt(3.0) * (double)n));
+}
+
+uint64_t refsamp_cube_side(uint64_t n)
+{
+	uint64_t k;
+
+	/* Up to 2^60, (2k + 1)^3 and 8n fit in 64 bits. */
+	if (n > (uint64_t)1 << 60)
+		n = (uint64_t)1 << 60;
+	k = (uint64_t)llround(cbrt((double)n));
+	/* Exact: k - 1/2 <= cbrt(n) < k + 1/2, i.e. (2k-1)^3 <= 8n <
+	 * (2k+1)^3; never a tie, an odd cube is not 8n. */
+	while (k > 1 && (2 * k - 1) * (2 * k - 1) * (2 * k - 1) > 8 * n)
+		k--;
+	while ((2 * k + 1) * (2 * k + 1) * (2 * k + 1) <= 8 * n)
+		k++;
+	return k < 1 ? 1 : k;
+}
+
+double refsamp_dart_radius3(uint64_t n)
+{
+	/* FCC packs spheres of diameter d at density pi / (3 sqrt 2), one
+	 * per volume d^3 / sqrt 2; n of them fill the cube at
+	 * d = cbrt(sqrt(2) / n).  0.7 as in 2-D. */
+	return 0.7 * cbrt(sqrt(2.0) / (double)n);
 }
 
 double refsamp_radical_inverse(uint64_t i, unsigned b)
@@ -129,16 +156,47 @@ void refsamp_sobol32(uint32_t i, uint32_t key_x, uint32_t key_y,
 	out[1] = y;
 }
 
-/* A Cranley-Patterson shift from the seed, (0, 0) for seed 0. */
-static void seed_shift(uint64_t seed, double u[2])
+void refsamp_sobol32_3(uint32_t i, const uint32_t key[3], uint32_t out[3])
 {
-	u[0] = u[1] = 0;
+	uint32_t g = i ^ (i >> 1), x = 0, y = 0, z = 0, v = 0x80000000u;
+	uint32_t w = 0x80000000u, w1 = 0xc0000000u;
+
+	/* Dimensions 1 and 2 as in refsamp_sobol32.  Dimension 3 (Joe and
+	 * Kuo 2008, d = 3: s = 2, a = 1, m = 1, 3) in 32-bit direction
+	 * numbers V_k = m_k 2^(32-k): V_1 = 1/2, V_2 = 3/4 and
+	 * V_k = V_{k-1} ^ V_{k-2} ^ (V_{k-2} >> 2); w holds V_k, w1
+	 * V_{k+1}. */
+	for (unsigned k = 0; k < 32; k++) {
+		uint32_t w2 = w1 ^ w ^ (w >> 2);
+		if (g >> k & 1) {
+			x ^= 0x80000000u >> k;
+			y ^= v;
+			z ^= w;
+		}
+		v ^= v >> 1;
+		w = w1;
+		w1 = w2;
+	}
+	if (key[0] || key[1] || key[2]) {
+		x = owen_scramble(x, key[0]);
+		y = owen_scramble(y, key[1]);
+		z = owen_scramble(z, key[2]);
+	}
+	out[0] = x;
+	out[1] = y;
+	out[2] = z;
+}
+
+/* A Cranley-Patterson shift from the seed, zero for seed 0; u[0], u[1]
+ * are the same for 2-D and 3-D, so that a 3-D set extends the 2-D one. */
+static void seed_shift(uint64_t seed, double u[3])
+{
+	u[0] = u[1] = u[2] = 0;
 	if (seed == 0)
 		return;
-	u[0] = (double)(frs_rand64x(seed, FRS_STREAM_REF, 0, 1) >> 11) *
-	    0x1p-53;
-	u[1] = (double)(frs_rand64x(seed, FRS_STREAM_REF, 1, 1) >> 11) *
-	    0x1p-53;
+	for (uint64_t a = 0; a < 3; a++)
+		u[a] = (double)(frs_rand64x(seed, FRS_STREAM_REF, a, 1) >> 11) *
+		    0x1p-53;
 }
 
 static double wrap(double v)
@@ -456,7 +514,7 @@ int refsamp_relaxed_dart(uint64_t n, uint64_t seed, uint64_t max_failures,
 int refsamp_gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
     uint64_t max_failures, double *xy, uint64_t *placed)
 {
-	double u[2];
+	double u[3];
 	uint64_t s;
 
 	if (n < 1 || n > REFSAMP_MAX_N)
@@ -517,4 +575,211 @@ int refsamp_gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
 		    NULL);
 	}
 	return frs_fail("unknown kind %d", (int)k);
+}
+
+uint64_t refsamp_count_dims(enum refsamp_kind k, uint64_t n, unsigned dims)
+{
+	if (dims == 3 && (k == REFSAMP_REGULAR || k == REFSAMP_JITTERED)) {
+		uint64_t s = refsamp_cube_side(n);
+		return s * s * s;
+	}
+	return refsamp_count(k, n);
+}
+
+/* 3-D dart throwing: a grid of g^3 cells of side at most r / sqrt 3, so
+ * that a cell holds one point at most; cell[c] is 1 + the index of its
+ * point, 0 when empty (so that a zeroed allocation is an empty grid). */
+struct dart3 {
+	double *p, r2;
+	uint64_t *cell, g;
+	int64_t reach;	/* cells a radius spans along an axis */
+	int all;	/* the grid is too small to wrap: look at every cell */
+};
+
+static uint64_t cell_of(double v, uint64_t g)
+{
+	uint64_t c = (uint64_t)(v * (double)g);
+	return c < g ? c : g - 1;	/* v * g may round up to g */
+}
+
+static uint64_t dart3_cell(const struct dart3 *s, const double x[3])
+{
+	return (cell_of(x[2], s->g) * s->g + cell_of(x[1], s->g)) * s->g +
+	    cell_of(x[0], s->g);
+}
+
+/* Cell c + d along one axis, on the torus; d itself when all. */
+static uint64_t wrap_cell(const struct dart3 *s, uint64_t c, int64_t d)
+{
+	int64_t g = (int64_t)s->g;
+	return s->all ? (uint64_t)d : (uint64_t)(((int64_t)c + d + g) % g);
+}
+
+static double torus_gap(double a, double b)
+{
+	double d = fabs(a - b);
+	return d > 0.5 ? 1.0 - d : d;
+}
+
+static int dart3_near(const struct dart3 *s, const double x[3], uint64_t c)
+{
+	uint64_t q = s->cell[c];
+	double dx, dy, dz;
+
+	if (q == 0)
+		return 0;
+	dx = torus_gap(s->p[3 * (q - 1)], x[0]);
+	dy = torus_gap(s->p[3 * (q - 1) + 1], x[1]);
+	dz = torus_gap(s->p[3 * (q - 1) + 2], x[2]);
+	return dx * dx + dy * dy + dz * dz < s->r2;
+}
+
+/* Whether an accepted point lies within r of x on the torus. */
+static int dart3_conflict(const struct dart3 *s, const double x[3])
+{
+	int64_t lo = s->all ? 0 : -s->reach;
+	int64_t hi = s->all ? (int64_t)s->g - 1 : s->reach;
+	uint64_t cx = cell_of(x[0], s->g), cy = cell_of(x[1], s->g);
+	uint64_t cz = cell_of(x[2], s->g);
+
+	for (int64_t dz = lo; dz <= hi; dz++)
+		for (int64_t dy = lo; dy <= hi; dy++)
+			for (int64_t dx = lo; dx <= hi; dx++) {
+				uint64_t c = (wrap_cell(s, cz, dz) * s->g +
+				    wrap_cell(s, cy, dy)) * s->g +
+				    wrap_cell(s, cx, dx);
+				if (dart3_near(s, x, c))
+					return 1;
+			}
+	return 0;
+}
+
+static int gen_dart3(uint64_t n, uint64_t seed, uint64_t max_failures,
+    double *xyz, uint64_t *placed)
+{
+	double r = refsamp_dart_radius3(n);
+	struct dart3 s;
+	uint64_t got = 0, fails = 0, t = 0;
+
+	s.p = xyz;
+	s.r2 = r * r;
+	s.g = (uint64_t)ceil(sqrt(3.0) / r);
+	if (s.g < 1)
+		s.g = 1;
+	while (1.0 / (double)s.g > r / sqrt(3.0))
+		s.g++;
+	/* A neighbour within r is at most ceil(r g) cells away per axis;
+	 * when 2 reach + 1 cells would wrap onto themselves, look at all. */
+	s.reach = (int64_t)ceil(r * (double)s.g);
+	s.all = s.g < 2 * (uint64_t)s.reach + 1;
+	if (s.g > ((uint64_t)1 << 21))
+		return frs_fail("dart throwing: %llu^3 cells are too many",
+		    (unsigned long long)s.g);
+	if ((s.cell = mem_calloc("dart throwing cells", s.g * s.g * s.g,
+	    sizeof *s.cell)) == NULL)
+		return -1;
+	while (got < n && fails < max_failures) {
+		double x[3];
+		for (uint64_t a = 0; a < 3; a++)
+			x[a] = frs_rand01(seed, FRS_STREAM_REF, 3 * t + a);
+		t++;
+		if (dart3_conflict(&s, x)) {
+			fails++;
+			continue;
+		}
+		fails = 0;
+		s.cell[dart3_cell(&s, x)] = got + 1;
+		memcpy(xyz + 3 * got, x, sizeof x);
+		got++;
+	}
+	free(s.cell);
+	*placed = got;
+	return 0;
+}
+
+/* Regular (cell centres) or jittered (one uniform point per cell) on the
+ * s^3 grid, x fastest, then y, then z. */
+static void gen_grid3(int jitter, uint64_t n, uint64_t seed, double *xyz)
+{
+	uint64_t s = refsamp_cube_side(n);
+
+	for (uint64_t i = 0; i < s * s * s; i++) {
+		uint64_t c[3] = { i % s, i / s % s, i / (s * s) };
+		for (uint64_t a = 0; a < 3; a++) {
+			double j = jitter ?
+			    frs_rand01(seed, FRS_STREAM_REF, 3 * i + a) : 0.5;
+			xyz[3 * i + a] = below1(((double)c[a] + j) / (double)s);
+		}
+	}
+}
+
+static void gen_sobol3(uint64_t n, uint64_t seed, double *xyz)
+{
+	uint32_t key[3] = { 0, 0, 0 }, p[3];
+
+	/* The keys of the 2-D set for x and y. */
+	if (seed != 0)
+		for (uint64_t a = 0; a < 3; a++)
+			key[a] = (uint32_t)frs_rand64x(seed, FRS_STREAM_REF, a, 2);
+	for (uint64_t i = 0; i < n; i++) {
+		refsamp_sobol32_3((uint32_t)i, key, p);
+		for (unsigned a = 0; a < 3; a++)
+			xyz[3 * i + a] = (double)p[a] * 0x1p-32;
+	}
+}
+
+static int gen3(enum refsamp_kind k, uint64_t n, uint64_t seed,
+    uint64_t max_failures, double *xyz, uint64_t *placed)
+{
+	static const unsigned base[3] = { 2, 3, 5 };
+	double u[3];
+
+	seed_shift(seed, u);
+	switch (k) {
+	case REFSAMP_RANDOM:
+		for (uint64_t i = 0; i < 3 * n; i++)
+			xyz[i] = frs_rand01(seed, FRS_STREAM_REF, i);
+		return 0;
+	case REFSAMP_REGULAR:
+	case REFSAMP_JITTERED:
+		gen_grid3(k == REFSAMP_JITTERED, n, seed, xyz);
+		return 0;
+	case REFSAMP_HALTON:
+		for (uint64_t i = 0; i < n; i++)
+			for (unsigned a = 0; a < 3; a++)
+				xyz[3 * i + a] = wrap(refsamp_radical_inverse(i +
+				    1, base[a]) + u[a]);
+		return 0;
+	case REFSAMP_HAMMERSLEY:
+		for (uint64_t i = 0; i < n; i++) {
+			xyz[3 * i] = wrap(((double)i + 0.5) / (double)n + u[0]);
+			for (unsigned a = 1; a < 3; a++)
+				xyz[3 * i + a] = wrap(refsamp_radical_inverse(i,
+				    base[a - 1]) + u[a]);
+		}
+		return 0;
+	case REFSAMP_SOBOL:
+		gen_sobol3(n, seed, xyz);
+		return 0;
+	case REFSAMP_DART:
+		return gen_dart3(n, seed, max_failures, xyz, placed);
+	case REFSAMP_RELAXED_DART:
+		return frs_fail("relaxed-dart is two-dimensional only (it "
+		    "follows an importance map)");
+	}
+	return frs_fail("unknown kind %d", (int)k);
+}
+
+int refsamp_gen_dims(enum refsamp_kind k, unsigned dims, uint64_t n,
+    uint64_t seed, uint64_t max_failures, double *x, uint64_t *placed)
+{
+	if (dims == 2)
+		return refsamp_gen(k, n, seed, max_failures, x, placed);
+	if (dims != 3)
+		return frs_fail("%u dimensions: 2 or 3 only", dims);
+	if (n < 1 || n > REFSAMP_MAX_N)
+		return frs_fail("count %llu is not in 1 to %llu",
+		    (unsigned long long)n, (unsigned long long)REFSAMP_MAX_N);
+	*placed = refsamp_count_dims(k, n, 3);
+	return gen3(k, n, seed, max_failures, x, placed);
 }

@@ -1,10 +1,12 @@
 /*
- * Reference point sets: uniform 2-D samplers in [0,1)^2 that Forced
- * Random Sampling is compared against (see ref-sample(1)).
+ * Reference point sets: uniform samplers in [0,1)^2 and [0,1)^3 that
+ * Forced Random Sampling (2-D, and 3-D with a 3-D matrix) is compared
+ * against (see ref-sample(1)).
  *
- * Each generator fills an array of 2 * count doubles (x0, y0, x1, y1, ...)
- * and depends only on (kind, n, seed, options): the same arguments give
- * the same bits.  Random numbers come from frs_rand01 on FRS_STREAM_REF.
+ * Each generator fills an array of dims * count doubles (x0, y0, x1, y1,
+ * ... or x0, y0, z0, x1, ...) and depends only on (kind, dims, n, seed,
+ * options): the same arguments give the same bits.  Random numbers come
+ * from frs_rand01 on FRS_STREAM_REF.
  */
 #ifndef FRS_REFSAMP_H
 #define FRS_REFSAMP_H
@@ -46,12 +48,23 @@ uint64_t refsamp_count(enum refsamp_kind k, uint64_t n);
  * distance sqrt(2 / (sqrt(3) n)) (Lagae and Dutre 2008). */
 double refsamp_dart_radius(uint64_t n);
 
+/* 3-D: side of the grid of regular and jittered, round(cbrt(n)), at
+ * least 1 (n is taken as at most 2^60). */
+uint64_t refsamp_cube_side(uint64_t n);
+/* Dart throwing radius for n points in the unit cube: 0.7 of the
+ * densest (FCC) packing distance cbrt(sqrt(2) / n). */
+double refsamp_dart_radius3(uint64_t n);
+
 /* Radical inverse of i in base b (2 <= b), correctly rounded. */
 double refsamp_radical_inverse(uint64_t i, unsigned b);
 /* 2-D Sobol' point i (Gray-code order) as 32-bit integers, Owen
  * scrambled by hashing with the given per-dimension keys (0, 0: none). */
 void refsamp_sobol32(uint32_t i, uint32_t key_x, uint32_t key_y,
     uint32_t out[2]);
+/* 3-D Sobol' point i: the two dimensions above and Joe and Kuo's third
+ * (primitive polynomial x^2 + x + 1, m = 1, 3), each Owen scrambled by
+ * its key (all three 0: none). */
+void refsamp_sobol32_3(uint32_t i, const uint32_t key[3], uint32_t out[3]);
 
 /* Fill xy with refsamp_count(k, n) points; *placed gets the number of
  * points made (fewer than the count only for dart, which stops after
@@ -59,6 +72,18 @@ void refsamp_sobol32(uint32_t i, uint32_t key_x, uint32_t key_y,
  * bad arguments or no memory. */
 int refsamp_gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
     uint64_t max_failures, double *xy, uint64_t *placed);
+
+/* The same in dims = 2 (refsamp_gen) or 3 dimensions.  In 3-D regular
+ * and jittered use a cubic grid of refsamp_cube_side(n)^3 cells, halton
+ * bases 2, 3, 5, hammersley ((i + 1/2) / n, phi2(i), phi3(i)), dart
+ * refsamp_dart_radius3 on the torus; the first two coordinates of
+ * halton, hammersley and sobol are those of the 2-D set of the same
+ * seed.  x holds dims * refsamp_count_dims(k, n, dims) doubles.
+ * relaxed-dart is 2-D only: -1 with a message in 3-D; so is any dims
+ * other than 2 and 3. */
+uint64_t refsamp_count_dims(enum refsamp_kind k, uint64_t n, unsigned dims);
+int refsamp_gen_dims(enum refsamp_kind k, unsigned dims, uint64_t n,
+    uint64_t seed, uint64_t max_failures, double *x, uint64_t *placed);
 
 /*
  * Adaptive Poisson disk sampling by relaxation dart throwing (McCool and
