@@ -610,6 +610,10 @@ static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
 			    o->sets == 1 ? r.count : 0, cli.text);
 		if (rc == 0 && !o->count_only)
 			rc = put3(&w, o, &s, v, &r);
+		/* --count-only: a line per set, as in 2-D. */
+		if (rc == 0 && o->count_only && fprintf(of->fp, "%llu\n",
+		    (unsigned long long)r.count) < 0)
+			rc = frs_fail_errno("%s: write error", of->name);
 		total += r.count;
 		frs3_result_free(&r);
 		t[1] += progress_now() - t0;
@@ -617,8 +621,7 @@ static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
 			return UINT64_MAX;
 	}
 	if (o->count_only)
-		return fprintf(of->fp, "%llu\n", (unsigned long long)total) < 0 ?
-		    (frs_fail_errno("%s: write error", of->name), UINT64_MAX) : total;
+		return total;
 	return pts_writer_end(&w) < 0 ? UINT64_MAX : total;
 }
 

@@ -70,6 +70,11 @@ frs-sample -m "$M" -i blob3 -n 5000 2>"$T/warn" >/dev/null
 grep -q 'repeat' "$T/warn" && ok "warning past the matrix's unique samples" ||
     nok "warning past the matrix's unique samples"
 
+frs-sample -m "$M" -i blob3 -n 300 --sets 3 --count-only -q >"$T/counts"
+[ "$(wc -l <"$T/counts")" = 3 ] && frs-sample -m "$M" -i blob3 -n 300 -S 2 --count-only -q |
+    cmp -s - "$(sed -n 2p "$T/counts" >"$T/c2"; echo "$T/c2")" &&
+    ok "--count-only --sets: a line per set" || nok "--count-only --sets: a line per set"
+
 # The shipped 64^3 matrix is the default for volumes.
 check "default 3-D matrix" frs-sample -i shell3 -n 300 -q -o "$T/d.pts"
 [ "$(od -A n -t u4 -j 12 -N 4 "$T/d.pts" | tr -d ' ')" = 3 ] &&
@@ -130,5 +135,7 @@ expect_fail "unknown volume parameter" 1 "unknown parameter" "$T/o.pts" frs-samp
 expect_fail "imap gen blob3 as PNG" 2 "volume" "$T/v.png" imap gen blob3 -o "$T/v.png"
 expect_fail "imap gen blob -s 4x4x4" 2 "volume size" "$T/v.png" imap gen blob -s 4x4x4 -o "$T/v.png"
 expect_fail "imap convert of a volume" 2 "not converted" "$T/v.png" imap convert "$T/b.frv" "$T/v.png"
+expect_fail "a value past float32" 1 "outside the float range" "$T/big.frv" imap gen const:1e300 -s 2 -o "$T/big.frv"
+expect_fail "a value below float32" 1 "outside the float range" "$T/small.frv" imap gen const:1e-300 -s 2 -o "$T/small.frv"
 expect_fail "imap gen blob3 -s 4x4" 2 "WxHxD" "$T/v.frv" imap gen blob3 -s 4x4 -o "$T/v.frv"
 

@@ -149,8 +149,15 @@ int vol_write(FILE *fp, const char *name, const struct frs_vol *m)
 	for (uint64_t i = 0; ok && i < n; ) {
 		size_t k = n - i < sizeof buf / 4 ? (size_t)(n - i) : sizeof buf / 4;
 		for (size_t j = 0; j < k; j++) {
-			float f = (float)m->v[i + j];
+			double v = m->v[i + j];
+			float f = (float)v;
 			uint32_t u;
+			/* float32 holds the values: refuse what it would turn
+			 * into infinity or zero. */
+			if (isfinite(v) && (isinf(f) || (f == 0.0f && v != 0.0)))
+				return frs_fail("%s: value %g at voxel %llu is outside "
+				    "the float range of .frv", name, v,
+				    (unsigned long long)(i + j));
 			memcpy(&u, &f, sizeof u);
 			io_put_u32(buf + 4 * j, u);
 		}
