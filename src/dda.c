@@ -2,7 +2,7 @@
  * dda: spectral and spatial statistics of point sets (thesis Sec. 2.2,
  * 6.2-6.3): Fourier power spectra, differential domain analysis, radial
  * mean and anisotropy, density and the radial distribution function,
- * averaged over the sets given.
+ * averaged over the sets given.  3-D sets: the density only.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -29,7 +29,8 @@ static const char usage[] =
     "\n"
     "  --fourier         power spectrum on integer frequencies (default)\n"
     "  --dda             differential domain analysis (Wei and Wang 2011)\n"
-    "  --density         minimum distance and density rho (Eq. 6.21)\n"
+    "  --density         minimum distance and density rho (Eq. 6.21);\n"
+    "                    the only analysis of 3-D sets (uniform, no -i)\n"
     "  --rdf             radial distribution function\n"
     "  -i, --importance M  map of adaptive sets (PNG, OpenEXR or a spec):\n"
     "                    --dda, --density and --rdf measure distances in\n"
@@ -291,6 +292,38 @@ static void spectrum(const struct opts *o, const struct pt_sets *ps,
 	spec_img_free(&im);
 }
 
+/* 3-D sets have the density only, and no importance map. */
+static void check_3d(const struct opts *o, const struct pt_sets *ps)
+{
+	static const char *const name[] = { "--fourier", "--dda",
+	    "--density", "--rdf" };
+	const char *file = ps->set[0].file;
+
+	if (ps->dims != 3)
+		return;
+	if (o->mode != DENSITY)
+		cli_die("%s: 3-dimensional points: %s is 2-D only; 3-D sets "
+		    "take --density", file, name[o->mode]);
+	if (o->imp != NULL)
+		cli_die("%s: 3-dimensional points: -i is 2-D only; the 3-D "
+		    "density is for uniform sets", file);
+}
+
+/* dmin and rho of one set, 2-D or 3-D. */
+static void min_distance(const struct opts *o, const struct pt_set *s,
+    const double *f, double *dmin, double *rho)
+{
+	int rc = s->dims == 3 ?
+	    dens_min_distance3(s->xy, s->n, o->torus, 1, dmin) :
+	    dens_min_distance(s->xy, s->n, f, o->torus, 1, dmin);
+
+	if (rc < 0) {
+		frs_fail_context(s->file);
+		cli_die_lib();
+	}
+	*rho = s->dims == 3 ? dens_rho3(*dmin, s->n) : dens_rho(*dmin, s->n);
+}
+
 static void density(const struct opts *o, const struct pt_sets *ps,
     const struct frs_imap *map, FILE *out)
 {
@@ -303,12 +336,8 @@ static void density(const struct opts *o, const struct pt_sets *ps,
 		if (s->n < 2)
 			cli_die("%s: the density needs 2 points or more",
 			    s->file);
-		if (dens_min_distance(s->xy, s->n, f, o->torus, 1, &dmin) < 0) {
-			frs_fail_context(s->file);
-			cli_die_lib();
-		}
+		min_distance(o, s, f, &dmin, &rho);
 		free(f);
-		rho = dens_rho(dmin, s->n);
 		sd += dmin, sr += rho, sn += (double)s->n;
 		fprintf(out, "%zu\t%zu\t%.9g\t%.9g\t%s\n", i, s->n, dmin, rho,
 		    s->file);
@@ -357,9 +386,11 @@ int main(int argc, char **argv)
 	cli_init("dda", usage);
 	parse(argc, argv, &o);
 	cli_options_done();
+	ps.max_dims = 3;
 	for (int i = optind; i < argc; i++)
 		if (pt_sets_add(&ps, argv[i], o.per) < 0)
 			cli_die_lib();
+	check_3d(&o, &ps);
 	if (o.imp && imap_load(o.imp, o.mw, o.mh, 0, &map) < 0)
 		cli_die_lib();
 	if (outfile_open(&of, cli.out, 0) < 0)

@@ -1,6 +1,7 @@
 /*
  * discrepancy: D2 and Dinf of 2-D point sets for the shape classes of
- * the thesis (Sec. 6.2), one table row per point count (Eq. 6.3).
+ * the thesis (Sec. 6.2), and of 3-D sets for the star class, one table
+ * row per point count (Eq. 6.3).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -22,15 +23,18 @@ static const char usage[] =
     "                   [-S SEED] [-j N] [-q]\n"
     "                   [-o FILE] FILE...\n"
     "\n"
-    "  -c, --class C     star (default), rect, quad, half or circle\n"
+    "  -c, --class C     star (default), rect, quad, half or circle;\n"
+    "                    3-D sets: star only\n"
     "      --grid S      grid size: star 3000, rect 500, half 3000 border\n"
-    "                    points per side (thesis); with --exact, Dinf on\n"
+    "                    points per side (thesis), 3-D star 100 (s^3\n"
+    "                    boxes, at most 1000); with --exact, Dinf on\n"
     "                    this grid instead of the exact Dinf\n"
     "      --shapes K    random shapes per set for quad and circle\n"
     "                    (default 9000000)\n"
     "      --exact       closed-form D2 (star: Warnock; rect: all boxes)\n"
     "                    and exact Dinf over the critical boxes (star\n"
-    "                    O(n^1.5), rect O(n^3))\n"
+    "                    O(n^1.5), rect O(n^3)); 3-D star: D2 O(n^2),\n"
+    "                    Dinf O(n^3), at most 2048 points\n"
     "      --sets N      split every file into sets of N points\n"
     "      --per-set     a row per set instead of one per point count\n"
     "      --group G     a row per point count (n, default), per input\n"
@@ -67,8 +71,8 @@ static int one_set(void *arg, uint64_t b, uint64_t e)
 {
 	struct run *r = arg;
 	for (uint64_t i = b; i < e; i++)
-		if (disc_set(r->ctx, r->sets[i].xy, r->sets[i].n, 0,
-		    &r->res[i]) < 0)
+		if (disc_set_dims(r->ctx, r->sets[i].xy, r->sets[i].n,
+		    r->sets[i].dims, 0, &r->res[i]) < 0)
 			return frs_fail_context(r->sets[i].file);
 	return 0;
 }
@@ -151,6 +155,18 @@ static void group_rows(FILE *fp, const struct disc_opts *o, enum pt_group g,
 	free(done);
 }
 
+/* Every set before any work: a 3-D set with another class than star, or
+ * beyond the limits of the 3-D methods, stops the run naming its file. */
+static void check_sets(const struct disc_opts *o, const struct pt_set *sets,
+    size_t nsets)
+{
+	for (size_t i = 0; i < nsets; i++)
+		if (disc_check(o, sets[i].dims, sets[i].n) < 0) {
+			frs_fail_context(sets[i].file);
+			cli_die_lib();
+		}
+}
+
 int main(int argc, char **argv)
 {
 	struct disc_opts o = { .cls = DISC_STAR };
@@ -224,10 +240,14 @@ int main(int argc, char **argv)
 	o.seed = cli.seed;
 	cli_options_done();
 
+	ps.max_dims = 3;
 	for (int i = optind; i < argc; i++)
 		if (pt_sets_add(&ps, argv[i], per) < 0)
 			cli_die_lib();
 	sets = ps.set, nsets = ps.n;
+	if (ps.dims == 3 && !have_grid)
+		o.grid = DISC3_STAR_GRID;
+	check_sets(&o, sets, nsets);
 	if ((res = calloc(nsets, sizeof *res)) == NULL)
 		cli_die("no memory for %zu sets", nsets);
 	if ((run.ctx = disc_ctx_new(&o)) == NULL)
@@ -241,7 +261,8 @@ int main(int argc, char **argv)
 	} else {
 		pr.label = "discrepancy";
 		disc_set_progress(&pr);
-		if (disc_set(run.ctx, sets[0].xy, sets[0].n, 1, &res[0]) < 0) {
+		if (disc_set_dims(run.ctx, sets[0].xy, sets[0].n, sets[0].dims,
+		    1, &res[0]) < 0) {
 			frs_fail_context(sets[0].file);
 			cli_die_lib();
 		}
@@ -250,7 +271,8 @@ int main(int argc, char **argv)
 	disc_ctx_free(run.ctx);
 
 	method(&o, meth, sizeof meth);
-	tests = o.exact_d2 && o.exact_dinf ? 0.0 : disc_tests(&o);
+	tests = o.exact_d2 && o.exact_dinf ? 0.0 :
+	    disc_tests_dims(&o, ps.dims);
 	if (outfile_open(&of, cli.out, 0) < 0)
 		cli_die_lib();
 	if (per_set)

@@ -309,7 +309,7 @@ int main(int argc, char **argv)
 	int c, weights = 0, nopdf = 0;
 	const char *env = NULL;
 	size_t per = 0;
-	struct pt_sets s = { 0 };
+	struct pt_sets s = { .max_dims = 2 };	/* the integrands are 2-D */
 	struct outfile of;
 
 	cli_init("mc-error", usage);

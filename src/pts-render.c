@@ -17,10 +17,13 @@
 static const char usage[] =
     "usage: pts-render [-q] [-s SIZE] [-r R] [-i MAP] [--color] [-o FILE] [PTS]\n"
     "                  [--log] [--srgb] [--equirect] [--format png|pnm]\n"
+    "                  [--axes xy|xz|yz]\n"
     "\n"
     "  PTS                 a point file, binary or text (default: standard\n"
     "                      input, also '-'); x, y are its first two\n"
     "                      coordinates, y growing downward\n"
+    "      --axes AB       the coordinates drawn across and down: xy\n"
+    "                      (default), or xz or yz of a 3-D (or higher) set\n"
     "  -s, --size SIZE     image size, N (NxN) or WxH (default 512)\n"
     "  -r, --radius R      dot radius in pixels (default 1.5 * W / 512,\n"
     "                      at least 0.7)\n"
@@ -45,7 +48,7 @@ static const char usage[] =
 
 enum {
 	OPT_LOG = OPT_FIRST_PRIVATE, OPT_COLOR, OPT_SRGB, OPT_EQUIRECT,
-	OPT_FORMAT
+	OPT_FORMAT, OPT_AXES
 };
 
 static const struct option longopts[] = {
@@ -58,6 +61,7 @@ static const struct option longopts[] = {
 	{ "srgb", no_argument, NULL, OPT_SRGB },
 	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
 	{ "format", required_argument, NULL, OPT_FORMAT },
+	{ "axes", required_argument, NULL, OPT_AXES },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
@@ -82,6 +86,20 @@ static enum fmt format_of(enum fmt f, const char *path)
 	return FMT_PNG;
 }
 
+/* --axes: the coordinate indices drawn across (a[0]) and down (a[1]). */
+static void parse_axes(const char *s, unsigned a[2])
+{
+	static const char *const name[] = { "xy", "xz", "yz" };
+	static const unsigned pair[][2] = { { 0, 1 }, { 0, 2 }, { 1, 2 } };
+
+	for (int k = 0; k < 3; k++)
+		if (strcmp(s, name[k]) == 0) {
+			a[0] = pair[k][0], a[1] = pair[k][1];
+			return;
+		}
+	cli_usage_error("--axes: '%s' is not xy, xz or yz", s);
+}
+
 int main(int argc, char **argv)
 {
 	const char *in = "-", *imp = NULL, *name;
@@ -93,6 +111,8 @@ int main(int argc, char **argv)
 	struct outfile o;
 	enum fmt format = FMT_NONE;
 	size_t ncol;
+	unsigned axis[2] = { 0, 1 };
+	const char *axes = "xy";
 	int rc;
 
 	cli_init("pts-render", usage);
@@ -119,6 +139,10 @@ int main(int argc, char **argv)
 			break;
 		case OPT_EQUIRECT:
 			flags |= IMAP_EQUIRECT;
+			break;
+		case OPT_AXES:
+			parse_axes(optarg, axis);
+			axes = optarg;
 			break;
 		case OPT_FORMAT:
 			if (strcmp(optarg, "png") == 0)
@@ -161,6 +185,9 @@ int main(int argc, char **argv)
 	if (p.dims < 2)
 		cli_die("%s: points have %u coordinate%s, need 2", name, p.dims,
 		    p.dims == 1 ? "" : "s");
+	if (axis[1] >= p.dims)
+		cli_die("%s: --axes %s: points have %u coordinates, no z; "
+		    "2-D sets take only xy", name, axes, p.dims);
 
 	if (raster_alloc(&r, w, h, color ? 3 : 1) < 0)
 		cli_die_lib();
@@ -181,7 +208,7 @@ int main(int argc, char **argv)
 
 		if (color)
 			raster_ramp(k, p.n, ink);
-		raster_disc(&r, x[0] * w, x[1] * h, rad, ink);
+		raster_disc(&r, x[axis[0]] * w, x[axis[1]] * h, rad, ink);
 	}
 	pts_free(&p);
 

@@ -1,7 +1,7 @@
 /*
- * Brute-force references of the grid discrepancies (test_disc and
- * test/hard/test_hard_disc): every corner or box of the grid, every
- * point, in long double.  The oracle the fast methods of disc.c are
+ * Brute-force references of the grid discrepancies (test_disc,
+ * test_disc3 and test/hard/test_hard_disc): every corner or box of the
+ * grid, every point, in long double.  The oracle the fast methods of disc.c are
  * checked against.
  */
 #ifndef FRS_DISCREF_H
@@ -53,6 +53,30 @@ static inline void ref_rect_grid(const double *xy, size_t n, uint32_t s,
 		*dinf = d > *dinf ? d : *dinf;
 	}
 	*d2 = (double)sqrtl(sum / cnt);
+}
+
+/* 3-D star grid: corners (i/s, j/s, l/s), i, j, l = 1..s, boxes
+ * [0,x) x [0,y) x [0,z), every point counted in every box. */
+static inline void ref_star_grid3(const double *xyz, size_t n, uint32_t s,
+    double *d2, double *dinf)
+{
+	long double sum = 0;
+
+	*dinf = 0;
+	for (uint32_t i = 1; i <= s; i++)
+	for (uint32_t j = 1; j <= s; j++)
+	for (uint32_t l = 1; l <= s; l++) {
+		double x = (double)i / s, y = (double)j / s, z = (double)l / s;
+		double d;
+		size_t c = 0;
+		for (size_t k = 0; k < n; k++)
+			c += xyz[3 * k] < x && xyz[3 * k + 1] < y &&
+			    xyz[3 * k + 2] < z;
+		d = fabs((double)c / (double)n - x * y * z);
+		sum += (long double)d * d;
+		*dinf = d > *dinf ? d : *dinf;
+	}
+	*d2 = (double)sqrtl(sum / ((long double)s * s * s));
 }
 
 #endif

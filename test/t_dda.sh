@@ -85,3 +85,75 @@ expect_fail "--sets not dividing" 1 "not a whole number of sets" "$T/o3" \
     dda --sets 100 -o "$T/o3" "$T/grid.pts"
 expect_fail "point on zero importance" 1 "grid.pts" "$T/o4" \
     dda --dda -i blob:sigma=0.01 -o "$T/o4" "$T/grid.pts"
+
+# ---- 3-D sets: the density ---------------------------------------------
+
+# A regular 8^3 grid: dmin = 1/8, rho = (1/m) / r_u3(m^3) = 2^(-1/6).
+awk 'BEGIN { m = 8; for (i = 0; i < m; i++) for (j = 0; j < m; j++)
+	for (k = 0; k < m; k++) printf "%.17g %.17g %.17g\n", (i + 0.5) / m,
+	    (j + 0.5) / m, (k + 0.5) / m }' >"$T/g3.txt"
+for t in "" --torus; do
+	check "3-D --density ${t:-plain}" dda --density $t -o "$T/dg3" "$T/g3.txt"
+	near "$(awk -F '\t' 'NR == 2 { print $3 }' "$T/dg3")" 0.125 1e-8 &&
+	    near "$(awk -F '\t' 'NR == 2 { print $4 }' "$T/dg3")" 0.890898718 1e-8 &&
+	    ok "3-D grid ${t:-plain}: dmin 1/8, rho 2^(-1/6)" || nok "3-D grid ${t:-plain}: $(sed -n 2p "$T/dg3")"
+done
+
+# Uniform random 3-D sets, 10 of 1000: E[rho] = 0.622 n^(-1/3) = 0.0622,
+# 36 % per set (dda(1)); the mean of 10 within 4.5 standard errors.
+awk 'BEGIN { srand(11); for (i = 0; i < 10000; i++)
+	printf "%.17g %.17g %.17g\n", rand(), rand(), rand() }' >"$T/r3.txt"
+for t in "" --torus; do
+	dda --density $t --sets 1000 -o "$T/dr3" "$T/r3.txt" 2>"$T/err"
+	awk -F '\t' '$1 == "mean" { exit !($2 == 1000 && $4 > 0.030 && $4 < 0.094) }' \
+	    "$T/dr3" && [ "$(wc -l <"$T/dr3")" -eq 12 ] &&
+	    ok "3-D random ${t:-plain}: mean rho of 10 sets near 0.062" ||
+	    nok "3-D random $t: $(tail -n 1 "$T/dr3")"
+done
+# dmin against every pair (awk), with a duplicate and a pair across
+# the faces (0.004 apart on the torus).
+awk 'BEGIN { srand(12); for (i = 0; i < 150; i++)
+	printf "%.17g %.17g %.17g\n", rand(), rand(), rand()
+	print "0.002 0.5 0.5"; print "0.998 0.5 0.5" }' >"$T/s3.txt"
+bmin() {
+	awk -v t="$2" 'BEGIN { n = 0; b = 9 } { x[n] = $1; y[n] = $2; z[n] = $3; n++ }
+	    function f(d) { d = d < 0 ? -d : d; return t && d > 0.5 ? 1 - d : d }
+	    END { for (i = 0; i < n; i++) for (j = i + 1; j < n; j++) {
+		dx = f(x[i] - x[j]); dy = f(y[i] - y[j]); dz = f(z[i] - z[j])
+		d = dx * dx + dy * dy + dz * dz; if (d < b) b = d }
+		printf "%.12g\n", sqrt(b) }' "$1"
+}
+for t in 0 1; do
+	o=; [ $t = 1 ] && o=--torus
+	dda --density $o -o "$T/ds3" "$T/s3.txt" 2>"$T/err"
+	near "$(awk -F '\t' 'NR == 2 { print $3 }' "$T/ds3")" "$(bmin "$T/s3.txt" $t)" 1e-8 &&
+	    ok "3-D dmin ${o:-plain} = brute force" ||
+	    nok "3-D dmin $o: $(sed -n 2p "$T/ds3"), brute $(bmin "$T/s3.txt" $t)"
+done
+near "$(awk -F '\t' 'NR == 2 { print $3 }' "$T/ds3")" 0.004 1e-9 &&
+    ok "3-D --torus wraps across the faces" || nok "3-D torus wrap: $(sed -n 2p "$T/ds3")"
+{ cat "$T/s3.txt"; sed -n 7p "$T/s3.txt"; } >"$T/dup3.txt"
+dda --density -o "$T/dd3" "$T/dup3.txt" 2>"$T/err"
+[ "$(awk -F '\t' 'NR == 2 { print $3 }' "$T/dd3")" = 0 ] &&
+    ok "3-D duplicate point: dmin 0" || nok "3-D duplicate: $(sed -n 2p "$T/dd3")"
+dda --density --sets 1000 -j 1 -o "$T/j31" "$T/r3.txt" 2>"$T/err"
+dda --density --sets 1000 -j 2 -o "$T/j32" "$T/r3.txt" 2>>"$T/err"
+cmp -s "$T/j31" "$T/j32" && ok "3-D --density: -j 1 = -j 2" || nok "3-D --density: -j"
+
+# 3-D errors: exit 1, the file named, no output.
+for m in --fourier --dda --rdf; do
+	expect_fail "3-D $m" 1 "g3.txt: 3-dimensional points: $m is 2-D only" \
+	    "$T/o3" dda $m -o "$T/o3" "$T/g3.txt"
+done
+expect_fail "3-D default analysis" 1 "g3.txt: 3-dimensional points: --fourier" \
+    "$T/o3" dda -o "$T/o3" "$T/g3.txt"
+expect_fail "3-D --density -i" 1 "g3.txt: 3-dimensional points: -i is 2-D only" \
+    "$T/o3" dda --density -i blob -o "$T/o3" "$T/g3.txt"
+expect_fail "2-D then 3-D" 1 "g3.txt: 3-dimensional points after 2-dimensional" \
+    "$T/o3" dda --density -o "$T/o3" "$T/grid.pts" "$T/g3.txt"
+printf '0.1 0.2 0.3 0.4\n0.5 0.6 0.7 0.8\n' >"$T/d4.txt"
+expect_fail "4-D points" 1 "d4.txt: 4-dimensional points" "$T/o3" \
+    dda --density -o "$T/o3" "$T/d4.txt"
+printf '0.1 0.2 0.3\n' >"$T/one3.txt"
+expect_fail "3-D one point" 1 "one3.txt: the density needs 2 points" "$T/o3" \
+    dda --density -o "$T/o3" "$T/one3.txt"

@@ -94,14 +94,14 @@ check "-o FILE" discrepancy -c star --grid 100 -o "$T/out.tsv" "$T/h.pts"
 [ -s "$T/out.tsv" ] && ok "-o wrote the table" || nok "-o wrote the table"
 
 # Bad input: exit 1, the file named, no output.
-printf '#pts dims=3 extra=0 count=1\n0.1 0.2 0.3\n' >"$T/three.txt"
+printf '#pts dims=4 extra=0 count=1\n0.1 0.2 0.3 0.4\n' >"$T/four.txt"
 printf '0.1 0.2\n1.5 0.2\n' >"$T/out.txt"
 printf '#pts dims=2 extra=0 count=0\n' >"$T/empty.txt"
 printf 'junk\n' >"$T/junk.txt"
 expect_fail "missing file" 1 "$T/nope.pts" "$T/o1" \
     discrepancy -o "$T/o1" "$T/nope.pts"
-expect_fail "3-D points" 1 "three.txt: 3-dimensional points" "$T/o2" \
-    discrepancy -o "$T/o2" "$T/three.txt"
+expect_fail "4-D points" 1 "four.txt: 4-dimensional points; 2 or 3 are needed" \
+    "$T/o2" discrepancy -o "$T/o2" "$T/four.txt"
 expect_fail "coordinate outside [0,1)" 1 "out.txt" "$T/o3" \
     discrepancy -o "$T/o3" "$T/out.txt"
 expect_fail "no points" 1 "empty.txt: no points" "$T/o4" \
@@ -126,3 +126,140 @@ expect_fail "--grid 1" 2 "--grid" - discrepancy --grid 1 "$T/h.pts"
 expect_fail "no files" 2 "no point files" - discrepancy -c star
 expect_fail "--group bad" 2 "--group: 'x' is not" - \
     discrepancy --group x "$T/h.pts"
+
+# ---- 3-D sets: the star class in [0,1)^3 -----------------------------
+
+# pts3 N SEED: N uniform random points in the unit cube, text.
+pts3() {
+	awk -v n="$1" -v s="$2" 'BEGIN { srand(s); for (i = 0; i < n; i++)
+		printf "%.17g %.17g %.17g\n", rand(), rand(), rand() }'
+}
+pts3 64 1 >"$T/c64.txt"
+pts3 12 2 >"$T/c12.txt"
+pts3 20 3 >"$T/c20.txt"
+# ties and points on grid lines: coordinates in eighths
+awk 'BEGIN { srand(4); for (i = 0; i < 30; i++)
+	printf "%.17g %.17g %.17g\n", int(rand() * 8) / 8, rand(), int(rand() * 4) / 4 }' \
+    >"$T/ties.txt"
+
+check "3-D star, default grid" discrepancy -o "$T/g3" "$T/c64.txt"
+[ "$(col class "$T/g3")" = star ] && [ "$(col n "$T/g3")" = 64 ] &&
+    [ "$(col method "$T/g3")" = grid100 ] && [ "$(col shapes "$T/g3")" = 1000000 ] &&
+    ok "3-D: grid100, 100^3 boxes" || nok "3-D grid row: $(sed -n 2p "$T/g3")"
+check "3-D --exact" discrepancy --exact -o "$T/e3" "$T/c64.txt"
+[ "$(col method "$T/e3")" = exact ] && [ "$(col shapes "$T/e3")" = 0 ] &&
+    ok "3-D --exact: method exact, 0 shapes" || nok "3-D exact row: $(sed -n 2p "$T/e3")"
+awk -F '\t' 'NR == 2 { exit !($4 > 0 && $4 <= $6) }' "$T/e3" &&
+    ok "3-D: 0 < D2 <= Dinf" || nok "3-D: D2, Dinf $(sed -n 2p "$T/e3")"
+check "3-D --exact --grid" discrepancy --exact --grid 50 -o "$T/eg3" "$T/c64.txt"
+[ "$(col method "$T/eg3")" = exact+grid50 ] && [ "$(col shapes "$T/eg3")" = 125000 ] &&
+    [ "$(col D2 "$T/eg3")" = "$(col D2 "$T/e3")" ] &&
+    ok "3-D --exact --grid: exact D2, grid Dinf" || nok "3-D exact+grid: $(sed -n 2p "$T/eg3")"
+
+# Warnock's D2 in 3-D, evaluated directly (every ordered pair) by awk.
+warnock3() {
+	awk 'BEGIN { n = 0 } { x[n] = $1; y[n] = $2; z[n] = $3; n++ } END {
+		for (i = 0; i < n; i++) {
+			s1 += (1 - x[i] ^ 2) * (1 - y[i] ^ 2) * (1 - z[i] ^ 2)
+			for (j = 0; j < n; j++) {
+				u = 1 - (x[i] > x[j] ? x[i] : x[j])
+				v = 1 - (y[i] > y[j] ? y[i] : y[j])
+				w = 1 - (z[i] > z[j] ? z[i] : z[j])
+				s2 += u * v * w
+			}
+		}
+		printf "%.12g\n", sqrt(1 / 27 - s1 / (4 * n) + s2 / (n * n)) }' "$1"
+}
+near "$(col D2 "$T/e3")" "$(warnock3 "$T/c64.txt")" 1e-7 &&
+    ok "3-D exact D2 = Warnock's sum" ||
+    nok "3-D exact D2 $(col D2 "$T/e3"), direct $(warnock3 "$T/c64.txt")"
+
+# Dinf over every critical corner, both counts, by awk.
+dinf3() {
+	awk 'BEGIN { n = 0 } { x[n] = $1; y[n] = $2; z[n] = $3; n++ } END {
+		x[n] = y[n] = z[n] = 1
+		for (i = 0; i <= n; i++) for (j = 0; j <= n; j++) for (l = 0; l <= n; l++) {
+			a = x[i]; b = y[j]; c = z[l]; v = a * b * c; o = 0; k = 0
+			for (p = 0; p < n; p++) {
+				o += x[p] < a && y[p] < b && z[p] < c
+				k += x[p] <= a && y[p] <= b && z[p] <= c
+			}
+			if (v - o / n > m) m = v - o / n
+			if (k / n - v > m) m = k / n - v
+		}
+		printf "%.12g\n", m }' "$1"
+}
+for f in c12 ties; do
+	discrepancy --exact -o "$T/d3" "$T/$f.txt"
+	near "$(col Dinf "$T/d3")" "$(dinf3 "$T/$f.txt")" 1e-8 &&
+	    ok "3-D exact Dinf = brute force ($f)" ||
+	    nok "3-D exact Dinf ($f): $(col Dinf "$T/d3"), brute $(dinf3 "$T/$f.txt")"
+done
+
+# The grid by awk: s^3 corners, every point.
+grid3() {
+	awk -v s="$2" 'BEGIN { n = 0 } { x[n] = $1; y[n] = $2; z[n] = $3; n++ } END {
+		for (i = 1; i <= s; i++) for (j = 1; j <= s; j++) for (l = 1; l <= s; l++) {
+			c = 0
+			for (p = 0; p < n; p++)
+				c += x[p] < i / s && y[p] < j / s && z[p] < l / s
+			d = c / n - (i / s) * (j / s) * (l / s); d = d < 0 ? -d : d
+			q += d * d; if (d > m) m = d
+		}
+		printf "%.12g %.12g\n", sqrt(q / (s * s * s)), m }' "$1"
+}
+for f in c20 ties; do
+	discrepancy --grid 8 -o "$T/gg" "$T/$f.txt"
+	r=$(grid3 "$T/$f.txt" 8)
+	near "$(col D2 "$T/gg")" "${r% *}" 1e-7 && near "$(col Dinf "$T/gg")" "${r#* }" 1e-8 &&
+	    ok "3-D grid = brute force ($f)" ||
+	    nok "3-D grid ($f): $(col D2 "$T/gg") $(col Dinf "$T/gg"), brute $r"
+done
+
+# Sets, threads, standard input.
+pts3 1024 5 >"$T/c1024.txt"
+for m in "" "--exact" "--grid 30"; do
+	discrepancy $m --sets 256 -j 1 --per-set "$T/c1024.txt" >"$T/a" 2>"$T/err"
+	discrepancy $m --sets 256 -j 2 --per-set "$T/c1024.txt" >"$T/b" 2>>"$T/err"
+	cmp -s "$T/a" "$T/b" && [ "$(wc -l <"$T/a")" -eq 5 ] &&
+	    ok "3-D ${m:-grid}: -j 1 = -j 2, 4 sets" || nok "3-D ${m:-grid}: -j or --sets"
+done
+discrepancy --exact -j 1 "$T/c1024.txt" >"$T/a" 2>"$T/err"
+discrepancy --exact -j 2 "$T/c1024.txt" >"$T/b" 2>>"$T/err"
+cmp -s "$T/a" "$T/b" && ok "3-D --exact one set: -j 1 = -j 2" || nok "3-D one set -j"
+discrepancy --exact - <"$T/c64.txt" >"$T/x" 2>"$T/err"
+cmp -s "$T/x" "$T/e3" && ok "3-D text on standard input" || nok "3-D on stdin"
+# an extra column (a density) is not a coordinate
+awk 'BEGIN { print "#pts dims=3 extra=1" } { print $0, 7 }' "$T/c64.txt" >"$T/c64w.txt"
+discrepancy --exact "$T/c64w.txt" >"$T/x" 2>"$T/err"
+cmp -s "$T/x" "$T/e3" && ok "3-D with an extra column" || nok "3-D extra column"
+
+# Random sets: mean D2^2 near (2^-3 - 3^-3)/n (20 sets of 128: the
+# standard error is about 10 %).
+pts3 2560 6 >"$T/c2560.txt"
+discrepancy --exact --sets 128 --per-set "$T/c2560.txt" >"$T/p3"
+awk -F '\t' 'NR > 1 { s += $4 * $4; k++ } END {
+	e = (1 / 8 - 1 / 27) / 128; exit !(k == 20 && s / k > 0.6 * e && s / k < 1.4 * e) }' \
+    "$T/p3" && ok "3-D random: mean D2^2 = (1/8 - 1/27)/n" ||
+    nok "3-D random: mean D2^2 $(awk -F '\t' 'NR > 1 { s += $4 * $4; k++ } END { print s / k }' "$T/p3")"
+
+# 3-D errors: exit 1, the file and the problem named, no output.
+for c in rect quad half circle; do
+	expect_fail "3-D -c $c" 1 "c64.txt: class $c is 2-D only; 3-D sets take -c star" \
+	    "$T/o3d" discrepancy -c $c -o "$T/o3d" "$T/c64.txt"
+done
+expect_fail "2-D then 3-D" 1 "c64.txt: 3-dimensional points after 2-dimensional" \
+    "$T/o3d" discrepancy -o "$T/o3d" "$T/h.pts" "$T/c64.txt"
+expect_fail "3-D then 2-D" 1 "h.pts: 2-dimensional points after 3-dimensional" \
+    "$T/o3d" discrepancy -o "$T/o3d" "$T/c64.txt" "$T/h.pts"
+pts3 4097 7 >"$T/c4097.txt"
+expect_fail "3-D exact Dinf above 4096 points" 1 \
+    "c4097.txt: 4097 points: the exact 3-D Dinf" "$T/o3d" \
+    discrepancy --exact -o "$T/o3d" "$T/c4097.txt"
+grep -q "use --grid" "$T/err" && ok "the limit suggests --grid" || nok "limit message"
+check "3-D 4097 points, --exact --grid" discrepancy --exact --grid 20 -o "$T/o3g" "$T/c4097.txt"
+expect_fail "3-D --grid 1001" 1 "c64.txt: --grid 1001" "$T/o3d" \
+    discrepancy --grid 1001 -o "$T/o3d" "$T/c64.txt"
+# a failure in a later set leaves no output either
+expect_fail "3-D bad set among good" 1 "c4097.txt" "$T/o3d" \
+    discrepancy --exact -o "$T/o3d" "$T/c64.txt" "$T/c4097.txt"

@@ -84,6 +84,34 @@ pts-render -r 3 "$T/three.txt" -o "$T/three.pgm" 2>"$T/err" &&
     cmp -s "$T/one.pgm" "$T/three.pgm" && ok "3-D points draw x, y" ||
     nok "3-D points draw x, y"
 
+# --axes: which two coordinates of a 3-D set are drawn, across and down.
+# The point (0.25, 0.9, 0.75) seen along y (xz) is the dot of one.txt.
+echo "0.25 0.9 0.75" >"$T/xz1.txt"
+pts-render -r 3 --axes xz "$T/xz1.txt" -o "$T/xz1.pgm" 2>"$T/err" &&
+    cmp -s "$T/one.pgm" "$T/xz1.pgm" && ok "--axes xz: the dot at (x, z)" ||
+    nok "--axes xz: the dot at (x, z)"
+echo "0.9 0.25 0.75" >"$T/yz1.txt"
+pts-render -r 3 --axes yz "$T/yz1.txt" -o "$T/yz1.pgm" 2>"$T/err" &&
+    cmp -s "$T/one.pgm" "$T/yz1.pgm" && ok "--axes yz: the dot at (y, z)" ||
+    nok "--axes yz: the dot at (y, z)"
+# A random 3-D set against 2-D files of the coordinates drawn: the same
+# PNG bytes, with --color (order) and a map.
+awk 'BEGIN { srand(3); for (i = 0; i < 500; i++)
+	printf "%.17g %.17g %.17g\n", rand(), rand(), rand() }' >"$T/X3.txt"
+for ax in xy xz yz; do
+	case $ax in xy) c='$1, $2' ;; xz) c='$1, $3' ;; yz) c='$2, $3' ;; esac
+	awk "{ print $c }" "$T/X3.txt" >"$T/X3$ax.txt"
+	pts-render --color -i blob --axes $ax "$T/X3.txt" -o "$T/a3.png" 2>"$T/err" &&
+	    pts-render --color -i blob "$T/X3$ax.txt" -o "$T/b3.png" 2>>"$T/err" &&
+	    cmp -s "$T/a3.png" "$T/b3.png" && ok "--axes $ax = the 2-D file of those columns" ||
+	    nok "--axes $ax = the 2-D file of those columns"
+done
+cmp -s "$T/X3xy.txt" "$T/X3xz.txt" && nok "--axes: the test files differ" ||
+    ok "--axes: the test files differ"
+pts-render --axes xy "$T/X3.txt" -o "$T/a3.png" 2>"$T/err" &&
+    pts-render "$T/X3.txt" -o "$T/b3.png" 2>>"$T/err" && cmp -s "$T/a3.png" "$T/b3.png" &&
+    ok "--axes xy is the default" || nok "--axes xy is the default"
+
 # The default radius scales with the width: 1.5 at 512, 3 at 1024, so
 # the darkness grows 4 times.
 pts-render -s 1024 "$T/one.txt" -o "$T/big.pgm" 2>"$T/err" &&
@@ -170,6 +198,12 @@ expect_fail "unknown option" 2 "usage" "$T/o11.png" \
     pts-render --frobnicate "$T/X.txt" -o "$T/o11.png"
 expect_fail "two inputs" 2 "one point file" "$T/o12.png" \
     pts-render "$T/X.txt" "$T/X.txt" -o "$T/o12.png"
+expect_fail "--axes xz of a 2-D set" 1 "X.txt: --axes xz: points have 2 coordinates" \
+    "$T/o18.png" pts-render --axes xz "$T/X.txt" -o "$T/o18.png"
+expect_fail "--axes yz of a 2-D set" 1 "one.txt: --axes yz" "$T/o19.png" \
+    pts-render --axes yz "$T/one.txt" -o "$T/o19.png"
+expect_fail "--axes zx" 2 "--axes: 'zx' is not xy, xz or yz" "$T/o20.png" \
+    pts-render --axes zx "$T/X3.txt" -o "$T/o20.png"
 expect_fail "--format bmp" 2 "--format" "$T/o13.png" \
     pts-render --format bmp "$T/X.txt" -o "$T/o13.png"
 expect_fail "--log without -i" 2 "need -i" "$T/o14.png" \

@@ -396,6 +396,260 @@ int dens_min_distance(const double *xy, size_t n, const double *f, int torus,
 	return 0;
 }
 
+/* ---- 3-D sets: minimum distance ----------------------------------------- */
+
+double dens_spacing3(double n)
+{
+	return cbrt(sqrt(2.0) / n);
+}
+
+double dens_rho3(double dmin, size_t n)
+{
+	return dmin / dens_spacing3((double)n);
+}
+
+struct pt3 {
+	double x[3];
+	size_t c[3];		/* cell per axis */
+};
+
+struct cells3 {
+	size_t n, g;
+	int torus;
+	size_t *start;		/* g^3 + 1 offsets into p */
+	struct pt3 *p;		/* sorted by cell (x fastest), then index */
+};
+
+static void cells3_free(struct cells3 *gr)
+{
+	free(gr->start);
+	free(gr->p);
+}
+
+static size_t cell3_index(const size_t c[3], size_t g)
+{
+	return (c[2] * g + c[1]) * g + c[0];
+}
+
+static int check_point3(const double *xyz, size_t i)
+{
+	const double *p = &xyz[3 * i];
+
+	if (!(p[0] >= 0 && p[0] < 1 && p[1] >= 0 && p[1] < 1 && p[2] >= 0 &&
+	    p[2] < 1))
+		return frs_fail("point %zu (%.17g, %.17g, %.17g) is outside "
+		    "[0, 1)^3", i, p[0], p[1], p[2]);
+	return 0;
+}
+
+/* G = floor(cbrt(n / 2)) cells per axis (about 2 points a cell), the
+ * points counting-sorted by cell. */
+static int cells3_build(struct cells3 *gr, const double *xyz, size_t n,
+    int torus)
+{
+	size_t g = (size_t)floor(cbrt((double)n / 2)), cells;
+
+	gr->start = NULL;
+	gr->p = NULL;
+	if (xyz == NULL)
+		return frs_fail("no points");
+	for (size_t i = 0; i < n; i++)
+		if (check_point3(xyz, i) < 0)
+			return -1;
+	g = g < 1 ? 1 : g;
+	gr->n = n, gr->g = g, gr->torus = torus != 0;
+	cells = g * g * g;
+	gr->start = calloc(cells + 1, sizeof *gr->start);
+	gr->p = malloc(n * sizeof *gr->p);
+	if (gr->start == NULL || gr->p == NULL) {
+		cells3_free(gr);
+		return frs_fail("no memory for the cell grid of %zu points", n);
+	}
+	for (size_t i = 0; i < n; i++) {
+		struct pt3 q;
+		for (int a = 0; a < 3; a++)
+			q.c[a] = cell_of(xyz[3 * i + (size_t)a], g);
+		gr->start[cell3_index(q.c, g) + 1]++;
+	}
+	for (size_t c = 0; c < cells; c++)
+		gr->start[c + 1] += gr->start[c];
+	/* a cursor in start[c], shifted back afterwards (as in 2-D) */
+	for (size_t i = 0; i < n; i++) {
+		struct pt3 q;
+		for (int a = 0; a < 3; a++) {
+			q.x[a] = xyz[3 * i + (size_t)a];
+			q.c[a] = cell_of(q.x[a], g);
+		}
+		gr->p[gr->start[cell3_index(q.c, g)]++] = q;
+	}
+	for (size_t c = cells; c > 0; c--)
+		gr->start[c] = gr->start[c - 1];
+	gr->start[0] = 0;
+	return 0;
+}
+
+/* The key of density.h in 3-D: (xx + yy) + zz, each product rounded on
+ * its own, differences folded on the torus. */
+static inline double pair_key3(const struct pt3 *a, const struct pt3 *b,
+    int torus)
+{
+	double sq[3];
+
+	for (int k = 0; k < 3; k++) {
+		double d = a->x[k] - b->x[k];
+		if (torus) {
+			d = fabs(d);
+			if (d > 0.5)
+				d = 1 - d;
+		}
+		sq[k] = d * d;
+	}
+	return (sq[0] + sq[1]) + sq[2];
+}
+
+/* The offsets of one axis around cell c (cells3 and grid alike). */
+static void axis_window3(const struct cells3 *gr, size_t c, long long *lo,
+    long long *hi)
+{
+	long long g = (long long)gr->g;
+
+	if (gr->torus) {
+		*lo = -(g / 2);
+		*hi = g - 1 - g / 2;
+	} else {
+		*lo = -(long long)c;
+		*hi = g - 1 - (long long)c;
+	}
+}
+
+static size_t wrap3(const struct cells3 *gr, size_t c, long long o)
+{
+	long long g = (long long)gr->g, v = (long long)c + o;
+
+	return (size_t)(v < 0 ? v + g : v >= g ? v - g : v);
+}
+
+/* Pairs (s, t > s) with t in the cell at offset o of s's cell. */
+static double visit3(const struct cells3 *gr, size_t s, const long long o[3],
+    double best)
+{
+	const struct pt3 *q = &gr->p[s];
+	size_t c[3], cell, e;
+
+	for (int a = 0; a < 3; a++)
+		c[a] = wrap3(gr, q->c[a], o[a]);
+	cell = cell3_index(c, gr->g);
+	e = gr->start[cell + 1];
+	for (size_t t = gr->start[cell]; t < e; t++)
+		if (t > s) {
+			double k = pair_key3(q, &gr->p[t], gr->torus);
+			best = k < best ? k : best;
+		}
+	return best;
+}
+
+/* The cells of Chebyshev ring r around point s (each once, clipped to
+ * the windows); best shrinks as pairs are found. */
+static double ring3(const struct cells3 *gr, size_t s, long long r,
+    const long long lo[3], const long long hi[3], double best)
+{
+	long long o[3], b0[3], b1[3];
+
+	for (int a = 0; a < 3; a++)
+		b0[a] = -r > lo[a] ? -r : lo[a], b1[a] = r < hi[a] ? r : hi[a];
+	for (o[2] = b0[2]; o[2] <= b1[2]; o[2]++)
+		for (o[1] = b0[1]; o[1] <= b1[1]; o[1]++) {
+			if (o[2] == -r || o[2] == r || o[1] == -r || o[1] == r) {
+				for (o[0] = b0[0]; o[0] <= b1[0]; o[0]++)
+					best = visit3(gr, s, o, best);
+				continue;
+			}
+			if ((o[0] = -r) >= lo[0])
+				best = visit3(gr, s, o, best);
+			if ((o[0] = r) <= hi[0] && r != 0)
+				best = visit3(gr, s, o, best);
+		}
+	return best;
+}
+
+/* Smallest key of the pairs of sorted point s with later points, if
+ * below best: rings outward until their bound (as in 2-D: a cell at
+ * ring r lies (r - 1)/G away in one coordinate) passes best. */
+static double search3(const struct cells3 *gr, size_t s, double best)
+{
+	const struct pt3 *q = &gr->p[s];
+	long long lo[3], hi[3], rmax = 0;
+
+	for (int a = 0; a < 3; a++) {
+		axis_window3(gr, q->c[a], &lo[a], &hi[a]);
+		rmax = -lo[a] > rmax ? -lo[a] : rmax;
+		rmax = hi[a] > rmax ? hi[a] : rmax;
+	}
+	for (long long r = 0; r <= rmax; r++) {
+		if (ring_bound((size_t)r, gr->g, 1.0) > best)
+			break;
+		best = ring3(gr, s, r, lo, hi, best);
+	}
+	return best;
+}
+
+struct min3_job {
+	const struct cells3 *gr;
+	double start;		/* key of some pair: an upper bound */
+	double *best;		/* per chunk */
+};
+
+static int min3_chunk(void *ctx, uint64_t b, uint64_t e)
+{
+	struct min3_job *j = ctx;
+	double best = j->start;
+
+	for (uint64_t s = b; s < e && best > 0; s++)
+		best = search3(j->gr, (size_t)s, best);
+	j->best[b / CHUNK] = best;
+	return 0;
+}
+
+int dens_min_distance3(const double *xyz, size_t n, int torus, int par,
+    double *dmin)
+{
+	struct cells3 gr;
+	struct min3_job j;
+	size_t nchunks;
+	double best;
+	int rc;
+
+	if (n < 2)
+		return frs_fail("minimum distance: %zu point%s, at least 2 "
+		    "needed", n, n == 1 ? "" : "s");
+	if (dmin == NULL)
+		return frs_fail("minimum distance: no output");
+	if (cells3_build(&gr, xyz, n, torus) < 0)
+		return -1;
+	/* neighbours in cell order: an upper bound to start from */
+	j.gr = &gr;
+	j.start = HUGE_VAL;
+	for (size_t s = 1; s < n; s++) {
+		double k = pair_key3(&gr.p[s - 1], &gr.p[s], gr.torus);
+		j.start = k < j.start ? k : j.start;
+	}
+	nchunks = (n + CHUNK - 1) / CHUNK;
+	if ((j.best = malloc(nchunks * sizeof *j.best)) == NULL) {
+		cells3_free(&gr);
+		return frs_fail("no memory for %zu chunks", nchunks);
+	}
+	rc = run_chunks(n, min3_chunk, &j, par);
+	best = j.start;
+	for (size_t c = 0; rc == 0 && c < nchunks; c++)
+		best = j.best[c] < best ? j.best[c] : best;
+	free(j.best);
+	cells3_free(&gr);
+	if (rc < 0)
+		return -1;
+	*dmin = sqrt(best);
+	return 0;
+}
+
 /* ---- pair distance distribution of uniform points ---------------------- */
 
 double dens_rdf_limit(int torus)

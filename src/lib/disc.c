@@ -407,3 +407,61 @@ int disc_set(struct disc_ctx *c, const double *xy, size_t n, int par,
 		return disc_shapes_run(c->sh, xy, n, par, r);
 	}
 }
+
+int disc_check(const struct disc_opts *o, unsigned dims, size_t n)
+{
+	if (n == 0)
+		return frs_fail("no points");
+	if (dims == 2)
+		return 0;
+	if (dims != 3)
+		return frs_fail("%u-dimensional points; 2 or 3 are needed",
+		    dims);
+	if (o->cls != DISC_STAR)
+		return frs_fail("class %s is 2-D only; 3-D sets take -c star",
+		    disc_class_name(o->cls));
+	if (o->exact_d2 && n > DISC3_MAX_EXACT_D2)
+		return frs_fail("%zu points: the closed-form 3-D D2 takes "
+		    "O(n^2) time and is limited to %d points; leave out "
+		    "--exact", n, DISC3_MAX_EXACT_D2);
+	if (o->exact_dinf && n > DISC3_MAX_EXACT_N)
+		return frs_fail("%zu points: the exact 3-D Dinf takes O(n^3) "
+		    "time and is limited to %d points; use --grid S (with "
+		    "--exact: exact D2, Dinf on the grid)", n,
+		    DISC3_MAX_EXACT_N);
+	if (!o->exact_dinf && (o->grid < 2 || o->grid > DISC3_MAX_GRID))
+		return frs_fail("--grid %u: a 3-D grid has s^3 boxes and takes "
+		    "O(s^3) time; 2 to %d allowed", o->grid, DISC3_MAX_GRID);
+	return 0;
+}
+
+double disc_tests_dims(const struct disc_opts *o, unsigned dims)
+{
+	double s = o->grid;
+
+	return dims == 3 ? s * s * s : disc_tests(o);
+}
+
+/* 3-D star: the grid gives D2 and Dinf in one sweep; --exact replaces
+ * D2, and without a grid Dinf too. */
+static int set3(const struct disc_opts *o, const double *xyz, size_t n,
+    int par, struct disc_result *r)
+{
+	if (!o->exact_dinf && disc3_star_grid(xyz, n, o->grid, par, r) < 0)
+		return -1;
+	if (o->exact_dinf && disc3_star_dinf_exact(xyz, n, par, &r->dinf) < 0)
+		return -1;
+	if (o->exact_d2 &&
+	    (r->d2 = disc_star_l2_exact_k(xyz, n, 3, par)) < 0)
+		return -1;
+	return 0;
+}
+
+int disc_set_dims(struct disc_ctx *c, const double *x, size_t n,
+    unsigned dims, int par, struct disc_result *r)
+{
+	if (disc_check(&c->o, dims, n) < 0)
+		return -1;
+	return dims == 2 ? disc_set(c, x, n, par, r) :
+	    set3(&c->o, x, n, par, r);
+}

@@ -18,20 +18,41 @@ static int keep(struct pt_sets *s, double *b)
 	return 0;
 }
 
-/* The first extra column into an array of its own, and x y packed. */
+/* The first extra column into an array of its own, and the dims
+ * coordinates of each point packed. */
 static double *split(struct frs_points *p)
 {
-	size_t stride = 2 + p->extra;
+	size_t d = p->dims, stride = d + p->extra;
 	double *w = NULL;
 
 	if (p->extra && (w = malloc(p->n * sizeof *w)) == NULL)
 		return NULL;
 	for (size_t i = 0; p->extra && i < p->n; i++) {
-		w[i] = p->x[stride * i + 2];
-		p->x[2 * i] = p->x[stride * i],
-		p->x[2 * i + 1] = p->x[stride * i + 1];
+		w[i] = p->x[stride * i + d];
+		/* forward: the target never overtakes the source */
+		memmove(&p->x[d * i], &p->x[stride * i], d * sizeof *p->x);
 	}
 	return w;
+}
+
+/* The dimension of a file against what the caller and the files before
+ * allow. */
+static int check_dims(const struct pt_sets *s, const char *path,
+    unsigned dims)
+{
+	unsigned max = s->max_dims == 3 ? 3 : 2;
+
+	if (dims < 2 || dims > max)
+		return max == 2 ?
+		    frs_fail("%s: %u-dimensional points; 2 are needed", path,
+		    dims) :
+		    frs_fail("%s: %u-dimensional points; 2 or 3 are needed",
+		    path, dims);
+	if (s->dims != 0 && dims != s->dims)
+		return frs_fail("%s: %u-dimensional points after %u-dimensional "
+		    "ones; one run takes sets of one dimension", path, dims,
+		    s->dims);
+	return 0;
 }
 
 int pt_sets_add(struct pt_sets *s, const char *path, size_t per)
@@ -43,11 +64,9 @@ int pt_sets_add(struct pt_sets *s, const char *path, size_t per)
 
 	if (pts_read(path, &p) < 0)
 		return -1;
-	if (p.dims != 2) {
-		unsigned dims = p.dims;
+	if (check_dims(s, path, p.dims) < 0) {
 		pts_free(&p);
-		return frs_fail("%s: %u-dimensional points; 2 are needed", path,
-		    dims);
+		return -1;
 	}
 	if (p.n == 0) {
 		pts_free(&p);
@@ -74,11 +93,13 @@ int pt_sets_add(struct pt_sets *s, const char *path, size_t per)
 		free(w);
 		return frs_fail("no memory for %zu sets", s->n + k);
 	}
+	s->dims = p.dims;
 	for (size_t i = 0; i < k; i++) {
 		struct pt_set *t = &s->set[s->n++];
-		t->xy = p.x + 2 * per * i;
+		t->xy = p.x + (size_t)p.dims * per * i;
 		t->w = w ? w + per * i : NULL;
 		t->n = per;
+		t->dims = p.dims;
 		t->file = path;
 	}
 	return 0;
@@ -92,6 +113,7 @@ void pt_sets_free(struct pt_sets *s)
 	free(s->set);
 	s->buf = NULL, s->set = NULL;
 	s->n = s->nbuf = 0;
+	s->dims = 0;
 }
 
 int pt_group_parse(const char *s)

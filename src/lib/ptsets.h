@@ -1,6 +1,7 @@
 /*
- * Point sets for the analysis programs (discrepancy, dda): 2-D point
- * files read whole, each file one set or cut into sets of a fixed size.
+ * Point sets for the analysis programs (discrepancy, dda, mc-error):
+ * 2-D or 3-D point files read whole, each file one set or cut into sets
+ * of a fixed size.
  */
 #ifndef FRS_PTSETS_H
 #define FRS_PTSETS_H
@@ -8,10 +9,12 @@
 #include <stddef.h>
 
 struct pt_set {
-	const double *xy;	/* n points, x y packed */
+	const double *xy;	/* n points, dims coordinates each, packed
+				 * (x y, or x y z) */
 	const double *w;	/* the first extra value of each point (the
 				 * density of frs-sample --pdf), or NULL */
 	size_t n;
+	unsigned dims;		/* 2 or 3 */
 	const char *file;	/* the name given, for messages and tables */
 };
 
@@ -20,11 +23,18 @@ struct pt_sets {
 	size_t n;
 	double **buf;		/* one per file, owning the coordinates */
 	size_t nbuf;
+	unsigned max_dims;	/* set by the caller before the first add:
+				 * 3 accepts 2-D and 3-D files; 0 or 2 (the
+				 * default of a zeroed struct) 2-D only */
+	unsigned dims;		/* of every set so far; 0 before the first */
 };
 
-/* Read path ("-": standard input), 2-D points only (extra values but the
- * first are dropped), and append it as one set, or as sets of per points
- * (per > 0; the count must be a multiple).  An empty file is an error. */
+/* Read path ("-": standard input), points of 2 (or, with max_dims 3, 3)
+ * coordinates (extra values but the first are dropped), and append it as
+ * one set, or as sets of per points (per > 0; the count must be a
+ * multiple).  All files of one pt_sets have the same dimension: a file
+ * that differs from those before is an error naming it.  An empty file
+ * is an error. */
 int pt_sets_add(struct pt_sets *s, const char *path, size_t per);
 void pt_sets_free(struct pt_sets *s);
 
