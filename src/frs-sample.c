@@ -423,12 +423,20 @@ static frs_sampler *make_sampler(const struct opts *o, const frs_mask *mk,
 	return smp;
 }
 
-/* The setup of set 0, checked before any work; the repetition warning. */
+/* The setup of set 0, checked before any work; the repetition warning.
+ * The matrix's minmap or sorted lists, which the library prepares on
+ * first use, are prepared here, so that -v counts them in the setup and
+ * not in the thresholding. */
 static void first_setup(const struct opts *o, const frs_sampler *smp,
     struct frs_setup *s0)
 {
+	struct frs_prep view;
+
 	if (api_setup(smp, o->steps[o->nsteps - 1], cli.seed, s0) < 0)
 		cli_die("%s", frs_errmsg());
+	if (api_mask_prep(smp->mask, needs_minmap(o->algo),
+	    o->algo == FRS_SORTED ? api_sorted_block(s0) : 0, &view) < 0)
+		cli_die("%s: %s", o->matrix, frs_errmsg());
 	if ((double)s0->n > frs_unique(s0))
 		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.0f without repetition, thesis "
