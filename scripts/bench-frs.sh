@@ -22,6 +22,30 @@ else
 	NS="0 4 8 12 16 20 24"
 fi
 
+# row NAME LOG2N ALGO MAXNAIVE ARGS...: one implementation on one thread
+# and on all, a table row each; the naive time of the same n (set by its
+# one-thread row, skipped past 2^MAXNAIVE) gives the ratio.
+row() {
+	name=$1 e=$2 a=$3 maxnaive=$4
+	shift 4
+	[ "$a" = naive ] && naive=""
+	[ "$a" = naive ] && [ "$e" -gt "$maxnaive" ] && return 0
+	for j in 1 $ALL; do
+		$TIME -f "%e" -o "$T/t" "$FRS" -q "$@" -n $((1 << e)) -a "$a" \
+		    -j $j -v -o /dev/null 2>"$T/v"
+		line=$(grep 'samples (' "$T/v")
+		cnt=$(echo "$line" | awk '{ print $2 }')
+		th=$(echo "$line" | sed 's/.*thresholding \([0-9.]*\) s.*/\1/')
+		[ "$a" = naive ] && [ $j = 1 ] && naive=$th
+		awk -v m="$name" -v e="$e" -v a="$a" -v j=$j -v c="$cnt" -v t="$th" \
+		    -v p="$(cat "$T/t")" -v nv="$naive" 'BEGIN {
+			r = (nv != "" && t > 0) ? sprintf("%.1f", nv / t) : "-"
+			rate = (t > 0) ? c / t / 1e6 : 0
+			printf "%-7s %-6s %-7s %3s %10d %11.6f %9.1f %9.2f %9s\n", m, e, a, j, c, t, rate, p, r }'
+		[ "$j" = "$ALL" ] && break
+	done
+}
+
 echo "frs-sample: seconds to threshold (-v) and whole process, S_M 2048, sigma 8"
 printf '%-7s %-6s %-7s %3s %10s %11s %9s %9s %9s\n' map log2n algo thr \
     samples threshold_s Msamp/s process_s vs_naive
@@ -29,25 +53,9 @@ for map in $MAPS; do
 	imp=$map
 	[ "$map" = sunset ] && imp=$T/sunset.exr
 	for e in $NS; do
-		n=$((1 << e))
-		naive=""
+		# Naive visits every window element: 10 s at 2^24.
 		for a in naive stack level1 level2 sorted; do
-			# Naive visits every window element: 10 s at 2^24.
-			[ $a = naive ] && [ "$e" -gt 20 ] && continue
-			for j in 1 $ALL; do
-				$TIME -f "%e" -o "$T/t" "$FRS" -q -m "$T/M.frp" -i "$imp" \
-				    -n $n -a $a -j $j -v -o /dev/null 2>"$T/v"
-				line=$(grep 'samples (' "$T/v")
-				cnt=$(echo "$line" | awk '{ print $2 }')
-				th=$(echo "$line" | sed 's/.*thresholding \([0-9.]*\) s.*/\1/')
-				[ $a = naive ] && [ $j = 1 ] && naive=$th
-				awk -v m=$map -v e=$e -v a=$a -v j=$j -v c=$cnt -v t=$th \
-				    -v p="$(cat "$T/t")" -v nv="$naive" 'BEGIN {
-					r = (nv != "" && t > 0) ? sprintf("%.1f", nv / t) : "-"
-					rate = (t > 0) ? c / t / 1e6 : 0
-					printf "%-7s %-6s %-7s %3s %10d %11.6f %9.1f %9.2f %9s\n", m, e, a, j, c, t, rate, p, r }'
-				[ "$j" = "$ALL" ] && break
-			done
+			row "$map" "$e" $a 20 -m "$T/M.frp" -i "$imp"
 		done
 	done
 done
@@ -59,26 +67,8 @@ printf '%-7s %-6s %-7s %3s %10s %11s %9s %9s %9s\n' volume log2n algo thr \
 if [ -n "${BENCH_QUICK:-}" ]; then NS3="10 16"; else NS3="10 14 18 22"; fi
 for vol in blob3 shell3; do
 	for e in $NS3; do
-		n=$((1 << e))
-		naive=""
-		for a in naive sorted; do
-			# Naive visits sigma^3 n max/mean elements: minutes past 2^18.
-			[ $a = naive ] && [ "$e" -gt 14 ] && continue
-			for j in 1 $ALL; do
-				$TIME -f "%e" -o "$T/t" "$FRS" -q -i $vol -n $n -a $a -j $j \
-				    -v -o /dev/null 2>"$T/v"
-				line=$(grep 'samples (' "$T/v")
-				cnt=$(echo "$line" | awk '{ print $2 }')
-				th=$(echo "$line" | sed 's/.*thresholding \([0-9.]*\) s.*/\1/')
-				[ $a = naive ] && [ $j = 1 ] && naive=$th
-				awk -v m=$vol -v e=$e -v a=$a -v j=$j -v c=$cnt -v t=$th \
-				    -v p="$(cat "$T/t")" -v nv="$naive" 'BEGIN {
-					r = (nv != "" && t > 0) ? sprintf("%.1f", nv / t) : "-"
-					rate = (t > 0) ? c / t / 1e6 : 0
-					printf "%-7s %-6s %-7s %3s %10d %11.6f %9.1f %9.2f %9s\n", m, e, a, j, c, t, rate, p, r }'
-				[ "$j" = "$ALL" ] && break
-			done
-		done
+		# Naive visits sigma^3 n max/mean elements: minutes past 2^18.
+		for a in naive sorted; do row $vol "$e" $a 14 -i $vol; done
 	done
 done
 

@@ -228,13 +228,14 @@ static size_t ring_limit(const struct grid *gr, size_t cx, size_t cy)
 	return m;
 }
 
-/* Offsets [lo, hi] along one axis allowed around cell c. */
-static void axis_window(const struct grid *gr, size_t c, long long *lo,
+/* Offsets [lo, hi] along one axis of g cells allowed around cell c (the
+ * 2-D grid and the 3-D cells alike). */
+static void axis_window(size_t g_, int torus, size_t c, long long *lo,
     long long *hi)
 {
-	long long g = (long long)gr->g;
+	long long g = (long long)g_;
 
-	if (gr->torus) {
+	if (torus) {
 		*lo = -(g / 2);
 		*hi = g - 1 - g / 2;
 	} else {
@@ -243,15 +244,12 @@ static void axis_window(const struct grid *gr, size_t c, long long *lo,
 	}
 }
 
-static size_t wrap(const struct grid *gr, size_t c, long long o)
+/* Cell c + o of an axis of g cells, on the torus. */
+static size_t wrap(size_t g_, size_t c, long long o)
 {
-	long long g = (long long)gr->g, v = (long long)c + o;
+	long long g = (long long)g_, v = (long long)c + o;
 
-	if (v < 0)
-		v += g;
-	else if (v >= g)
-		v -= g;
-	return (size_t)v;
+	return (size_t)(v < 0 ? v + g : v >= g ? v - g : v);
 }
 
 /* What a search does with the pairs it finds. */
@@ -294,8 +292,8 @@ static void search(struct visit *v, size_t s)
 	size_t g = gr->g, rmax = ring_limit(gr, q->cx, q->cy);
 	long long xlo, xhi, ylo, yhi;
 
-	axis_window(gr, q->cx, &xlo, &xhi);
-	axis_window(gr, q->cy, &ylo, &yhi);
+	axis_window(gr->g, gr->torus, q->cx, &xlo, &xhi);
+	axis_window(gr->g, gr->torus, q->cy, &ylo, &yhi);
 	for (size_t r = 0; r <= rmax; r++) {
 		long long rr = (long long)r;
 		long long oy0 = -rr > ylo ? -rr : ylo, oy1 = rr < yhi ? rr : yhi;
@@ -305,16 +303,16 @@ static void search(struct visit *v, size_t s)
 		if (v->hist == NULL ? lb > v->best : lb >= v->kmax)
 			break;
 		for (long long oy = oy0; oy <= oy1; oy++) {
-			size_t row = wrap(gr, q->cy, oy) * g;
+			size_t row = wrap(gr->g, q->cy, oy) * g;
 			if (oy == -rr || oy == rr) {
 				for (long long ox = ox0; ox <= ox1; ox++)
-					visit_cell(v, s, row + wrap(gr, q->cx, ox));
+					visit_cell(v, s, row + wrap(gr->g, q->cx, ox));
 				continue;
 			}
 			if (-rr >= xlo)
-				visit_cell(v, s, row + wrap(gr, q->cx, -rr));
+				visit_cell(v, s, row + wrap(gr->g, q->cx, -rr));
 			if (rr <= xhi && rr != 0)
-				visit_cell(v, s, row + wrap(gr, q->cx, rr));
+				visit_cell(v, s, row + wrap(gr->g, q->cx, rr));
 		}
 	}
 }
@@ -507,27 +505,6 @@ static inline double pair_key3(const struct pt3 *a, const struct pt3 *b,
 	return (sq[0] + sq[1]) + sq[2];
 }
 
-/* The offsets of one axis around cell c (cells3 and grid alike). */
-static void axis_window3(const struct cells3 *gr, size_t c, long long *lo,
-    long long *hi)
-{
-	long long g = (long long)gr->g;
-
-	if (gr->torus) {
-		*lo = -(g / 2);
-		*hi = g - 1 - g / 2;
-	} else {
-		*lo = -(long long)c;
-		*hi = g - 1 - (long long)c;
-	}
-}
-
-static size_t wrap3(const struct cells3 *gr, size_t c, long long o)
-{
-	long long g = (long long)gr->g, v = (long long)c + o;
-
-	return (size_t)(v < 0 ? v + g : v >= g ? v - g : v);
-}
 
 /* Pairs (s, t > s) with t in the cell at offset o of s's cell. */
 static double visit3(const struct cells3 *gr, size_t s, const long long o[3],
@@ -537,7 +514,7 @@ static double visit3(const struct cells3 *gr, size_t s, const long long o[3],
 	size_t c[3], cell, e;
 
 	for (int a = 0; a < 3; a++)
-		c[a] = wrap3(gr, q->c[a], o[a]);
+		c[a] = wrap(gr->g, q->c[a], o[a]);
 	cell = cell3_index(c, gr->g);
 	e = gr->start[cell + 1];
 	for (size_t t = gr->start[cell]; t < e; t++)
@@ -581,7 +558,7 @@ static double search3(const struct cells3 *gr, size_t s, double best)
 	long long lo[3], hi[3], rmax = 0;
 
 	for (int a = 0; a < 3; a++) {
-		axis_window3(gr, q->c[a], &lo[a], &hi[a]);
+		axis_window(gr->g, gr->torus, q->c[a], &lo[a], &hi[a]);
 		rmax = -lo[a] > rmax ? -lo[a] : rmax;
 		rmax = hi[a] > rmax ? hi[a] : rmax;
 	}

@@ -75,18 +75,25 @@ void frdgen_defaults(struct frdgen_params *pr)
 	pr->checkpoint_every = 60.0;
 }
 
-int frdgen_check(const struct frdgen_params *pr)
+int frdgen_check_size(unsigned dims, uint32_t w, uint32_t h, uint32_t d)
 {
-	uint64_t n = (uint64_t)pr->w * pr->h * pr->d;
+	uint64_t n = (uint64_t)w * h * d;
 
-	if (pr->dims != 2 && pr->dims != 3)
-		return frs_fail("-k: %u dimensions (2 or 3)", pr->dims);
-	if (pr->w < 2 || pr->h < 2 || pr->d < 1 ||
-	    (pr->dims == 3 && pr->d < 2) || (pr->dims == 2 && pr->d != 1))
+	if (dims != 2 && dims != 3)
+		return frs_fail("-k: %u dimensions (2 or 3)", dims);
+	if (w < 2 || h < 2 || d < 1 || (dims == 3 && d < 2) ||
+	    (dims == 2 && d != 1))
 		return frs_fail("-s: a matrix needs at least 2 cells per side");
 	if (n > UINT32_MAX)
 		return frs_fail("-s: %llu cells is more than 2^32 - 1 values",
 		    (unsigned long long)n);
+	return 0;
+}
+
+int frdgen_check(const struct frdgen_params *pr)
+{
+	if (frdgen_check_size(pr->dims, pr->w, pr->h, pr->d) < 0)
+		return -1;
 	if (!(pr->p > 0.0 && pr->p <= 1.0))
 		return frs_fail("-p: %g is outside (0, 1]", pr->p);
 	if (!(pr->s > 0.0 && isfinite(pr->s)) || !(pr->q > 0.0 &&

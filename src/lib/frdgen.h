@@ -52,6 +52,8 @@ struct frdgen_params {
 
 /* Defaults: s = q = 1/2, p = 1/2, the default tolerance, reach 0.7. */
 void frdgen_defaults(struct frdgen_params *pr);
+/* Check dimension count and sizes (also for frd-gen --method vac). */
+int frdgen_check_size(unsigned dims, uint32_t w, uint32_t h, uint32_t d);
 /* Check a parameter set; the message names the offending parameter. */
 int frdgen_check(const struct frdgen_params *pr);
 /* The neglect radius for a tolerance (cells), INFINITY for tol = 0. */

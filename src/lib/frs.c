@@ -539,17 +539,24 @@ static int rows_task(void *ctx, uint64_t b, uint64_t e)
 	return 0;
 }
 
+int frs_steps_check(const uint64_t *steps, unsigned nsteps)
+{
+	if (nsteps < 1 || nsteps > 16)
+		return frs_fail("--progressive: 1 to 16 steps");
+	for (unsigned k = 1; k < nsteps; k++)
+		if (steps[k] <= steps[k - 1])
+			return frs_fail("--progressive: counts must increase");
+	return 0;
+}
+
 int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
     int algo, const char *name, const uint64_t *steps, unsigned nsteps,
     int count_only, double *tau)
 {
-	if (nsteps < 1 || nsteps > 16)
-		return frs_fail("--progressive: 1 to 16 steps");
-	for (unsigned k = 0; k < nsteps; k++) {
-		if (k > 0 && steps[k] <= steps[k - 1])
-			return frs_fail("--progressive: counts must increase");
+	if (frs_steps_check(steps, nsteps) < 0)
+		return -1;
+	for (unsigned k = 0; k < nsteps; k++)
 		tau[k] = frs_tau(s, steps[k]);
-	}
 	if (!count_only && (s->sw > UINT32_MAX || s->sh > UINT32_MAX))
 		return frs_fail("the window of %llux%llu elements is too large to "
 		    "store samples (--count-only counts them)",

@@ -381,13 +381,10 @@ static int check(const struct frs3_setup *s, const struct frs3_prep *p,
     enum frs_algo algo, const uint64_t *steps, unsigned nsteps,
     int count_only, double *tau)
 {
-	if (nsteps < 1 || nsteps > 16)
-		return frs_fail("--progressive: 1 to 16 steps");
-	for (unsigned k = 0; k < nsteps; k++) {
-		if (k > 0 && steps[k] <= steps[k - 1])
-			return frs_fail("--progressive: counts must increase");
+	if (frs_steps_check(steps, nsteps) < 0)
+		return -1;
+	for (unsigned k = 0; k < nsteps; k++)
 		tau[k] = frs3_tau(s, steps[k]);
-	}
 	if (!count_only && (s->sw > UINT32_MAX || s->sh > UINT32_MAX ||
 	    s->sd > UINT32_MAX))
 		return frs_fail("the window of %llux%llux%llu elements is too large "

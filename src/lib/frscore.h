@@ -119,6 +119,8 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs_result *r);
 void frs_result_free(struct frs_result *r);
+/* Progressive counts: 1 to 16, increasing. */
+int frs_steps_check(const uint64_t *steps, unsigned nsteps);
 /* The argument checks of frs_sample (and frs_sample_cl): the steps, the
  * window, what algorithm algo (named name in messages) needs of p; tau[k]
  * gets the threshold of steps[k]. */

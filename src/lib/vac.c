@@ -4,6 +4,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "vac.h"
+#include "frdgen.h"
 #include "err.h"
 #include "mem.h"
 #include "progress.h"
@@ -60,16 +61,8 @@ void vac_defaults(struct vac_params *pr)
 
 int vac_check(const struct vac_params *pr)
 {
-	uint64_t n = (uint64_t)pr->w * pr->h * pr->d;
-
-	if (pr->dims != 2 && pr->dims != 3)
-		return frs_fail("-k: %u dimensions (2 or 3)", pr->dims);
-	if (pr->w < 2 || pr->h < 2 || pr->d < 1 ||
-	    (pr->dims == 3 && pr->d < 2) || (pr->dims == 2 && pr->d != 1))
-		return frs_fail("-s: a matrix needs at least 2 cells per side");
-	if (n > UINT32_MAX)
-		return frs_fail("-s: %llu cells is more than 2^32 - 1 values",
-		    (unsigned long long)n);
+	if (frdgen_check_size(pr->dims, pr->w, pr->h, pr->d) < 0)
+		return -1;
 	if (!(pr->sigma > 0.0 && isfinite(pr->sigma)))
 		return frs_fail("--vac-sigma: %g is not a positive number",
 		    pr->sigma);
