@@ -1,7 +1,8 @@
 #!/bin/sh
 # make demo: run the pipeline on the embedded data and leave pictures in
 # results/: importance maps (thesis Fig. 6.1), threshold matrices (ch. 3),
-# and Forced Random Sampling of the maps (ch. 4-5), drawn as stipples.
+# and Forced Random Sampling of the maps (ch. 4-5), drawn as stipples;
+# a 3-D sampling of a volume, drawn as projections.
 set -eu
 cd "$(dirname "$0")/.."
 BIN=${BIN:-bin}
@@ -38,6 +39,12 @@ echo "demo: Forced Random Sampling with the default matrix, rendered"
 "$BIN/pts-render" -i aniso "$out/aniso.pts" -o "$out/aniso-samples.png"
 "$BIN/frs-sample" -i blob --progressive 256,1024,4096 -o "$out/progressive.pts"
 "$BIN/pts-render" --color "$out/progressive.pts" -o "$out/progressive.png"
+
+echo "demo: 3-D Forced Random Sampling of a spherical shell (data/default3.frd)"
+"$BIN/frs-sample" -i shell3 -n 4096 --sigma 4 --jitter random -v \
+    -o "$out/shell3.pts"
+"$BIN/pts-render" --axes xy "$out/shell3.pts" -o "$out/shell3-xy.png"
+"$BIN/pts-render" --axes xz "$out/shell3.pts" -o "$out/shell3-xz.png"
 
 echo "demo: pictures in $out/:"
 ls "$out" | sed 's/^/demo:   /'
