@@ -5,7 +5,8 @@
 # (b) per class D2 and Dinf against seconds per set, at the
 # thesis parameters and cheaper ones, (c) the Fig. 6.3 sweep (star, 6
 # distributions, n = 2^2..2^13, 1000 sets), (d) what the sweeps of
-# Figs. 6.3-6.8 cost at the thesis parameters.
+# Figs. 6.3-6.8 cost at the thesis parameters, (e) the 3-D star grid
+# against the exact 3-D methods.
 #   scripts/bench-discrepancy.sh [BUILD]
 #   BENCH_QUICK=1: no 2^20 in (a); in (b) sets predicted to take over 3 s
 #   are estimated from a cheaper setting; 50 sets in (c), scaled to 1000.
@@ -323,3 +324,29 @@ awk -v ncpu=$NCPU '
 	}' "$T/thesis"
 echo "(~: some sets estimated in (b); wall hours assume the sets spread evenly"
 echo " over $NCPU cores, as discrepancy --sets does)"
+
+# ---------------------------------------------------------------- (e)
+echo
+echo "discrepancy: 3-D star (ref-sample -d 3), one thread: the grid of s^3"
+echo "anchored boxes against the exact method (Warnock D2, Dinf over the"
+echo "critical boxes); err: relative to exact"
+printf '%-7s %6s %-10s %9s %12s %12s %8s %8s\n' kind n method seconds D2 Dinf \
+    D2_err Dinf_err
+if [ -n "${BENCH_QUICK:-}" ]; then N3="1024"; else N3="1024 4096"; fi
+for k in random halton; do
+	for n in $N3; do
+		f=$T/e.pts
+		"$GEN" -q -d 3 -k $k -n "$n" -S 1 -o "$f"
+		timerep "$T/ex" "$DISC" -q -j 1 -c star --exact "$f"
+		ed2=$(field "$T/ex" 4) einf=$(field "$T/ex" 6)
+		printf '%-7s %6d %-10s %9.4f %12.6g %12.6g %8s %8s\n' $k "$n" exact \
+		    "$SEC" "$ed2" "$einf" - -
+		for s in 25 50 100 200 400; do
+			timerep "$T/gr" "$DISC" -q -j 1 -c star --grid $s "$f"
+			awk -v k=$k -v n="$n" -v s=$s -v t="$SEC" -v d2="$(field "$T/gr" 4)" \
+			    -v di="$(field "$T/gr" 6)" -v e2="$ed2" -v ei="$einf" 'BEGIN {
+				printf "%-7s %6d %-10s %9.4f %12.6g %12.6g %7.1f%% %7.1f%%\n",
+				    k, n, "grid " s, t, d2, di, 100 * (d2 - e2) / e2, 100 * (di - ei) / ei }'
+		done
+	done
+done
