@@ -258,17 +258,16 @@ static void print_setup(const struct frs_setup *s, const char *mname)
 	    s->level0);
 }
 
-/* Refuse counts whose elements could not be stored (12 bytes each, with
- * a tenth more for the count's spread) before spending the time. */
-static void check_room(const struct opts *o)
+/* Refuse counts whose elements (size bytes each, with a tenth more for
+ * the count's spread) could not be stored before spending the time. */
+static void check_room(const struct opts *o, size_t size)
 {
 	uint64_t n = o->steps[o->nsteps - 1];
 	char what[64];
 
 	snprintf(what, sizeof what, "-n %llu (--count-only counts them)",
 	    (unsigned long long)n);
-	if (!o->count_only && mem_check(what, n + n / 10,
-	    sizeof(struct frs_elem)) < 0)
+	if (!o->count_only && mem_check(what, n + n / 10, size) < 0)
 		cli_die_lib();
 }
 
@@ -531,6 +530,8 @@ static void check3(const struct opts *o)
 	if (o->nsz == 2)
 		cli_die("-s %ux%u: %s is a 3-D matrix; give -s N or WxHxD",
 		    o->w, o->h, o->matrix);
+	/* main counted 2-D elements; 3-D ones are larger. */
+	check_room(o, sizeof(struct frs3_elem));
 }
 
 static void load3(const struct opts *o, struct frs_matrix *m,
@@ -695,7 +696,7 @@ int main(int argc, char **argv)
 
 	cli_init("frs-sample", usage);
 	parse_opts(argc, argv, &o);
-	check_room(&o);
+	check_room(&o, sizeof(struct frs_elem));
 	cli_options_done();
 	if (o.matrix == NULL)
 		o.matrix = default_matrix((o.imp && vol_is_volume(o.imp)) || o.nsz == 3);
