@@ -138,6 +138,8 @@ expect_fail "-a stack in 3-D" 1 "naive and sorted" "$T/o.pts" frs-sample -m "$M"
 expect_fail "--device cl in 3-D" 1 "CPU only" "$T/o.pts" frs-sample -m "$M" --device cl -n 10 -o "$T/o.pts"
 expect_fail "--equirect in 3-D" 1 "--equirect" "$T/o.pts" frs-sample -m "$M" --equirect -n 10 -o "$T/o.pts"
 expect_fail "a volume into a 2-D matrix" 1 "2-D" "$T/o.pts" frs-sample -m "$DATA/default.frd" -i "$T/b.frv" -n 10 -o "$T/o.pts"
+expect_fail "a count that would take hours" 1 "use a larger matrix" - \
+    frs-sample -m "$M" -i const -s 1 -n 1099511627776 --count-only
 expect_fail "3-D samples past FRS_MAX_MEM" 1 "above the memory limit" "$T/o.pts" \
     env FRS_MAX_MEM=1G frs-sample -m "$M" -n 80000000 -o "$T/o.pts"
 expect_fail "ramp3 axis 1.5" 1 "axis" "$T/o.pts" frs-sample -m "$M" -i ramp3:axis=1.5 -n 10 -o "$T/o.pts"

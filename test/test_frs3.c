@@ -397,6 +397,16 @@ static void huge_count(void **state)
 	assert_true(r.chunk[0].n == 0);		/* counted, not stored */
 	frs3_result_free(&r);
 	frs3_prep_free(&p);
+	/* 2^40 samples of the same 16^3 matrix would visit 2^39 blocks:
+	 * refused up front, as is naive's 2^39 elements at 2^36. */
+	n = (uint64_t)1 << 40;
+	assert_int_equal(frs3_setup(&s, &v, &m, n, 8.0, 1), 0);
+	assert_int_equal(frs3_prepare(&p, &m, frs3_block(&s)), 0);
+	assert_int_equal(frs3_sample(&s, &v, &p, FRS_SORTED, &n, 1, 1, &r), -1);
+	assert_non_null(strstr(frs_errmsg(), "larger matrix"));
+	assert_int_equal(frs3_sample(&s, &v, &p, FRS_NAIVE, &n, 1, 1, &r), -1);
+	assert_non_null(strstr(frs_errmsg(), "use -a sorted"));
+	frs3_prep_free(&p);
 	frs_set_threads(1);
 	vol_free(&v);
 	frd_free(&m);

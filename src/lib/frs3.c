@@ -307,6 +307,30 @@ static void vox_naive(struct vox *vx)
 	}
 }
 
+/* One step: the first k sorted values of a block pass but perhaps the
+ * last, which alone can sit at floor(T) (the values are distinct) and
+ * needs its coin; the rest pass without a test, and counting costs no
+ * more than the bisection. */
+static void take_all(struct vox *vx, const uint32_t *val, const uint32_t *idx,
+    uint32_t b, uint64_t k, uint64_t x, uint64_t y, uint64_t z)
+{
+	const struct frs3_setup *s = vx->run->s;
+	struct frs3_chunk *c = vx->c;
+
+	if (k > 0 && !frs_thr_passes(s->rule, &vx->th[0], val[k - 1], s->seed,
+	    elem_id(s, x + idx[k - 1] % b, y + idx[k - 1] / b % b,
+	    z + idx[k - 1] / b / b)))
+		k--;
+	c->count += k;
+	if (vx->run->count_only || k == 0 || grow(c, k) < 0)
+		return;
+	for (uint64_t j = 0; j < k; j++)
+		c->e[c->n + j] = (struct frs3_elem){ (uint32_t)(x + idx[j] % b),
+		    (uint32_t)(y + idx[j] / b % b), (uint32_t)(z + idx[j] / b / b),
+		    0 };
+	c->n += k;
+}
+
 /* One block of the sorted lists, its first element at window (x, y, z):
  * the values below lim by bisection, then each through emit. */
 static void take_block(struct vox *vx, const uint32_t *val,
@@ -321,9 +345,13 @@ static void take_block(struct vox *vx, const uint32_t *val,
 		else
 			hi = mid;
 	}
-	for (uint64_t k = 0; k < lo; k++)
-		emit(vx, x + idx[k] % b, y + idx[k] / b % b, z + idx[k] / b / b,
-		    val[k]);
+	if (vx->run->nsteps > 1) {
+		for (uint64_t k = 0; k < lo; k++)
+			emit(vx, x + idx[k] % b, y + idx[k] / b % b,
+			    z + idx[k] / b / b, val[k]);
+		return;
+	}
+	take_all(vx, val, idx, b, lo, x, y, z);
 }
 
 static void vox_sorted(struct vox *vx)
@@ -377,6 +405,33 @@ static int slices_task(void *ctx, uint64_t z0, uint64_t z1)
 	return 0;
 }
 
+/* Past these, a run would take hours: naive visits every window
+ * element, sorted every block of every voxel (a bisection each), and a
+ * count far beyond the matrix's own S_M / sigma^3 makes the blocks many. */
+#define FRS3_MAX_NAIVE ((double)((uint64_t)1 << 36))
+#define FRS3_MAX_BLOCKS ((double)((uint64_t)1 << 33))
+
+static int check_work(const struct frs3_setup *s, const struct frs3_prep *p,
+    enum frs_algo algo)
+{
+	double vox = (double)s->iw * s->ih * s->id, ns = s->ns;
+
+	if (algo == FRS_NAIVE && vox * ns * ns * ns > FRS3_MAX_NAIVE)
+		return frs_fail("-a naive: -n %llu would visit %.3g window "
+		    "elements (above 2^36, hours); use -a sorted",
+		    (unsigned long long)s->n, vox * ns * ns * ns);
+	if (algo == FRS_SORTED) {
+		double nb = ns / p->block, work = vox * nb * nb * nb;
+		if (work > FRS3_MAX_BLOCKS)
+			return frs_fail("-n %llu would visit %.3g blocks of the "
+			    "%ux%ux%u matrix (above 2^33, hours): %.0f samples "
+			    "repeat it %.3g times; use a larger matrix or fewer "
+			    "samples", (unsigned long long)s->n, work, s->mw, s->mh,
+			    s->md, frs3_unique(s), (double)s->n / frs3_unique(s));
+	}
+	return 0;
+}
+
 static int check(const struct frs3_setup *s, const struct frs3_prep *p,
     enum frs_algo algo, const uint64_t *steps, unsigned nsteps,
     int count_only, double *tau)
@@ -398,7 +453,7 @@ static int check(const struct frs3_setup *s, const struct frs3_prep *p,
 	    p->block > min3(s->mw, s->mh, s->md)))
 		return frs_fail("-a sorted: lists of blocks of %u do not fit "
 		    "n_s = %u", p->block, s->ns);
-	return 0;
+	return check_work(s, p, algo);
 }
 
 int frs3_sample(const struct frs3_setup *s, const struct frs_vol *vol,
