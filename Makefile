@@ -121,7 +121,8 @@ $(B)/lib/%.o: src/lib/%.cc
 # the internal symbols they use.
 SOMAJOR = 1
 SONAME = libfrs.so.$(SOMAJOR)
-SOFILE = libfrs.so.$(SOMAJOR).0.0
+SOMINOR = 1
+SOFILE = libfrs.so.$(SOMAJOR).$(SOMINOR).0
 PICOBJ = $(LIBOBJ:$(B)/%=$(B)/pic/%)
 SOMAP = src/lib/libfrs.map
 

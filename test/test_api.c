@@ -17,6 +17,7 @@
 #include "frdio.h"
 #include "imap.h"
 #include "ptsio.h"
+#include "vol.h"
 
 #define MATRIX "data/default.frd"
 
@@ -1546,6 +1547,203 @@ static int teardown(void **state)
 	return tu_teardown(state);
 }
 
+/* ---- three dimensions ------------------------------------------------ */
+
+#define MATRIX3 "data/default3.frd"
+
+/* frs_draw3_progressive sized by a call with no room; records in
+ * frs-sample's layout (x, y, z [, pdf] [, step + 1]). */
+static double *draw3(const frs_sampler3 *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int pdf, size_t *n)
+{
+	size_t k = 3 + (size_t)pdf + (nsteps > 1), cnt = 0;
+	double *xyz, *pd, *rec;
+	uint32_t *st;
+	frs_error e;
+
+	assert_int_equal(frs_draw3_progressive(s, steps, nsteps, seed, NULL,
+	    NULL, NULL, 0, n, &e), FRS_E_BUFFER);
+	assert_true(*n > 0);
+	xyz = malloc(3 * *n * sizeof *xyz);
+	pd = malloc(*n * sizeof *pd);
+	st = malloc(*n * sizeof *st);
+	rec = malloc(k * *n * sizeof *rec);
+	assert_true(xyz && pd && st && rec);
+	assert_int_equal(frs_draw3_progressive(s, steps, nsteps, seed, xyz,
+	    pdf ? pd : NULL, st, *n, &cnt, &e), FRS_OK);
+	assert_int_equal(cnt, *n);
+	for (size_t i = 0; i < *n; i++) {
+		double *r = rec + i * k;
+		memcpy(r, xyz + 3 * i, 3 * sizeof *r);
+		if (pdf)
+			r[3] = pd[i];
+		if (nsteps > 1)
+			r[3 + pdf] = (double)(st[i] + 1);
+	}
+	free(xyz);
+	free(pd);
+	free(st);
+	return rec;
+}
+
+/* The API's samples are frs-sample's, bit for bit, for a 3-D mask. */
+static void compare3(const frs_sampler3 *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int pdf, const char *args)
+{
+	const char *out = tu_path("frs3.pts");
+	size_t n, k = 3 + (size_t)pdf + (nsteps > 1);
+	double *rec;
+	struct frs_points p;
+
+	if (nsteps > 1)
+		prog("frs-sample -q -m %s %s --progressive %s -S %llu %s -o %s",
+		    MATRIX3, args, step_list(steps, nsteps),
+		    (unsigned long long)seed, pdf ? "--pdf" : "", out);
+	else
+		prog("frs-sample -q -m %s %s -n %llu -S %llu %s -o %s", MATRIX3,
+		    args, (unsigned long long)steps[0], (unsigned long long)seed,
+		    pdf ? "--pdf" : "", out);
+	rec = draw3(s, steps, nsteps, seed, pdf, &n);
+	assert_int_equal(pts_read(out, &p), 0);
+	assert_int_equal(p.dims, 3);
+	assert_int_equal(p.n, n);
+	assert_int_equal(p.dims + p.extra, k);
+	assert_memory_equal(p.x, rec, n * k * sizeof *rec);
+	pts_free(&p);
+	free(rec);
+}
+
+static void test_sampler3(void **state)
+{
+	static const uint64_t steps[] = { 300, 1200, 4000 };
+	struct frs_vol v;
+	struct frs_options o;
+	frs_mask *m3;
+	frs_sampler3 *s;
+	frs_error e;
+	uint32_t w, h, d;
+	uint64_t n = 3000, c1 = 0, c2 = 0;
+
+	(void)state;
+	assert_int_equal(frs_mask_load(&m3, MATRIX3, &e), FRS_OK);
+	assert_int_equal(frs_mask_dims(m3), 3);
+	assert_int_equal(frs_mask_dims(mask), 2);
+	frs_mask_size3(m3, &w, &h, &d);
+	assert_true(w == 64 && h == 64 && d == 64);
+	frs_mask_size3(mask, &w, &h, &d);
+	assert_true(w == 2048 && d == 1);
+	assert_int_equal(vol_load("blob3:sigma=0.2", 16, 16, 16, 0, &v), 0);
+	/* The default options, then each option as its flag. */
+	assert_int_equal(frs_sampler3_new_f64(&s, m3, v.v, 16, 16, 16, NULL,
+	    &e), FRS_OK);
+	compare3(s, &n, 1, 5, 1, "-i blob3:sigma=0.2 -s 16");
+	compare3(s, steps, 3, 2, 0, "-i blob3:sigma=0.2 -s 16");
+	assert_int_equal(frs_count3(s, n, 5, &c1, &e), FRS_OK);
+	frs_sampler3_free(s);
+	frs_options_init(&o);
+	o.sigma = 4;
+	o.jitter = FRS_JIT_HALTON;
+	o.algorithm = FRS_ALG_NAIVE;
+	o.threads = 2;
+	assert_int_equal(frs_sampler3_new_f64(&s, m3, v.v, 16, 16, 16, &o, &e),
+	    FRS_OK);
+	compare3(s, &n, 1, 5, 0, "-i blob3:sigma=0.2 -s 16 --sigma 4 "
+	    "--jitter halton -a naive");
+	frs_sampler3_free(s);
+	/* A float volume and a constant one (NULL). */
+	{
+		float *f = malloc(16 * 16 * 16 * sizeof *f);
+		assert_non_null(f);
+		for (size_t i = 0; i < 16 * 16 * 16; i++)
+			f[i] = (float)v.v[i];
+		assert_int_equal(frs_sampler3_new(&s, m3, f, 16, 16, 16, NULL,
+		    &e), FRS_OK);
+		assert_int_equal(frs_count3(s, n, 5, &c2, &e), FRS_OK);
+		assert_true(c2 > n * 9 / 10 && c2 < n * 11 / 10);
+		frs_sampler3_free(s);
+		free(f);
+	}
+	assert_true(c1 > n * 9 / 10 && c1 < n * 11 / 10);
+	assert_int_equal(frs_sampler3_new(&s, m3, NULL, 8, 8, 8, NULL, &e),
+	    FRS_OK);
+	compare3(s, &n, 1, 3, 1, "-s 8");
+	frs_sampler3_free(s);
+	vol_free(&v);
+	frs_mask_free(m3);
+}
+
+/* Every error the 3-D functions reach. */
+static void test_sampler3_errors(void **state)
+{
+	struct frs_options o;
+	frs_mask *m3;
+	frs_sampler3 *s = NULL;
+	frs_sampler *s2 = NULL;
+	frs_error e;
+	double bad[8] = { 1, 1, 1, 1, 1, 1, 1, 0 };
+	double xyz[3];
+	size_t cnt;
+	uint64_t c;
+
+	(void)state;
+	assert_int_equal(frs_mask_load(&m3, MATRIX3, &e), FRS_OK);
+	/* The mask's dimension must fit the sampler. */
+	assert_int_equal(frs_sampler3_new(&s, mask, NULL, 4, 4, 4, NULL, &e),
+	    FRS_E_ARG);
+	assert_non_null(strstr(e.message, "2-D mask"));
+	assert_null(s);
+	assert_int_equal(frs_sampler_new(&s2, m3, NULL, 4, 4, 0, NULL, &e),
+	    FRS_E_ARG);
+	assert_non_null(strstr(e.message, "3-D mask"));
+	assert_null(s2);
+	/* Arguments, options and values. */
+	assert_int_equal(frs_sampler3_new(NULL, m3, NULL, 4, 4, 4, NULL, &e),
+	    FRS_E_ARG);
+	assert_int_equal(frs_sampler3_new(&s, m3, NULL, 4, 0, 4, NULL, &e),
+	    FRS_E_ARG);
+	frs_options_init(&o);
+	o.algorithm = FRS_ALG_STACK;
+	assert_int_equal(frs_sampler3_new(&s, m3, NULL, 4, 4, 4, &o, &e),
+	    FRS_E_ARG);
+	assert_non_null(strstr(e.message, "naive and sorted"));
+	bad[3] = NAN;
+	assert_int_equal(frs_sampler3_new_f64(&s, m3, bad, 2, 2, 2, NULL, &e),
+	    FRS_E_MAP);
+	assert_non_null(strstr(e.message, "voxel (1, 1, 0)"));
+	bad[3] = -1;
+	assert_int_equal(frs_sampler3_new_f64(&s, m3, bad, 2, 2, 2, NULL, &e),
+	    FRS_E_MAP);
+	memset(bad, 0, sizeof bad);
+	assert_int_equal(frs_sampler3_new_f64(&s, m3, bad, 2, 2, 2, NULL, &e),
+	    FRS_E_MAP);
+	assert_null(s);
+	/* Draws: no sampler, bad counts, too small a buffer, a count too
+	 * large to visit. */
+	assert_int_equal(frs_draw3(NULL, 10, 1, xyz, NULL, 1, &cnt, &e),
+	    FRS_E_ARG);
+	assert_int_equal(frs_sampler3_new(&s, m3, NULL, 2, 2, 2, NULL, &e),
+	    FRS_OK);
+	assert_int_equal(frs_draw3(s, 0, 1, xyz, NULL, 1, &cnt, &e), FRS_E_ARG);
+	assert_int_equal(frs_draw3(s, 100, 1, xyz, NULL, 1, &cnt, &e),
+	    FRS_E_BUFFER);
+	assert_true(cnt > 50);
+	assert_int_equal(frs_count3(s, (uint64_t)1 << 41, 1, &c, &e),
+	    FRS_E_LIMIT);
+	frs_sampler3_free(s);
+	/* 2^40 samples at sigma 16 from 8 voxels: 2^36 blocks to visit. */
+	frs_options_init(&o);
+	o.sigma = 16;
+	assert_int_equal(frs_sampler3_new(&s, m3, NULL, 2, 2, 2, &o, &e),
+	    FRS_OK);
+	assert_int_equal(frs_count3(s, (uint64_t)1 << 40, 1, &c, &e),
+	    FRS_E_LIMIT);
+	assert_non_null(strstr(e.message, "larger matrix"));
+	assert_int_equal(frs_count3(s, 100, 1, NULL, &e), FRS_E_ARG);
+	frs_sampler3_free(s);
+	frs_sampler3_free(NULL);
+	frs_mask_free(m3);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -1576,6 +1774,8 @@ int main(void)
 		cmocka_unit_test(test_hsw_negative),
 		cmocka_unit_test(test_hsw_errors),
 		cmocka_unit_test(test_null_handles),
+		cmocka_unit_test(test_sampler3),
+		cmocka_unit_test(test_sampler3_errors),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -19,6 +19,7 @@
 #include "hsw.h"
 #include "io.h"
 #include "par.h"
+#include "vol.h"
 
 /* ---- errors ---------------------------------------------------------- */
 
@@ -105,6 +106,7 @@ static void mask_free_parts(frs_mask *mk)
 	for (unsigned b = 0; b < 32; b++) {
 		free(mk->sval[b]);
 		free(mk->sidx[b]);
+		frs3_prep_free(&mk->p3[b]);
 	}
 	if (!mk->wrapped)
 		frd_free(&mk->m);
@@ -183,6 +185,8 @@ static int load_frd(frs_mask *mk, const char *path)
 
 	if (frd_read(path, &mk->m) < 0)
 		return -1;
+	if (mk->m.dims != 2)
+		return 0;	/* prepared files are 2-D */
 	sib = sibling_frp(path);
 	if (sib == NULL || strcmp(sib, path) == 0 || frp_is(sib) != 1 ||
 	    frp_info(sib, &w, &h, &sum) < 0) {
@@ -225,9 +229,6 @@ int frs_mask_load(frs_mask **mask, const char *path, frs_error *err)
 	if ((mk = mask_new()) == NULL)
 		return set_err(err, FRS_E_NOMEM, "out of memory");
 	rc = frp_is(path) == 1 ? load_frp(mk, path) : load_frd(mk, path);
-	if (rc == 0 && mk->m.dims != 2)
-		rc = frs_fail("%s: a %u-D matrix; sampling needs a 2-D one",
-		    path, mk->m.dims);
 	if (rc == 0 && frd_check_permutation(&mk->m, path) < 0)
 		rc = -1;
 	if (rc < 0) {
@@ -268,6 +269,19 @@ int frs_mask_wrap(frs_mask **mask, const uint32_t *values, uint32_t width,
 	mk->lev[0] = mk->m.v;
 	*mask = mk;
 	return ok(err);
+}
+
+unsigned frs_mask_dims(const frs_mask *mk)
+{
+	return mk != NULL ? mk->m.dims : 0;
+}
+
+void frs_mask_size3(const frs_mask *mk, uint32_t *width, uint32_t *height,
+    uint32_t *depth)
+{
+	frs_mask_size(mk, width, height);
+	if (depth != NULL)
+		*depth = mk ? mk->m.d : 0;
 }
 
 void frs_mask_size(const frs_mask *mk, uint32_t *width, uint32_t *height)
@@ -462,6 +476,9 @@ static int sampler_new(frs_sampler **sp, const frs_mask *mask,
 	if (sp == NULL || mask == NULL)
 		return arg_err(err, "frs_sampler_new: NULL argument");
 	*sp = NULL;
+	if (mask->m.dims != 2)
+		return arg_err(err, "frs_sampler_new: a 3-D mask samples "
+		    "volumes (frs_sampler3_new)");
 	if ((s = calloc(1, sizeof *s)) == NULL)
 		return set_err(err, FRS_E_NOMEM, "out of memory");
 	if (opt != NULL)
@@ -507,15 +524,24 @@ static const enum frs_algo algos[] = {
 	FRS_SORTED, FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2
 };
 
+static enum frs_rule rule_of(const struct frs_options *o)
+{
+	return o->rule == FRS_RULE_THESIS ? FRS_THESIS : FRS_UNBIASED;
+}
+
+static enum frs_jitter jitter_of(const struct frs_options *o)
+{
+	return o->jitter == FRS_JIT_HALTON ? FRS_JITTER_HALTON :
+	    o->jitter == FRS_JIT_RANDOM ? FRS_JITTER_RANDOM : FRS_JITTER_NONE;
+}
+
 int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
     struct frs_setup *su)
 {
 	if (frs_setup(su, &s->map, &s->mask->m, n, s->opt.sigma, seed) < 0)
 		return -1;
-	su->rule = s->opt.rule == FRS_RULE_THESIS ? FRS_THESIS : FRS_UNBIASED;
-	su->jitter = s->opt.jitter == FRS_JIT_HALTON ? FRS_JITTER_HALTON :
-	    s->opt.jitter == FRS_JIT_RANDOM ? FRS_JITTER_RANDOM :
-	    FRS_JITTER_NONE;
+	su->rule = rule_of(&s->opt);
+	su->jitter = jitter_of(&s->opt);
 	return 0;
 }
 
@@ -750,6 +776,197 @@ int frs_sampler_info(const frs_sampler *s, uint64_t n, uint64_t seed,
 		return lib_err(err, FRS_E_LIMIT);
 	*info = (struct frs_info){ su.ns, su.sw, su.sh, su.wx, su.wy, su.tau,
 	    su.mean, su.max, frs_unique(&su) };
+	return ok(err);
+}
+
+/* ---- three dimensions ------------------------------------------------ */
+
+/* The caller's volume, x fastest, validated like a map; NULL: constant. */
+static int copy_vol(struct frs_vol *v, const float *f, const double *d,
+    uint32_t w, uint32_t h, uint32_t dd, frs_error *err)
+{
+	if (w == 0 || h == 0 || dd == 0)
+		return arg_err(err, "volume: width, height and depth must not "
+		    "be 0");
+	if (vol_alloc(v, w, h, dd) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	for (uint64_t i = 0; i < (uint64_t)w * h * dd; i++)
+		v->v[i] = f ? (double)f[i] : d ? d[i] : 1.0;
+	if (vol_validate(v, "volume", IMAP_STRICT) < 0) {
+		vol_free(v);
+		return lib_err(err, FRS_E_MAP);
+	}
+	return FRS_OK;
+}
+
+static int sampler3_new(frs_sampler3 **sp, const frs_mask *mask,
+    const float *f, const double *d, uint32_t w, uint32_t h, uint32_t dd,
+    const struct frs_options *opt, frs_error *err)
+{
+	frs_sampler3 *s;
+	int rc;
+
+	if (sp == NULL || mask == NULL)
+		return arg_err(err, "frs_sampler3_new: NULL argument");
+	*sp = NULL;
+	if (mask->m.dims != 3)
+		return arg_err(err, "frs_sampler3_new: a 2-D mask samples maps "
+		    "(frs_sampler_new)");
+	if ((s = calloc(1, sizeof *s)) == NULL)
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	if (opt != NULL)
+		s->opt = *opt;
+	else
+		frs_options_init(&s->opt);
+	rc = check_options(&s->opt, err);
+	if (rc == FRS_OK && s->opt.algorithm != FRS_ALG_SORTED &&
+	    s->opt.algorithm != FRS_ALG_NAIVE)
+		rc = arg_err(err, "options: 3-D sampling has the naive and "
+		    "sorted algorithms");
+	if (rc != FRS_OK ||
+	    (rc = copy_vol(&s->vol, f, d, w, h, dd, err)) != FRS_OK) {
+		free(s);
+		return rc;
+	}
+	s->mask = mask;
+	*sp = s;
+	return ok(err);
+}
+
+int frs_sampler3_new(frs_sampler3 **sampler, const frs_mask *mask,
+    const float *volume, uint32_t width, uint32_t height, uint32_t depth,
+    const struct frs_options *opt, frs_error *err)
+{
+	return sampler3_new(sampler, mask, volume, NULL, width, height, depth,
+	    opt, err);
+}
+
+int frs_sampler3_new_f64(frs_sampler3 **sampler, const frs_mask *mask,
+    const double *volume, uint32_t width, uint32_t height, uint32_t depth,
+    const struct frs_options *opt, frs_error *err)
+{
+	return sampler3_new(sampler, mask, NULL, volume, width, height, depth,
+	    opt, err);
+}
+
+void frs_sampler3_free(frs_sampler3 *s)
+{
+	if (s == NULL)
+		return;
+	vol_free(&s->vol);
+	free(s);
+}
+
+/* The 3-D sorted lists of block size b (0: none), made on first use and
+ * kept in the mask. */
+static int mask_prep3(const frs_mask *cmk, uint32_t b, struct frs3_prep *view)
+{
+	frs_mask *mk = (frs_mask *)cmk;	/* only the lazy parts change */
+	unsigned l = log2u(b);
+	int rc = 0;
+
+	memset(view, 0, sizeof *view);
+	view->m = &mk->m;
+	if (b == 0)
+		return 0;
+	pthread_mutex_lock(&mk->lock);
+	if (mk->p3[l].block == 0)
+		rc = frs3_prepare(&mk->p3[l], &mk->m, b);
+	if (rc == 0)
+		*view = mk->p3[l];
+	pthread_mutex_unlock(&mk->lock);
+	return rc;
+}
+
+static int run3(const frs_sampler3 *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int count_only, struct frs3_setup *su,
+    struct frs3_result *r, frs_error *err)
+{
+	enum frs_algo a;
+	struct frs3_prep view;
+	int rc;
+
+	if (s == NULL)
+		return arg_err(err, "NULL sampler");
+	a = s->opt.algorithm == FRS_ALG_NAIVE ? FRS_NAIVE : FRS_SORTED;
+	if ((rc = check_steps(steps, nsteps, err)) != FRS_OK)
+		return rc;
+	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
+	if (frs3_setup(su, &s->vol, &s->mask->m, steps[nsteps - 1],
+	    s->opt.sigma, seed) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	su->rule = rule_of(&s->opt);
+	su->jitter = jitter_of(&s->opt);
+	if (mask_prep3(s->mask, a == FRS_SORTED ? frs3_block(su) : 0,
+	    &view) < 0)
+		return lib_err(err, FRS_E_FORMAT);
+	if (frs3_sample(su, &s->vol, &view, a, steps, nsteps, count_only, r) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	return FRS_OK;
+}
+
+int frs_draw3_progressive(const frs_sampler3 *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, double *xyz, double *pdf,
+    uint32_t *step, size_t cap, size_t *count, frs_error *err)
+{
+	struct frs3_setup su;
+	struct frs3_result r;
+	uint64_t n = 0;
+	size_t k = 0;
+	int rc;
+
+	if (count == NULL || (xyz == NULL && cap > 0))
+		return arg_err(err, "frs_draw3: NULL argument");
+	*count = 0;
+	if ((rc = run3(s, steps, nsteps, seed, 0, &su, &r, err)) != FRS_OK)
+		return rc;
+	for (uint64_t c = 0; c < r.nchunk; c++)
+		n += r.chunk[c].n;
+	*count = (size_t)n;
+	if (n > cap) {
+		frs3_result_free(&r);
+		return set_err(err, FRS_E_BUFFER, "frs_draw3: the buffer is "
+		    "too small; *count says how many samples there are");
+	}
+	/* The steps in turn, each in slice order, as frs-sample writes. */
+	for (uint32_t st = 0; st < nsteps; st++)
+		for (uint64_t c = 0; c < r.nchunk; c++)
+			for (uint64_t i = 0; i < r.chunk[c].n; i++) {
+				const struct frs3_elem *e = &r.chunk[c].e[i];
+				if (e->step != st)
+					continue;
+				frs3_point(&su, e, &xyz[3 * k]);
+				if (pdf != NULL)
+					pdf[k] = frs3_pdf(&su, &s->vol, e);
+				if (step != NULL)
+					step[k] = e->step;
+				k++;
+			}
+	frs3_result_free(&r);
+	return ok(err);
+}
+
+int frs_draw3(const frs_sampler3 *s, uint64_t n, uint64_t seed, double *xyz,
+    double *pdf, size_t cap, size_t *count, frs_error *err)
+{
+	return frs_draw3_progressive(s, &n, 1, seed, xyz, pdf, NULL, cap, count,
+	    err);
+}
+
+int frs_count3(const frs_sampler3 *s, uint64_t n, uint64_t seed,
+    uint64_t *count, frs_error *err)
+{
+	struct frs3_setup su;
+	struct frs3_result r;
+	int rc;
+
+	if (count == NULL)
+		return arg_err(err, "frs_count3: NULL argument");
+	*count = 0;
+	if ((rc = run3(s, &n, 1, seed, 1, &su, &r, err)) != FRS_OK)
+		return rc;
+	*count = r.count;
+	frs3_result_free(&r);
 	return ok(err);
 }
 

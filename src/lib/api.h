@@ -10,6 +10,7 @@
 #include <pthread.h>
 
 #include "frs.h"
+#include "frs3.h"
 #include "frscore.h"
 #include "hsw.h"
 
@@ -23,11 +24,18 @@ struct frs_mask {
 	unsigned nlev;		/* minmap levels, lev[0] = m.v */
 	uint32_t *lev[32];
 	uint32_t *sval[32], *sidx[32];	/* sorted lists by log2(block) */
+	struct frs3_prep p3[32];	/* 3-D sorted lists by log2(block) */
 };
 
 struct frs_sampler {
 	const frs_mask *mask;
 	struct frs_imap map;
+	struct frs_options opt;
+};
+
+struct frs_sampler3 {
+	const frs_mask *mask;
+	struct frs_vol vol;
 	struct frs_options opt;
 };
 

@@ -41,7 +41,7 @@ typedef struct frs_error {
 
 /* "FRS_E_ARG" and so on; thread-safe. */
 const char *frs_code_name(int code);
-/* "0.1.0"; thread-safe. */
+/* "0.2.0"; thread-safe. */
 const char *frs_library_version(void);
 
 /* ---- threshold matrices ---------------------------------------------- */
@@ -51,7 +51,8 @@ typedef struct frs_mask frs_mask;
 /* Load an FRD matrix (.frd) or a prepared one (.frp, see frd(5)).  For a
  * .frd whose prepared twin NAME.frp lies beside it and was made from it,
  * the twin's precomputed lists are used; a stale or damaged twin is
- * ignored and frs_mask_note says so.  Thread-safe. */
+ * ignored and frs_mask_note says so.  A 3-D .frd gives a mask for
+ * frs_sampler3_new.  Thread-safe. */
 int frs_mask_load(frs_mask **mask, const char *path, frs_error *err);
 /* Use the caller's width x height values, row-major, which must be a
  * permutation of 0 .. width*height-1 with power-of-two sides.  Nothing
@@ -61,6 +62,10 @@ int frs_mask_wrap(frs_mask **mask, const uint32_t *values, uint32_t width,
     uint32_t height, frs_error *err);
 void frs_mask_size(const frs_mask *mask, uint32_t *width,
     uint32_t *height);
+/* 2 or 3; and the depth of a 3-D mask (1 for 2-D).  Since 0.2.0. */
+unsigned frs_mask_dims(const frs_mask *mask);
+void frs_mask_size3(const frs_mask *mask, uint32_t *width,
+    uint32_t *height, uint32_t *depth);
 /* A remark on the mask's twin .frp, or NULL: stale and ignored (at
  * load), or damaged and ignored (found when a draw first needed its
  * sorted lists; the lists are then made instead).  A .frp loaded as
@@ -174,6 +179,37 @@ struct frs_info {
 };
 int frs_sampler_info(const frs_sampler *sampler, uint64_t n, uint64_t seed,
     struct frs_info *info, frs_error *err);
+
+/* ---- three dimensions (since 0.2.0) ---------------------------------- */
+
+typedef struct frs_sampler3 frs_sampler3;
+
+/*
+ * A sampler of the importance volume width x height x depth over a 3-D
+ * mask: volume[(z * height + y) * width + x], voxel (x, y, z) covering
+ * [x/W, (x+1)/W) x [y/H, (y+1)/H) x [z/D, (z+1)/D); NULL for a constant
+ * volume.  Copied and validated as a map is; opt as for frs_sampler_new,
+ * the algorithm FRS_ALG_SORTED (default) or FRS_ALG_NAIVE.  A 2-D mask
+ * is FRS_E_ARG (and a 3-D one for frs_sampler_new).  Thread-safe.
+ */
+int frs_sampler3_new(frs_sampler3 **sampler, const frs_mask *mask,
+    const float *volume, uint32_t width, uint32_t height, uint32_t depth,
+    const struct frs_options *opt, frs_error *err);
+int frs_sampler3_new_f64(frs_sampler3 **sampler, const frs_mask *mask,
+    const double *volume, uint32_t width, uint32_t height, uint32_t depth,
+    const struct frs_options *opt, frs_error *err);
+void frs_sampler3_free(frs_sampler3 *sampler);
+/* As frs_draw, frs_draw_progressive and frs_count, with (x, y, z)
+ * triples in [0,1)^3 (3 cap doubles in xyz) and pdf the density over the
+ * unit cube; the samples of frs-sample(1) for the same seed and options.
+ * Thread-safe. */
+int frs_draw3(const frs_sampler3 *sampler, uint64_t n, uint64_t seed,
+    double *xyz, double *pdf, size_t cap, size_t *count, frs_error *err);
+int frs_draw3_progressive(const frs_sampler3 *sampler,
+    const uint64_t *steps, unsigned nsteps, uint64_t seed, double *xyz,
+    double *pdf, uint32_t *step, size_t cap, size_t *count, frs_error *err);
+int frs_count3(const frs_sampler3 *sampler, uint64_t n, uint64_t seed,
+    uint64_t *count, frs_error *err);
 
 /* ---- Hierarchical Sample Warping ------------------------------------- */
 
