@@ -2,7 +2,10 @@
  * Inside the public API (src/lib/frs.h): the handles' contents and the
  * pieces the programs share with it.  The programs use the public API
  * for everything it covers; what it does not cover (OpenCL devices, the
- * -v report) reaches these.
+ * -v report) reaches these.  frs-sample's 3-D path calls frs3.h itself:
+ * it writes each set as it comes, which the 3-D draws (whole buffers,
+ * no callback form) would make it compute twice; test_api checks that
+ * both give the same bytes.
  */
 #ifndef FRS_API_H
 #define FRS_API_H
