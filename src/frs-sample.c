@@ -600,8 +600,10 @@ static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
     struct outfile *of, double t[2])
 {
 	struct pts_writer w;
+	struct progress pr;
 	uint64_t total = 0;
 
+	progress_begin(&pr, "sets", o->sets);
 	for (uint64_t set = 0; set < o->sets; set++) {
 		struct frs3_setup s;
 		struct frs3_result r;
@@ -626,9 +628,13 @@ static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
 		total += r.count;
 		frs3_result_free(&r);
 		t[1] += progress_now() - t0;
-		if (rc < 0)
+		if (rc < 0) {
+			progress_end(&pr);
 			return UINT64_MAX;
+		}
+		progress_update(&pr, set + 1);
 	}
+	progress_end(&pr);
 	if (o->count_only)
 		return total;
 	return pts_writer_end(&w) < 0 ? UINT64_MAX : total;
