@@ -1,10 +1,12 @@
 /* libFuzzer target: procedural importance specs ("blob:sigma=0.1"), the
- * input as a NUL-terminated string evaluated at 16 x 16. */
+ * input as a NUL-terminated string evaluated at 16 x 16, and as a volume
+ * spec ("blob3:z=0.2") at 6 x 6 x 6. */
 #define _POSIX_C_SOURCE 200809L
 #include <string.h>
 
 #include "fuzz.h"
 #include "imap.h"
+#include "vol.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -25,6 +27,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		struct frs_imap_stats st;
 		imap_stats(&m, &st);
 		imap_free(&m);
+	}
+	frs_clearerr();
+	(void)vol_is_spec(s);
+	{
+		struct frs_vol v;
+		if (vol_spec(s, 6, 6, 6, &v) == 0) {
+			(void)vol_validate(&v, "fuzz", IMAP_ALLOW_ZERO);
+			vol_free(&v);
+		}
 	}
 	frs_clearerr();
 	free(s);
