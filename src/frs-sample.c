@@ -655,7 +655,7 @@ static int main3(const struct opts *o)
 	setup3(o, &v, &m, cli.seed, &s0);
 	if ((double)s0.n > frs3_unique(&s0))
 		frs_warn("%llu samples from a %ux%ux%u matrix with sigma %g repeat "
-		    "its patterns (it gives %.0f without repetition)",
+		    "its patterns (it gives %.6g without repetition)",
 		    (unsigned long long)s0.n, s0.mw, s0.mh, s0.md, s0.sigma,
 		    frs3_unique(&s0));
 	if (frs3_prepare(&p, &m, o->algo == FRS_SORTED ? frs3_block(&s0) : 0) < 0)

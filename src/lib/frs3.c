@@ -424,7 +424,7 @@ static int check_work(const struct frs3_setup *s, const struct frs3_prep *p,
 		double nb = ns / p->block, work = vox * nb * nb * nb;
 		if (work > FRS3_MAX_BLOCKS)
 			return frs_fail("-n %llu would visit %.3g blocks of the "
-			    "%ux%ux%u matrix (above 2^33, hours): %.0f samples "
+			    "%ux%ux%u matrix (above 2^33, hours): %.6g samples "
 			    "repeat it %.3g times; use a larger matrix or fewer "
 			    "samples", (unsigned long long)s->n, work, s->mw, s->mh,
 			    s->md, frs3_unique(s), (double)s->n / frs3_unique(s));
