@@ -97,6 +97,33 @@ struct pt {
 	size_t cx, cy;
 };
 
+/* Counting sort into cells: counts in start[c + 1] become the first
+ * slot of each cell (prefix sums); filling then uses start[c] as a
+ * cursor, which cells_unshift turns back into the first slots. */
+static void cells_prefix(size_t *start, size_t cells)
+{
+	for (size_t c = 0; c < cells; c++)
+		start[c + 1] += start[c];
+}
+
+static void cells_unshift(size_t *start, size_t cells)
+{
+	for (size_t c = cells; c > 0; c--)
+		start[c] = start[c - 1];
+	start[0] = 0;
+}
+
+/* A coordinate difference, folded to [0, 1/2] on the torus (exact). */
+static inline double fold(double d, int torus)
+{
+	if (torus) {
+		d = fabs(d);
+		if (d > 0.5)
+			d = 1 - d;
+	}
+	return d;
+}
+
 struct grid {
 	size_t n, g;
 	int torus;
@@ -150,8 +177,7 @@ static int grid_build(struct grid *gr, const double *xy, size_t n,
 		size_t c = cell_of(xy[2 * i + 1], g) * g + cell_of(xy[2 * i], g);
 		cnt[c + 1]++;
 	}
-	for (size_t c = 0; c < cells; c++)
-		cnt[c + 1] += cnt[c];
+	cells_prefix(cnt, cells);
 	/* start[c] is now the first slot of cell c; fill with a cursor kept
 	 * in start[c] and shift back afterwards. */
 	for (size_t i = 0; i < n; i++) {
@@ -163,9 +189,7 @@ static int grid_build(struct grid *gr, const double *xy, size_t n,
 		q->cx = cx;
 		q->cy = cy;
 	}
-	for (size_t c = cells; c > 0; c--)
-		gr->start[c] = gr->start[c - 1];
-	gr->start[0] = 0;
+	cells_unshift(gr->start, cells);
 	return 0;
 }
 
@@ -173,16 +197,9 @@ static int grid_build(struct grid *gr, const double *xy, size_t n,
 static inline double pair_key(const struct pt *a, const struct pt *b,
     int torus)
 {
-	double dx = a->x - b->x, dy = a->y - b->y, xx, yy, d2, ff;
+	double dx = fold(a->x - b->x, torus), dy = fold(a->y - b->y, torus);
+	double xx, yy, d2, ff;
 
-	if (torus) {
-		dx = fabs(dx);
-		dy = fabs(dy);
-		if (dx > 0.5)
-			dx = 1 - dx;
-		if (dy > 0.5)
-			dy = 1 - dy;
-	}
 	xx = dx * dx;
 	yy = dy * dy;
 	d2 = xx + yy;
@@ -469,8 +486,7 @@ static int cells3_build(struct cells3 *gr, const double *xyz, size_t n,
 			q.c[a] = cell_of(xyz[3 * i + (size_t)a], g);
 		gr->start[cell3_index(q.c, g) + 1]++;
 	}
-	for (size_t c = 0; c < cells; c++)
-		gr->start[c + 1] += gr->start[c];
+	cells_prefix(gr->start, cells);
 	/* a cursor in start[c], shifted back afterwards (as in 2-D) */
 	for (size_t i = 0; i < n; i++) {
 		struct pt3 q;
@@ -480,9 +496,7 @@ static int cells3_build(struct cells3 *gr, const double *xyz, size_t n,
 		}
 		gr->p[gr->start[cell3_index(q.c, g)]++] = q;
 	}
-	for (size_t c = cells; c > 0; c--)
-		gr->start[c] = gr->start[c - 1];
-	gr->start[0] = 0;
+	cells_unshift(gr->start, cells);
 	return 0;
 }
 
@@ -494,12 +508,7 @@ static inline double pair_key3(const struct pt3 *a, const struct pt3 *b,
 	double sq[3];
 
 	for (int k = 0; k < 3; k++) {
-		double d = a->x[k] - b->x[k];
-		if (torus) {
-			d = fabs(d);
-			if (d > 0.5)
-				d = 1 - d;
-		}
+		double d = fold(a->x[k] - b->x[k], torus);
 		sq[k] = d * d;
 	}
 	return (sq[0] + sq[1]) + sq[2];
