@@ -105,6 +105,23 @@ static struct frs3_elem *flatten(const struct frs3_result *r, int sort)
 	return e;
 }
 
+/* Two results hold the same elements (in the same order unless sort);
+ * both are released. */
+static void same_elems(struct frs3_result *a, struct frs3_result *b,
+    int sort)
+{
+	struct frs3_elem *ea, *eb;
+
+	assert_true(a->count == b->count);
+	ea = flatten(a, sort);
+	eb = flatten(b, sort);
+	assert_memory_equal(ea, eb, a->count * sizeof *ea);
+	free(ea);
+	free(eb);
+	frs3_result_free(a);
+	frs3_result_free(b);
+}
+
 static void sample(const struct frs3_setup *s, const struct frs_vol *v,
     const struct frs_matrix *m, enum frs_algo a, const uint64_t *steps,
     unsigned nsteps, struct frs3_result *r)
@@ -138,7 +155,6 @@ static void sorted_agrees(void **state)
 				struct frs3_setup s;
 				struct frs3_result a, b;
 				uint64_t steps[2] = { ns[ni] / 3 + 1, ns[ni] + 1 };
-				struct frs3_elem *ea, *eb;
 				vol_of(specs[si], 8, 8, 8, &v);
 				assert_int_equal(frs3_setup(&s, &v, &m, steps[1], 4.0,
 				    ni + 7), 0);
@@ -147,15 +163,8 @@ static void sorted_agrees(void **state)
 				sample(&s, &v, &m, FRS_NAIVE, steps, 2, &a);
 				frs_set_threads(2);
 				sample(&s, &v, &m, FRS_SORTED, steps, 2, &b);
-				assert_true(a.count == b.count);
 				assert_true(a.count > 0);
-				ea = flatten(&a, 1);
-				eb = flatten(&b, 1);
-				assert_memory_equal(ea, eb, a.count * sizeof *ea);
-				free(ea);
-				free(eb);
-				frs3_result_free(&a);
-				frs3_result_free(&b);
+				same_elems(&a, &b, 1);
 				vol_free(&v);
 			}
 	frd_free(&m);
@@ -169,7 +178,6 @@ static void threads_same_order(void **state)
 	struct frs_vol v;
 	struct frs3_setup s;
 	struct frs3_result a, b;
-	struct frs3_elem *ea, *eb;
 	uint64_t n = 20000;
 	(void)state;
 
@@ -180,14 +188,7 @@ static void threads_same_order(void **state)
 	sample(&s, &v, &m, FRS_SORTED, &n, 1, &a);
 	frs_set_threads(2);
 	sample(&s, &v, &m, FRS_SORTED, &n, 1, &b);
-	assert_true(a.count == b.count);
-	ea = flatten(&a, 0);
-	eb = flatten(&b, 0);
-	assert_memory_equal(ea, eb, a.count * sizeof *ea);
-	free(ea);
-	free(eb);
-	frs3_result_free(&a);
-	frs3_result_free(&b);
+	same_elems(&a, &b, 0);
 	vol_free(&v);
 	frd_free(&m);
 	frs_set_threads(1);
