@@ -545,29 +545,36 @@ static void load3(const struct opts *o, struct frs_matrix *m,
 		cli_die_lib();
 }
 
-/* The records of one set: x, y, z [, pdf] [, step + 1], steps in turn. */
+/* The record of one element: x, y, z [, pdf] [, step + 1]. */
+struct put3 {
+	struct pts_writer *w;
+	const struct opts *o;
+	const struct frs3_setup *s;
+	const struct frs_vol *v;
+};
+
+static int put3_one(void *ctx, const struct frs3_elem *e)
+{
+	const struct put3 *p = ctx;
+	double rec[5];
+	unsigned k = 3;
+
+	frs3_point(p->s, e, rec);
+	if (p->o->pdf)
+		rec[k++] = frs3_pdf(p->s, p->v, e);
+	if (p->o->nsteps > 1)
+		rec[k++] = (double)(e->step + 1);
+	return pts_writer_put(p->w, rec) < 0 ? -1 : 0;
+}
+
+/* The records of one set, steps in turn. */
 static int put3(struct pts_writer *w, const struct opts *o,
     const struct frs3_setup *s, const struct frs_vol *v,
     const struct frs3_result *r)
 {
-	double rec[5];
+	struct put3 p = { w, o, s, v };
 
-	for (uint32_t step = 0; step < o->nsteps; step++)
-		for (uint64_t c = 0; c < r->nchunk; c++)
-			for (uint64_t i = 0; i < r->chunk[c].n; i++) {
-				const struct frs3_elem *e = &r->chunk[c].e[i];
-				unsigned k = 3;
-				if (e->step != step)
-					continue;
-				frs3_point(s, e, rec);
-				if (o->pdf)
-					rec[k++] = frs3_pdf(s, v, e);
-				if (o->nsteps > 1)
-					rec[k++] = (double)(e->step + 1);
-				if (pts_writer_put(w, rec) < 0)
-					return -1;
-			}
-	return 0;
+	return frs3_each(r, o->nsteps, put3_one, &p);
 }
 
 static void setup3(const struct opts *o, const struct frs_vol *v,

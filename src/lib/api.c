@@ -905,14 +905,36 @@ static int run3(const frs_sampler3 *s, const uint64_t *steps,
 	return FRS_OK;
 }
 
+/* frs_draw3's output, one element at a time. */
+struct put3 {
+	const struct frs3_setup *su;
+	const struct frs_vol *vol;
+	double *xyz, *pdf;
+	uint32_t *step;
+	size_t k;
+};
+
+static int put3_one(void *ctx, const struct frs3_elem *e)
+{
+	struct put3 *p = ctx;
+
+	frs3_point(p->su, e, &p->xyz[3 * p->k]);
+	if (p->pdf != NULL)
+		p->pdf[p->k] = frs3_pdf(p->su, p->vol, e);
+	if (p->step != NULL)
+		p->step[p->k] = e->step;
+	p->k++;
+	return 0;
+}
+
 int frs_draw3_progressive(const frs_sampler3 *s, const uint64_t *steps,
     unsigned nsteps, uint64_t seed, double *xyz, double *pdf,
     uint32_t *step, size_t cap, size_t *count, frs_error *err)
 {
 	struct frs3_setup su;
 	struct frs3_result r;
+	struct put3 p;
 	uint64_t n = 0;
-	size_t k = 0;
 	int rc;
 
 	if (count == NULL || (xyz == NULL && cap > 0))
@@ -928,20 +950,8 @@ int frs_draw3_progressive(const frs_sampler3 *s, const uint64_t *steps,
 		return set_err(err, FRS_E_BUFFER, "frs_draw3: the buffer is "
 		    "too small; *count says how many samples there are");
 	}
-	/* The steps in turn, each in slice order, as frs-sample writes. */
-	for (uint32_t st = 0; st < nsteps; st++)
-		for (uint64_t c = 0; c < r.nchunk; c++)
-			for (uint64_t i = 0; i < r.chunk[c].n; i++) {
-				const struct frs3_elem *e = &r.chunk[c].e[i];
-				if (e->step != st)
-					continue;
-				frs3_point(&su, e, &xyz[3 * k]);
-				if (pdf != NULL)
-					pdf[k] = frs3_pdf(&su, &s->vol, e);
-				if (step != NULL)
-					step[k] = e->step;
-				k++;
-			}
+	p = (struct put3){ &su, &s->vol, xyz, pdf, step, 0 };
+	frs3_each(&r, nsteps, put3_one, &p);
 	frs3_result_free(&r);
 	return ok(err);
 }

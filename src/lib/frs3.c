@@ -487,6 +487,21 @@ void frs3_result_free(struct frs3_result *r)
 	memset(r, 0, sizeof *r);
 }
 
+int frs3_each(const struct frs3_result *r, unsigned nsteps,
+    int (*fn)(void *ctx, const struct frs3_elem *e), void *ctx)
+{
+	for (uint32_t st = 0; st < nsteps; st++)
+		for (uint64_t c = 0; c < r->nchunk; c++)
+			for (uint64_t i = 0; i < r->chunk[c].n; i++) {
+				int rc;
+				if (r->chunk[c].e[i].step != st)
+					continue;
+				if ((rc = fn(ctx, &r->chunk[c].e[i])) != 0)
+					return rc;
+			}
+	return 0;
+}
+
 /* ---- points ---------------------------------------------------------- */
 
 void frs3_point(const struct frs3_setup *s, const struct frs3_elem *e,

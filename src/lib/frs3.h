@@ -90,6 +90,12 @@ int frs3_sample(const struct frs3_setup *s, const struct frs_vol *vol,
     unsigned nsteps, int count_only, struct frs3_result *r);
 void frs3_result_free(struct frs3_result *r);
 
+/* Visit the elements in output order: the steps in turn, each in slice
+ * order (as frs-sample writes them); fn returns non-zero to stop, and
+ * that value is returned. */
+int frs3_each(const struct frs3_result *r, unsigned nsteps,
+    int (*fn)(void *ctx, const struct frs3_elem *e), void *ctx);
+
 /* The point of an element in [0, 1)^3, with the setup's jitter. */
 void frs3_point(const struct frs3_setup *s, const struct frs3_elem *e,
     double p[3]);
