@@ -93,28 +93,12 @@ static const struct option longopts[] = {
 /* "N", "WxH" or "WxHxD"; N means a cube for k = 3. */
 static void parse_dims(const char *s, struct frdgen_params *pr)
 {
-	const char *x1 = strchr(s, 'x'), *x2 = x1 ? strchr(x1 + 1, 'x') : NULL;
-	uint32_t w, h;
+	uint32_t sz[3];
+	int given = cli_size3("-s", s, UINT32_MAX, sz);
 
-	if (x2 == NULL) {
-		cli_size("-s", s, UINT32_MAX, &w, &h);
-		pr->w = w;
-		pr->h = h;
-		pr->d = x1 == NULL && pr->dims == 3 ? w : 1;
-		return;
-	}
-	{
-		char buf[64];
-		size_t len = (size_t)(x2 - s);
-		if (len >= sizeof buf)
-			cli_usage_error("-s: '%s' is not a size", s);
-		memcpy(buf, s, len);
-		buf[len] = '\0';
-		cli_size("-s", buf, UINT32_MAX, &w, &h);
-		pr->w = w;
-		pr->h = h;
-		pr->d = (uint32_t)cli_ll("-s", x2 + 1, 1, UINT32_MAX);
-	}
+	pr->w = sz[0];
+	pr->h = sz[1];
+	pr->d = given == 3 || (given == 1 && pr->dims == 3) ? sz[2] : 1;
 }
 
 static void print_quality(FILE *fp, const struct frs_matrix *m,
