@@ -79,7 +79,7 @@ long frd_extent(double rr, uint cap)
  */
 __kernel void frd_add(__global double *field, __global const double *table,
     __global double *out, uint4 dim, uint4 hf, uint4 nt, uint4 lg,
-    uint4 cen, uint4 first, uint4 cnt, uint4 eyz, double r2)
+    uint4 cen, uint4 first, uint4 cnt, uint4 eyz, double r2, double sub)
 {
 	__local double lmin[FRD_ROWS];
 	__local uint lzero[FRD_ROWS];
@@ -132,7 +132,9 @@ __kernel void frd_add(__global double *field, __global const double *table,
 				    (long)i : frd_toff(x, cen.x, dim.x);
 				dx = dx < 0 ? -dx : dx;
 				if (dx <= e) {
-					v += trow[dx];
+					/* frdgen_add: the taper, never below 0 */
+					double a = trow[dx] - sub;
+					v += a > 0.0 ? a : 0.0;
 					w = 1;
 				}
 			}

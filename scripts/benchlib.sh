@@ -13,3 +13,40 @@ timed() {
 	SEC=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.6f", b - a }')
 }
 
+
+# uniform_frs FRS DDA MATRIX...: the targets of frd-gen(1) for uniform FRS
+# (-i const -n 1024, no jitter): 10 sets, seeds 1 to 10, the matrices
+# taken in turn; the exact spectrum for |k| <= 128 in 2-unit annuli.
+# Prints "peak ring aniso_max aniso_mean rho": the highest radial mean at
+# f >= 4, the highest at 1.5 times its frequency or beyond, the largest and
+# the mean anisotropy (dB) over 4 <= f < 128, and the mean of dda
+# --density's rho.  Dart throwing from ref-sample: 1.52 1.17 -8.5 -10.0 0.70.
+uniform_frs() {
+	_frs=$1 _dda=$2
+	shift 2
+	_u=$(mktemp -d)
+	_s=1
+	while [ $_s -le 10 ]; do
+		_i=$(( (_s - 1) % $# + 1 ))
+		eval "_m=\${$_i}"
+		"$_frs" -q -m "$_m" -i const -n 1024 -S $_s -o "$_u/s$_s.pts"
+		_s=$((_s + 1))
+	done
+	"$_dda" -q --fourier --size 128 --radial "$_u/rad" "$_u"/s*.pts >/dev/null
+	for _f in "$_u"/s*.pts; do "$_dda" -q --density "$_f"; done |
+	    awk -F '\t' '$1 == "mean" { s += $4; n++ } END { printf "%.3f\n", s / n }' \
+	    >"$_u/rho"
+	awk -F '\t' -v rf="$_u/rho" '
+		BEGIN { getline rho < rf }
+		NR > 1 && $1 >= 4 && $1 < 128 {
+			n++; f[n] = $1; p[n] = $2
+			if ($2 > pk) { pk = $2; pf = $1 }
+			if (n == 1 || $3 > am) am = $3
+			as += $3
+		}
+		END {
+			for (i = 1; i <= n; i++) if (f[i] >= 1.5 * pf && p[i] > ring) ring = p[i]
+			printf "%.2f %.2f %.1f %.1f %s\n", pk, ring, am, as / n, rho
+		}' "$_u/rad"
+	rm -rf "$_u"
+}

@@ -16,17 +16,20 @@
 #include "mem.h"
 #include "ocl.h"
 #include "outfile.h"
+#include "par.h"
 #include "parse.h"
 #include "progress.h"
 #include "vac.h"
 
 static const char usage[] =
     "usage: frd-gen -s SIZE [-k 2|3] [-p P] [--tol EPS | --exact] [-S SEED]\n"
+    "               [--reach R] [--reach-cap C] [--cutoff taper|hard]\n"
     "               [-j N] [--checkpoint FILE] [--device cpu|cl|cl:N] [-v]\n"
     "               [-o FILE]\n"
+    "       frd-gen --field int32 -s SIZE [-k 2|3] [-p P] [-S SEED] ...\n"
     "       frd-gen --method vac -s SIZE [-k 2|3] [--vac-sigma S]\n"
     "               [--tol EPS | --exact] [-S SEED] [-v] [-o FILE]\n"
-    "       frd-gen --quality FILE\n"
+    "       frd-gen --quality FILE...\n"
     "       frd-gen --list-devices\n"
     "\n"
     "  -s, --size SIZE     N (N x N, or N^3 with -k 3), WxH or WxHxD\n"
@@ -36,17 +39,25 @@ static const char usage[] =
     "      --vac-sigma S   vac: Gaussian filter sigma in cells (default 1.5)\n"
     "  -p, --fraction P    candidate fraction in (0, 1] (default 0.5;\n"
     "                      1 = always the global minimum)\n"
-    "      --tol EPS       neglect forces below EPS * f(0) (default 1e-3;\n"
-    "                      radius (ln 1/EPS)^2 / 2 cells for the default f);\n"
+    "      --field F       double (default: f(r) = exp(-(r/S)^Q)) or int32\n"
+    "                      (the thesis authors' integer table and reach)\n"
+    "      --tol EPS       neglect forces below EPS * f(0) (default 1e-2;\n"
+    "                      the radius at least S (EPS^(-1/Q) - 1) cells,\n"
+    "                      with exp S (ln 1/EPS)^(1/Q));\n"
     "                      vac: the filter below EPS (default 1e-4, radius\n"
     "                      S sqrt(2 ln 1/EPS))\n"
     "      --exact         keep every contribution (frd: O(N^2); vac: the\n"
     "                      whole torus)\n"
     "      --reach R       radius at least R times the spacing of the values\n"
-    "                      inserted so far (default 0.7, 0 = off)\n"
-    "      --force-s S     force f(r) = exp(-(r/S)^Q), default S = 0.5\n"
-    "      --force-q Q     default Q = 0.5\n"
-
+    "                      inserted so far (default 3, 0 = off)\n"
+    "      --reach-cap C   radius at most C times the shortest side\n"
+    "                      (default 0.333, 0 = off)\n"
+    "      --cutoff K      taper (default: f(r) - f(R) inside the radius R)\n"
+    "                      or hard (f(r))\n"
+    "      --force F       power (default: f(r) = (1 + r/S)^-Q) or exp\n"
+    "                      (the thesis's f(r) = exp(-(r/S)^Q))\n"
+    "      --force-s S     default S = 1 (exp: 0.5)\n"
+    "      --force-q Q     default Q = 4 (exp: 0.5)\n"
     "  -S, --seed N        random seed (default 1)\n"
     "  -j, --threads N     threads (default: all cores); same bytes for any N\n"
     "      --checkpoint F  resume from F if it holds a run with the same\n"
@@ -56,7 +67,7 @@ static const char usage[] =
     "                      the same bytes on every device (needs fp64)\n"
     "      --list-devices  list the OpenCL devices and exit\n"
     "  -v, --verbose       print time and quality figures on standard error\n"
-    "      --quality FILE  print the quality figures of a matrix and exit\n"
+    "      --quality FILE...  print the quality figures of matrices and exit\n"
     "  -o, --output FILE   output (default: standard output)\n"
     "  -q, --quiet         no progress bar or warnings\n"
     "      --progress      progress bar even when standard error is no tty\n"
@@ -65,7 +76,7 @@ static const char usage[] =
 enum {
 	OPT_TOL = OPT_FIRST_PRIVATE, OPT_EXACT, OPT_REACH, OPT_FS, OPT_FQ,
 	OPT_CKPT, OPT_CKPT_EVERY, OPT_QUALITY, OPT_DEVICE, OPT_LIST,
-	OPT_METHOD, OPT_VAC_SIGMA
+	OPT_METHOD, OPT_VAC_SIGMA, OPT_FIELD, OPT_CAP, OPT_CUTOFF, OPT_FORCE
 };
 
 static const struct option longopts[] = {
@@ -84,7 +95,10 @@ static const struct option longopts[] = {
 	{ "list-devices", no_argument, NULL, OPT_LIST },
 	{ "method", required_argument, NULL, OPT_METHOD },
 	{ "vac-sigma", required_argument, NULL, OPT_VAC_SIGMA },
-
+	{ "field", required_argument, NULL, OPT_FIELD },
+	{ "reach-cap", required_argument, NULL, OPT_CAP },
+	{ "cutoff", required_argument, NULL, OPT_CUTOFF },
+	{ "force", required_argument, NULL, OPT_FORCE },
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
@@ -101,11 +115,91 @@ static void parse_dims(const char *s, struct frdgen_params *pr)
 	pr->d = given == 3 || (given == 1 && pr->dims == 3) ? sz[2] : 1;
 }
 
-static void print_quality(FILE *fp, const struct frs_matrix *m,
+/* The levels that --quality measures: the first c = 64, 128, ... N/4
+ * values, and the last 2.5 % (the black dots of Fig. 3.1's 97.5 % grey). */
+#define MAXLEVELS 40
+
+struct levels {
+	const struct frs_matrix *m;
+	struct frdq_level q[MAXLEVELS];
+	size_t n;
+};
+
+static int level_task(void *ctx, uint64_t b, uint64_t e)
+{
+	struct levels *l = ctx;
+	for (uint64_t i = b; i < e; i++)
+		if (frdq_level(l->m, l->q[i].lo, l->q[i].hi, &l->q[i]) < 0)
+			return -1;
+	return 0;
+}
+
+static int measure_levels(const struct frs_matrix *m, struct levels *l)
+{
+	l->m = m;
+	l->n = 0;
+	for (uint64_t c = 64; c <= m->n / 4 && l->n + 1 < MAXLEVELS; c *= 2) {
+		l->q[l->n].lo = 0;
+		l->q[l->n++].hi = c;
+	}
+	if (m->n >= 2560) {
+		l->q[l->n].lo = m->n - m->n / 40;
+		l->q[l->n++].hi = m->n;
+	}
+	return frs_parallel(l->n, 1, level_task, l, NULL);
+}
+
+static void print_level(FILE *fp, const struct frdq_level *q, const char *k)
+{
+	fprintf(fp, "strata_%s %.4f\n", k, q->strata);
+	if (!q->spectral)
+		return;
+	fprintf(fp, "pmax_%s %.2f\npeak_%s %.3f\nring_%s %.3f\n"
+	    "aniso_%s %.2f\n", k, q->pmax, k, q->peak, k, q->ring, k, q->aniso);
+}
+
+/* The bounds of frd-gen(1): a level with a periodogram maximum above 30 or
+ * more than 95 % of its strata singly occupied looks like a lattice. */
+#define PMAX_BOUND 30.0
+#define STRATA_BOUND 0.95
+
+static void print_levels(FILE *fp, const struct levels *l)
+{
+	const struct frdq_level *wp = NULL, *ws = NULL;
+	char key[32];
+
+	for (size_t i = 0; i < l->n; i++) {
+		const struct frdq_level *q = &l->q[i];
+		int last = q->lo > 0;
+		if (last)
+			snprintf(key, sizeof key, "last_2.5%%");
+		else
+			snprintf(key, sizeof key, "%llu", (unsigned long long)q->hi);
+		print_level(fp, q, key);
+		if (last)
+			continue;
+		if (q->spectral && (wp == NULL || q->pmax > wp->pmax))
+			wp = q;
+		if (ws == NULL || q->strata > ws->strata)
+			ws = q;
+	}
+	if (wp != NULL)
+		fprintf(fp, "pmax_worst %.2f\npmax_worst_at %llu\n", wp->pmax,
+		    (unsigned long long)wp->hi);
+	if (ws != NULL)
+		fprintf(fp, "strata_worst %.4f\nstrata_worst_at %llu\n",
+		    ws->strata, (unsigned long long)ws->hi);
+	if (ws != NULL)
+		fprintf(fp, "lattice_check %s\n", (wp != NULL && wp->pmax >
+		    PMAX_BOUND) || ws->strata > STRATA_BOUND ? "fail" : "pass");
+}
+
+static int print_quality(FILE *fp, const struct frs_matrix *m,
     const char *name)
 {
 	static const uint32_t cs[] = { 16, 64, 256, 1024 };
 	static const double levels[] = { 2.5, 10 };
+	struct levels *l;
 	double ratio, peak;
 
 	fprintf(fp, "matrix %s\nsize %ux%ux%u\n", name, m->w, m->h, m->d);
@@ -123,15 +217,23 @@ static void print_quality(FILE *fp, const struct frs_matrix *m,
 			fprintf(fp, "lowpass_last_%g%% %.4f\npeak_last_%g%% %.3f\n",
 			    levels[i], ratio, levels[i], peak);
 	}
+	l = malloc(sizeof *l);
+	if (l == NULL || measure_levels(m, l) < 0) {
+		free(l);
+		return -1;
+	}
+	print_levels(fp, l);
+	free(l);
+	return 0;
 }
 
 static int quality(const char *path)
 {
 	struct frs_matrix m;
 
-	if (frd_read(path, &m) < 0 || frd_check_permutation(&m, path) < 0)
+	if (frd_read(path, &m) < 0 || frd_check_permutation(&m, path) < 0 ||
+	    print_quality(stdout, &m, path) < 0)
 		cli_die_lib();
-	print_quality(stdout, &m, path);
 	frd_free(&m);
 	return 0;
 }
@@ -151,6 +253,7 @@ struct method_opts {
 	int tol_set;		/* --tol or --exact given */
 	double vac_sigma;	/* --vac-sigma, 0 when not given */
 	const char *frd_only;	/* an option given that only frd uses */
+	const char *dbl_only;	/* one that only --field double uses */
 };
 
 static int parse_method(const char *s)
@@ -162,9 +265,45 @@ static int parse_method(const char *s)
 	return 1;
 }
 
-/* Options of the other method are refused, not silently ignored. */
-static void check_method(const struct method_opts *mo, int use_cl)
+static enum frdgen_field parse_field(const char *s)
 {
+	if (strcmp(s, "double") == 0)
+		return FRDGEN_FIELD_DOUBLE;
+	if (strcmp(s, "int32") != 0)
+		cli_usage_error("--field: '%s' is not double or int32", s);
+	return FRDGEN_FIELD_INT32;
+}
+
+static enum frdgen_force parse_force(const char *s)
+{
+	if (strcmp(s, "power") == 0)
+		return FRDGEN_FORCE_POWER;
+	if (strcmp(s, "exp") != 0)
+		cli_usage_error("--force: '%s' is not power or exp", s);
+	return FRDGEN_FORCE_EXP;
+}
+
+static int parse_cutoff(const char *s)
+{
+	if (strcmp(s, "taper") == 0)
+		return 1;
+	if (strcmp(s, "hard") != 0)
+		cli_usage_error("--cutoff: '%s' is not taper or hard", s);
+	return 0;
+}
+
+/* Options of the other method or field are refused, not silently
+ * ignored. */
+static void check_method(const struct method_opts *mo,
+    const struct frdgen_params *pr, int use_cl)
+{
+	if (pr->field == FRDGEN_FIELD_INT32) {
+		if (mo->dbl_only != NULL)
+			cli_usage_error("%s: not used by --field int32 (its "
+			    "table fixes force and radius)", mo->dbl_only);
+		if (mo->vac)
+			cli_usage_error("--field: not used by --method vac");
+	}
 	if (!mo->vac) {
 		if (mo->vac_sigma > 0.0)
 			cli_usage_error("--vac-sigma: only with --method vac");
@@ -228,7 +367,8 @@ static int run_vac(const struct frdgen_params *pr,
 		    "(sigma %g, radius %.1f, %llu initial cells, %llu moves)\n",
 		    vp.w, vp.h, vp.d, progress_now() - t0, vp.sigma, st.radius,
 		    (unsigned long long)st.ones, (unsigned long long)st.moves);
-		print_quality(stderr, &m, cli.out ? cli.out : "<stdout>");
+		if (print_quality(stderr, &m, cli.out ? cli.out : "<stdout>") < 0)
+			cli_die_lib();
 	}
 	frd_free(&m);
 	return 0;
@@ -240,10 +380,10 @@ int main(int argc, char **argv)
 	struct frs_matrix m;
 	struct outfile of;
 	struct progress prog;
-	const char *size = NULL;
-	int c, verbose = 0, use_cl = 0, dev = -1;
+	const char *size = NULL, *qfile = NULL;
+	int c, verbose = 0, use_cl = 0, dev = -1, s_set = 0, q_set = 0;
 	struct ocl o;
-	struct method_opts mo = { 0, 0, 0.0, NULL };
+	struct method_opts mo = { 0, 0, 0.0, NULL, NULL };
 	double t0;
 
 	cli_init("frd-gen", usage);
@@ -269,22 +409,42 @@ int main(int argc, char **argv)
 				cli_usage_error("--tol: must be above 0 (use "
 				    "--exact to keep every contribution)");
 			mo.tol_set = 1;
+			mo.dbl_only = "--tol";
 			break;
 		case OPT_EXACT:
 			pr.tol = 0.0;
 			mo.tol_set = 1;
+			mo.dbl_only = "--exact";
 			break;
 		case OPT_REACH:
 			pr.reach = cli_double("--reach", optarg, 0.0, 1e6);
-			mo.frd_only = "--reach";
+			mo.frd_only = mo.dbl_only = "--reach";
+			break;
+		case OPT_CAP:
+			pr.cap = cli_double("--reach-cap", optarg, 0.0, 1e6);
+			mo.frd_only = mo.dbl_only = "--reach-cap";
+			break;
+		case OPT_CUTOFF:
+			pr.taper = parse_cutoff(optarg);
+			mo.frd_only = mo.dbl_only = "--cutoff";
+			break;
+		case OPT_FORCE:
+			pr.force = parse_force(optarg);
+			mo.frd_only = mo.dbl_only = "--force";
+			break;
+		case OPT_FIELD:
+			pr.field = parse_field(optarg);
+			mo.frd_only = "--field";
 			break;
 		case OPT_FS:
 			pr.s = cli_double("--force-s", optarg, 1e-6, 1e6);
-			mo.frd_only = "--force-s";
+			mo.frd_only = mo.dbl_only = "--force-s";
+			s_set = 1;
 			break;
 		case OPT_FQ:
 			pr.q = cli_double("--force-q", optarg, 1e-3, 100.0);
-			mo.frd_only = "--force-q";
+			mo.frd_only = mo.dbl_only = "--force-q";
+			q_set = 1;
 			break;
 		case OPT_CKPT:
 			pr.checkpoint = optarg;
@@ -304,8 +464,8 @@ int main(int argc, char **argv)
 				cli_usage_error("--vac-sigma: must be above 0");
 			break;
 		case OPT_QUALITY:
-			cli_options_done();
-			return quality(optarg);
+			qfile = optarg;
+			break;
 		case OPT_DEVICE:
 			use_cl = cli_device(optarg, &dev);
 			break;
@@ -320,13 +480,25 @@ int main(int argc, char **argv)
 				cli_usage(2);
 		}
 	}
+	if (qfile != NULL) {
+		cli_options_done();
+		quality(qfile);
+		for (int i = optind; i < argc; i++)
+			quality(argv[i]);
+		return 0;
+	}
 	if (optind != argc)
 		cli_usage_error("unexpected argument '%s'", argv[optind]);
 	if (size == NULL)
 		cli_usage_error("-s SIZE is required");
 	parse_dims(size, &pr);
 	pr.seed = cli.seed;
-	check_method(&mo, use_cl);
+	/* The thesis's force with its own parameters unless given. */
+	if (pr.force == FRDGEN_FORCE_EXP) {
+		pr.s = s_set ? pr.s : 0.5;
+		pr.q = q_set ? pr.q : 0.5;
+	}
+	check_method(&mo, &pr, use_cl);
 	if (mo.vac)
 		return run_vac(&pr, &mo, verbose);
 	if (frdgen_check(&pr) < 0)
@@ -359,7 +531,8 @@ int main(int argc, char **argv)
 		fprintf(stderr, "frd-gen: %ux%ux%u in %.3f s (radius %.1f) on "
 		    "%s\n", pr.w, pr.h, pr.d, progress_now() - t0,
 		    frdgen_radius(&pr), use_cl ? o.name : "the CPU");
-		print_quality(stderr, &m, cli.out ? cli.out : "<stdout>");
+		if (print_quality(stderr, &m, cli.out ? cli.out : "<stdout>") < 0)
+			cli_die_lib();
 	}
 	frd_free(&m);
 	return 0;

@@ -1,7 +1,9 @@
 /*
  * The brute-force FRD reference (Listing 3.1 of the thesis, written from
  * the definition): every free cell sorted by (force, tie key) at every
- * step, the K-th taken, the force added to every cell within the radius.
+ * step, the K-th taken, the force added to every cell within the radius
+ * (double field: the documented radius and taper; int32: the authors'
+ * integer table, written here from its description, at every cell).
  * O(N^2 log N); the oracle of test_frdgen and the baseline of the
  * frd-gen benchmark (ref_frd).
  */
@@ -20,18 +22,61 @@ static uint32_t tdist(uint32_t a, uint32_t b, uint32_t n)
 	return n - d < d ? n - d : d;
 }
 
-/* The radius after `inserted` values, from the rule in frdgen.h. */
+/* The radius after `inserted` values, from the rule in frdgen.h:
+ * reach times the spacing, at least the neglect radius, at most cap times
+ * the shortest side (but never below the neglect radius). */
 static double ref_radius(const struct frdgen_params *pr, uint64_t inserted)
 {
-	double r = pr->tol > 0 ? pr->s * pow(log(1 / pr->tol), 1 / pr->q) :
-	    INFINITY;
-	double vol = (double)pr->w * pr->h * pr->d, sp;
+	double rtol = pr->tol <= 0 ? INFINITY : pr->force == FRDGEN_FORCE_POWER ?
+	    pr->s * (pow(pr->tol, -1 / pr->q) - 1) :
+	    pr->s * pow(log(1 / pr->tol), 1 / pr->q);
+	double vol = (double)pr->w * pr->h * pr->d, sp, r = rtol;
+	double side = fmin(pr->w, pr->dims == 3 ? fmin(pr->h, pr->d) : pr->h);
 	if (pr->reach > 0) {
 		sp = pr->dims == 2 ? sqrt(2 * vol / (sqrt(3.0) * inserted)) :
 		    cbrt(sqrt(2.0) * vol / inserted);
 		r = fmax(r, pr->reach * sp);
 	}
+	if (pr->cap > 0 && r > pr->cap * side)
+		r = fmax(pr->cap * side, rtol);
 	return r;
+}
+
+/* The thesis authors' integer force (UTK's ForcedRandomDithering):
+ * (int)(scale exp(-sqrt(2 r))), scale = min(INT_MAX / 20, 1 / f(S/2)), S
+ * the shortest side. */
+static double ref_int_force(const struct frdgen_params *pr, double r)
+{
+	uint32_t side = pr->w < pr->h ? pr->w : pr->h;
+	double scale;
+	if (pr->dims == 3 && pr->d < side)
+		side = pr->d;
+	scale = fmin(2147483647 / 20, 1.0 / exp(-sqrt(2.0 * (side / 2))));
+	return (double)(int)(scale * exp(-sqrt(2.0 * r)));
+}
+
+/* (1 + r/s)^-q or exp(-(r/s)^q). */
+static double ref_force(const struct frdgen_params *pr, double r)
+{
+	if (pr->force == FRDGEN_FORCE_POWER)
+		return pow(1 + r / pr->s, -pr->q);
+	return exp(-pow(r / pr->s, pr->q));
+}
+
+/* The force that the cell at squared distance d2 gets from an insertion
+ * of radius r: int32 everywhere (0 where the table is); double within r,
+ * less f(r) under the taper unless r reaches past the torus. */
+static double ref_add(const struct frdgen_params *pr, double d2, double r,
+    double rmax)
+{
+	double f, cut;
+	if (pr->field == FRDGEN_FIELD_INT32)
+		return ref_int_force(pr, sqrt(d2));
+	if (!(d2 <= r * r) && r < rmax)
+		return 0.0;
+	f = ref_force(pr, sqrt(d2));
+	cut = pr->taper && r < rmax ? ref_force(pr, r) : 0.0;
+	return f - cut > 0.0 ? f - cut : 0.0;
 }
 
 struct cand {
@@ -58,6 +103,8 @@ static void reference(const struct frdgen_params *pr, uint32_t *out)
 	double *f = calloc(n, sizeof *f);
 	unsigned char *taken = calloc(n, 1);
 	struct cand *cs = malloc(n * sizeof *cs);
+	double hw = pr->w / 2, hh = pr->h / 2, hd = pr->d / 2;
+	double rmax = sqrt(hw * hw + hh * hh + hd * hd);
 
 	for (uint64_t step = 0; step < n; step++) {
 		size_t nc = 0;
@@ -70,9 +117,9 @@ static void reference(const struct frdgen_params *pr, uint32_t *out)
 				    frdgen_tiekey(pr, step, i), i };
 		qsort(cs, nc, sizeof *cs, cand_cmp);
 		c = cs[k - 1].c;
-		if (cs[0].f == 0.0) {
-			/* Cells no force has reached: the r-th of them in the
-			 * documented order. */
+		if (cs[k - 1].f == 0.0) {
+			/* Rank k among the cells no force has reached: the
+			 * r-th of them in the documented order. */
 			uint64_t z = 0, zr;
 			for (size_t i = 0; i < nc && cs[i].f == 0.0; i++)
 				z++;
@@ -92,9 +139,7 @@ static void reference(const struct frdgen_params *pr, uint32_t *out)
 			double dx = tdist(i % pr->w, cx, pr->w);
 			double dy = tdist(i / pr->w % pr->h, cy, pr->h);
 			double dz = tdist(i / pr->w / pr->h, cz, pr->d);
-			double d2 = dx * dx + dy * dy + dz * dz;
-			if (d2 <= r * r)
-				f[i] += exp(-pow(sqrt(d2) / pr->s, pr->q));
+			f[i] += ref_add(pr, dx * dx + dy * dy + dz * dz, r, rmax);
 		}
 	}
 	free(f);

@@ -40,27 +40,86 @@ static void permutations(void **state)
 
 #include "ref_frd.h"
 
-static void against_reference(uint32_t w, uint32_t h, uint32_t d, double p,
-    double tol, double reach)
+static void against_reference_pr(const struct frdgen_params *pr)
 {
-	struct frdgen_params pr;
 	struct frs_matrix m;
-	uint32_t *ref;
+	uint32_t *ref = malloc((size_t)pr->w * pr->h * pr->d * sizeof *ref);
+	char desc[512];
 
-	params(&pr, w, h, d, p, tol);
-	pr.reach = reach;
-	ref = malloc((size_t)w * h * d * sizeof *ref);
-	reference(&pr, ref);
-	assert_int_equal(frdgen_run(&pr, &m, NULL), 0);
+	reference(pr, ref);
+	assert_int_equal(frdgen_run(pr, &m, NULL), 0);
 	for (size_t i = 0; i < m.n; i++)
 		if (m.v[i] != ref[i]) {
-			print_error("%ux%ux%u p=%g tol=%g reach=%g: cell %zu is %u, "
-			    "reference %u\n", w, h, d, p, tol, reach, i, m.v[i],
-			    ref[i]);
+			frdgen_describe(pr, desc, sizeof desc);
+			print_error("%s: cell %zu is %u, reference %u\n", desc, i,
+			    m.v[i], ref[i]);
 			fail();
 		}
 	free(ref);
 	frd_free(&m);
+}
+
+static void against_reference(uint32_t w, uint32_t h, uint32_t d, double p,
+    double tol, double reach)
+{
+	struct frdgen_params pr;
+
+	params(&pr, w, h, d, p, tol);
+	pr.reach = reach;
+	against_reference_pr(&pr);
+}
+
+/* --field int32: the authors' integer table and tie rule, byte for byte
+ * with the same random choices. */
+static void int32_field(void **state)
+{
+	static const uint32_t sz[][3] = { { 16, 16, 1 }, { 32, 32, 1 },
+	    { 24, 16, 1 }, { 8, 8, 6 } };
+	struct frdgen_params pr;
+	(void)state;
+
+	for (size_t i = 0; i < sizeof sz / sizeof sz[0]; i++) {
+		params(&pr, sz[i][0], sz[i][1], sz[i][2], 0.5, 0.0);
+		pr.field = FRDGEN_FIELD_INT32;
+		against_reference_pr(&pr);
+	}
+	/* The table: 1 / f(S/2) at S = 32, INT_MAX / 20 from S = 342 on,
+	 * where it reaches 0 at r = ln(scale)^2 / 2 = 171 cells. */
+	params(&pr, 32, 32, 1, 0.5, 0.0);
+	pr.field = FRDGEN_FIELD_INT32;
+	assert_double_equal(frdgen_int_scale(&pr), exp(4.0 * sqrt(2.0)) ,
+	    1e-9 * exp(4.0 * sqrt(2.0)));
+	assert_true(frdgen_force(&pr, 0.0) == floor(exp(4.0 * sqrt(2.0))));
+	params(&pr, 512, 512, 1, 0.5, 0.0);
+	pr.field = FRDGEN_FIELD_INT32;
+	assert_true(frdgen_int_scale(&pr) == 107374182.0);
+	assert_true(frdgen_force(&pr, 170.0) >= 1.0);
+	assert_true(frdgen_force(&pr, 172.0) == 0.0);
+	assert_double_equal(frdgen_radius(&pr), 171.0, 0.5);
+}
+
+/* The hard cut-off (--cutoff hard) and no cap, as before the taper. */
+static void hard_cutoff(void **state)
+{
+	struct frdgen_params pr;
+	(void)state;
+
+	params(&pr, 32, 32, 1, 0.5, 1e-2);
+	pr.taper = 0;
+	against_reference_pr(&pr);
+	params(&pr, 40, 24, 1, 1.0, 1e-3);
+	pr.taper = 0;
+	pr.cap = 0.0;
+	pr.reach = 0.7;
+	pr.force = FRDGEN_FORCE_EXP;
+	pr.s = pr.q = 0.5;
+	against_reference_pr(&pr);
+	/* The thesis's force under the taper. */
+	params(&pr, 32, 24, 1, 0.5, 1e-3);
+	pr.force = FRDGEN_FORCE_EXP;
+	pr.s = 0.5;
+	pr.q = 0.7;
+	against_reference_pr(&pr);
 }
 
 /* Cells no force has reached yet (tolerance without reach): drawn
@@ -192,6 +251,107 @@ static void lowpass_measure(void **state)
 	frd_free(&m);
 }
 
+/* The level figures of frd-gen --quality (frdq_level), the bounds of
+ * frd-gen(1): at most 30 for the periodogram maximum, at most 95 % of the
+ * strata singly occupied. */
+static int levels_pass(const struct frs_matrix *m, uint64_t cmax)
+{
+	for (uint64_t c = 64; c <= cmax; c *= 2) {
+		struct frdq_level q;
+		assert_int_equal(frdq_level(m, 0, c, &q), 0);
+		assert_true(q.spectral);
+		if (q.pmax > 30.0 || q.strata > 0.95) {
+			print_message("c = %llu: pmax %.1f, strata %.3f\n",
+			    (unsigned long long)c, q.pmax, q.strata);
+			return 0;
+		}
+	}
+	return 1;
+}
+
+/* The ordered-dither (Bayer) matrix: every prefix of 4^k values is a
+ * square lattice. */
+static void bayer(struct frs_matrix *m, uint32_t s)
+{
+	assert_int_equal(frd_alloc(m, 2, s, s, 1, ""), 0);
+	for (uint32_t y = 0; y < s; y++)
+		for (uint32_t x = 0; x < s; x++) {
+			uint32_t v = 0;
+			/* B_2n = (4 B, 4 B + 2; 4 B + 3, 4 B + 1): the finest
+			 * bit of x and y gives the leading base-4 digit. */
+			for (uint32_t b = 1; b < s; b *= 2) {
+				uint32_t bx = (x & b) != 0, by = (y & b) != 0;
+				v = 4 * v + (bx ^ by ? 2 + by : by);
+			}
+			m->v[y * s + x] = v;
+		}
+}
+
+/* A random matrix whose first g^2 values lie one in each cell of a g x g
+ * grid, cells in random order, at random places: a jittered grid. */
+static void jittered(struct frs_matrix *m, uint32_t s, uint32_t g)
+{
+	struct frs_rng r;
+	uint32_t cs = s / g, next = g * g, *cell = malloc(g * g * sizeof *cell);
+
+	assert_int_equal(frd_alloc(m, 2, s, s, 1, ""), 0);
+	frs_rng_init(&r, 9, FRS_STREAM_TEST);
+	for (uint32_t i = 0; i < m->n; i++)
+		m->v[i] = UINT32_MAX;
+	for (uint32_t c = 0; c < g * g; c++)
+		cell[c] = c;
+	for (uint32_t c = g * g - 1; c > 0; c--) {
+		uint32_t j = (uint32_t)frs_rng_below(&r, c + 1), t = cell[c];
+		cell[c] = cell[j];
+		cell[j] = t;
+	}
+	for (uint32_t c = 0; c < g * g; c++) {
+		uint32_t x = cell[c] % g * cs + (uint32_t)frs_rng_below(&r, cs);
+		uint32_t y = cell[c] / g * cs + (uint32_t)frs_rng_below(&r, cs);
+		m->v[y * s + x] = c;
+	}
+	free(cell);
+	for (uint32_t i = 0; i < m->n; i++)
+		if (m->v[i] == UINT32_MAX)
+			m->v[i] = next++;
+	/* Shuffle the values above g^2 so that the rest is white noise. */
+	for (uint32_t i = (uint32_t)m->n - 1; i > 0; i--) {
+		uint32_t j = (uint32_t)frs_rng_below(&r, i + 1), t;
+		if (m->v[i] < g * g || m->v[j] < g * g)
+			continue;
+		t = m->v[i];
+		m->v[i] = m->v[j];
+		m->v[j] = t;
+	}
+}
+
+/* The default matrices pass the level bounds at every prefix; a planted
+ * lattice and a planted jittered grid fail them. */
+static void level_bounds(void **state)
+{
+	struct frdgen_params pr;
+	struct frs_matrix m;
+	(void)state;
+
+	for (uint64_t seed = 1; seed <= 2; seed++) {
+		frdgen_defaults(&pr);
+		pr.w = pr.h = seed == 1 ? 128 : 256;
+		pr.d = 1;
+		pr.seed = seed;
+		assert_int_equal(frdgen_run(&pr, &m, NULL), 0);
+		assert_true(levels_pass(&m, m.n / 4));
+		frd_free(&m);
+	}
+	bayer(&m, 128);
+	tu_assert_permutation(&m);
+	assert_false(levels_pass(&m, m.n / 4));
+	frd_free(&m);
+	jittered(&m, 128, 32);
+	tu_assert_permutation(&m);
+	assert_false(levels_pass(&m, m.n / 4));
+	frd_free(&m);
+}
+
 /* The FFT against a direct DFT. */
 static void fft_vs_dft(void **state)
 {
@@ -270,10 +430,13 @@ int main(void)
 		cmocka_unit_test(exact_global_minimum),
 		cmocka_unit_test(windows_and_ranks),
 		cmocka_unit_test(zero_field),
+		cmocka_unit_test(int32_field),
+		cmocka_unit_test(hard_cutoff),
 		cmocka_unit_test(rank_law),
 		cmocka_unit_test(spread),
 		cmocka_unit_test(lowpass_measure),
 		cmocka_unit_test(fft_vs_dft),
+		cmocka_unit_test(level_bounds),
 		cmocka_unit_test(checkpoint_resume),
 		cmocka_unit_test(bad_params),
 	};

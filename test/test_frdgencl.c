@@ -105,6 +105,23 @@ static void radii(void **state)
 	pr.s = 1.5;
 	pr.q = 2.0;
 	same(&pr);
+	params(&pr, 40, 40, 0.5, 7);	/* the hard cut-off, no cap */
+	pr.taper = 0;
+	pr.cap = 0.0;
+	same(&pr);
+}
+
+/* The authors' integer table: its ties and its reach. */
+static void int32_field(void **state)
+{
+	struct frdgen_params pr;
+	(void)state;
+	params(&pr, 32, 32, 0.5, 1);
+	pr.field = FRDGEN_FIELD_INT32;
+	same(&pr);
+	params(&pr, 48, 24, 0.5, 2);
+	pr.field = FRDGEN_FIELD_INT32;
+	same(&pr);
 }
 
 static void three_d(void **state)
@@ -149,6 +166,7 @@ int main(void)
 		cmocka_unit_test(square_sizes),
 		cmocka_unit_test(non_square),
 		cmocka_unit_test(radii),
+		cmocka_unit_test(int32_field),
 		cmocka_unit_test(three_d),
 		cmocka_unit_test(refusals),
 	};

@@ -62,3 +62,17 @@ int fft2(double *x, size_t w, size_t h, int sign)
 		fft1(x + 2 * xcol, h, w, sign);
 	return 0;
 }
+
+int fft3(double *x, size_t w, size_t h, size_t d, int sign)
+{
+	if (!fft_is_pow2(d))
+		return frs_fail("FFT size %zux%zux%zu is not a power of two", w,
+		    h, d);
+	for (size_t z = 0; z < d; z++)
+		if (fft2(x + 2 * z * w * h, w, h, sign) < 0)
+			return -1;
+	if (d > 1)
+		for (size_t i = 0; i < w * h; i++)
+			fft1(x + 2 * i, d, w * h, sign);
+	return 0;
+}

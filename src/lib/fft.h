@@ -9,6 +9,8 @@
 int fft1(double *x, size_t n, size_t stride, int sign);
 /* Row-major w x h complex image, both powers of two. */
 int fft2(double *x, size_t w, size_t h, int sign);
+/* Row-major w x h x d complex volume (x fastest), all powers of two. */
+int fft3(double *x, size_t w, size_t h, size_t d, int sign);
 int fft_is_pow2(size_t n);
 
 #endif

@@ -9,13 +9,15 @@
 #include "progress.h"
 #include "rng.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define MAXLEV 40
-#define DEFAULT_TOL 1e-3
-#define DEFAULT_REACH 0.7
+#define DEFAULT_TOL 1e-2
+#define DEFAULT_REACH 3.0
+#define DEFAULT_CAP (1.0 / 3.0)
 
 /* One level of the min-pyramid: level 0 holds the minimum of each tile of
  * cells, level L+1 the minimum of 2x2x2 nodes of level L. */
@@ -67,10 +69,14 @@ void frdgen_defaults(struct frdgen_params *pr)
 	memset(pr, 0, sizeof *pr);
 	pr->dims = 2;
 	pr->p = 0.5;
-	pr->s = 0.5;
-	pr->q = 0.5;
+	pr->force = FRDGEN_FORCE_POWER;
+	pr->s = 1.0;
+	pr->q = 4.0;
 	pr->tol = DEFAULT_TOL;
 	pr->reach = DEFAULT_REACH;
+	pr->cap = DEFAULT_CAP;
+	pr->taper = 1;
+	pr->field = FRDGEN_FIELD_DOUBLE;
 	pr->seed = 1;
 	pr->checkpoint_every = 60.0;
 }
@@ -96,6 +102,8 @@ int frdgen_check(const struct frdgen_params *pr)
 		return -1;
 	if (!(pr->p > 0.0 && pr->p <= 1.0))
 		return frs_fail("-p: %g is outside (0, 1]", pr->p);
+	if (pr->force != FRDGEN_FORCE_EXP && pr->force != FRDGEN_FORCE_POWER)
+		return frs_fail("--force: unknown kind %d", (int)pr->force);
 	if (!(pr->s > 0.0 && isfinite(pr->s)) || !(pr->q > 0.0 &&
 	    isfinite(pr->q)))
 		return frs_fail("force parameters s and q must be positive");
@@ -103,18 +111,48 @@ int frdgen_check(const struct frdgen_params *pr)
 		return frs_fail("--tol: %g is outside [0, 1)", pr->tol);
 	if (!(pr->reach >= 0.0 && isfinite(pr->reach)))
 		return frs_fail("--reach: %g is negative", pr->reach);
+	if (!(pr->cap >= 0.0 && isfinite(pr->cap)))
+		return frs_fail("--reach-cap: %g is negative", pr->cap);
+	if (pr->field != FRDGEN_FIELD_DOUBLE && pr->field != FRDGEN_FIELD_INT32)
+		return frs_fail("--field: unknown kind %d", (int)pr->field);
 	return 0;
+}
+
+/* The shortest side: the authors' S. */
+static uint32_t shortest_side(const struct frdgen_params *pr)
+{
+	uint32_t m = pr->w < pr->h ? pr->w : pr->h;
+	return pr->dims == 3 && pr->d < m ? pr->d : m;
+}
+
+double frdgen_int_scale(const struct frdgen_params *pr)
+{
+	double half = (double)(shortest_side(pr) / 2);
+	return fmin((double)(INT_MAX / 20), 1.0 / exp(-sqrt(2.0 * half)));
 }
 
 double frdgen_force(const struct frdgen_params *pr, double r)
 {
+	if (pr->field == FRDGEN_FIELD_INT32)
+		return (double)(int32_t)(frdgen_int_scale(pr) *
+		    exp(-sqrt(2.0 * r)));
+	if (pr->force == FRDGEN_FORCE_POWER)
+		return pow(1.0 + r / pr->s, -pr->q);
 	return exp(-pow(r / pr->s, pr->q));
 }
 
 double frdgen_radius(const struct frdgen_params *pr)
 {
+	if (pr->field == FRDGEN_FIELD_INT32) {
+		/* scale exp(-sqrt(2 r)) >= 1 up to r = ln(scale)^2 / 2; the
+		 * margin only adds cells that get 0. */
+		double l = log(frdgen_int_scale(pr));
+		return l * l / 2.0 * (1.0 + 1e-9) + 1e-9;
+	}
 	if (pr->tol <= 0.0)
 		return INFINITY;
+	if (pr->force == FRDGEN_FORCE_POWER)
+		return pr->s * (pow(pr->tol, -1.0 / pr->q) - 1.0);
 	return pr->s * pow(log(1.0 / pr->tol), 1.0 / pr->q);
 }
 
@@ -131,9 +169,19 @@ uint64_t frdgen_memory(const struct frdgen_params *pr)
 
 void frdgen_describe(const struct frdgen_params *pr, char *buf, size_t n)
 {
-	snprintf(buf, n, "generator=frd-gen\nk=%u\nsize=%ux%ux%u\np=%.17g\n"
-	    "s=%.17g\nq=%.17g\ntol=%.17g\nreach=%.17g\nseed=%llu\n", pr->dims,
-	    pr->w, pr->h, pr->d, pr->p, pr->s, pr->q, pr->tol, pr->reach,
+	if (pr->field == FRDGEN_FIELD_INT32) {
+		snprintf(buf, n, "generator=frd-gen\nk=%u\nsize=%ux%ux%u\n"
+		    "field=int32\np=%.17g\nscale=%.17g\nseed=%llu\n", pr->dims,
+		    pr->w, pr->h, pr->d, pr->p, frdgen_int_scale(pr),
+		    (unsigned long long)pr->seed);
+		return;
+	}
+	snprintf(buf, n, "generator=frd-gen\nk=%u\nsize=%ux%ux%u\n"
+	    "field=double\nforce=%s\np=%.17g\ns=%.17g\nq=%.17g\n"
+	    "tol=%.17g\nreach=%.17g\ncap=%.17g\ncutoff=%s\nseed=%llu\n",
+	    pr->dims, pr->w, pr->h, pr->d,
+	    pr->force == FRDGEN_FORCE_POWER ? "power" : "exp", pr->p, pr->s,
+	    pr->q, pr->tol, pr->reach, pr->cap, pr->taper ? "taper" : "hard",
 	    (unsigned long long)pr->seed);
 }
 
@@ -550,11 +598,14 @@ static uint32_t umin(uint32_t a, uint32_t b)
 	return a < b ? a : b;
 }
 
-void frdgen_window(const struct frdgen_size *z, uint32_t tx, double r,
-    struct frdgen_win *wd)
+void frdgen_window(const struct frdgen_params *pr,
+    const struct frdgen_size *z, uint32_t tx, double r, struct frdgen_win *wd)
 {
 	wd->e = r >= (double)UINT32_MAX ? UINT32_MAX : (uint32_t)floor(r);
 	wd->r2 = r >= z->rmax ? INFINITY : r * r;
+	/* The taper: f(R) off every force inside R (none past the torus). */
+	wd->sub = pr->field == FRDGEN_FIELD_DOUBLE && pr->taper &&
+	    wd->r2 < INFINITY ? frdgen_force(pr, r) : 0.0;
 	wd->fast = 2 * (uint64_t)wd->e + 1 + 2 * tx <= z->w;
 	wd->ey = umin(wd->e, z->hh);
 	wd->ez = umin(wd->e, z->hd);
@@ -636,7 +687,8 @@ static void add_tile_row(struct gen *g, const struct frdgen_win *wd,
 		for (uint32_t x = x0; x <= x1; x++) {
 			int64_t dx = toff(x, g->cx, g->sz.w);
 			if ((dx < 0 ? -dx : dx) <= e)
-				row[x - x0] += t[dx < 0 ? -dx : dx];
+				row[x - x0] += frdgen_add(t[dx < 0 ? -dx : dx],
+				    wd->sub);
 		}
 		return;
 	}
@@ -649,9 +701,9 @@ static void add_tile_row(struct gen *g, const struct frdgen_win *wd,
 	khi = e - dx0 < (int64_t)(x1 - x0) ? e - dx0 : (int64_t)(x1 - x0);
 	kmid = -dx0 < klo ? klo : -dx0 > khi + 1 ? khi + 1 : -dx0;
 	for (int64_t k = klo; k < kmid; k++)
-		row[k] += t[-dx0 - k];
+		row[k] += frdgen_add(t[-dx0 - k], wd->sub);
 	for (int64_t k = kmid; k <= khi; k++)
-		row[k] += t[dx0 + k];
+		row[k] += frdgen_add(t[dx0 + k], wd->sub);
 }
 
 /* Add the force to one tile and report whether its minimum moved. */
@@ -710,7 +762,7 @@ static void add_force(struct gen *g, double r)
 	uint32_t c[3] = { g->cx, g->cy, g->cz }, cnt[3];
 	size_t nt = 0;
 
-	frdgen_window(&g->sz, g->tx, r, &wd);
+	frdgen_window(g->pr, &g->sz, g->tx, r, &wd);
 	window_extents(g, &wd);
 	for (int i = 0; i < 3; i++)
 		cnt[i] = axis_tiles(c[i], umin(wd.e, size[i]), size[i], ts[i],
@@ -925,11 +977,13 @@ static int select_cell(struct gen *g, uint64_t k, uint32_t *c)
 	const struct level *top = &g->lev[g->nlev - 1];
 	struct frdgen_item root = { top->min[0], g->nlev - 1, 0 };
 
-	/* Cells no force has reached: one of them, uniformly. */
+	/* Rank k among cells no force has reached: one of them, uniformly. */
 	if (top->min[0] == 0.0) {
 		uint64_t z = frdgen_fen_total(g->fen, g->ntiles);
-		*c = zero_cell(g, frdgen_zerorank(g->pr, g->step, z));
-		return 0;
+		if (k <= z) {
+			*c = zero_cell(g, frdgen_zerorank(g->pr, g->step, z));
+			return 0;
+		}
 	}
 	return frdgen_select(&g->sel, g->pr, g->step, k, root, expand, g, c);
 }
@@ -1034,9 +1088,15 @@ double frdgen_radius_after(const struct frdgen_params *pr, double rtol,
 {
 	double r = rtol;
 
+	if (pr->field == FRDGEN_FIELD_INT32)
+		return r;
 	if (pr->reach > 0.0) {
 		double adapt = pr->reach * spacing(pr, inserted);
 		r = adapt > r ? adapt : r;
+	}
+	if (pr->cap > 0.0) {
+		double cap = pr->cap * (double)shortest_side(pr);
+		r = r > cap ? fmax(cap, rtol) : r;
 	}
 	return r;
 }

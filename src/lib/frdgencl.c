@@ -180,9 +180,12 @@ static int select_cell(struct clgen *g, uint64_t k, uint32_t *c)
 {
 	struct frdgen_item root = { g->seg[1], 0, 1 };
 
-	if (g->seg[1] == 0.0)
-		return zero_cell(g, frdgen_zerorank(g->pr, g->step,
-		    frdgen_fen_total(g->fen, g->ntiles)), c);
+	if (g->seg[1] == 0.0) {
+		uint64_t z = frdgen_fen_total(g->fen, g->ntiles);
+		if (k <= z)
+			return zero_cell(g, frdgen_zerorank(g->pr, g->step, z),
+			    c);
+	}
 	return frdgen_select(&g->sel, g->pr, g->step, k, root, expand, g, c);
 }
 
@@ -328,13 +331,14 @@ static int add_force(struct clgen *g, uint32_t cx, uint32_t cy, uint32_t cz,
 	uint32_t size[3] = { g->sz.w, g->sz.h, g->sz.d }, c[3] = { cx, cy, cz };
 	uint32_t first[3], cnt[3];
 	cl_uint4 dim, half, nt, lg, cen, fi, cn, eyz;
-	cl_double r2;
+	cl_double r2, sub;
 	size_t nw, global, local = g->ts / g->ts3[0];
 	struct frdgen_win wd;
 	cl_int err;
 
-	frdgen_window(&g->sz, g->ts3[0], r, &wd);
+	frdgen_window(g->pr, &g->sz, g->ts3[0], r, &wd);
 	r2 = wd.r2;
+	sub = wd.sub;
 	for (int i = 0; i < 3; i++)
 		axis_run(c[i], umin(wd.e, size[i]), size[i], g->ts3[i],
 		    &first[i], &cnt[i]);
@@ -348,10 +352,10 @@ static int add_force(struct clgen *g, uint32_t cx, uint32_t cy, uint32_t cz,
 	fi = u4(first[0], first[1], first[2], 0);
 	cn = u4(cnt[0], cnt[1], cnt[2], 0);
 	eyz = u4(wd.ey, wd.ez, (uint32_t)wd.fast, 0);
-	if (ocl_args(g->k, 12, sizeof g->field, &g->field, sizeof g->tab,
+	if (ocl_args(g->k, 13, sizeof g->field, &g->field, sizeof g->tab,
 	    &g->tab, sizeof g->out, &g->out, sizeof dim, &dim, sizeof half,
 	    &half, sizeof nt, &nt, sizeof lg, &lg, sizeof cen, &cen, sizeof fi,
-	    &fi, sizeof cn, &cn, sizeof eyz, &eyz, sizeof r2, &r2) < 0)
+	    &fi, sizeof cn, &cn, sizeof eyz, &eyz, sizeof r2, &r2, sizeof sub, &sub) < 0)
 		return -1;
 	err = clEnqueueNDRangeKernel(g->o->q, g->k, 1, NULL, &global, &local,
 	    0, NULL, NULL);

@@ -28,11 +28,20 @@ struct frdgen_win {
 	uint32_t ey, ez;	/* reach in y and z */
 	int fast;		/* 2e + 1 is two tiles (of tx) shorter than w:
 				 * one contiguous run per tile row */
+	double sub;		/* the taper: f(R), or 0 */
 };
 
 void frdgen_size(struct frdgen_size *z, const struct frdgen_params *pr);
-void frdgen_window(const struct frdgen_size *z, uint32_t tx, double r,
-    struct frdgen_win *wd);
+void frdgen_window(const struct frdgen_params *pr,
+    const struct frdgen_size *z, uint32_t tx, double r, struct frdgen_win *wd);
+/* What a cell gets from a table entry t under the taper sub: t - sub, never
+ * below 0 (R^2 may round below a cell's r^2).  Exact for sub = 0; the
+ * kernel (cl/frdgen.cl) computes the same. */
+static inline double frdgen_add(double t, double sub)
+{
+	double v = t - sub;
+	return v > 0.0 ? v : 0.0;
+}
 /* The least l with 2^l >= v. */
 unsigned frdgen_log2u(uint32_t v);
 /* Tile size per axis: 16 x 8 x 1 in 2-D, 8 x 4 x 4 in 3-D. */
