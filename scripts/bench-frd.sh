@@ -23,7 +23,7 @@ TIME=/usr/bin/time
 [ -x "$TIME" ] || { echo "bench-frd: needs /usr/bin/time (scripts/deps.sh)"; exit 1; }
 . "$(dirname "$0")/benchlib.sh"
 
-OLD="--reach 0.7 --reach-cap 0 --cutoff hard --tol 1e-3 --force-q 0.5"
+OLD="--force exp --reach 0.7 --reach-cap 0 --cutoff hard --tol 1e-3"
 
 # figures FILE...: "pmax_worst strata_worst passed/total" over matrices.
 figures() {
@@ -69,10 +69,10 @@ gen nocap 4 512 --reach-cap 0
 vrow "--reach-cap 0" "$SEC" "$T"/nocap-*.frd
 gen hard 4 512 --cutoff hard
 vrow "--cutoff hard" "$SEC" "$T"/hard-*.frd
-gen q05 4 512 --force-q 0.5
-vrow "--force-q 0.5" "$SEC" "$T"/q05-*.frd
-gen q06 4 512 --force-q 0.6
-vrow "--force-q 0.6" "$SEC" "$T"/q06-*.frd
+gen q05 4 512 --force exp
+vrow "--force exp" "$SEC" "$T"/q05-*.frd
+gen q07 4 512 --force exp --force-q 0.7
+vrow "--force exp --force-q 0.7" "$SEC" "$T"/q07-*.frd
 gen p1 4 512 -p 1
 vrow "-p 1" "$SEC" "$T"/p1-*.frd
 # shellcheck disable=SC2086

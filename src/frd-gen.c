@@ -528,9 +528,11 @@ int main(int argc, char **argv)
 	if (pr.checkpoint != NULL)
 		unlink(pr.checkpoint);
 	if (verbose) {
-		fprintf(stderr, "frd-gen: %ux%ux%u in %.3f s (radius %.1f) on "
-		    "%s\n", pr.w, pr.h, pr.d, progress_now() - t0,
-		    frdgen_radius(&pr), use_cl ? o.name : "the CPU");
+		double rt = frdgen_radius(&pr);
+		fprintf(stderr, "frd-gen: %ux%ux%u in %.3f s (radius %.1f to "
+		    "%.1f) on %s\n", pr.w, pr.h, pr.d, progress_now() - t0,
+		    frdgen_radius_after(&pr, rt, 1), frdgen_radius_after(&pr, rt,
+		    m.n), use_cl ? o.name : "the CPU");
 		if (print_quality(stderr, &m, cli.out ? cli.out : "<stdout>") < 0)
 			cli_die_lib();
 	}

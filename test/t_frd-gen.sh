@@ -35,10 +35,68 @@ check "-k 3 -s 12" frd-gen -k 3 -s 12 -o "$T/c.frd"
     ok "3-D header" || nok "3-D header"
 check "-s 48x20" frd-gen -s 48x20 -p 1 --exact -o "$T/r.frd"
 
+params() { # the parameter text of an .frd file
+	plen=$(od -A n -t u4 -j 28 -N 4 "$1" | tr -d ' ')
+	head -c $((32 + plen)) "$1" | tail -c "$plen"
+}
+
 # Quality figures of an existing matrix.
 frd-gen --quality "$T/j1.frd" >"$T/q" 2>"$T/err"
 awk '$1 == "spread_16" && $2 > 0 && $2 <= 1 { ok = 1 } END { exit !ok }' "$T/q" &&
     ok "--quality prints the spread" || nok "--quality prints the spread"
+
+awk '$1 == "lattice_check" && $2 == "pass" { a = 1 } $1 == "pmax_64" { b = 1 }
+    $1 == "strata_last_2.5%" { c = 1 } END { exit !(a && b && c) }' "$T/q" &&
+    ok "--quality prints the level figures and the lattice check" ||
+    nok "--quality prints the level figures and the lattice check"
+frd-gen --quality "$T/j1.frd" "$T/s2.frd" | grep -c '^matrix ' | grep -qx 2 &&
+    ok "--quality of two files: two blocks" || nok "--quality of two files: two blocks"
+
+# --field int32, --cutoff, --force: recorded, and refused where they do not
+# apply.
+frd-gen -s 32 --field int32 -o "$T/i.frd" && params "$T/i.frd" | grep -q '^field=int32$' &&
+    ok "--field int32 in the header" || nok "--field int32 in the header"
+params "$T/a.frd" | grep -q '^cutoff=taper$' && params "$T/a.frd" | grep -q '^force=power$' &&
+    ok "default force and cut-off in the header" || nok "default force and cut-off in the header"
+frd-gen -s 32 --force exp --cutoff hard -o "$T/e.frd" &&
+    params "$T/e.frd" | grep -q '^s=0.5$' && params "$T/e.frd" | grep -q '^q=0.5$' &&
+    params "$T/e.frd" | grep -q '^cutoff=hard$' &&
+    ok "--force exp takes the thesis's s = q = 1/2" || nok "--force exp takes the thesis's s = q = 1/2"
+for o in "--tol 1e-3" --exact "--reach 1" "--reach-cap 0" "--cutoff hard" \
+    "--force exp" "--force-q 2" "--force-s 1"; do
+	# shellcheck disable=SC2086
+	expect_fail "--field int32 with $o" 2 "${o%% *}: not used by --field int32" \
+	    "$T/o.frd" frd-gen -s 16 --field int32 $o -o "$T/o.frd"
+done
+expect_fail "--field float" 2 "--field: 'float'" "$T/o.frd" frd-gen -s 16 --field float -o "$T/o.frd"
+expect_fail "--cutoff soft" 2 "--cutoff: 'soft'" "$T/o.frd" frd-gen -s 16 --cutoff soft -o "$T/o.frd"
+expect_fail "--force gauss" 2 "--force: 'gauss'" "$T/o.frd" frd-gen -s 16 --force gauss -o "$T/o.frd"
+expect_fail "--reach-cap -1" 2 "--reach-cap" "$T/o.frd" frd-gen -s 16 --reach-cap -1 -o "$T/o.frd"
+expect_fail "--field with vac" 2 "--field" "$T/o.frd" frd-gen -s 16 --method vac --field int32 -o "$T/o.frd"
+
+# Uniform FRS on four 128^2 matrices (the whole matrix, c = 1024): no
+# direction stands out.  Four sets put the anisotropy of an isotropic
+# spectrum near -6 dB; without the cap the first values form a lattice and
+# reach +15 dB.
+aniso4() { # ARGS...: max and mean anisotropy (dB) over 4 <= f, or fail
+	for s in 1 2 3 4; do
+		frd-gen -q -s 128 -S $s "$@" -o "$T/u$s.frd" &&
+		    frs-sample -q -m "$T/u$s.frd" -i const -n 1024 --sigma 4 -S $s \
+		    -o "$T/u$s.pts" || return 1
+	done
+	dda -q --fourier --size 64 --radial "$T/u.rad" "$T/u1.pts" "$T/u2.pts" \
+	    "$T/u3.pts" "$T/u4.pts" >/dev/null &&
+	    awk -F '\t' 'NR > 1 && $1 >= 4 { n++; s += $3; if ($3 > m || n == 1) m = $3 }
+	    END { if (n > 10) printf "%.1f %.1f\n", m, s / n }' "$T/u.rad"
+}
+a=$(aniso4)
+echo "$a" | awk '{ exit !(NF == 2 && $1 <= -3 && $2 <= -5) }' &&
+    ok "uniform FRS of four default matrices: anisotropy <= -3 dB, mean <= -5 ($a)" ||
+    nok "uniform FRS of four default matrices: anisotropy <= -3 dB, mean <= -5 ($a)"
+a=$(aniso4 --reach-cap 0)
+echo "$a" | awk '{ exit !(NF == 2 && $1 > -3) }' &&
+    ok "without the cap the same check fails ($a)" ||
+    nok "without the cap the same check fails ($a)"
 
 # An interrupted run resumes from its checkpoint to the same bytes.
 frd-gen -s 256 --tol 1e-3 -o "$T/full.frd"
@@ -80,10 +138,6 @@ expect_fail "full disk" 1 "No space left" - frd-gen -s 16 -o /dev/full
 expect_fail "--quality of an empty file" 1 "empty.frd: empty file" - frd-gen --quality "$T/empty.frd"
 
 # --method vac: the void-and-cluster baseline (src/lib/vac.h).
-params() { # the parameter text of an .frd file
-	plen=$(od -A n -t u4 -j 28 -N 4 "$1" | tr -d ' ')
-	head -c $((32 + plen)) "$1" | tail -c "$plen"
-}
 check "--method vac -s 64" frd-gen --method vac -s 64 -o "$T/v.frd"
 check "vac: a permutation (frd-prep --check)" frd-prep --check -a none \
     -o "$T/vc.frd" "$T/v.frd"

@@ -99,6 +99,10 @@ int frdgen_check_size(unsigned dims, uint32_t w, uint32_t h, uint32_t d);
 int frdgen_check(const struct frdgen_params *pr);
 /* The neglect radius for a tolerance (cells), INFINITY for tol = 0. */
 double frdgen_radius(const struct frdgen_params *pr);
+/* The radius of the insertion after "inserted" values, rtol the neglect
+ * radius of frdgen_radius. */
+double frdgen_radius_after(const struct frdgen_params *pr, double rtol,
+    uint64_t inserted);
 /* Bytes of memory a run needs, to refuse impossible sizes up front. */
 uint64_t frdgen_memory(const struct frdgen_params *pr);
 /* The parameter text stored in the .frd header. */

@@ -46,10 +46,6 @@ static inline double frdgen_add(double t, double sub)
 unsigned frdgen_log2u(uint32_t v);
 /* Tile size per axis: 16 x 8 x 1 in 2-D, 8 x 4 x 4 in 3-D. */
 void frdgen_tile_shape(unsigned dims, uint32_t t[3]);
-/* The radius of the insertion after "inserted" values, rtol the neglect
- * radius of frdgen_radius. */
-double frdgen_radius_after(const struct frdgen_params *pr, double rtol,
-    uint64_t inserted);
 /* f by |dx|, |dy|, |dz| up to w/2, h/2, d/2 (x fastest); NULL (with the
  * error set) when out of memory. */
 double *frdgen_table(const struct frdgen_params *pr);

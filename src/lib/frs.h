@@ -41,7 +41,7 @@ typedef struct frs_error {
 
 /* "FRS_E_ARG" and so on; thread-safe. */
 const char *frs_code_name(int code);
-/* "0.2.0"; thread-safe. */
+/* "0.3.0"; thread-safe. */
 const char *frs_library_version(void);
 
 /* ---- threshold matrices ---------------------------------------------- */

@@ -36,6 +36,9 @@ static void params(struct frdgen_params *pr, uint32_t w, uint32_t h,
 	pr->p = p;
 	pr->tol = tol;
 	pr->seed = seed;
+	/* The thesis's force, which least_force_ok sums. */
+	pr->force = FRDGEN_FORCE_EXP;
+	pr->s = pr->q = 0.5;
 }
 
 static double tdist(uint32_t a, uint32_t b, uint32_t n)
