@@ -256,41 +256,19 @@ struct method_opts {
 	const char *dbl_only;	/* one that only --field double uses */
 };
 
-static int parse_method(const char *s)
+/* Which of two words an option names: 0 for a, 1 for b. */
+static int parse_choice(const char *opt, const char *s, const char *a,
+    const char *b)
 {
-	if (strcmp(s, "frd") == 0)
+	if (strcmp(s, a) == 0)
 		return 0;
-	if (strcmp(s, "vac") != 0)
-		cli_usage_error("--method: '%s' is not frd or vac", s);
+	if (strcmp(s, b) != 0)
+		cli_usage_error("%s: '%s' is not %s or %s", opt, s, a, b);
 	return 1;
 }
 
-static enum frdgen_field parse_field(const char *s)
-{
-	if (strcmp(s, "double") == 0)
-		return FRDGEN_FIELD_DOUBLE;
-	if (strcmp(s, "int32") != 0)
-		cli_usage_error("--field: '%s' is not double or int32", s);
-	return FRDGEN_FIELD_INT32;
-}
 
-static enum frdgen_force parse_force(const char *s)
-{
-	if (strcmp(s, "power") == 0)
-		return FRDGEN_FORCE_POWER;
-	if (strcmp(s, "exp") != 0)
-		cli_usage_error("--force: '%s' is not power or exp", s);
-	return FRDGEN_FORCE_EXP;
-}
 
-static int parse_cutoff(const char *s)
-{
-	if (strcmp(s, "taper") == 0)
-		return 1;
-	if (strcmp(s, "hard") != 0)
-		cli_usage_error("--cutoff: '%s' is not taper or hard", s);
-	return 0;
-}
 
 /* Options of the other method or field are refused, not silently
  * ignored. */
@@ -425,15 +403,18 @@ int main(int argc, char **argv)
 			mo.frd_only = mo.dbl_only = "--reach-cap";
 			break;
 		case OPT_CUTOFF:
-			pr.taper = parse_cutoff(optarg);
+			pr.taper = parse_choice("--cutoff", optarg, "hard",
+			    "taper");
 			mo.frd_only = mo.dbl_only = "--cutoff";
 			break;
 		case OPT_FORCE:
-			pr.force = parse_force(optarg);
+			pr.force = parse_choice("--force", optarg, "power", "exp") ?
+			    FRDGEN_FORCE_EXP : FRDGEN_FORCE_POWER;
 			mo.frd_only = mo.dbl_only = "--force";
 			break;
 		case OPT_FIELD:
-			pr.field = parse_field(optarg);
+			pr.field = parse_choice("--field", optarg, "double",
+			    "int32") ? FRDGEN_FIELD_INT32 : FRDGEN_FIELD_DOUBLE;
 			mo.frd_only = "--field";
 			break;
 		case OPT_FS:
@@ -456,7 +437,7 @@ int main(int argc, char **argv)
 			mo.frd_only = "--checkpoint-every";
 			break;
 		case OPT_METHOD:
-			mo.vac = parse_method(optarg);
+			mo.vac = parse_choice("--method", optarg, "frd", "vac");
 			break;
 		case OPT_VAC_SIGMA:
 			mo.vac_sigma = cli_double("--vac-sigma", optarg, 0.0, 1e6);

@@ -33,7 +33,8 @@ static double ref_radius(const struct frdgen_params *pr, uint64_t inserted)
 	double vol = (double)pr->w * pr->h * pr->d, sp, r = rtol;
 	double side = fmin(pr->w, pr->dims == 3 ? fmin(pr->h, pr->d) : pr->h);
 	if (pr->reach > 0) {
-		sp = pr->dims == 2 ? sqrt(2 * vol / (sqrt(3.0) * (double)inserted)) :
+		sp = pr->dims == 2 ?
+		    sqrt(2 * vol / (sqrt(3.0) * (double)inserted)) :
 		    cbrt(sqrt(2.0) * vol / (double)inserted);
 		r = fmax(r, pr->reach * sp);
 	}

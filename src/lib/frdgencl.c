@@ -355,7 +355,8 @@ static int add_force(struct clgen *g, uint32_t cx, uint32_t cy, uint32_t cz,
 	if (ocl_args(g->k, 13, sizeof g->field, &g->field, sizeof g->tab,
 	    &g->tab, sizeof g->out, &g->out, sizeof dim, &dim, sizeof half,
 	    &half, sizeof nt, &nt, sizeof lg, &lg, sizeof cen, &cen, sizeof fi,
-	    &fi, sizeof cn, &cn, sizeof eyz, &eyz, sizeof r2, &r2, sizeof sub, &sub) < 0)
+	    &fi, sizeof cn, &cn, sizeof eyz, &eyz, sizeof r2, &r2, sizeof sub,
+	    &sub) < 0)
 		return -1;
 	err = clEnqueueNDRangeKernel(g->o->q, g->k, 1, NULL, &global, &local,
 	    0, NULL, NULL);

@@ -11,10 +11,11 @@
  * = 0: the first values, the dots of a dither of a (1 - to) grey; to = 1:
  * the last values, the black dots of a dither of a "from" grey as in the
  * thesis's Fig. 3.1 at 97.5 %); take the power spectrum of that pattern,
- * normalised by the dot count so that white noise is 1 everywhere.  The figure is the mean power at
- * frequencies below half the principal frequency sqrt(dots) over the mean
- * power of the plateau between 1.5 and 2.5 times it.  White noise gives
- * about 1; blue noise far less.  2-D, power-of-two sizes.
+ * normalised by the dot count so that white noise is 1 everywhere.  The
+ * figure is the mean power at frequencies below half the principal
+ * frequency sqrt(dots) over the mean power of the plateau between 1.5 and
+ * 2.5 times it.  White noise gives about 1; blue noise far less.  2-D,
+ * power-of-two sizes.
  *
  * Both reward a lattice: its spread is near 1 and its low frequencies are
  * empty.  The figures of a level (frdq_level) catch it:
