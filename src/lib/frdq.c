@@ -127,13 +127,20 @@ static uint32_t side_of(const struct frs_matrix *m, int i)
 	return i == 0 ? m->w : i == 1 ? m->h : m->d;
 }
 
+/* The side of a square (cube) of the matrix's area (volume): frequencies
+ * scaled by it over each side make a non-square matrix isotropic. */
+static double mean_side(const struct frs_matrix *m)
+{
+	return m->dims == 2 ? sqrt((double)m->w * m->h) :
+	    cbrt((double)m->w * m->h * m->d);
+}
+
 /* Grid cells per axis, their product about c: the powers of two of c
  * handed round the axes (x first), or c^(1/k) scaled by the sides. */
 static void strata_grid(const struct frs_matrix *m, uint64_t c, uint64_t g[3])
 {
 	unsigned k = m->dims;
-	double gm = k == 2 ? sqrt((double)m->w * m->h) :
-	    cbrt((double)m->w * m->h * m->d);
+	double gm = mean_side(m);
 
 	g[0] = g[1] = g[2] = 1;
 	if (fft_is_pow2(c)) {
@@ -195,8 +202,7 @@ struct radial {
 static void scan_spectrum(const struct frs_matrix *m, const double *img,
     double dots, struct radial *rd, struct frdq_level *q)
 {
-	double gm = m->dims == 2 ? sqrt((double)m->w * m->h) :
-	    cbrt((double)m->w * m->h * m->d);
+	double gm = mean_side(m);
 	double sc[3] = { gm / m->w, gm / m->h, gm / m->d };
 
 	for (size_t i = 0; i < m->n; i++) {
@@ -260,8 +266,7 @@ static void radial_figures(const struct radial *rd, struct frdq_level *q)
 static int spectral(const struct frs_matrix *m, struct frdq_level *q)
 {
 	struct radial rd;
-	double *img, gm = m->dims == 2 ? sqrt((double)m->w * m->h) :
-	    cbrt((double)m->w * m->h * m->d);
+	double *img, gm = mean_side(m);
 	int rc;
 
 	rd.fp = pow((double)q->dots, 1.0 / m->dims);
