@@ -13,7 +13,8 @@
  *   [3 + 2k] c_k          v == tf_k passes when the 53-bit coin < c_k
  *                         (c_k = ceil(frac_k 2^53); 0: never)
  * par: [0] sw [1] ns [2] wx [3] wy [4] mw [5] mh [6] seed [7] nsteps
- *      [8] number of active pixels [9] start level / sorted block size.
+ *      [8] number of active pixels [9] start level / sorted block size
+ *      [10] 1: shuffled tiles (cl/tile.cl), 0: plain.
  *
  * Every per-pixel kernel runs twice: with write = 0 it stores the number
  * of elements of each pixel in cnt; with write = 1 it writes them as
@@ -30,6 +31,67 @@
 #define PAR_NSTEPS 7
 #define PAR_NACT 8
 #define PAR_L 9
+#define PAR_TILES 10
+
+/* src/lib/frs.c tile_at(): the transform of the last tile met. */
+struct tcache {
+	ulong tx, ty;
+	int valid;
+	struct frs_tile t;
+};
+
+/* The tile of window element (x, y), the element's place in it in
+ * (*lx, *ly). */
+static void tile_at(__global const ulong *par, struct tcache *c, ulong x,
+    ulong y, ulong *lx, ulong *ly)
+{
+	ulong mw = par[PAR_MW], mh = par[PAR_MH];
+	ulong X = par[PAR_WX] + x, Y = par[PAR_WY] + y, tx = X / mw, ty = Y / mh;
+
+	*lx = X - tx * mw;
+	*ly = Y - ty * mh;
+	if (!c->valid || c->tx != tx || c->ty != ty) {
+		ulong m[3];
+		m[0] = mw;
+		m[1] = mh;
+		m[2] = 1;
+		if (par[PAR_TILES])
+			frs_tile_make(&c->t, par[PAR_SEED], 2, m, tx, ty, 0);
+		else
+			frs_tile_plain(&c->t);
+		c->tx = tx;
+		c->ty = ty;
+		c->valid = 1;
+	}
+}
+
+/* src/lib/frs.c block_index(). */
+static ulong block_index(__global const ulong *par, const struct frs_tile *t,
+    uint l, ulong lx, ulong ly)
+{
+	ulong m[3], u[2], v[2];
+
+	m[0] = par[PAR_MW];
+	m[1] = par[PAR_MH];
+	m[2] = 1;
+	u[0] = lx >> l;
+	u[1] = ly >> l;
+	frs_tile_block(t, 2, m, l, u, v);
+	return v[1] * (par[PAR_MW] >> l) + v[0];
+}
+
+/* src/lib/frs.c inblock(). */
+static void inblock(const struct frs_tile *t, ulong b, uint lb, uint k,
+    ulong x, ulong y, ulong *ex, ulong *ey)
+{
+	ulong w[2], u[2];
+
+	w[0] = k & (b - 1);
+	w[1] = k >> lb;
+	frs_tile_inblock(t, 2, b, w, u);
+	*ex = x + u[0];
+	*ey = y + u[1];
+}
 
 struct pix {
 	__global const ulong *th;	/* the pixel's record */
@@ -117,16 +179,30 @@ __kernel void frs_naive(__global const ulong *par, __global const ulong *thr,
 	mh = par[PAR_MH];
 	wx = par[PAR_WX];
 	wy = par[PAR_WY];
-	for (ulong sy = 0; sy < ns; sy++) {
-		ulong y = p.y0 + sy;
-		__global const uint *row = mat + wrapn(wy + y, mh) * mw;
-		ulong mx = wrapn(wx + p.x0, mw);
-		for (ulong sx = 0; sx < ns; sx++) {
-			uint v = row[mx];
-			if (v < p.lim)
-				emit(&p, p.x0 + sx, y, v);
-			if (++mx == mw)
-				mx = 0;
+	if (par[PAR_TILES]) {
+		struct tcache tc;
+		tc.valid = 0;
+		for (ulong y = p.y0; y < p.y0 + ns; y++)
+			for (ulong x = p.x0; x < p.x0 + ns; x++) {
+				ulong lx, ly;
+				uint v;
+				tile_at(par, &tc, x, y, &lx, &ly);
+				v = mat[block_index(par, &tc.t, 0, lx, ly)];
+				if (v < p.lim)
+					emit(&p, x, y, v);
+			}
+	} else {
+		for (ulong sy = 0; sy < ns; sy++) {
+			ulong y = p.y0 + sy;
+			__global const uint *row = mat + wrapn(wy + y, mh) * mw;
+			ulong mx = wrapn(wx + p.x0, mw);
+			for (ulong sx = 0; sx < ns; sx++) {
+				uint v = row[mx];
+				if (v < p.lim)
+					emit(&p, p.x0 + sx, y, v);
+				if (++mx == mw)
+					mx = 0;
+			}
 		}
 	}
 	if (!write)
@@ -136,11 +212,12 @@ __kernel void frs_naive(__global const ulong *par, __global const ulong *thr,
 /* The minmap value of the level-l block whose first element is (x, y);
  * lev holds every level, level l from lev[loff[l]]. */
 static uint minmap_at(__global const ulong *par, __global const uint *lev,
-    __global const ulong *loff, uint l, ulong x, ulong y)
+    __global const ulong *loff, struct tcache *tc, uint l, ulong x, ulong y)
 {
-	ulong mx = wrapn(par[PAR_WX] + x, par[PAR_MW]) >> l;
-	ulong my = wrapn(par[PAR_WY] + y, par[PAR_MH]) >> l;
-	return lev[loff[l] + my * (par[PAR_MW] >> l) + mx];
+	ulong lx, ly;
+
+	tile_at(par, tc, x, y, &lx, &ly);
+	return lev[loff[l] + block_index(par, &tc->t, l, lx, ly)];
 }
 
 struct blk {
@@ -161,9 +238,11 @@ __kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
 	ulong b, nb;
 	struct pix p;
 	struct blk st[3 * 32 + 4];
+	struct tcache tc;
 
 	if (i >= par[PAR_NACT])
 		return;
+	tc.valid = 0;
 	pix_init(&p, par, thr, i, off, out, write);
 	L = (uint)par[PAR_L];
 	b = (ulong)1 << L;
@@ -177,7 +256,7 @@ __kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
 			while (top > 0) {
 				struct blk e = st[--top];
 				ulong x = p.x0 + e.x, y = p.y0 + e.y;
-				uint v = minmap_at(par, lev, loff, e.l, x, y);
+				uint v = minmap_at(par, lev, loff, &tc, e.l, x, y);
 				uint h;
 				if (v >= p.lim)
 					continue;
@@ -208,26 +287,28 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
     int write)
 {
 	ulong i = get_global_id(0);
-	ulong b, bw, nb, bb;
+	ulong b, nb, bb;
 	uint lb = 0;
 	struct pix p;
+	struct tcache tc;
 
 	if (i >= par[PAR_NACT])
 		return;
+	tc.valid = 0;
 	pix_init(&p, par, thr, i, off, out, write);
 	b = par[PAR_L];
-	bw = par[PAR_MW] / b;
 	nb = par[PAR_NS] / b;
 	bb = b * b;
 	while (((ulong)1 << lb) < b)
 		lb++;
 	for (ulong by = 0; by < nb; by++)
 		for (ulong bx = 0; bx < nb; bx++) {
-			ulong x = p.x0 + bx * b, y = p.y0 + by * b;
-			ulong blk = (wrapn(par[PAR_WY] + y, par[PAR_MH]) / b) * bw +
-			    wrapn(par[PAR_WX] + x, par[PAR_MW]) / b;
-			__global const uint *val = sval + blk * bb;
-			__global const uint *idx = sidx + blk * bb;
+			ulong x = p.x0 + bx * b, y = p.y0 + by * b, lx, ly, blk, ex, ey;
+			__global const uint *val, *idx;
+			tile_at(par, &tc, x, y, &lx, &ly);
+			blk = block_index(par, &tc.t, lb, lx, ly);
+			val = sval + blk * bb;
+			idx = sidx + blk * bb;
 			if (p.nsteps == 1) {
 				ulong lo = 0, hi = bb, k;
 				while (lo < hi) {
@@ -238,20 +319,25 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 						hi = mid;
 				}
 				k = lo;
-				if (k > 0 && !passes_k(&p, 0, val[k - 1],
-				    x + idx[k - 1] % b, y + idx[k - 1] / b))
-					k--;
+				if (k > 0) {
+					inblock(&tc.t, b, lb, idx[k - 1], x, y, &ex, &ey);
+					if (!passes_k(&p, 0, val[k - 1], ex, ey))
+						k--;
+				}
 				if (!p.write) {
 					p.count += k;
 					continue;
 				}
-				for (ulong j = 0; j < k; j++)
-					put(&p, x + (idx[j] & (b - 1)),
-					    y + (idx[j] >> lb), 0);
+				for (ulong j = 0; j < k; j++) {
+					inblock(&tc.t, b, lb, idx[j], x, y, &ex, &ey);
+					put(&p, ex, ey, 0);
+				}
 				continue;
 			}
-			for (ulong k = 0; k < bb && val[k] < p.lim; k++)
-				emit(&p, x + idx[k] % b, y + idx[k] / b, val[k]);
+			for (ulong k = 0; k < bb && val[k] < p.lim; k++) {
+				inblock(&tc.t, b, lb, idx[k], x, y, &ex, &ey);
+				emit(&p, ex, ey, val[k]);
+			}
 		}
 	if (!write)
 		cnt[i] = p.count;
@@ -277,9 +363,11 @@ __kernel void frs_flat_init(__global const ulong *par,
 	ulong rec, b, nb, x0, y0, lim, ns, n = 0;
 	uint L;
 	__global uint *o;
+	struct tcache tc;
 
 	if (i >= par[PAR_NACT])
 		return;
+	tc.valid = 0;
 	rec = 2 + 2 * par[PAR_NSTEPS];
 	ns = par[PAR_NS];
 	x0 = (thr[i * rec] & 0xffffffffUL) * ns;
@@ -291,7 +379,7 @@ __kernel void frs_flat_init(__global const ulong *par,
 	o = write ? cand + 3 * off[i] : cand;
 	for (ulong by = 0; by < nb; by++)
 		for (ulong bx = 0; bx < nb; bx++)
-			if (minmap_at(par, lev, loff, L, x0 + bx * b, y0 + by * b) <
+			if (minmap_at(par, lev, loff, &tc, L, x0 + bx * b, y0 + by * b) <
 			    lim) {
 				if (write) {
 					o[3 * n] = (uint)i;
@@ -314,9 +402,11 @@ __kernel void frs_flat_refine(__global const ulong *par,
 	ulong rec, x0, y0, lim, ns;
 	uint pi, cx, cy, h, n = 0;
 	__global uint *o;
+	struct tcache tc;
 
 	if (i >= ncand)
 		return;
+	tc.valid = 0;
 	pi = cin[3 * i];
 	cx = cin[3 * i + 1];
 	cy = cin[3 * i + 2];
@@ -329,7 +419,7 @@ __kernel void frs_flat_refine(__global const ulong *par,
 	o = write ? cout + 3 * off[i] : cout;
 	for (uint q = 0; q < 4; q++) {
 		uint x = cx + (q & 1) * h, y = cy + (q >> 1) * h;
-		if (minmap_at(par, lev, loff, l - 1, x0 + x, y0 + y) < lim) {
+		if (minmap_at(par, lev, loff, &tc, l - 1, x0 + x, y0 + y) < lim) {
 			if (write) {
 				o[3 * n] = pi;
 				o[3 * n + 1] = x;
@@ -349,19 +439,21 @@ __kernel void frs_flat_final(__global const ulong *par,
 {
 	ulong i = get_global_id(0);
 	struct pix p;
+	struct tcache tc;
 	uint pi;
-	ulong x, y;
+	ulong x, y, lx, ly;
 
 	if (i >= ncand)
 		return;
+	tc.valid = 0;
 	pi = cin[3 * i];
 	pix_init(&p, par, thr, pi, off, out, 0);
 	x = p.x0 + cin[3 * i + 1];
 	y = p.y0 + cin[3 * i + 2];
 	p.write = write;
 	p.out = write ? out + 3 * off[i] : out;
-	emit(&p, x, y, mat[wrapn(par[PAR_WY] + y, par[PAR_MH]) * par[PAR_MW] +
-	    wrapn(par[PAR_WX] + x, par[PAR_MW])]);
+	tile_at(par, &tc, x, y, &lx, &ly);
+	emit(&p, x, y, mat[block_index(par, &tc.t, 0, lx, ly)]);
 	if (!write)
 		cnt[i] = (uint)p.count;
 }

@@ -25,7 +25,9 @@ static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
     "                  [--sigma S] [--jitter none|halton|random] [--pdf]\n"
     "                  [--progressive N1,N2,...] [--threshold unbiased|thesis]\n"
-    "                  [--count-only] [--sets M] [-s SIZE] [-S SEED] [-j N]\n"
+    "                  [--tiles auto|shuffled|plain] [--count-only]\n"
+    "                  [--sets M]\n"
+    "                  [-s SIZE] [-S SEED] [-j N]\n"
     "                  [--device cpu|cl|cl:N] [-T] [-v] [-o FILE]\n"
     "       frs-sample --list-devices\n"
     "\n"
@@ -46,6 +48,11 @@ static const char usage[] =
     "      --progressive L  counts N1 < N2 < ...: write the samples of each\n"
     "                       step in turn, with a column giving the step\n"
     "      --threshold R    unbiased (default) or thesis (Eq. 4.14)\n"
+    "      --tiles T        a window larger than the matrix: shuffled\n"
+    "                       (each tile turned, flipped and shifted by\n"
+    "                       the seed), plain (repeated as it is, thesis\n"
+    "                       Sec. 4.5) or auto (default: shuffled when n\n"
+    "                       fits the matrix without repetition)\n"
     "      --count-only     print the count, make no points\n"
     "      --sets M         write M sets one after another, set i made\n"
     "                       with seed S+i (default 1; not with\n"
@@ -69,7 +76,7 @@ static const char usage[] =
 enum {
 	OPT_SIGMA = OPT_FIRST_PRIVATE, OPT_JITTER, OPT_PDF, OPT_PROG,
 	OPT_THRESHOLD, OPT_COUNT_ONLY, OPT_EQUIRECT, OPT_STRICT, OPT_SETS,
-	OPT_DEVICE, OPT_LIST_DEVICES
+	OPT_DEVICE, OPT_LIST_DEVICES, OPT_TILES
 };
 
 /* Most samples asked for in all the sets of one file (M * n): far inside
@@ -93,6 +100,7 @@ static const struct option longopts[] = {
 	{ "sets", required_argument, NULL, OPT_SETS },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
+	{ "tiles", required_argument, NULL, OPT_TILES },
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
@@ -106,6 +114,7 @@ struct opts {
 	double sigma;
 	enum frs_jitter jitter;
 	enum frs_rule rule;
+	int tiles;		/* enum frs_tiling_mode */
 	int pdf, count_only, verbose, flags;
 	uint32_t w, h;
 	uint32_t vsz[3];	/* -s for volumes, 0 if not given */
@@ -183,6 +192,17 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 			else
 				cli_usage_error("--threshold: '%s' is not unbiased or "
 				    "thesis", optarg);
+			break;
+		case OPT_TILES:
+			if (strcmp(optarg, "auto") == 0)
+				o->tiles = FRS_TILING_AUTO;
+			else if (strcmp(optarg, "shuffled") == 0)
+				o->tiles = FRS_TILING_SHUFFLED;
+			else if (strcmp(optarg, "plain") == 0)
+				o->tiles = FRS_TILING_PLAIN;
+			else
+				cli_usage_error("--tiles: '%s' is not auto, shuffled or "
+				    "plain", optarg);
 			break;
 		case OPT_COUNT_ONLY: o->count_only = 1; break;
 		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
@@ -337,7 +357,56 @@ struct out {
 	int noted;		/* the mask's note was printed */
 	double t;		/* seconds spent writing */
 	struct frscl_times ct;	/* OpenCL phases, summed over the sets */
+	/* -v: the matrix element of every sample of set 0 */
+	const struct frs_setup *s0;
+	uint64_t *mi;
+	size_t nmi, cap;
+	int collect, have;
 };
+
+/* -v: remember the matrix element that sample (x, y) of set 0 shows
+ * (its window element is floor(x S_W): jitter stays inside it). */
+static void note_point(struct out *u, double x, double y)
+{
+	const struct frs_setup *s = u->s0;
+
+	if (!u->collect)
+		return;
+	if (u->nmi == u->cap) {
+		size_t ncap = u->cap ? 2 * u->cap : 4096;
+		uint64_t *n = realloc(u->mi, ncap * sizeof *n);
+		if (n == NULL) {
+			u->collect = 0;	/* -v goes without the share */
+			return;
+		}
+		u->mi = n;
+		u->cap = ncap;
+	}
+	u->mi[u->nmi++] = frs_matrix_index(s, (uint64_t)(x * (double)s->sw),
+	    (uint64_t)(y * (double)s->sh));
+}
+
+static int u64_cmp(const void *a, const void *b)
+{
+	uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+	return x < y ? -1 : x > y;
+}
+
+/* The share of the noted samples whose matrix element another one
+ * shows too. */
+static double reused_share(struct out *u)
+{
+	size_t reused = 0;
+
+	if (u->nmi == 0)
+		return 0.0;
+	qsort(u->mi, u->nmi, sizeof *u->mi, u64_cmp);
+	for (size_t i = 0; i < u->nmi; i++)
+		if ((i > 0 && u->mi[i - 1] == u->mi[i]) ||
+		    (i + 1 < u->nmi && u->mi[i + 1] == u->mi[i]))
+			reused++;
+	return (double)reused / (double)u->nmi;
+}
 
 /* Open the output at the first set: with one set its count goes into
  * the header; more sets announce 0 (unknown), which the writer replaces
@@ -372,6 +441,7 @@ static int out_batch(void *ctx, const double *xy, const double *pdf,
 		unsigned c = 2;
 		rec[0] = xy[2 * i];
 		rec[1] = xy[2 * i + 1];
+		note_point(u, rec[0], rec[1]);
 		if (pdf != NULL)
 			rec[c++] = pdf[i];
 		if (step != NULL)
@@ -416,6 +486,7 @@ static frs_sampler *make_sampler(const struct opts *o, const frs_mask *mk,
 	opt.rule = o->rule == FRS_THESIS ? FRS_RULE_THESIS :
 	    FRS_RULE_UNBIASED;
 	opt.threads = cli.threads;
+	opt.tiling = (enum frs_tiling_mode)o->tiles;
 	if (frs_sampler_new_f64(&smp, mk, map->v, map->w, map->h, 0, &opt,
 	    &err) != FRS_OK)
 		cli_die("%s", err.message);
@@ -433,7 +504,8 @@ static void first_setup(const struct opts *o, const frs_sampler *smp,
 
 	if (api_setup(smp, o->steps[o->nsteps - 1], cli.seed, s0) < 0)
 		cli_die("%s", frs_errmsg());
-	if (api_mask_prep(smp->mask, needs_minmap(o->algo),
+	if (api_mask_prep(smp->mask, needs_minmap(o->algo) ||
+	    (o->algo == FRS_SORTED && api_sorted_block(s0) < s0->ns),
 	    o->algo == FRS_SORTED ? api_sorted_block(s0) : 0, &view) < 0)
 		cli_die("%s: %s", o->matrix, frs_errmsg());
 	if ((double)s0->n > frs_unique(s0))
@@ -441,6 +513,13 @@ static void first_setup(const struct opts *o, const frs_sampler *smp,
 		    "its patterns (it gives %.0f without repetition, thesis "
 		    "Table 4.1)", (unsigned long long)s0->n, s0->mw, s0->mh,
 		    s0->sigma, frs_unique(s0));
+	else if (s0->tiles == FRS_TILES_PLAIN && (s0->sw > s0->mw ||
+	    s0->sh > s0->mh))
+		frs_warn("--tiles plain: the window of %llux%llu repeats the "
+		    "%ux%u matrix as it is, a lattice of the tile's period where "
+		    "few samples fall (--tiles shuffled breaks it)",
+		    (unsigned long long)s0->sw,
+		    (unsigned long long)s0->sh, s0->mw, s0->mh);
 }
 
 /* One set through the public API (CPU) or the device; its count. */
@@ -468,6 +547,11 @@ static uint64_t one_set(struct ocl *ocl, const struct opts *o,
 			return UINT64_MAX;
 		}
 		u->t += progress_now() - t0;
+		for (uint64_t i = 0; u->collect && i < r.chunk[0].n; i++) {
+			double x, y;
+			frs_point(&s, &r.chunk[0].e[i], &x, &y);
+			note_point(u, x, y);
+		}
 		count = r.count;
 		frs_result_free(&r);
 	} else if (o->count_only) {
@@ -496,10 +580,20 @@ static uint64_t one_set(struct ocl *ocl, const struct opts *o,
 }
 
 static void report(const struct opts *o, const struct frs_setup *s0,
-    uint64_t total, double tsetup, double tthr, const struct out *u,
+    uint64_t total, double tsetup, double tthr, struct out *u,
     const struct ocl *ocl)
 {
+	uint64_t tx, ty, nt = frs_tiles(s0, &tx, &ty);
+
 	print_setup(s0, o->matrix);
+	fprintf(stderr, "frs-sample: %llu tiles (%llux%llu), %s",
+	    (unsigned long long)nt, (unsigned long long)tx,
+	    (unsigned long long)ty, s0->tiles == FRS_TILES_PLAIN ? "plain" :
+	    "shuffled");
+	if (u->have)
+		fprintf(stderr, "; %.1f %% of the samples show a matrix element "
+		    "that another one shows too", 100.0 * reused_share(u));
+	fputc('\n', stderr);
 	if (o->sets > 1)
 		fprintf(stderr, "frs-sample: %llu sets, seeds %llu to %llu\n",
 		    (unsigned long long)o->sets, (unsigned long long)cli.seed,
@@ -584,6 +678,9 @@ static void setup3(const struct opts *o, const struct frs_vol *v,
 		cli_die("%s", frs_errmsg());
 	s->rule = o->rule;
 	s->jitter = o->jitter;
+	s->tiles = o->tiles == FRS_TILING_PLAIN ? FRS_TILES_PLAIN :
+	    o->tiles == FRS_TILING_SHUFFLED ? FRS_TILES_SHUFFLE :
+	    frs3_tiles_auto(s);
 }
 
 static void print_setup3(const struct frs3_setup *s, const char *mname)
@@ -665,6 +762,11 @@ static int main3(const struct opts *o)
 		    "its patterns (it gives %.6g without repetition)",
 		    (unsigned long long)s0.n, s0.mw, s0.mh, s0.md, s0.sigma,
 		    frs3_unique(&s0));
+	else if (s0.tiles == FRS_TILES_PLAIN && frs3_tiles(&s0) > 1)
+		frs_warn("--tiles plain: the window of %llux%llux%llu repeats the "
+		    "%ux%ux%u matrix as it is", (unsigned long long)s0.sw,
+		    (unsigned long long)s0.sh, (unsigned long long)s0.sd, s0.mw,
+		    s0.mh, s0.md);
 	if (frs3_prepare(&p, &m, o->algo == FRS_SORTED ? frs3_block(&s0) : 0) < 0)
 		cli_die("%s: %s", o->matrix, frs_errmsg());
 	tsetup = progress_now() - t0;
@@ -730,10 +832,15 @@ int main(int argc, char **argv)
 	first_setup(&o, smp, &s0);
 	tsetup = progress_now() - t0;
 	u.o = &o;
+	u.s0 = &s0;
 	t1 = progress_now();
 	progress_begin(&pr, "sets", o.sets);
 	for (uint64_t set = 0; set < o.sets; set++) {
-		uint64_t c = one_set(&ocl, &o, smp, cli.seed + set, &u);
+		uint64_t c;
+		u.collect = o.verbose && set == 0 && !o.count_only;
+		c = one_set(&ocl, &o, smp, cli.seed + set, &u);
+		u.have = u.collect;	/* every sample of set 0 noted */
+		u.collect = 0;
 		if (c == UINT64_MAX)
 			goto fail;
 		total += c;
@@ -756,6 +863,7 @@ int main(int argc, char **argv)
 		frscl_release(&ocl);
 		ocl_close(&ocl);
 	}
+	free(u.mi);
 	frs_sampler_free(smp);
 	frs_mask_free(mask);
 	return 0;

@@ -449,6 +449,7 @@ void frs_options_init(struct frs_options *opt)
 	opt->jitter = FRS_JIT_NONE;
 	opt->rule = FRS_RULE_UNBIASED;
 	opt->threads = 1;
+	opt->tiling = FRS_TILING_AUTO;
 }
 
 static int check_options(const struct frs_options *o, frs_error *err)
@@ -461,6 +462,8 @@ static int check_options(const struct frs_options *o, frs_error *err)
 		return arg_err(err, "options: unknown jitter");
 	if ((unsigned)o->rule > FRS_RULE_THESIS)
 		return arg_err(err, "options: unknown rule");
+	if ((unsigned)o->tiling > FRS_TILING_PLAIN)
+		return arg_err(err, "options: unknown tiling");
 	if (o->threads < 0 || o->threads > 1024)
 		return arg_err(err, "options: threads must lie in 0 .. 1024");
 	return FRS_OK;
@@ -542,6 +545,9 @@ int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
 		return -1;
 	su->rule = rule_of(&s->opt);
 	su->jitter = jitter_of(&s->opt);
+	su->tiles = s->opt.tiling == FRS_TILING_PLAIN ? FRS_TILES_PLAIN :
+	    s->opt.tiling == FRS_TILING_SHUFFLED ? FRS_TILES_SHUFFLE :
+	    frs_tiles_auto(su);
 	return 0;
 }
 
@@ -582,6 +588,10 @@ static int run(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
 		return rc;
 	if (api_setup(s, steps[nsteps - 1], seed, su) < 0)
 		return lib_err(err, FRS_E_LIMIT);
+	/* Sorted skips dark pixels by the minmap when its blocks are
+	 * smaller than a pixel (pixel_bound in frs.c). */
+	if (a == FRS_SORTED && api_sorted_block(su) < su->ns)
+		minmap = 1;
 	if (a == FRS_SORTED)
 		block = api_sorted_block(su);
 	if (api_mask_prep(s->mask, minmap, block, &view) < 0)
@@ -594,8 +604,9 @@ static int run(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
 
 uint32_t api_sorted_block(const struct frs_setup *su)
 {
-	uint32_t b = su->ns < su->mw ? su->ns : su->mw;
-	return b < su->mh ? b : su->mh;
+	uint32_t b = su->ns < su->mw ? su->ns : su->mw, t = frs_tile_max_block(su);
+	b = b < su->mh ? b : su->mh;
+	return b < t ? b : t;
 }
 
 double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
@@ -897,6 +908,9 @@ static int run3(const frs_sampler3 *s, const uint64_t *steps,
 		return lib_err(err, FRS_E_LIMIT);
 	su->rule = rule_of(&s->opt);
 	su->jitter = jitter_of(&s->opt);
+	su->tiles = s->opt.tiling == FRS_TILING_PLAIN ? FRS_TILES_PLAIN :
+	    s->opt.tiling == FRS_TILING_SHUFFLED ? FRS_TILES_SHUFFLE :
+	    frs3_tiles_auto(su);
 	if (mask_prep3(s->mask, a == FRS_SORTED ? frs3_block(su) : 0,
 	    &view) < 0)
 		return lib_err(err, FRS_E_FORMAT);

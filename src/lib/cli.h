@@ -15,7 +15,7 @@
 
 #include "err.h"
 
-#define FRS_VERSION "0.3.0"
+#define FRS_VERSION "0.4.0"
 
 enum {
 	OPT_VERSION = 0x1000,

@@ -3,6 +3,7 @@
 #include "err.h"
 #include "par.h"
 #include "rng.h"
+#include "tile.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -139,6 +140,105 @@ double frs_tau(const struct frs_setup *s, uint64_t n)
 double frs_unique(const struct frs_setup *s)
 {
 	return (double)s->mw * (double)s->mh / (s->sigma * s->sigma);
+}
+
+enum frs_tiling frs_tiles_auto(const struct frs_setup *s)
+{
+	return (double)s->n <= frs_unique(s) ? FRS_TILES_SHUFFLE :
+	    FRS_TILES_PLAIN;
+}
+
+/* Tiles met by n elements from offset o on an axis of m. */
+static uint64_t tiles_axis(uint64_t o, uint64_t n, uint64_t m)
+{
+	return (o + n - 1) / m - o / m + 1;
+}
+
+uint64_t frs_tiles(const struct frs_setup *s, uint64_t *tx, uint64_t *ty)
+{
+	*tx = tiles_axis(s->wx, s->sw, s->mw);
+	*ty = tiles_axis(s->wy, s->sh, s->mh);
+	return *tx * *ty;
+}
+
+uint32_t frs_tile_max_block(const struct frs_setup *s)
+{
+	uint64_t gx = frs_tile_step(s->mw), gy = frs_tile_step(s->mh);
+
+	if (s->tiles == FRS_TILES_PLAIN)
+		return s->mw < s->mh ? s->mw : s->mh;
+	return (uint32_t)(gx < gy ? gx : gy);
+}
+
+/* ---- tiles -------------------------------------------------------- */
+
+/* The transforms of the tiles met last, direct-mapped by tile column:
+ * a thread's rows of pixels cross a row of tiles again and again, and a
+ * transform costs two Philox blocks. */
+#define TCACHE 64
+struct tcache {
+	struct {
+		uint64_t tx, ty;
+		int valid;
+		struct frs_tile t;
+	} e[TCACHE];
+};
+
+/* The tile of window element (x, y) and the element's place in it. */
+static const struct frs_tile *tile_at(const struct frs_setup *s,
+    struct tcache *c, uint64_t x, uint64_t y, uint64_t *lx, uint64_t *ly)
+{
+	uint64_t X = s->wx + x, Y = s->wy + y, tx = X / s->mw, ty = Y / s->mh;
+	unsigned k = (unsigned)(tx % TCACHE);
+
+	*lx = X - tx * s->mw;
+	*ly = Y - ty * s->mh;
+	if (!c->e[k].valid || c->e[k].tx != tx || c->e[k].ty != ty) {
+		uint64_t m[3] = { s->mw, s->mh, 1 };
+		if (s->tiles == FRS_TILES_PLAIN)
+			frs_tile_plain(&c->e[k].t);
+		else
+			frs_tile_make(&c->e[k].t, s->seed, 2, m, tx, ty, 0);
+		c->e[k].tx = tx;
+		c->e[k].ty = ty;
+		c->e[k].valid = 1;
+	}
+	return &c->e[k].t;
+}
+
+/* The index of the level-l matrix block that shows the level-l block of
+ * tile position (lx, ly), on the grid of (mw >> l) x (mh >> l). */
+static uint64_t block_index(const struct frs_setup *s,
+    const struct frs_tile *t, unsigned l, uint64_t lx, uint64_t ly)
+{
+	uint64_t m[3] = { s->mw, s->mh, 1 }, u[2] = { lx >> l, ly >> l }, v[2];
+
+	frs_tile_block(t, 2, m, l, u, v);
+	return v[1] * (s->mw >> l) + v[0];
+}
+
+uint64_t frs_matrix_index(const struct frs_setup *s, uint64_t x, uint64_t y)
+{
+	uint64_t X = s->wx + x, Y = s->wy + y, m[3] = { s->mw, s->mh, 1 };
+	struct frs_tile t;
+
+	if (s->tiles == FRS_TILES_PLAIN)
+		frs_tile_plain(&t);
+	else
+		frs_tile_make(&t, s->seed, 2, m, X / s->mw, Y / s->mh, 0);
+	return block_index(s, &t, 0, X % s->mw, Y % s->mh);
+}
+
+/* Element k of a sorted block of side b = 2^lb, at the block's window
+ * origin (x, y). */
+static void inblock(const struct frs_tile *t, uint32_t b, unsigned lb,
+    uint32_t k, uint64_t x, uint64_t y, uint64_t *ex, uint64_t *ey)
+{
+	uint64_t w[2] = { k & (b - 1), k >> lb }, u[2];
+
+	frs_tile_inblock(t, 2, b, w, u);
+	*ex = x + u[0];
+	*ey = y + u[1];
 }
 
 /* ---- preparation -------------------------------------------------- */
@@ -295,6 +395,7 @@ struct pix {
 	struct frs_thr th[16];	/* per step; th[nsteps - 1] is the last */
 	uint64_t lim;
 	uint64_t x0, y0;	/* the pixel's first window element */
+	struct tcache tc;
 };
 
 static void emit(struct pix *px, uint64_t x, uint64_t y, uint32_t v)
@@ -327,42 +428,57 @@ static uint64_t wrap(uint64_t v, uint32_t n)
 	return (n & (n - 1)) == 0 ? v & (n - 1) : v % n;
 }
 
-/* Listing 5.2: every window element of the pixel. */
+/* Listing 5.2: every window element of the pixel; with shuffled tiles
+ * each element through its tile's transform. */
 static void pix_naive(struct pix *px)
 {
 	const struct frs_setup *s = px->run->s;
 	const uint32_t *mv = px->run->p->m->v;
 
-	for (uint32_t sy = 0; sy < s->ns; sy++) {
-		uint64_t y = px->y0 + sy;
-		const uint32_t *row = mv + wrap(s->wy + y, s->mh) * s->mw;
-		uint64_t mx = wrap(s->wx + px->x0, s->mw);
-		for (uint32_t sx = 0; sx < s->ns; sx++) {
-			if (row[mx] < px->lim)
-				emit(px, px->x0 + sx, y, row[mx]);
-			if (++mx == s->mw)
-				mx = 0;
+	if (s->tiles == FRS_TILES_PLAIN) {
+		for (uint32_t sy = 0; sy < s->ns; sy++) {
+			uint64_t y = px->y0 + sy;
+			const uint32_t *row = mv + wrap(s->wy + y, s->mh) * s->mw;
+			uint64_t mx = wrap(s->wx + px->x0, s->mw);
+			for (uint32_t sx = 0; sx < s->ns; sx++) {
+				if (row[mx] < px->lim)
+					emit(px, px->x0 + sx, y, row[mx]);
+				if (++mx == s->mw)
+					mx = 0;
+			}
 		}
+		return;
 	}
+	for (uint64_t y = px->y0; y < px->y0 + s->ns; y++)
+		for (uint64_t x = px->x0; x < px->x0 + s->ns; x++) {
+			uint64_t lx, ly;
+			const struct frs_tile *t = tile_at(s, &px->tc, x, y, &lx, &ly);
+			uint32_t v = mv[block_index(s, t, 0, lx, ly)];
+			if (v < px->lim)
+				emit(px, x, y, v);
+		}
 }
 
 /* The minmap value of the level-l block whose first element is (x, y). */
-static uint32_t minmap_at(const struct run *run, unsigned l, uint64_t x,
-    uint64_t y)
+static uint32_t minmap_at(struct pix *px, unsigned l, uint64_t x, uint64_t y)
 {
-	const struct frs_setup *s = run->s;
-	uint64_t mx = wrap(s->wx + x, s->mw) >> l, my = wrap(s->wy + y, s->mh) >> l;
-	return run->p->lev[l][my * (s->mw >> l) + mx];
+	const struct frs_setup *s = px->run->s;
+	uint64_t lx, ly;
+	const struct frs_tile *t = tile_at(s, &px->tc, x, y, &lx, &ly);
+
+	return px->run->p->lev[l][block_index(s, t, l, lx, ly)];
 }
 
-/* The level at which the minmap implementations start. */
-static unsigned start_level(const struct run *run, unsigned want)
+unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
+    unsigned want)
 {
-	unsigned l = want, lns = log2u64(run->s->ns);
+	unsigned l = want, lns = log2u64(s->ns), lt = log2u64(frs_tile_max_block(s));
 	if (l > lns)
 		l = lns;
-	if (l > run->p->nlev - 1)
-		l = run->p->nlev - 1;
+	if (l > lt)
+		l = lt;
+	if (l > p->nlev - 1)
+		l = p->nlev - 1;
 	return l;
 }
 
@@ -375,7 +491,7 @@ struct blk {
 static void pix_stack(struct pix *px)
 {
 	const struct run *run = px->run;
-	unsigned L = start_level(run, run->s->level0);
+	unsigned L = frs_start_level(run->s, run->p, run->s->level0);
 	uint64_t b = (uint64_t)1 << L, nb = run->s->ns / b;
 	struct blk st[3 * 32 + 4];
 
@@ -385,7 +501,7 @@ static void pix_stack(struct pix *px)
 			st[top++] = (struct blk){ px->x0 + bx * b, px->y0 + by * b, L };
 			while (top > 0) {
 				struct blk e = st[--top];
-				uint32_t v = minmap_at(run, e.l, e.x, e.y);
+				uint32_t v = minmap_at(px, e.l, e.x, e.y);
 				uint64_t h;
 				if (v >= px->lim)
 					continue;
@@ -405,7 +521,7 @@ static void pix_stack(struct pix *px)
 /* Listing 5.5 for N = 1 and 2: nested loops over the quadrants. */
 static void level_block(struct pix *px, unsigned l, uint64_t x, uint64_t y)
 {
-	uint32_t v = minmap_at(px->run, l, x, y);
+	uint32_t v = minmap_at(px, l, x, y);
 	uint64_t h;
 
 	if (v >= px->lim)
@@ -422,7 +538,7 @@ static void level_block(struct pix *px, unsigned l, uint64_t x, uint64_t y)
 
 static void pix_level(struct pix *px, unsigned n)
 {
-	unsigned L = start_level(px->run, n);
+	unsigned L = frs_start_level(px->run->s, px->run->p, n);
 	uint64_t b = (uint64_t)1 << L, nb = px->run->s->ns / b;
 
 	for (uint64_t by = 0; by < nb; by++)
@@ -431,18 +547,23 @@ static void pix_level(struct pix *px, unsigned n)
 }
 
 /* Listing 5.11: the sorted values of each block, until one is too
- * large. */
-/* One step, Sorted: the values below lim by bisection, the last of them
+ * large.  One step: the values below lim by bisection, the last of them
  * through its coin if it needs one (values are distinct, so only it can),
  * then every element taken without further tests.  This is the hot loop
- * of the fastest implementation. */
-static void take_block(struct pix *px, const uint32_t *val,
-    const uint32_t *idx, uint64_t bb, uint32_t b, uint64_t x, uint64_t y)
+ * of the fastest implementation.  (x, y): the block's window origin; t
+ * its tile's transform, whose in-block order k undoes. */
+static void take_block(struct pix *px, const struct frs_tile *t,
+    const uint32_t *val, const uint32_t *idx, uint64_t bb, uint32_t b,
+    uint64_t x, uint64_t y)
 {
-	uint64_t lo = 0, hi = bb, k;
+	uint64_t lo = 0, hi = bb, k, ex, ey;
 	unsigned lb = 0;
 	struct frs_chunk *c = px->c;
 
+	if (val[0] >= px->lim)
+		return;
+	while ((1u << lb) < b)
+		lb++;
 	while (lo < hi) {
 		uint64_t mid = lo + (hi - lo) / 2;
 		if (val[mid] < px->lim)
@@ -451,9 +572,11 @@ static void take_block(struct pix *px, const uint32_t *val,
 			hi = mid;
 	}
 	k = lo;
-	if (k > 0 && !passes(px->run->s, &px->th[0], val[k - 1],
-	    x + idx[k - 1] % b, y + idx[k - 1] / b))
-		k--;
+	if (k > 0) {
+		inblock(t, b, lb, idx[k - 1], x, y, &ex, &ey);
+		if (!passes(px->run->s, &px->th[0], val[k - 1], ex, ey))
+			k--;
+	}
 	c->count += k;
 	if (px->run->count_only || k == 0)
 		return;
@@ -470,12 +593,59 @@ static void take_block(struct pix *px, const uint32_t *val,
 		c->e = ne;
 		c->cap = ncap;
 	}
-	while ((1u << lb) < b)
-		lb++;
-	for (uint64_t j = 0; j < k; j++)
-		c->e[c->n + j] = (struct frs_elem){ (uint32_t)(x + (idx[j] & (b - 1))),
-		    (uint32_t)(y + (idx[j] >> lb)), 0 };
+	if (t->flip == 0 && t->perm[0] == 0) {	/* plain: the fast path */
+		for (uint64_t j = 0; j < k; j++)
+			c->e[c->n + j] = (struct frs_elem){
+			    (uint32_t)(x + (idx[j] & (b - 1))),
+			    (uint32_t)(y + (idx[j] >> lb)), 0 };
+	} else {
+		for (uint64_t j = 0; j < k; j++) {
+			inblock(t, b, lb, idx[j], x, y, &ex, &ey);
+			c->e[c->n + j] = (struct frs_elem){ (uint32_t)ex,
+			    (uint32_t)ey, 0 };
+		}
+	}
 	c->n += k;
+}
+
+/* A lower bound of the values of a pixel whose blocks are smaller than
+ * it (shuffled tiles with n_s above the step): the minmap of level
+ * log2 n_s over the (at most 2 x 2) blocks its matrix region meets, or 0
+ * when there is no such level.  Dark pixels then cost four lookups
+ * instead of a bisection per block. */
+static uint32_t pixel_bound(struct pix *px)
+{
+	const struct frs_setup *s = px->run->s;
+	const struct frs_prep *p = px->run->p;
+	unsigned L = log2u64(s->ns);
+	uint64_t lx, ly, c[2][2], lo[2], m[2] = { s->mw, s->mh };
+	uint32_t v = UINT32_MAX;
+	const struct frs_tile *t;
+
+	if (s->ns >= s->mw || s->ns >= s->mh || L >= p->nlev)
+		return 0;
+	t = tile_at(s, &px->tc, px->x0, px->y0, &lx, &ly);
+	for (uint64_t k = 0; k < 2; k++) {	/* opposite corners */
+		uint64_t i = block_index(s, t, 0, lx + k * (s->ns - 1),
+		    ly + k * (s->ns - 1));
+		c[k][0] = i % s->mw;
+		c[k][1] = i / s->mw;
+	}
+	/* The region starts at the smaller corner, or wraps around. */
+	for (int i = 0; i < 2; i++)
+		lo[i] = c[0][i] < c[1][i] ? c[0][i] : c[1][i];
+	for (int i = 0; i < 2; i++)
+		if ((c[0][i] > c[1][i] ? c[0][i] - c[1][i] : c[1][i] - c[0][i]) !=
+		    s->ns - 1)
+			lo[i] = c[0][i] > c[1][i] ? c[0][i] : c[1][i];
+	for (uint64_t qy = 0; qy < 2; qy++)
+		for (uint64_t qx = 0; qx < 2; qx++) {
+			uint64_t bx = ((lo[0] >> L) + qx) % (m[0] >> L);
+			uint64_t by = ((lo[1] >> L) + qy) % (m[1] >> L);
+			uint32_t w = p->lev[L][by * (m[0] >> L) + bx];
+			v = w < v ? w : v;
+		}
+	return v;
 }
 
 static void pix_sorted(struct pix *px)
@@ -483,22 +653,34 @@ static void pix_sorted(struct pix *px)
 	const struct run *run = px->run;
 	const struct frs_setup *s = run->s;
 	const struct frs_prep *p = run->p;
-	uint32_t b = p->block, bw = s->mw / b;
+	uint32_t b = p->block;
 	uint64_t nb = s->ns / b, bb = (uint64_t)b * b;
+	unsigned lb = 0;
 
+	while ((1u << lb) < b)
+		lb++;
+	if (nb > 1 && pixel_bound(px) >= px->lim)
+		return;
 	for (uint64_t by = 0; by < nb; by++)
 		for (uint64_t bx = 0; bx < nb; bx++) {
-			uint64_t x = px->x0 + bx * b, y = px->y0 + by * b;
-			uint64_t blk = (wrap(s->wy + y, s->mh) / b) * bw +
-			    wrap(s->wx + x, s->mw) / b;
+			uint64_t x = px->x0 + bx * b, y = px->y0 + by * b, lx, ly;
+			const struct frs_tile *t = tile_at(s, &px->tc, x, y, &lx, &ly);
+			uint64_t blk = block_index(s, t, lb, lx, ly);
 			const uint32_t *val = p->sval + blk * bb;
 			const uint32_t *idx = p->sidx + blk * bb;
+			/* The block's minimum from the (small) minmap level
+			 * rather than from its list, a cache miss away. */
+			if (nb > 1 && lb < p->nlev && p->lev[lb][blk] >= px->lim)
+				continue;
 			if (run->nsteps == 1) {
-				take_block(px, val, idx, bb, b, x, y);
+				take_block(px, t, val, idx, bb, b, x, y);
 				continue;
 			}
-			for (uint64_t k = 0; k < bb && val[k] < px->lim; k++)
-				emit(px, x + idx[k] % b, y + idx[k] / b, val[k]);
+			for (uint64_t k = 0; k < bb && val[k] < px->lim; k++) {
+				uint64_t ex, ey;
+				inblock(t, b, lb, idx[k], x, y, &ex, &ey);
+				emit(px, ex, ey, val[k]);
+			}
 		}
 }
 
@@ -509,6 +691,8 @@ static int rows_task(void *ctx, uint64_t b, uint64_t e)
 	struct pix px;
 
 	px.run = run;
+	for (unsigned k = 0; k < TCACHE; k++)
+		px.tc.e[k].valid = 0;
 	for (uint64_t ci = b; ci < e; ci++) {
 		px.c = &run->r->chunk[ci];
 		for (uint64_t py = ci * ROWS_PER_CHUNK;
@@ -567,6 +751,9 @@ int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
 	    s->ns % p->block))
 		return frs_fail("-a sorted: lists of blocks of %u do not fit "
 		    "n_s = %u", p->block, s->ns);
+	if (algo == FRS_SORTED && p->block > frs_tile_max_block(s))
+		return frs_fail("-a sorted: shuffled tiles keep blocks of at most "
+		    "%u whole, not %u", frs_tile_max_block(s), p->block);
 	return 0;
 }
 

@@ -18,7 +18,7 @@ extern "C" {
 #endif
 
 #define FRS_API_VERSION_MAJOR 1
-#define FRS_API_VERSION_MINOR 0
+#define FRS_API_VERSION_MINOR 1
 
 /* ---- errors ---------------------------------------------------------- */
 
@@ -41,7 +41,7 @@ typedef struct frs_error {
 
 /* "FRS_E_ARG" and so on; thread-safe. */
 const char *frs_code_name(int code);
-/* "0.3.0"; thread-safe. */
+/* "0.4.0"; thread-safe. */
 const char *frs_library_version(void);
 
 /* ---- threshold matrices ---------------------------------------------- */
@@ -100,6 +100,16 @@ enum frs_rule_mode {
 	FRS_RULE_UNBIASED = 0,	/* n I / sum I samples per pixel */
 	FRS_RULE_THESIS		/* v < T, thesis Eq. 4.14 */
 };
+/* Since 1.1 (0.4.0): how a window larger than the mask tiles it. */
+enum frs_tiling_mode {
+	FRS_TILING_AUTO = 0,	/* shuffled when n fits the mask without
+				   repetition (n sigma^2 <= its size), else
+				   plain */
+	FRS_TILING_SHUFFLED,	/* each tile turned, flipped and shifted by
+				   (seed, tile): no lattice of repeats, but
+				   seams at the tile borders */
+	FRS_TILING_PLAIN	/* the mask repeated as it is (thesis 4.5) */
+};
 
 struct frs_options {
 	double sigma;			/* sparsity, default 8 */
@@ -107,6 +117,8 @@ struct frs_options {
 	enum frs_jitter_mode jitter;	/* default FRS_JIT_NONE */
 	enum frs_rule_mode rule;	/* default FRS_RULE_UNBIASED */
 	int threads;			/* per call, default 1 */
+	enum frs_tiling_mode tiling;	/* default FRS_TILING_AUTO;
+					   since 1.1 */
 };
 /* The defaults above. */
 void frs_options_init(struct frs_options *opt);

@@ -4,6 +4,7 @@
 #include "mem.h"
 #include "par.h"
 #include "rng.h"
+#include "tile.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -124,9 +125,31 @@ double frs3_unique(const struct frs3_setup *s)
 	return (double)s->mw * s->mh * s->md / (s->sigma * s->sigma * s->sigma);
 }
 
+/* Tiles met by n elements from offset o on an axis of m. */
+static uint64_t tiles_axis(uint64_t o, uint64_t n, uint64_t m)
+{
+	return (o + n - 1) / m - o / m + 1;
+}
+
+enum frs_tiling frs3_tiles_auto(const struct frs3_setup *s)
+{
+	return (double)s->n <= frs3_unique(s) ? FRS_TILES_SHUFFLE :
+	    FRS_TILES_PLAIN;
+}
+
+uint64_t frs3_tiles(const struct frs3_setup *s)
+{
+	return tiles_axis(s->wx, s->sw, s->mw) * tiles_axis(s->wy, s->sh, s->mh) *
+	    tiles_axis(s->wz, s->sd, s->md);
+}
+
 uint32_t frs3_block(const struct frs3_setup *s)
 {
 	uint32_t m = min3(s->mw, s->mh, s->md);
+
+	if (s->tiles == FRS_TILES_SHUFFLE)
+		m = min3((uint32_t)frs_tile_step(s->mw),
+		    (uint32_t)frs_tile_step(s->mh), (uint32_t)frs_tile_step(s->md));
 	return s->ns < m ? s->ns : m;
 }
 
@@ -231,6 +254,9 @@ struct vox {
 	struct frs_thr th[16];
 	uint64_t lim;
 	uint64_t x0, y0, z0;	/* the voxel's first window element */
+	uint64_t tile[3];	/* the last tile met and its transform */
+	int tvalid;
+	struct frs_tile t;
 };
 
 static uint64_t elem_id(const struct frs3_setup *s, uint64_t x, uint64_t y,
@@ -280,16 +306,43 @@ static void emit(struct vox *vx, uint64_t x, uint64_t y, uint64_t z,
 	    (uint32_t)z, k };
 }
 
-static uint64_t wrap(uint64_t v, uint32_t n)
+/* The transform of the tile of window element e[] (cached in vx), and
+ * the element's place in the tile in l[]. */
+static const struct frs_tile *tile_at(struct vox *vx, const uint64_t *e,
+    uint64_t *l)
 {
-	return is_pow2(n) ? v & (n - 1) : v % n;
+	const struct frs3_setup *s = vx->run->s;
+	uint64_t m[3] = { s->mw, s->mh, s->md }, w[3] = { s->wx, s->wy, s->wz };
+	uint64_t t[3];
+
+	for (int i = 0; i < 3; i++) {
+		t[i] = (w[i] + e[i]) / m[i];
+		l[i] = w[i] + e[i] - t[i] * m[i];
+	}
+	if (!vx->tvalid || t[0] != vx->tile[0] || t[1] != vx->tile[1] ||
+	    t[2] != vx->tile[2]) {
+		if (s->tiles == FRS_TILES_PLAIN)
+			frs_tile_plain(&vx->t);
+		else
+			frs_tile_make(&vx->t, s->seed, 3, m, t[0], t[1], t[2]);
+		memcpy(vx->tile, t, sizeof t);
+		vx->tvalid = 1;
+	}
+	return &vx->t;
 }
 
-static uint64_t mat_index(const struct frs3_setup *s, uint64_t x, uint64_t y,
-    uint64_t z)
+/* The index of the matrix block of side 2^lb that shows the window block
+ * (of that side) whose first element is e[]. */
+static uint64_t block_index(struct vox *vx, unsigned lb, const uint64_t *e)
 {
-	return (wrap(s->wz + z, s->md) * s->mh + wrap(s->wy + y, s->mh)) *
-	    s->mw + wrap(s->wx + x, s->mw);
+	const struct frs3_setup *s = vx->run->s;
+	uint64_t m[3] = { s->mw, s->mh, s->md }, l[3], u[3], v[3];
+	const struct frs_tile *t = tile_at(vx, e, l);
+
+	for (int i = 0; i < 3; i++)
+		u[i] = l[i] >> lb;
+	frs_tile_block(t, 3, m, lb, u, v);
+	return (v[2] * (s->mh >> lb) + v[1]) * (s->mw >> lb) + v[0];
 }
 
 static void vox_naive(struct vox *vx)
@@ -299,12 +352,24 @@ static void vox_naive(struct vox *vx)
 	uint32_t ns = s->ns;
 
 	for (uint64_t k = 0; k < (uint64_t)ns * ns * ns; k++) {
-		uint64_t x = vx->x0 + k % ns, y = vx->y0 + k / ns % ns;
-		uint64_t z = vx->z0 + k / ns / ns;
-		uint32_t v = mv[mat_index(s, x, y, z)];
+		uint64_t e[3] = { vx->x0 + k % ns, vx->y0 + k / ns % ns,
+		    vx->z0 + k / ns / ns };
+		uint32_t v = mv[block_index(vx, 0, e)];
 		if (v < vx->lim)
-			emit(vx, x, y, z, v);
+			emit(vx, e[0], e[1], e[2], v);
 	}
+}
+
+/* The window element e[] of in-block index k of a sorted block of side
+ * b whose first element is at o[]. */
+static void inblock(const struct vox *vx, uint32_t b, uint32_t k,
+    const uint64_t *o, uint64_t *e)
+{
+	uint64_t w[3] = { k % b, k / b % b, k / b / b }, u[3];
+
+	frs_tile_inblock(&vx->t, 3, b, w, u);
+	for (int i = 0; i < 3; i++)
+		e[i] = o[i] + u[i];
 }
 
 /* One step: the first k sorted values of a block pass but perhaps the
@@ -312,29 +377,33 @@ static void vox_naive(struct vox *vx)
  * needs its coin; the rest pass without a test, and counting costs no
  * more than the bisection. */
 static void take_all(struct vox *vx, const uint32_t *val, const uint32_t *idx,
-    uint32_t b, uint64_t k, uint64_t x, uint64_t y, uint64_t z)
+    uint32_t b, uint64_t k, const uint64_t *o)
 {
 	const struct frs3_setup *s = vx->run->s;
 	struct frs3_chunk *c = vx->c;
+	uint64_t e[3];
 
-	if (k > 0 && !frs_thr_passes(s->rule, &vx->th[0], val[k - 1], s->seed,
-	    elem_id(s, x + idx[k - 1] % b, y + idx[k - 1] / b % b,
-	    z + idx[k - 1] / b / b)))
-		k--;
+	if (k > 0) {
+		inblock(vx, b, idx[k - 1], o, e);
+		if (!frs_thr_passes(s->rule, &vx->th[0], val[k - 1], s->seed,
+		    elem_id(s, e[0], e[1], e[2])))
+			k--;
+	}
 	c->count += k;
 	if (vx->run->count_only || k == 0 || grow(c, k) < 0)
 		return;
-	for (uint64_t j = 0; j < k; j++)
-		c->e[c->n + j] = (struct frs3_elem){ (uint32_t)(x + idx[j] % b),
-		    (uint32_t)(y + idx[j] / b % b), (uint32_t)(z + idx[j] / b / b),
-		    0 };
+	for (uint64_t j = 0; j < k; j++) {
+		inblock(vx, b, idx[j], o, e);
+		c->e[c->n + j] = (struct frs3_elem){ (uint32_t)e[0],
+		    (uint32_t)e[1], (uint32_t)e[2], 0 };
+	}
 	c->n += k;
 }
 
 /* One block of the sorted lists, its first element at window (x, y, z):
  * the values below lim by bisection, then each through emit. */
 static void take_block(struct vox *vx, const uint32_t *val,
-    const uint32_t *idx, uint32_t b, uint64_t x, uint64_t y, uint64_t z)
+    const uint32_t *idx, uint32_t b, const uint64_t *o)
 {
 	uint64_t lo = 0, hi = (uint64_t)b * b * b;
 
@@ -346,27 +415,31 @@ static void take_block(struct vox *vx, const uint32_t *val,
 			hi = mid;
 	}
 	if (vx->run->nsteps > 1) {
-		for (uint64_t k = 0; k < lo; k++)
-			emit(vx, x + idx[k] % b, y + idx[k] / b % b,
-			    z + idx[k] / b / b, val[k]);
+		for (uint64_t k = 0; k < lo; k++) {
+			uint64_t e[3];
+			inblock(vx, b, idx[k], o, e);
+			emit(vx, e[0], e[1], e[2], val[k]);
+		}
 		return;
 	}
-	take_all(vx, val, idx, b, lo, x, y, z);
+	take_all(vx, val, idx, b, lo, o);
 }
 
 static void vox_sorted(struct vox *vx)
 {
 	const struct frs3_setup *s = vx->run->s;
 	const struct frs3_prep *p = vx->run->p;
-	uint32_t b = p->block, bw = s->mw / b, bh = s->mh / b;
+	uint32_t b = p->block;
 	uint64_t nb = s->ns / b, bb = (uint64_t)b * b * b;
+	unsigned lb = 0;
 
+	while ((1u << lb) < b)
+		lb++;
 	for (uint64_t k = 0; k < nb * nb * nb; k++) {
-		uint64_t x = vx->x0 + k % nb * b, y = vx->y0 + k / nb % nb * b;
-		uint64_t z = vx->z0 + k / nb / nb * b;
-		uint64_t blk = (wrap(s->wz + z, s->md) / b * bh +
-		    wrap(s->wy + y, s->mh) / b) * bw + wrap(s->wx + x, s->mw) / b;
-		take_block(vx, p->sval + blk * bb, p->sidx + blk * bb, b, x, y, z);
+		uint64_t o[3] = { vx->x0 + k % nb * b, vx->y0 + k / nb % nb * b,
+		    vx->z0 + k / nb / nb * b };
+		uint64_t blk = block_index(vx, lb, o);
+		take_block(vx, p->sval + blk * bb, p->sidx + blk * bb, b, o);
 	}
 }
 
@@ -378,6 +451,7 @@ static int slices_task(void *ctx, uint64_t z0, uint64_t z1)
 	struct vox vx;
 
 	vx.run = run;
+	vx.tvalid = 0;
 	for (uint64_t vz = z0; vz < z1; vz++) {
 		vx.c = &run->r->chunk[vz];
 		for (uint64_t i = vz * s->ih * s->iw; i < (vz + 1) * s->ih * s->iw;
@@ -450,7 +524,8 @@ static int check(const struct frs3_setup *s, const struct frs3_prep *p,
 		return frs_fail("-a %s: 3-D sampling has naive and sorted",
 		    frs_algo_name(algo));
 	if (algo == FRS_SORTED && (p->block == 0 || s->ns % p->block ||
-	    p->block > min3(s->mw, s->mh, s->md)))
+	    p->block > min3(s->mw, s->mh, s->md) ||
+	    (s->tiles == FRS_TILES_SHUFFLE && p->block > frs3_block(s))))
 		return frs_fail("-a sorted: lists of blocks of %u do not fit "
 		    "n_s = %u", p->block, s->ns);
 	return check_work(s, p, algo);

@@ -43,6 +43,7 @@ struct frs3_setup {
 	uint64_t seed;
 	enum frs_rule rule;
 	enum frs_jitter jitter;
+	enum frs_tiling tiles;	/* shuffled: 48 symmetries of a cube */
 	double iscale, imean;	/* as in struct frs_setup */
 };
 
@@ -52,7 +53,11 @@ int frs3_setup(struct frs3_setup *s, const struct frs_vol *vol,
 double frs3_tau(const struct frs3_setup *s, uint64_t n);
 /* Samples the matrix gives without repetition: S_M / sigma^3. */
 double frs3_unique(const struct frs3_setup *s);
-/* Block side of the sorted lists that fit this setup. */
+/* frs_tiles_auto in 3-D: n <= frs3_unique. */
+enum frs_tiling frs3_tiles_auto(const struct frs3_setup *s);
+/* Matrix tiles the window touches. */
+uint64_t frs3_tiles(const struct frs3_setup *s);
+/* Block side of the sorted lists that fit this setup (and its tiling). */
 uint32_t frs3_block(const struct frs3_setup *s);
 
 struct frs3_prep {

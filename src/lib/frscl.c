@@ -9,7 +9,7 @@
 
 /* par[] of cl/frs.cl */
 enum { PAR_SW, PAR_NS, PAR_WX, PAR_WY, PAR_MW, PAR_MH, PAR_SEED,
-	PAR_NSTEPS, PAR_NACT, PAR_L, PAR_N };
+	PAR_NSTEPS, PAR_NACT, PAR_L, PAR_TILES, PAR_N };
 
 static struct {
 	cl_context ctx;
@@ -97,25 +97,6 @@ static uint64_t pixel_record(uint64_t *rec, const double *tau, unsigned nsteps,
 	}
 	rec[1] = lim;
 	return lim;
-}
-
-static unsigned log2u64(uint64_t v)
-{
-	unsigned l = 0;
-	while (((uint64_t)1 << l) < v)
-		l++;
-	return l;
-}
-
-static unsigned start_level(const struct frs_setup *s,
-    const struct frs_prep *p, unsigned want)
-{
-	unsigned l = want, lns = log2u64(s->ns);
-	if (l > lns)
-		l = lns;
-	if (l > p->nlev - 1)
-		l = p->nlev - 1;
-	return l;
 }
 
 /* What one call holds on the device. */
@@ -481,11 +462,11 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 		c.nact++;
 	}
 	if (algo == FRS_STACK || algo == FRSCL_FLAT1)
-		L = start_level(s, p, s->level0);
+		L = frs_start_level(s, p, s->level0);
 	else if (algo == FRS_LEVEL1)
-		L = start_level(s, p, 1);
+		L = frs_start_level(s, p, 1);
 	else if (algo == FRS_LEVEL2)
-		L = start_level(s, p, 2);
+		L = frs_start_level(s, p, 2);
 	par[PAR_SW] = s->sw;
 	par[PAR_NS] = s->ns;
 	par[PAR_WX] = s->wx;
@@ -496,6 +477,7 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 	par[PAR_NSTEPS] = nsteps;
 	par[PAR_NACT] = c.nact;
 	par[PAR_L] = algo == FRS_SORTED ? p->block : L;
+	par[PAR_TILES] = s->tiles == FRS_TILES_SHUFFLE;
 	if (buffer(&c, sizeof par, par, &c.par) < 0 ||
 	    buffer(&c, c.nact * rec * sizeof *thr, thr, &c.thr) < 0)
 		goto out;

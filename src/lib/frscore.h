@@ -36,6 +36,10 @@ enum frs_algo {
 };
 enum frs_jitter { FRS_JITTER_NONE, FRS_JITTER_HALTON, FRS_JITTER_RANDOM };
 enum frs_rule { FRS_UNBIASED, FRS_THESIS };
+/* How a window larger than the matrix tiles it: each tile through its
+ * own transform of (seed, tile) (cl/tile.cl), or the thesis's plain
+ * repetition. */
+enum frs_tiling { FRS_TILES_SHUFFLE, FRS_TILES_PLAIN };
 
 const char *frs_algo_name(enum frs_algo a);
 int frs_algo_parse(const char *s, enum frs_algo *a);
@@ -54,6 +58,7 @@ struct frs_setup {
 	uint64_t seed;
 	enum frs_rule rule;
 	enum frs_jitter jitter;
+	enum frs_tiling tiles;
 	/* Thresholds are T = tau * (I * iscale): iscale is a power of two, 1
 	 * unless the map's maximum lies outside [2^-900, 2^900], where tau
 	 * (denormal maps) or the mean (a sum past DBL_MAX) would overflow;
@@ -68,6 +73,17 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 double frs_tau(const struct frs_setup *s, uint64_t n);
 /* Samples a matrix gives without repetition: S_M^2 / sigma^2 (Eq. 4.17). */
 double frs_unique(const struct frs_setup *s);
+/* --tiles auto: shuffled when n fits the matrix without repetition
+ * (n <= frs_unique), for then every repeat comes from the tiling; else
+ * plain, whose repeats cannot be avoided and which has no seams. */
+enum frs_tiling frs_tiles_auto(const struct frs_setup *s);
+/* Matrix tiles the window touches, per axis and in all. */
+uint64_t frs_tiles(const struct frs_setup *s, uint64_t *tx, uint64_t *ty);
+/* The largest block (sorted lists, minmap start level) that the tiling
+ * keeps whole: the offset step with shuffled tiles, else the matrix. */
+uint32_t frs_tile_max_block(const struct frs_setup *s);
+/* The matrix index (y * mw + x) that window element (x, y) shows. */
+uint64_t frs_matrix_index(const struct frs_setup *s, uint64_t x, uint64_t y);
 
 /* The matrix prepared for the implementations: minmap levels and
  * block-sorted lists. */
@@ -85,6 +101,10 @@ struct frs_prep {
 int frs_prepare(struct frs_prep *p, const struct frs_matrix *m,
     int minmap, uint32_t block);
 void frs_prep_free(struct frs_prep *p);
+/* The minmap level at which Stack, Level N and Flat 1 start for the
+ * wanted level: at most log2 n_s, the top level and the tiling's block. */
+unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
+    unsigned want);
 
 /* One accepted window element; (x, y) window coordinates (windows of
  * 2^32 or more elements a side can only be counted). */

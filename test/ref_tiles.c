@@ -1,0 +1,400 @@
+/*
+ * ref_tiles: the measures of tiling (issue: no visible repetition on HDR
+ * maps), for the tests and scripts/bench-frs.sh.  Points are window
+ * elements: without jitter a point lies at the centre of element
+ * (floor(x W), floor(y H)) of the W x H window (frs-sample -v prints it).
+ *
+ *   ref_tiles repeat W H FILE
+ *       the share of samples whose neighbourhood recurs: the difference
+ *       vectors (in elements) to its 4 nearest neighbours (and any tied
+ *       with the 4th) equal another sample's up to the 8 symmetries of
+ *       the square, at any displacement
+ *   ref_tiles seams W H MW MH WX WY FILE
+ *       nearest-neighbour distances in local spacings, sqrt(W H / (n
+ *       pdf)) from the third column (frs-sample --pdf), of the samples
+ *       within half a spacing of a border of the MW x MH tiles of the
+ *       window at offset (WX, WY), against the others: counts, 1st
+ *       percentiles and their ratio
+ *   ref_tiles chi2 BX BY MAP [--equirect] FILE
+ *       the counts of BX x BY blocks of [0,1)^2 against n I / sum I of
+ *       the map (bins below 5 expected pooled): chi-square, df, p
+ *       (Wilson-Hilferty)
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "err.h"
+#include "imap.h"
+#include "ptsio.h"
+
+static void die(const char *msg)
+{
+	fprintf(stderr, "ref_tiles: %s\n", msg);
+	exit(1);
+}
+
+static void *xcalloc(size_t n, size_t s)
+{
+	void *p = calloc(n ? n : 1, s);
+	if (p == NULL)
+		die("out of memory");
+	return p;
+}
+
+static void load(const char *path, struct frs_points *s)
+{
+	if (pts_read(path, s) < 0) {
+		fprintf(stderr, "ref_tiles: %s\n", frs_errmsg());
+		exit(1);
+	}
+	if (s->dims != 2)
+		die("2-D points only");
+}
+
+/* ---- a grid of points for neighbour queries ------------------------- */
+
+struct grid {
+	int64_t *x, *y;		/* element coordinates */
+	size_t n;
+	int64_t cell;
+	size_t gw, gh;
+	size_t *start, *item;	/* points of cell c: item[start[c]..start[c+1]) */
+};
+
+static void grid_make(struct grid *g, int64_t cell, int64_t w, int64_t h)
+{
+	size_t *cnt;
+
+	g->cell = cell;
+	g->gw = (size_t)(w / cell + 1);
+	g->gh = (size_t)(h / cell + 1);
+	g->start = xcalloc(g->gw * g->gh + 1, sizeof *g->start);
+	g->item = xcalloc(g->n, sizeof *g->item);
+	cnt = xcalloc(g->gw * g->gh, sizeof *cnt);
+	for (size_t i = 0; i < g->n; i++)
+		cnt[(size_t)(g->y[i] / cell) * g->gw + (size_t)(g->x[i] / cell)]++;
+	for (size_t c = 0; c < g->gw * g->gh; c++)
+		g->start[c + 1] = g->start[c] + cnt[c];
+	memset(cnt, 0, g->gw * g->gh * sizeof *cnt);
+	for (size_t i = 0; i < g->n; i++) {
+		size_t c = (size_t)(g->y[i] / cell) * g->gw + (size_t)(g->x[i] / cell);
+		g->item[g->start[c] + cnt[c]++] = i;
+	}
+	free(cnt);
+}
+
+/* The k nearest other points of point i (squared distances d2, indices
+ * nb), k <= 16, searching rings of cells until the k-th is certain. */
+static size_t grid_knn(const struct grid *g, size_t i, size_t k, int64_t *d2,
+    size_t *nb)
+{
+	int64_t cx = g->x[i] / g->cell, cy = g->y[i] / g->cell;
+	size_t m = 0;
+
+	for (int64_t r = 0; r < (int64_t)(g->gw + g->gh); r++) {
+		for (int64_t yy = cy - r; yy <= cy + r; yy++)
+			for (int64_t xx = cx - r; xx <= cx + r; xx++) {
+				size_t c;
+				if ((yy != cy - r && yy != cy + r && xx != cx - r &&
+				    xx != cx + r) || xx < 0 || yy < 0 ||
+				    xx >= (int64_t)g->gw || yy >= (int64_t)g->gh)
+					continue;
+				c = (size_t)yy * g->gw + (size_t)xx;
+				for (size_t q = g->start[c]; q < g->start[c + 1]; q++) {
+					size_t j = g->item[q], p;
+					int64_t dx = g->x[j] - g->x[i], dy = g->y[j] - g->y[i];
+					int64_t dd = dx * dx + dy * dy;
+					if (j == i)
+						continue;
+					/* insertion into the sorted k best */
+					if (m == k && dd >= d2[k - 1])
+						continue;
+					p = m < k ? m++ : k - 1;
+					while (p > 0 && d2[p - 1] > dd) {
+						d2[p] = d2[p - 1];
+						nb[p] = nb[p - 1];
+						p--;
+					}
+					d2[p] = dd;
+					nb[p] = j;
+				}
+			}
+		/* every point outside the rings seen is at least r cells away */
+		if (m == k && d2[k - 1] <= (r * g->cell) * (r * g->cell))
+			break;
+	}
+	return m;
+}
+
+static void grid_free(struct grid *g)
+{
+	free(g->start);
+	free(g->item);
+}
+
+/* Points of set 0 as elements of the W x H window. */
+static void to_elems(const struct frs_points *s, int64_t w, int64_t h,
+    struct grid *g)
+{
+	g->n = s->n;
+	g->x = xcalloc(g->n, sizeof *g->x);
+	g->y = xcalloc(g->n, sizeof *g->y);
+	for (size_t i = 0; i < g->n; i++) {
+		const double *r = s->x + i * (s->dims + s->extra);
+		g->x[i] = (int64_t)floor(r[0] * (double)w);
+		g->y[i] = (int64_t)floor(r[1] * (double)h);
+	}
+}
+
+/* ---- repeat ------------------------------------------------------- */
+
+#define KEYLEN 16	/* up to 8 neighbours (4 and ties), dx dy each */
+
+struct key {
+	int64_t v[KEYLEN];
+	size_t i;
+};
+
+static int vec_cmp(const void *a, const void *b)
+{
+	const int64_t *x = a, *y = b;
+	if (x[0] != y[0])
+		return x[0] < y[0] ? -1 : 1;
+	return (x[1] > y[1]) - (x[1] < y[1]);
+}
+
+static int key_cmp(const void *a, const void *b)
+{
+	const struct key *x = a, *y = b;
+	for (int k = 0; k < KEYLEN; k++)
+		if (x->v[k] != y->v[k])
+			return x->v[k] < y->v[k] ? -1 : 1;
+	return 0;
+}
+
+/* The canonical key of m difference vectors: the least, over the 8
+ * symmetries, of the sorted transformed vectors. */
+static void canon(const int64_t *d, size_t m, struct key *out)
+{
+	int64_t best[KEYLEN], t[KEYLEN];
+
+	for (int s = 0; s < 8; s++) {
+		memset(t, 0, sizeof t);
+		for (size_t j = 0; j < m; j++) {
+			int64_t x = d[2 * j], y = d[2 * j + 1], u;
+			if (s & 4) {
+				u = x;
+				x = y;
+				y = u;
+			}
+			t[2 * j] = (s & 1) ? -x : x;
+			t[2 * j + 1] = (s & 2) ? -y : y;
+		}
+		qsort(t, m, 2 * sizeof *t, vec_cmp);
+		if (s == 0 || memcmp(t, best, sizeof t) < 0) {
+			/* memcmp order is only a tie-break; any fixed total
+			 * order gives a canonical key */
+			memcpy(best, t, sizeof t);
+		}
+	}
+	for (size_t j = m; j < KEYLEN / 2; j++)
+		best[2 * j] = best[2 * j + 1] = INT64_MIN;
+	memcpy(out->v, best, sizeof best);
+}
+
+static void repeat(int64_t w, int64_t h, const char *path)
+{
+	struct frs_points s;
+	struct grid g;
+	struct key *key;
+	size_t rep = 0;
+
+	load(path, &s);
+	to_elems(&s, w, h, &g);
+	if (g.n < 6)
+		die("repeat: fewer than 6 points");
+	grid_make(&g, (int64_t)fmax(1.0, sqrt((double)w * (double)h /
+	    (double)g.n)), w, h);
+	key = xcalloc(g.n, sizeof *key);
+	for (size_t i = 0; i < g.n; i++) {
+		int64_t d2[8], d[KEYLEN];
+		size_t nb[8], m = grid_knn(&g, i, 8, d2, nb), k = 4;
+		while (k < m && d2[k] == d2[3])
+			k++;	/* ties with the 4th */
+		for (size_t j = 0; j < k; j++) {
+			d[2 * j] = g.x[nb[j]] - g.x[i];
+			d[2 * j + 1] = g.y[nb[j]] - g.y[i];
+		}
+		canon(d, k, &key[i]);
+		key[i].i = i;
+	}
+	qsort(key, g.n, sizeof *key, key_cmp);
+	for (size_t i = 0; i < g.n; i++)
+		if ((i > 0 && key_cmp(&key[i - 1], &key[i]) == 0) ||
+		    (i + 1 < g.n && key_cmp(&key[i + 1], &key[i]) == 0))
+			rep++;
+	printf("n %zu repeated %zu share %.6f\n", g.n, rep,
+	    (double)rep / (double)g.n);
+	free(key);
+	grid_free(&g);
+	free(g.x);
+	free(g.y);
+	pts_free(&s);
+}
+
+/* ---- seams -------------------------------------------------------- */
+
+static int dbl_cmp(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+static double pct(double *v, size_t n, double p)
+{
+	if (n == 0)
+		return NAN;
+	qsort(v, n, sizeof *v, dbl_cmp);
+	return v[(size_t)(p * (double)(n - 1))];
+}
+
+/* Distance of coordinate c + 1/2 to the nearest multiple of m after the
+ * offset o (a border of the tiles). */
+static double border_dist(int64_t c, int64_t m, int64_t o)
+{
+	double r = fmod((double)(c + o) + 0.5, (double)m);
+	return fmin(r, (double)m - r);
+}
+
+static void seams(int64_t w, int64_t h, int64_t mw, int64_t mh, int64_t wx,
+    int64_t wy, const char *path)
+{
+	struct frs_points s;
+	struct grid g;
+	double *nearv, *farv;
+	size_t nn = 0, nf = 0;
+
+	load(path, &s);
+	if (s.extra < 1)
+		die("seams: the file needs a pdf column (frs-sample --pdf)");
+	to_elems(&s, w, h, &g);
+	if (g.n < 2)
+		die("seams: fewer than 2 points");
+	grid_make(&g, (int64_t)fmax(1.0, sqrt((double)w * (double)h /
+	    (double)g.n)), w, h);
+	nearv = xcalloc(g.n, sizeof *nearv);
+	farv = xcalloc(g.n, sizeof *farv);
+	for (size_t i = 0; i < g.n; i++) {
+		double pdf = s.x[i * (s.dims + s.extra) + 2];
+		double sp = sqrt((double)w * (double)h / ((double)g.n * pdf));
+		double b = fmin(border_dist(g.x[i], mw, wx),
+		    border_dist(g.y[i], mh, wy));
+		int64_t d2;
+		size_t nb;
+		grid_knn(&g, i, 1, &d2, &nb);
+		if (b < 0.5 * sp)
+			nearv[nn++] = sqrt((double)d2) / sp;
+		else
+			farv[nf++] = sqrt((double)d2) / sp;
+	}
+	{
+		double qn = pct(nearv, nn, 0.01), qf = pct(farv, nf, 0.01);
+		printf("near %zu q01 %.4f far %zu q01 %.4f ratio %.4f\n", nn, qn,
+		    nf, qf, qn / qf);
+	}
+	free(nearv);
+	free(farv);
+	grid_free(&g);
+	free(g.x);
+	free(g.y);
+	pts_free(&s);
+}
+
+/* ---- chi2 --------------------------------------------------------- */
+
+static void chi2(int bx, int by, const char *map, int flags, const char *path)
+{
+	struct frs_points s;
+	struct frs_imap m;
+	double *e = xcalloc((size_t)bx * by, sizeof *e), tot = 0.0, x2 = 0.0;
+	double *o = xcalloc((size_t)bx * by, sizeof *o), pe = 0.0, po = 0.0;
+	size_t n, df = 0;
+
+	load(path, &s);
+	if (imap_load(map, 0, 0, flags, &m) < 0) {
+		fprintf(stderr, "ref_tiles: %s\n", frs_errmsg());
+		exit(1);
+	}
+	for (uint32_t y = 0; y < m.h; y++)
+		for (uint32_t x = 0; x < m.w; x++) {
+			size_t b = (size_t)((uint64_t)y * (uint64_t)by / m.h) * (size_t)bx +
+			    (size_t)((uint64_t)x * (uint64_t)bx / m.w);
+			double v = m.v[(size_t)y * m.w + x];
+			e[b] += v > 0.0 ? v : 0.0;
+			tot += v > 0.0 ? v : 0.0;
+		}
+	n = s.n;
+	for (size_t i = 0; i < n; i++) {
+		const double *r = s.x + i * (s.dims + s.extra);
+		int cx = (int)(r[0] * bx), cy = (int)(r[1] * by);
+		o[(size_t)(cy < by ? cy : by - 1) * (size_t)bx +
+		    (size_t)(cx < bx ? cx : bx - 1)] += 1.0;
+	}
+	for (size_t b = 0; b < (size_t)bx * by; b++) {
+		double ex = e[b] / tot * (double)n;
+		if (ex < 5.0) {
+			pe += ex;
+			po += o[b];
+			continue;
+		}
+		x2 += (o[b] - ex) * (o[b] - ex) / ex;
+		df++;
+	}
+	if (pe > 0.0) {
+		x2 += (po - pe) * (po - pe) / pe;
+		df++;
+	}
+	df = df > 1 ? df - 1 : 1;
+	{
+		/* Wilson-Hilferty: (x2/df)^(1/3) is normal with mean
+		 * 1 - 2/(9 df) and variance 2/(9 df). */
+		double v = 2.0 / (9.0 * (double)df);
+		double z = (cbrt(x2 / (double)df) - (1.0 - v)) / sqrt(v);
+		printf("n %zu chi2 %.3f df %zu p %.3g\n", n, x2, df,
+		    0.5 * erfc(z / sqrt(2.0)));
+	}
+	imap_free(&m);
+	free(e);
+	free(o);
+	pts_free(&s);
+}
+
+static int64_t num(const char *s)
+{
+	char *end;
+	long long v = strtoll(s, &end, 10);
+	if (*s == '\0' || *end != '\0' || v < 0)
+		die("bad number");
+	return (int64_t)v;
+}
+
+int main(int argc, char **argv)
+{
+	if (argc == 5 && strcmp(argv[1], "repeat") == 0)
+		repeat(num(argv[2]), num(argv[3]), argv[4]);
+	else if (argc == 9 && strcmp(argv[1], "seams") == 0)
+		seams(num(argv[2]), num(argv[3]), num(argv[4]), num(argv[5]),
+		    num(argv[6]), num(argv[7]), argv[8]);
+	else if ((argc == 6 || argc == 7) && strcmp(argv[1], "chi2") == 0)
+		chi2((int)num(argv[2]), (int)num(argv[3]), argv[4],
+		    argc == 7 && strcmp(argv[5], "--equirect") == 0 ?
+		    IMAP_EQUIRECT : 0, argv[argc - 1]);
+	else
+		die("usage: ref_tiles repeat W H FILE | seams W H MW MH WX WY "
+		    "FILE | chi2 BX BY MAP [--equirect] FILE");
+	return 0;
+}
