@@ -56,7 +56,9 @@ static void run(const struct frs_setup *s, const struct frs_imap *map,
     unsigned nsteps, struct frs_result *r)
 {
 	struct frs_prep p;
-	uint32_t b = a == FRS_SORTED ? (s->ns < m->w ? s->ns : m->w) : 0;
+	uint32_t b = s->ns < m->w ? s->ns : m->w, t = frs_tile_max_block(s);
+
+	b = a == FRS_SORTED ? (b < t ? b : t) : 0;
 	assert_int_equal(frs_prepare(&p, m, a != FRS_NAIVE && a != FRS_SORTED, b),
 	    0);
 	if (frs_sample(s, map, &p, a, steps, nsteps, 0, r) != 0)
@@ -65,7 +67,8 @@ static void run(const struct frs_setup *s, const struct frs_imap *map,
 	frs_prep_free(&p);
 }
 
-/* Every implementation, thread count and rule gives Naive's elements. */
+/* Every implementation, thread count, rule and tiling gives Naive's
+ * elements. */
 static void implementations_agree(void **state)
 {
 	static const char *maps[] = { "blob:x=0.3,sigma=0.1", "ramp", "const",
@@ -87,6 +90,7 @@ static void implementations_agree(void **state)
 			assert_int_equal(frs_setup(&s, &map, &m, n, sig[(mi + ni) % 4],
 			    7 + ni), 0);
 			s.rule = ni == 2 ? FRS_THESIS : FRS_UNBIASED;
+			s.tiles = (mi + ni) % 2 ? FRS_TILES_SHUFFLE : FRS_TILES_PLAIN;
 			frs_set_threads(1);
 			run(&s, &map, &m, FRS_NAIVE, &n, 1, &ref);
 			re = tu_elems(&ref, 1);

@@ -85,7 +85,9 @@ static void implementations_match_cpu(void **state)
 			    mi == 3 ? 4.0 : 8.0, 11 + 3 * mi + v), 0);
 			s.rule = (mi + v) % 2 ? FRS_THESIS : FRS_UNBIASED;
 			s.jitter = (enum frs_jitter)((mi + v) % 3);
+			s.tiles = v % 2 ? FRS_TILES_SHUFFLE : FRS_TILES_PLAIN;
 			b = s.ns < m.w ? s.ns : m.w;
+			b = b < frs_tile_max_block(&s) ? b : frs_tile_max_block(&s);
 			assert_int_equal(frs_prepare(&ps, &m, 0, b), 0);
 			frs_set_threads(1 + v % 2);
 			for (int a = 0; a < FRS_NALGO; a++)

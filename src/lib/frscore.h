@@ -39,7 +39,7 @@ enum frs_rule { FRS_UNBIASED, FRS_THESIS };
 /* How a window larger than the matrix tiles it: each tile through its
  * own transform of (seed, tile) (cl/tile.cl), or the thesis's plain
  * repetition. */
-enum frs_tiling { FRS_TILES_SHUFFLE, FRS_TILES_PLAIN };
+enum frs_tiling { FRS_TILES_PLAIN, FRS_TILES_SHUFFLE };
 
 const char *frs_algo_name(enum frs_algo a);
 int frs_algo_parse(const char *s, enum frs_algo *a);
