@@ -50,9 +50,9 @@ static const char usage[] =
     "      --threshold R    unbiased (default) or thesis (Eq. 4.14)\n"
     "      --tiles T        a window larger than the matrix: shuffled\n"
     "                       (each tile turned, flipped and shifted by\n"
-    "                       the seed), plain (repeated as it is, thesis\n"
-    "                       Sec. 4.5) or auto (default: shuffled when n\n"
-    "                       fits the matrix without repetition)\n"
+    "                       the seed), plain (default: repeated as it\n"
+    "                       is, thesis Sec. 4.5) or auto (shuffled when\n"
+    "                       n fits the matrix without repetition)\n"
     "      --count-only     print the count, make no points\n"
     "      --sets M         write M sets one after another, set i made\n"
     "                       with seed S+i (default 1; not with\n"
@@ -797,6 +797,7 @@ static int main3(const struct opts *o)
 int main(int argc, char **argv)
 {
 	struct opts o = { .algo = FRS_SORTED, .sigma = 8.0,
+	    .tiles = FRS_TILING_PLAIN,
 	    .jitter = FRS_JITTER_NONE, .rule = FRS_UNBIASED, .sets = 1,
 	    .dev = -1 };
 	struct ocl ocl = { NULL, NULL, NULL, NULL, "", 0 };

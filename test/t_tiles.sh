@@ -103,10 +103,10 @@ awk -v p="$pv" 'BEGIN { exit !(p > 1e-4) }' && ok "sky, shuffled: block chi-squa
     nok "sky, shuffled: block chi-square p $pv"
 
 # -v tells the tiles and the reuse; auto picks; bad names fail
-frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 -v -o /dev/null 2>"$T/v.txt"
+frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles auto -v -o /dev/null 2>"$T/v.txt"
 grep -q 'tiles ([0-9]*x[0-9]*), shuffled; .* % of the samples show a matrix element' "$T/v.txt" &&
     ok "-v: tiles, shuffled by auto, reuse share" || nok "-v: tiles, shuffled by auto, reuse share"
-frs-sample -m "$T/m.frd" -n 4000 -v -o /dev/null 2>"$T/v.txt"
+frs-sample -m "$T/m.frd" -n 4000 --tiles auto -v -o /dev/null 2>"$T/v.txt"
 grep -q 'tiles ([0-9]*x[0-9]*), plain' "$T/v.txt" && ok "auto: plain past S_M^2/sigma^2" ||
     nok "auto: plain past S_M^2/sigma^2"
 frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles plain -o /dev/null 2>"$T/w.txt"
@@ -115,3 +115,5 @@ grep -q 'tiles plain: the window' "$T/w.txt" && ok "--tiles plain warns of the l
 frs-sample -q -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles plain -o /dev/null 2>"$T/w.txt"
 [ ! -s "$T/w.txt" ] && ok "-q silences it" || nok "-q silences it"
 expect_fail "--tiles bogus" 2 "--tiles" "$T/o.pts" frs-sample -m "$T/m.frd" -n 10 --tiles bogus -o "$T/o.pts"
+frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 -v -o /dev/null 2>"$T/v.txt"
+grep -q 'tiles ([0-9]*x[0-9]*), plain' "$T/v.txt" && ok "plain by default" || nok "plain by default"

@@ -449,7 +449,7 @@ void frs_options_init(struct frs_options *opt)
 	opt->jitter = FRS_JIT_NONE;
 	opt->rule = FRS_RULE_UNBIASED;
 	opt->threads = 1;
-	opt->tiling = FRS_TILING_AUTO;
+	opt->tiling = FRS_TILING_PLAIN;
 }
 
 static int check_options(const struct frs_options *o, frs_error *err)

@@ -117,7 +117,7 @@ struct frs_options {
 	enum frs_jitter_mode jitter;	/* default FRS_JIT_NONE */
 	enum frs_rule_mode rule;	/* default FRS_RULE_UNBIASED */
 	int threads;			/* per call, default 1 */
-	enum frs_tiling_mode tiling;	/* default FRS_TILING_AUTO;
+	enum frs_tiling_mode tiling;	/* default FRS_TILING_PLAIN;
 					   since 1.1 */
 };
 /* The defaults above. */
