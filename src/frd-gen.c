@@ -260,11 +260,9 @@ struct method_opts {
 static int parse_choice(const char *opt, const char *s, const char *a,
     const char *b)
 {
-	if (strcmp(s, a) == 0)
-		return 0;
-	if (strcmp(s, b) != 0)
-		cli_usage_error("%s: '%s' is not %s or %s", opt, s, a, b);
-	return 1;
+	const char *const w[] = { a, b, NULL };
+
+	return cli_choice(opt, s, w);
 }
 
 

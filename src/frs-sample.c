@@ -171,38 +171,19 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		case OPT_SIGMA:
 			o->sigma = cli_double("--sigma", optarg, 1.0, 1024.0);
 			break;
-		case OPT_JITTER:
-			if (strcmp(optarg, "none") == 0)
-				o->jitter = FRS_JITTER_NONE;
-			else if (strcmp(optarg, "halton") == 0)
-				o->jitter = FRS_JITTER_HALTON;
-			else if (strcmp(optarg, "random") == 0)
-				o->jitter = FRS_JITTER_RANDOM;
-			else
-				cli_usage_error("--jitter: '%s' is not none, halton or "
-				    "random", optarg);
+		case OPT_JITTER:	/* in the order of enum frs_jitter */
+			o->jitter = (enum frs_jitter)cli_choice("--jitter", optarg,
+			    (const char *const[]){ "none", "halton", "random", NULL });
 			break;
 		case OPT_PDF: o->pdf = 1; break;
 		case OPT_PROG: parse_steps(o, optarg); break;
-		case OPT_THRESHOLD:
-			if (strcmp(optarg, "unbiased") == 0)
-				o->rule = FRS_UNBIASED;
-			else if (strcmp(optarg, "thesis") == 0)
-				o->rule = FRS_THESIS;
-			else
-				cli_usage_error("--threshold: '%s' is not unbiased or "
-				    "thesis", optarg);
+		case OPT_THRESHOLD:	/* enum frs_rule */
+			o->rule = (enum frs_rule)cli_choice("--threshold", optarg,
+			    (const char *const[]){ "unbiased", "thesis", NULL });
 			break;
-		case OPT_TILES:
-			if (strcmp(optarg, "auto") == 0)
-				o->tiles = FRS_TILING_AUTO;
-			else if (strcmp(optarg, "shuffled") == 0)
-				o->tiles = FRS_TILING_SHUFFLED;
-			else if (strcmp(optarg, "plain") == 0)
-				o->tiles = FRS_TILING_PLAIN;
-			else
-				cli_usage_error("--tiles: '%s' is not auto, shuffled or "
-				    "plain", optarg);
+		case OPT_TILES:		/* enum frs_tiling_mode */
+			o->tiles = cli_choice("--tiles", optarg, (const char *const[]){
+			    "auto", "shuffled", "plain", NULL });
 			break;
 		case OPT_COUNT_ONLY: o->count_only = 1; break;
 		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;

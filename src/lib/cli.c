@@ -104,6 +104,20 @@ noreturn void cli_usage_error(const char *fmt, ...)
 	cli_usage(2);
 }
 
+int cli_choice(const char *opt, const char *s, const char *const *words)
+{
+	int n = 0;
+
+	for (; words[n] != NULL; n++)
+		if (strcmp(s, words[n]) == 0)
+			return n;
+	fprintf(stderr, "%s: %s: '%s' is not ", cli_prog, opt, s);
+	for (int i = 0; i < n; i++)
+		fprintf(stderr, "%s%s", words[i], i + 2 < n ? ", " :
+		    i + 2 == n ? " or " : "\n");
+	cli_usage(2);
+}
+
 noreturn void cli_die(const char *fmt, ...)
 {
 	va_list ap;

@@ -55,6 +55,9 @@ int cli_common_opt(int c, const char *arg);
 
 noreturn void cli_usage(int status);
 noreturn void cli_usage_error(const char *fmt, ...) FRS_PRINTF(1, 2);
+/* Which of the words (NULL-terminated, at least two) option opt names:
+ * its index; any other is a usage error "opt: 's' is not a, b or c". */
+int cli_choice(const char *opt, const char *s, const char *const *words);
 /* "prog: message", exit 1, removing unfinished output files. */
 noreturn void cli_die(const char *fmt, ...) FRS_PRINTF(1, 2);
 /* "prog: <library message>", exit 1. */
