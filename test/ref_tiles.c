@@ -150,6 +150,31 @@ static void to_elems(const struct frs_points *s, int64_t w, int64_t h,
 	}
 }
 
+/* The points of path as elements of the W x H window, at least min of
+ * them (what names the mode), in a grid of cells of about a spacing. */
+static void load_grid(const char *path, int64_t w, int64_t h, size_t min,
+    const char *what, struct frs_points *s, struct grid *g)
+{
+	char msg[64];
+
+	load(path, s);
+	to_elems(s, w, h, g);
+	if (g->n < min) {
+		snprintf(msg, sizeof msg, "%s: fewer than %zu points", what, min);
+		die(msg);
+	}
+	grid_make(g, (int64_t)fmax(1.0, sqrt((double)w * (double)h /
+	    (double)g->n)), w, h);
+}
+
+static void grid_done(struct grid *g, struct frs_points *s)
+{
+	grid_free(g);
+	free(g->x);
+	free(g->y);
+	pts_free(s);
+}
+
 /* ---- repeat ------------------------------------------------------- */
 
 #define KEYLEN 16	/* up to 8 neighbours (4 and ties), dx dy each */
@@ -213,12 +238,7 @@ static void repeat(int64_t w, int64_t h, const char *path)
 	struct key *key;
 	size_t rep = 0;
 
-	load(path, &s);
-	to_elems(&s, w, h, &g);
-	if (g.n < 6)
-		die("repeat: fewer than 6 points");
-	grid_make(&g, (int64_t)fmax(1.0, sqrt((double)w * (double)h /
-	    (double)g.n)), w, h);
+	load_grid(path, w, h, 6, "repeat", &s, &g);
 	key = xcalloc(g.n, sizeof *key);
 	for (size_t i = 0; i < g.n; i++) {
 		int64_t d2[8], d[KEYLEN];
@@ -240,10 +260,7 @@ static void repeat(int64_t w, int64_t h, const char *path)
 	printf("n %zu repeated %zu share %.6f\n", g.n, rep,
 	    (double)rep / (double)g.n);
 	free(key);
-	grid_free(&g);
-	free(g.x);
-	free(g.y);
-	pts_free(&s);
+	grid_done(&g, &s);
 }
 
 /* ---- seams -------------------------------------------------------- */
@@ -278,14 +295,9 @@ static void seams(int64_t w, int64_t h, int64_t mw, int64_t mh, int64_t wx,
 	double *nearv, *farv;
 	size_t nn = 0, nf = 0;
 
-	load(path, &s);
+	load_grid(path, w, h, 2, "seams", &s, &g);
 	if (s.extra < 1)
 		die("seams: the file needs a pdf column (frs-sample --pdf)");
-	to_elems(&s, w, h, &g);
-	if (g.n < 2)
-		die("seams: fewer than 2 points");
-	grid_make(&g, (int64_t)fmax(1.0, sqrt((double)w * (double)h /
-	    (double)g.n)), w, h);
 	nearv = xcalloc(g.n, sizeof *nearv);
 	farv = xcalloc(g.n, sizeof *farv);
 	for (size_t i = 0; i < g.n; i++) {
@@ -308,10 +320,7 @@ static void seams(int64_t w, int64_t h, int64_t mw, int64_t mh, int64_t wx,
 	}
 	free(nearv);
 	free(farv);
-	grid_free(&g);
-	free(g.x);
-	free(g.y);
-	pts_free(&s);
+	grid_done(&g, &s);
 }
 
 /* ---- chi2 --------------------------------------------------------- */
