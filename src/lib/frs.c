@@ -148,16 +148,15 @@ enum frs_tiling frs_tiles_auto(const struct frs_setup *s)
 	    FRS_TILES_PLAIN;
 }
 
-/* Tiles met by n elements from offset o on an axis of m. */
-static uint64_t tiles_axis(uint64_t o, uint64_t n, uint64_t m)
+uint64_t frs_tiles_axis(uint64_t o, uint64_t n, uint64_t m)
 {
 	return (o + n - 1) / m - o / m + 1;
 }
 
 uint64_t frs_tiles(const struct frs_setup *s, uint64_t *tx, uint64_t *ty)
 {
-	*tx = tiles_axis(s->wx, s->sw, s->mw);
-	*ty = tiles_axis(s->wy, s->sh, s->mh);
+	*tx = frs_tiles_axis(s->wx, s->sw, s->mw);
+	*ty = frs_tiles_axis(s->wy, s->sh, s->mh);
 	return *tx * *ty;
 }
 

@@ -125,12 +125,6 @@ double frs3_unique(const struct frs3_setup *s)
 	return (double)s->mw * s->mh * s->md / (s->sigma * s->sigma * s->sigma);
 }
 
-/* Tiles met by n elements from offset o on an axis of m. */
-static uint64_t tiles_axis(uint64_t o, uint64_t n, uint64_t m)
-{
-	return (o + n - 1) / m - o / m + 1;
-}
-
 enum frs_tiling frs3_tiles_auto(const struct frs3_setup *s)
 {
 	return (double)s->n <= frs3_unique(s) ? FRS_TILES_SHUFFLE :
@@ -139,8 +133,9 @@ enum frs_tiling frs3_tiles_auto(const struct frs3_setup *s)
 
 uint64_t frs3_tiles(const struct frs3_setup *s)
 {
-	return tiles_axis(s->wx, s->sw, s->mw) * tiles_axis(s->wy, s->sh, s->mh) *
-	    tiles_axis(s->wz, s->sd, s->md);
+	return frs_tiles_axis(s->wx, s->sw, s->mw) *
+	    frs_tiles_axis(s->wy, s->sh, s->mh) *
+	    frs_tiles_axis(s->wz, s->sd, s->md);
 }
 
 uint32_t frs3_block(const struct frs3_setup *s)

@@ -77,6 +77,8 @@ double frs_unique(const struct frs_setup *s);
  * (n <= frs_unique), for then every repeat comes from the tiling; else
  * plain, whose repeats cannot be avoided and which has no seams. */
 enum frs_tiling frs_tiles_auto(const struct frs_setup *s);
+/* Tiles of side m met by n elements from offset o on one axis. */
+uint64_t frs_tiles_axis(uint64_t o, uint64_t n, uint64_t m);
 /* Matrix tiles the window touches, per axis and in all. */
 uint64_t frs_tiles(const struct frs_setup *s, uint64_t *tx, uint64_t *ty);
 /* The largest block (sorted lists, minmap start level) that the tiling
