@@ -83,7 +83,7 @@ TILE_FN void frs_tile_make(struct frs_tile *t, TILE_U64 seed, TILE_U32 dims,
 	TILE_U64 r = frs_rand64x(seed, FRS_STREAM_TILE, idx, (TILE_U32)t2 * 2u);
 	TILE_U64 r2 = frs_rand64x(seed, FRS_STREAM_TILE, idx,
 	    (TILE_U32)t2 * 2u + 1u);
-	TILE_U32 n = 0, pick, p[3];
+	TILE_U32 n = 0, ok[6], p[3];
 
 	/* Permutations that keep every axis size: those with
 	 * m[p[i]] == m[i] (and the third axis fixed in 2-D). */
@@ -91,21 +91,9 @@ TILE_FN void frs_tile_make(struct frs_tile *t, TILE_U64 seed, TILE_U32 dims,
 		frs_tile_perm(k, p);
 		if (m[p[0]] == m[0] && m[p[1]] == m[1] && m[p[2]] == m[2] &&
 		    (dims == 3 || p[2] == 2))
-			n++;
+			ok[n++] = k;
 	}
-	pick = (TILE_U32)((r & 0xffu) % n);
-	for (TILE_U32 k = 0; k < 6; k++) {
-		frs_tile_perm(k, p);
-		if (m[p[0]] == m[0] && m[p[1]] == m[1] && m[p[2]] == m[2] &&
-		    (dims == 3 || p[2] == 2)) {
-			if (pick == 0) {
-				t->perm[0] = p[0];
-				t->perm[1] = p[1];
-				t->perm[2] = p[2];
-			}
-			pick--;
-		}
-	}
+	frs_tile_perm(ok[(r & 0xffu) % n], t->perm);
 	t->flip = (TILE_U32)(r >> 8) & ((1u << dims) - 1u);
 	for (TILE_U32 i = 0; i < 3; i++) {
 		TILE_U64 g = frs_tile_step(m[i]);
