@@ -549,20 +549,17 @@ static void pix_level(struct pix *px, unsigned n)
  * large.  One step: the values below lim by bisection, the last of them
  * through its coin if it needs one (values are distinct, so only it can),
  * then every element taken without further tests.  This is the hot loop
- * of the fastest implementation.  (x, y): the block's window origin; t
- * its tile's transform, whose in-block order k undoes. */
+ * of the fastest implementation.  (x, y): the block's window origin, b =
+ * 2^lb its side; t its tile's transform, whose in-block order k undoes. */
 static void take_block(struct pix *px, const struct frs_tile *t,
-    const uint32_t *val, const uint32_t *idx, uint64_t bb, uint32_t b,
+    const uint32_t *val, const uint32_t *idx, uint32_t b, unsigned lb,
     uint64_t x, uint64_t y)
 {
-	uint64_t lo = 0, hi = bb, k, ex, ey;
-	unsigned lb = 0;
+	uint64_t lo = 0, hi = (uint64_t)b * b, k, ex, ey;
 	struct frs_chunk *c = px->c;
 
 	if (val[0] >= px->lim)
 		return;
-	while ((1u << lb) < b)
-		lb++;
 	while (lo < hi) {
 		uint64_t mid = lo + (hi - lo) / 2;
 		if (val[mid] < px->lim)
@@ -672,7 +669,7 @@ static void pix_sorted(struct pix *px)
 			if (nb > 1 && lb < p->nlev && p->lev[lb][blk] >= px->lim)
 				continue;
 			if (run->nsteps == 1) {
-				take_block(px, t, val, idx, bb, b, x, y);
+				take_block(px, t, val, idx, b, lb, x, y);
 				continue;
 			}
 			for (uint64_t k = 0; k < bb && val[k] < px->lim; k++) {
