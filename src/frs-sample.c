@@ -486,7 +486,7 @@ static void first_setup(const struct opts *o, const frs_sampler *smp,
 	if (api_setup(smp, o->steps[o->nsteps - 1], cli.seed, s0) < 0)
 		cli_die("%s", frs_errmsg());
 	if (api_mask_prep(smp->mask, needs_minmap(o->algo) ||
-	    (o->algo == FRS_SORTED && api_sorted_block(s0) < s0->ns),
+	    (o->algo == FRS_SORTED && api_sorted_minmap(s0)),
 	    o->algo == FRS_SORTED ? api_sorted_block(s0) : 0, &view) < 0)
 		cli_die("%s: %s", o->matrix, frs_errmsg());
 	if ((double)s0->n > frs_unique(s0))

@@ -588,9 +588,7 @@ static int run(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
 		return rc;
 	if (api_setup(s, steps[nsteps - 1], seed, su) < 0)
 		return lib_err(err, FRS_E_LIMIT);
-	/* Sorted skips dark pixels by the minmap when its blocks are
-	 * smaller than a pixel (pixel_bound in frs.c). */
-	if (a == FRS_SORTED && api_sorted_block(su) < su->ns)
+	if (a == FRS_SORTED && api_sorted_minmap(su))
 		minmap = 1;
 	if (a == FRS_SORTED)
 		block = api_sorted_block(su);
@@ -607,6 +605,11 @@ uint32_t api_sorted_block(const struct frs_setup *su)
 	uint32_t b = su->ns < su->mw ? su->ns : su->mw, t = frs_tile_max_block(su);
 	b = b < su->mh ? b : su->mh;
 	return b < t ? b : t;
+}
+
+int api_sorted_minmap(const struct frs_setup *su)
+{
+	return api_sorted_block(su) < su->ns;
 }
 
 double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
