@@ -28,6 +28,7 @@
 #   blob3.png and shell3.png (projections xy and xz of one set).
 # ids: 3d three-d
 . "$(dirname "$0")/explib.sh"
+EXP_MATRIX="$FRS_MATRIX $FRS_MATRIX3"	# 3-D FRS, and 2-D beside it
 
 KMIN=4
 KMAX=$(pick 6 10 12)

@@ -32,7 +32,7 @@ MAP=$((32 * SIG))
 # J FILE CMD...: a par_run line running explib's cached in a child shell
 J="sh -c '. \"\$0\"; cached \"\$@\"' $TOP/scripts/explib.sh"
 matrix() {
-	if [ "$1" = 2048 ]; then echo "$TOP/data/default.frd"; else echo "$CACHE/frd/s$1-p0.5-S1.frd"; fi
+	if [ "$1" = 2048 ]; then echo "$FRS_MATRIX"; else echo "$CACHE/frd/s$1-p0.5-S1.frd"; fi
 }
 C=$CACHE/fig4
 mkdir -p "$C" "$CACHE/frd" "$OUT/img"

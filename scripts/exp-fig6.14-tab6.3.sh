@@ -176,7 +176,7 @@ EOF
 # The device gives the CPU's bytes (one case each).
 CE=$(pick 8 16 16)
 same() { # label cmd-cpu cmd-cl
-	cached "$CACHE/perf-cl/cmp_$1_${TAG}_${DTAG}_n$CE.txt" sh -c "$2 -o \"\$0.cpu\" && $3 -o \"\$0.cl\" && { if cmp -s \"\$0.cpu\" \"\$0.cl\"; then echo identical; else echo differ; fi; rm -f \"\$0.cpu\" \"\$0.cl\"; }" "$CACHE/perf-cl/cmp_$1_$$"
+	cached "$CACHE/perf-cl/cmp_$1_${TAG}_${DTAG}_n$CE.txt" sh -c "$2 -o \"\$0.cpu\" && $3 -o \"\$0.cl\" && { if cmp -s \"\$0.cpu\" \"\$0.cl\"; then echo identical; else echo differ; fi; rm -f \"\$0.cpu\" \"\$0.cl\"; }" "$CACHE/perf-cl/cmp_$1_${TAG}_${DTAG}_n$CE.work"
 }
 same sorted "frs-sample -q -m $FRP -i blob -n $((1 << CE)) -a sorted --device cpu" "frs-sample -q -m $FRP -i blob -n $((1 << CE)) -a sorted --device cl"
 same flat1 "frs-sample -q -m $FRP -i blob -n $((1 << CE)) -a stack --device cpu" "frs-sample -q -m $FRP -i blob -n $((1 << CE)) -a flat1 --device cl"

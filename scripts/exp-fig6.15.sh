@@ -23,10 +23,10 @@ exp_begin fig6.15 "Share of time per task, Sorted FRS and HSW" \
 NS=$(pick "8 12" "8 12 16 20 24" "4 8 12 16 20 24")
 REPS=$(pick 1 2 5)
 if [ "$MODE" = tiny ]; then
-	FRP=$TOP/data/default.frd
+	FRP=$FRS_MATRIX
 else
 	FRP=$CACHE/default-all.frp
-	cached "$FRP" frd-prep -q -a all "$TOP/data/default.frd"
+	cached "$FRP" frd-prep -q -a all "$FRS_MATRIX"
 fi
 TAG=$(basename "$FRP" | tr . _)
 

@@ -140,12 +140,10 @@ if [ "${1:-}" = job ]; then	# worker: sh exp-mc.sh job SAMPLER N
 	exit 0
 fi
 if [ "${1:-}" = envjob ]; then	# worker: sh exp-mc.sh envjob SAMPLER N
-	cached "$(ebase "$2" "$3").tsv" run_one env "$2" "$3"
+	# the maps last: run_one reads them, the cache key needs them
+	cached "$(ebase "$2" "$3").tsv" run_one env "$2" "$3" "$EMAP" "$ENVMAP"
 	exit 0
 fi
-
-STAMP=$(exp_stamp)
-fresh() { [ -s "$1" ] && { [ -z "$STAMP" ] || [ "$1" -nt "$STAMP" ]; }; }
 
 # NS: the counts, largest first (the longest jobs start first).
 NS=$(k=$KMAX; while [ $k -ge "$KMIN" ]; do echo $((1 << k)); k=$((k - 1)); done)
@@ -158,13 +156,10 @@ cached "$VACM" frd-gen -q --method vac -s "$VS" -S 1
 cached "$EMAP" imap convert -q --equirect --format exr "$ENVMAP" -
 for n in $NS; do
 	for s in $SAMPLERS; do
-		b=$(base $s $n)
-		{ fresh "$b.tsv" && [ -s "$b.time" ]; } || echo "sh $0 job $s $n"
+		echo "sh $0 job $s $n"
 	done
 	for s in $ESAMPLERS; do
-		b=$(ebase $s $n)
-		{ fresh "$b.tsv" && [ -s "$b.time" ] && [ "$b.tsv" -nt "$EMAP" ]; } ||
-		    echo "sh $0 envjob $s $n"
+		echo "sh $0 envjob $s $n"
 	done
 done | par_run
 

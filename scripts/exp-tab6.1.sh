@@ -74,7 +74,9 @@ density() {
 		if [ "$2" = uniform ]; then
 			cached "$b.pts" ref-sample -q -k "$1" -n "$N" --sets "$M"
 		else
-			cached "$b.pts" hsw_sets "$2" "$1"
+			# the map words last, for the cache key only
+			# shellcheck disable=SC2086
+			cached "$b.pts" hsw_sets "$2" "$1" $mo
 		fi
 		# shellcheck disable=SC2086
 		cached "$b.tsv" dda --density -q -j 1 $mo --sets "$N" "$b.pts" ;;

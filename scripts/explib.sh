@@ -11,6 +11,10 @@
 #   SSHLOGIN hosts for GNU parallel --sshlogin (e.g. "8/host1,8/host2,:");
 #            the tree must be at the same path on every host (NFS)
 #   ENVMAP   the environment map of Fig. 6.1d (default data/sunset.exr)
+#   FRS_MATRIX, FRS_MATRIX3
+#            the matrices frs-sample uses (default data/default.frd and
+#            data/default3.frd)
+#   SSH      the ssh command GNU parallel runs for SSHLOGIN (default ssh)
 set -eu
 TOP=$(cd "$(dirname "$0")/.." && pwd)
 MODE=${MODE:-quick}
@@ -18,9 +22,19 @@ BIN=${BIN:-$TOP/bin}
 RES=${RES:-$TOP/results}
 JOBS=${JOBS:-$(nproc)}
 ENVMAP=${ENVMAP:-$TOP/data/sunset.exr}
+FRS_MATRIX=${FRS_MATRIX:-$TOP/data/default.frd}
+FRS_MATRIX3=${FRS_MATRIX3:-$TOP/data/default3.frd}
 CACHE=$RES/cache
 PATH=$BIN:$PATH
-export PATH BIN RES MODE JOBS CACHE ENVMAP TOP
+export PATH BIN RES MODE JOBS CACHE ENVMAP TOP FRS_MATRIX FRS_MATRIX3
+mkdir -p "$CACHE"
+# ID: the experiment, for the cache's miss log before exp_begin sets it
+# (and in the child shells of par_run, which inherit it).
+if [ -z "${ID:-}" ]; then
+	ID=$(basename "$0" .sh)
+	ID=${ID#exp-}
+fi
+export ID
 
 case $MODE in
 tiny | quick | full) ;;
@@ -42,6 +56,8 @@ exp_begin() {
 	OUT=$RES/$ID
 	mkdir -p "$OUT" "$CACHE"
 	: >"$OUT/summary.md"
+	printf 'claim\tours\tresult\tcause\n' >"$OUT/checks.tsv"
+	rm -f "$OUT/observed.txt" "$OUT/hw.txt" "$OUT/notes.txt"
 	EXP_T0=$(date +%s.%N)
 	{
 		echo "## $ID: $2"
@@ -55,23 +71,107 @@ exp_begin() {
 	export ID OUT
 }
 
-# newest program: a cached file older than it is stale.
-exp_stamp() {
-	ls -t "$BIN"/* 2>/dev/null | head -n 1
+# ---- the cache: results keyed by content ------------------------------
+#
+# A cached file FILE keeps FILE.key, a checksum of everything that made
+# it: the mode, the command's words, the content of every word that is a
+# file (inputs, and outputs of earlier cached steps), of every program
+# the command runs, and of the experiment's inputs (exp_uses).  A rerun
+# with the same key reuses FILE; touch or cp -p change nothing; any
+# changed content recomputes exactly what depends on it.  Every miss is
+# a line "ID FILE" in $CACHE/misses (t_experiments counts them).
+
+# file_sum FILE: the checksum of FILE's content, memoised in
+# $CACHE/sums by path, size, inode and time (so it is read once).
+file_sum() {
+	_st="$1|$(stat -L -c '%s %i %y' "$1")"
+	_h=$(awk -F '\t' -v k="$_st" '$1 == k { print $2; exit }' \
+	    "$CACHE/sums" 2>/dev/null) || :
+	if [ -z "$_h" ]; then
+		_h=$(sha1sum <"$1" | cut -c 1-40)
+		printf '%s\t%s\n' "$_st" "$_h" >>"$CACHE/sums"
+	fi
+	echo "$_h"
 }
 
-# cached FILE CMD...: FILE is CMD's standard output, made only when it is
-# missing or older than the programs; written atomically.
-cached() {
-	f=$1
+# exp_uses FILE...: inputs of every cached step of this experiment that
+# its commands do not name (a map a function reads); they go into every
+# key.  The matrices frs-sample finds by itself, EXP_MATRIX (default
+# FRS_MATRIX), go into the key of every step that runs frs-sample.
+EXP_USES=
+exp_uses() {
+	EXP_USES="$*"
+}
+
+# progs_of CMD...: the programs a command runs: those of BIN it names,
+# or, for a shell function, every program its script and explib name.
+progs_of() {
+	if [ -x "$BIN/$1" ]; then
+		for _w in "$@"; do
+			[ -x "$BIN/$_w" ] && echo "$_w"
+		done
+		return
+	fi
+	for _p in "$BIN"/*; do
+		_b=$(basename "$_p")
+		grep -q -w -F -e "$_b" "$0" "$TOP/scripts/explib.sh" && echo "$_b"
+	done
+	return 0
+}
+
+# cache_key FILE CMD...: the key of CMD making FILE (see above).  Words
+# named like FILE (its path up to the extension, then another one) are
+# the step's own further outputs (a --png beside the table), not inputs.
+cache_key() {
+	_s=${1%.*}
 	shift
-	s=$(exp_stamp)
-	if [ -s "$f" ] && { [ -z "$s" ] || [ "$f" -nt "$s" ]; }; then
+	{
+		echo "mode $MODE"
+		printf 'word %s\n' "$@"
+		for _w in "$@"; do
+			case $_w in "$_s".*) continue ;; esac
+			[ -f "$_w" ] && echo "file $(file_sum "$_w")"
+		done
+		if ! [ -x "$BIN/$1" ] && ! [ -f "$1" ]; then
+			echo "script $(file_sum "$0") $(file_sum "$TOP/scripts/explib.sh")"
+		fi
+		for _p in $(progs_of "$@"); do
+			echo "prog $_p $(file_sum "$BIN/$_p")"
+			case $_p in
+			frs-sample | frd-prep)
+				for _m in ${EXP_MATRIX:-$FRS_MATRIX}; do
+					echo "matrix $(file_sum "$_m")"
+				done ;;
+			esac
+		done
+		for _f in $EXP_USES; do
+			echo "uses $(file_sum "$_f")"
+		done
+	} | sha1sum | cut -c 1-40
+}
+
+# cached FILE CMD...: FILE is CMD's standard output, made only when its
+# key changed; written atomically, the key last.
+cached() {
+	_f=$1
+	_k=$(cache_key "$@")
+	shift
+	if [ -s "$_f" ] && [ "$(cat "$_f.key" 2>/dev/null)" = "$_k" ]; then
 		return 0
 	fi
-	mkdir -p "$(dirname "$f")"
-	"$@" >"$f.tmp.$$"
-	mv -f "$f.tmp.$$" "$f"
+	mkdir -p "$(dirname "$_f")"
+	echo "$ID $_f" >>"$CACHE/misses"
+	"$@" >"$_f.tmp.$$"
+	mv -f "$_f.tmp.$$" "$_f"
+	echo "$_k" >"$_f.key.tmp.$$"
+	mv -f "$_f.key.tmp.$$" "$_f.key"
+}
+
+# fresh FILE CMD...: FILE is up to date for CMD (cached would reuse it);
+# for the scripts that hand only the missing jobs to par_run.
+fresh() {
+	_f=$1
+	[ -s "$_f" ] && [ "$(cat "$_f.key" 2>/dev/null)" = "$(cache_key "$@")" ]
 }
 
 # par_run: run the shell commands on standard input, one a line, with GNU
@@ -80,7 +180,9 @@ cached() {
 par_run() {
 	if [ -n "${SSHLOGIN:-}" ]; then
 		parallel --will-cite --halt now,fail=1 --sshlogin "$SSHLOGIN" \
-		    --workdir "$TOP" --env PATH --env MODE --env RES
+		    --ssh "${SSH:-ssh}" --workdir "$TOP" --env PATH --env MODE \
+		    --env RES --env BIN --env ENVMAP --env FRS_MATRIX \
+		    --env FRS_MATRIX3
 	else
 		parallel --will-cite --halt now,fail=1 -j "$JOBS"
 	fi
@@ -93,10 +195,10 @@ par_run() {
 # the map argument for a name of MAPS.
 timing_inputs() {
 	if [ "$MODE" = tiny ]; then
-		FRP=$TOP/data/default.frd
+		FRP=$FRS_MATRIX
 	else
 		FRP=$CACHE/default-all.frp
-		cached "$FRP" frd-prep -q -a all "$TOP/data/default.frd"
+		cached "$FRP" frd-prep -q -a all "$FRS_MATRIX"
 	fi
 	envb=$(basename "$ENVMAP")
 	ENV128=$CACHE/${envb%.*}-128-equirect.exr
@@ -206,21 +308,120 @@ row() {
 	echo "| $1 | $2 | $3 |" >>"$OUT/rows.md"
 }
 
-# exp_end VERDICT "why": reproduced, differs or not reproducible here.
+# ---- verdicts computed from the run ----------------------------------
+#
+# Every claim of the thesis that an experiment tests is a check on this
+# run's numbers; the verdict is computed from the checks alone:
+# "reproduced" when every check holds, "differs" when one fails, and
+# "not comparable" when the claim is about hardware we lack (exp_hw).
+# A failed check of an order (check_order: A beats B) is a reversal of
+# the thesis, named in the verdict's first sentence.
+
+# holds EXPR: the awk condition EXPR (numbers already in it) is true.
+holds() {
+	awk "BEGIN { exit !($1) }" </dev/null
+}
+
+# check "claim" "ours" EXPR ["cause"]: a claim of the thesis, our value
+# and the condition on it; the cause, if known, is said when it fails.
+check() {
+	_check fails "$@"
+}
+
+# check_order "claim" "ours" EXPR ["cause"]: a claim that one method
+# beats another; when it fails, the thesis is reversed here.
+check_order() {
+	_check reversed "$@"
+}
+
+_check() {
+	if holds "$4"; then _st=holds; else _st=$1; fi
+	printf '%s\t%s\t%s\t%s\n' "$2" "$3" "$_st" "${5:-}" >>"$OUT/checks.tsv"
+}
+
+# observe EXPR "sentence": a sentence of the verdict that holds only
+# when EXPR does (a cause or a finding measured in this run).
+observe() {
+	if holds "$1"; then
+		printf '%s\n' "$2" >>"$OUT/observed.txt"
+	fi
+}
+
+# exp_hw "what we measured instead": the thesis measured hardware we
+# lack (its GPU); the verdict is "not comparable".
+exp_hw() {
+	printf '%s\n' "$1" >"$OUT/hw.txt"
+}
+
+# exp_note "sentence": a fact of the setup (not a verdict), said before
+# the verdict.
+exp_note() {
+	printf '%s\n' "$1" >>"$OUT/notes.txt"
+}
+
+# verdict: the verdict word and text from checks.tsv, observed.txt and
+# hw.txt; sets VERDICT and WHY.
+verdict() {
+	_c=$OUT/checks.tsv
+	_nc=$(awk 'END { print NR - 1 }' "$_c")
+	_nf=$(awk -F '\t' 'NR > 1 && $3 != "holds"' "$_c" | awk 'END { print NR }')
+	_rev=$(awk -F '\t' '$3 == "reversed" { printf "%s%s (ours: %s)", s, $1, $2; s = "; " }' "$_c")
+	_bad=$(awk -F '\t' '$3 == "fails" { printf "%s%s (ours: %s%s)", s, $1, $2, ($4 == "" ? "" : "; " $4); s = "; " }' "$_c")
+	WHY=
+	[ -n "$_rev" ] && WHY="Reversed here: $_rev."
+	if [ -s "$OUT/hw.txt" ]; then
+		VERDICT="not comparable"
+		WHY="${WHY:+$WHY  }Measured on hardware other than the thesis': $(cat "$OUT/hw.txt")."
+	elif [ "$_nc" -gt 0 ] && [ "$_nf" = 0 ]; then
+		VERDICT=reproduced
+	elif [ "$_nc" = 0 ]; then
+		VERDICT=differs
+		WHY="No claim of the thesis was checked."
+	else
+		VERDICT=differs
+	fi
+	if [ "$_nc" -gt 0 ]; then
+		if [ "$_nf" = 0 ]; then
+			WHY="${WHY:+$WHY  }All $_nc checks hold."
+		else
+			WHY="${WHY:+$WHY  }$_nf of $_nc checks fail${_bad:+: $_bad}."
+		fi
+	fi
+	if [ -s "$OUT/observed.txt" ]; then
+		WHY="$WHY  $(tr '\n' ' ' <"$OUT/observed.txt" | sed 's/ *$//')"
+	fi
+	if [ "$MODE" = tiny ]; then
+		WHY="$WHY  (Tiny mode: a smoke test with too few points for the numbers to mean much.)"
+	fi
+}
+
+# exp_end: the summary: head, pictures, the table of numbers, the
+# checks, setup notes and the verdict computed from the checks.
 exp_end() {
-	t1=$(date +%s.%N)
-	secs=$(awk -v a="$EXP_T0" -v b="$t1" 'BEGIN { printf "%.1f", b - a }')
+	_t1=$(date +%s.%N)
+	_secs=$(awk -v a="$EXP_T0" -v b="$_t1" 'BEGIN { printf "%.1f", b - a }')
+	verdict
 	{
 		cat "$OUT/head.md"
 		for f in "$OUT"/*.png; do
 			[ -e "$f" ] && echo "![$ID]($ID/$(basename "$f"))" && echo
 		done
 		[ -s "$OUT/rows.md" ] && cat "$OUT/rows.md" && echo
-		echo "**Verdict: $1.** $2"
+		if [ "$_nc" -gt 0 ]; then
+			echo "| check (thesis) | ours | result |"
+			echo "| --- | --- | --- |"
+			awk -F '\t' 'NR > 1 { printf "| %s | %s | %s |\n", $1, $2, $3 }' "$OUT/checks.tsv"
+			echo
+		fi
+		if [ -s "$OUT/notes.txt" ]; then
+			printf 'Setup: %s\n\n' "$(tr '\n' ' ' <"$OUT/notes.txt" | sed 's/ *$//')"
+		fi
+		echo "**Verdict: $VERDICT.** $WHY"
 		echo
-		echo "Time: $secs s ($MODE mode)."
+		echo "Time: $_secs s ($MODE mode)."
 		echo
 	} >"$OUT/summary.md"
-	rm -f "$OUT/head.md" "$OUT/rows.md"
-	echo "$ID: $1 ($secs s)" >&2
+	rm -f "$OUT/head.md" "$OUT/rows.md" "$OUT/observed.txt" "$OUT/hw.txt" \
+	    "$OUT/notes.txt"
+	echo "$ID: $VERDICT ($_secs s)" >&2
 }
