@@ -83,8 +83,8 @@ all: progs
 ifeq ($(VARIANT),rel)
 all: libs
 	@mkdir -p bin
-	@for p in $(PROGS); do cp -f $(B)/bin/$$p bin/$$p.tmp && \
-	    mv -f bin/$$p.tmp bin/$$p; done
+	@for p in $(PROGS); do cmp -s $(B)/bin/$$p bin/$$p || \
+	    { cp -f $(B)/bin/$$p bin/$$p.tmp && mv -f bin/$$p.tmp bin/$$p; }; done
 endif
 
 progs: $(PROGBIN)
@@ -194,11 +194,12 @@ bench: deps
 	@$(MAKE) --no-print-directory VARIANT=bench progs $(REFSRC:test/%.c=build/bench/test/%)
 	@sh scripts/bench.sh build/bench
 
-# make experiments [ONLY=fig6.3,tab6.1] [QUICK=0]: every thesis experiment
-# (scripts/exp-*.sh), results and results/REPORT.md.
+# make experiments [ONLY=fig6.3,tab6.1] [QUICK=0] [-j2]: every thesis
+# experiment (scripts/exp-*.sh), results and results/REPORT.md; the rules
+# are mk/experiments.mk (only what changed is recomputed).
 experiments: deps
 	@$(MAKE) --no-print-directory all
-	@ONLY='$(ONLY)' QUICK='$(QUICK)' sh scripts/experiments.sh
+	@$(MAKE) --no-print-directory -f mk/experiments.mk experiments
 
 lint-man:
 	mandoc -Tlint -Wwarning man/man*/*.[0-9]

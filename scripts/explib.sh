@@ -104,7 +104,8 @@ exp_uses() {
 }
 
 # progs_of CMD...: the programs a command runs: those of BIN it names,
-# or, for a shell function, every program its script and explib name.
+# or, for a shell function, those its body names (the function of the
+# script, else of explib; a function it calls in turn is not followed).
 progs_of() {
 	if [ -x "$BIN/$1" ]; then
 		for _w in "$@"; do
@@ -112,11 +113,27 @@ progs_of() {
 		done
 		return
 	fi
+	fn_body "$@" >"$CACHE/.body.$$"
 	for _p in "$BIN"/*; do
 		_b=$(basename "$_p")
-		grep -q -w -F -e "$_b" "$0" "$TOP/scripts/explib.sh" && echo "$_b"
+		grep -q -w -F -e "$_b" "$CACHE/.body.$$" && echo "$_b"
 	done
+	rm -f "$CACHE/.body.$$"
 	return 0
+}
+
+# fn_body NAME: the text of shell function NAME, from "NAME() {" to the
+# first "}" alone on a line, in the script or else in explib.sh; the
+# command itself when neither defines it (sh -c "...").
+fn_body() {
+	for _s in "$0" "$TOP/scripts/explib.sh"; do
+		if grep -q "^$1() *{" "$_s"; then
+			awk -v f="$1" '$0 ~ "^" f "\\(\\) *\\{" { on = 1 }
+			    on { print } on && /^}/ { exit }' "$_s"
+			return
+		fi
+	done
+	printf '%s\n' "$@"
 }
 
 # cache_key FILE CMD...: the key of CMD making FILE (see above).  Words

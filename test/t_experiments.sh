@@ -1,23 +1,56 @@
 #!/bin/sh
-# The experiment scripts in their tiny mode: each writes tab-separated data
-# with a header, a PNG and a summary with a verdict; the report lists
-# them; tab6.1's FRS density in quick mode is where the thesis puts it.
+# The experiments in their tiny mode, through their make rules
+# (mk/experiments.mk): each writes tab-separated data with a header, a PNG
+# and a summary whose verdict follows from its checks; the report lists
+# them.  Then the caching: a no-op rerun, touch and cp -p of the matrix
+# recompute nothing; a matrix of other content recomputes the FRS steps
+# and nothing else; a planted wrong number flips its check and the
+# verdict.  GNU parallel over two stand-in hosts (test/fakessh.sh) gives
+# the results of a local run.  Last, tab6.1's FRS density in quick mode
+# is where the thesis puts it.
 . "$(dirname "$0")/lib.sh"
 TOP=$(cd "$(dirname "$0")/.." && pwd)
-export RES="$T/res" MODE=tiny BIN JOBS=2
+R=$T/res
+export RES="$R" MODE=tiny BIN JOBS=1 FRS_MATRIX="$T/m.frd"
+frd-gen -q -s 256 -S 1 -o "$T/m.frd"
 
+# xmake ARGS...: the experiments' make rules, alone (not under make
+# check's jobserver), from the top of the tree.
+xmake() {
+	(cd "$TOP" && env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL \
+	    make -s -f mk/experiments.mk "$@")
+}
+misses() { cat "$R/cache/misses" 2>/dev/null | awk 'END { print NR }'; }
+
+if ! nolsan xmake -j2 experiments >"$T/out" 2>"$T/err"; then
+	nok "make -j2 experiments (tiny): exit status"
+	sed 's/^/# /' "$T/err" | tail -n 12
+fi
 for s in "$TOP"/scripts/exp-*.sh; do
 	id=$(basename "$s" .sh)
 	id=${id#exp-}
-	if ! nolsan sh "$s" >"$T/out" 2>"$T/err"; then
-		nok "$id: exit status"
-		sed 's/^/# /' "$T/err" | tail -n 8
-		continue
+	d=$R/$id
+	v=$(sed -n 's/^\*\*Verdict: \([^.]*\)\.\*\*.*/\1/p' "$d/summary.md" 2>/dev/null)
+	case $v in
+	reproduced | differs | "not comparable") ok "$id: verdict $v" ;;
+	*) nok "$id: no verdict in $d/summary.md" ;;
+	esac
+	# the verdict follows from the checks: reproduced exactly when
+	# there are checks and all hold; a reversal is said first
+	nc=$(awk 'END { print NR - 1 }' "$d/checks.tsv" 2>/dev/null)
+	nf=$(awk -F '\t' 'NR > 1 && $3 != "holds"' "$d/checks.tsv" 2>/dev/null |
+	    awk 'END { print NR }')
+	rv=$(awk -F '\t' 'NR > 1 && $3 == "reversed"' "$d/checks.tsv" 2>/dev/null |
+	    awk 'END { print NR }')
+	why=
+	[ "${nc:-0}" -ge 1 ] || why="no checks"
+	{ [ "$v" = reproduced ] && [ "$nf" != 0 ]; } && why="reproduced with $nf failing checks"
+	{ [ "$v" = differs ] && [ "$nf" = 0 ]; } && why="differs with every check holding"
+	if [ "$rv" -gt 0 ] && ! grep -q '^\*\*Verdict: [^.]*\.\*\* Reversed here: ' "$d/summary.md"; then
+		why="$why; $rv reversals not said first"
 	fi
-	d=$RES/$id
-	grep -q '^\*\*Verdict: \(reproduced\|differs\|not reproducible here\)' \
-	    "$d/summary.md" 2>/dev/null && ok "$id: summary with a verdict" ||
-	    nok "$id: summary with a verdict"
+	[ -z "$why" ] && ok "$id: verdict from $nc checks ($nf fail)" ||
+	    nok "$id: $why"
 	png=0
 	for f in "$d"/*.png; do
 		[ -e "$f" ] || continue
@@ -36,19 +69,72 @@ for s in "$TOP"/scripts/exp-*.sh; do
 	[ $ndat -ge 1 ] && [ $bad = 0 ] && ok "$id: $ndat tables with headers" ||
 	    nok "$id: tables ($ndat, $bad bad)"
 done
+grep -q '^| fig6.9 |' "$R/REPORT.md" && ok "REPORT.md lists the experiments" ||
+    nok "REPORT.md"
 
-sh "$TOP/scripts/report.sh" && grep -q '^| fig6.9 |' "$RES/REPORT.md" &&
-    ok "REPORT.md lists the experiments" || nok "REPORT.md"
+# A rerun with nothing changed runs nothing; touch and cp -p of the
+# matrix neither.
+m0=$(misses)
+ls -l --time-style=+%s.%N "$R"/*/summary.md >"$T/t0"
+xmake -j2 experiments >/dev/null 2>&1
+ls -l --time-style=+%s.%N "$R"/*/summary.md >"$T/t1"
+[ "$(misses)" = "$m0" ] && cmp -s "$T/t0" "$T/t1" &&
+    ok "no-op rerun: nothing recomputed ($m0 steps cached)" ||
+    nok "no-op rerun: $(($(misses) - m0)) steps recomputed"
+touch "$T/m.frd"
+cp -p "$T/m.frd" "$T/m2.frd" && mv -f "$T/m2.frd" "$T/m.frd"
+xmake -j2 experiments >/dev/null 2>&1
+[ "$(misses)" = "$m0" ] && ok "touch, cp -p of the matrix: nothing recomputed" ||
+    nok "touch, cp -p of the matrix: $(($(misses) - m0)) steps recomputed"
+
+# Other content: every experiment that samples FRS recomputes, fig3.1
+# (frd-gen only) does not, and in tab6.1 only the FRS cells do.
+frd-gen -q -s 256 -S 2 -o "$T/m.frd"
+xmake -j2 experiments >/dev/null 2>&1
+tail -n +$((m0 + 1)) "$R/cache/misses" >"$T/new"
+for id in fig6.9 fig6.12 tab6.1 fig6.3-6.8 mc; do
+	grep -q "^$id " "$T/new" && ok "new matrix: $id recomputed" ||
+	    nok "new matrix: $id not recomputed"
+done
+! grep -q '^fig3.1 ' "$T/new" && ok "new matrix: fig3.1 untouched" ||
+    nok "new matrix: fig3.1 recomputed"
+n=$(grep '^tab6.1 ' "$T/new" | grep -v -c '/j\?frs-[a-z]*-n')
+[ "$n" = 0 ] && ok "new matrix: tab6.1 recomputes only its FRS cells" ||
+    nok "new matrix: tab6.1 recomputes $n cells that do not use FRS"
+
+# A planted wrong number: regular's density of 0.1 instead of 0.930
+# flips the check of the regular grid (and so the verdict).
+f=$(ls "$R"/cache/tab6.1/regular-uniform-*.tsv)
+awk -F '\t' -v OFS='\t' 'NR > 1 { $NF = "0.100" } { print }' "$f" >"$T/p" &&
+    cat "$T/p" >"$f"
+sh "$TOP/scripts/exp-tab6.1.sh" >/dev/null 2>&1
+c=$(awk -F '\t' '$2 ~ /0\.100/ && $3 == "fails"' "$R/tab6.1/checks.tsv" |
+    awk 'END { print NR }')
+[ "$c" -ge 1 ] && grep -q '^\*\*Verdict: differs\.\*\* .*0\.100' "$R/tab6.1/summary.md" &&
+    ok "planted regular rho 0.100: its check fails, the verdict says so" ||
+    nok "planted regular rho 0.100: not caught"
 
 # ONLY selects by id or alias; an unknown one is an error.
-MODE=tiny ONLY=fig6.9 nolsan sh "$TOP/scripts/experiments.sh" >/dev/null 2>"$T/err" &&
+R2=$T/only
+RES=$R2 nolsan xmake ONLY=fig6.9 experiments >/dev/null 2>"$T/err" &&
+    [ -s "$R2/fig6.9/summary.md" ] && ! [ -e "$R2/tab6.1" ] &&
     ok "ONLY=fig6.9" || nok "ONLY=fig6.9: $(tail -n 1 "$T/err")"
 expect_fail "ONLY=nothing" 2 "no experiment matches" - \
-    env MODE=tiny ONLY=nothing sh "$TOP/scripts/experiments.sh"
+    env ONLY=nothing sh "$TOP/scripts/experiments.sh"
+
+# Two hosts through GNU parallel's --sshlogin (stand-ins that run here)
+# give the bytes of the local run.
+R3=$T/ssh
+RES=$R3 SSHLOGIN=1/hostA,1/hostB SSH="$TOP/test/fakessh.sh" \
+    FAKESSH_LOG=$T/hosts nolsan xmake ONLY=fig6.9 experiments >/dev/null 2>"$T/err"
+h=$(sort -u "$T/hosts" 2>/dev/null | tr '\n' ' ')
+[ "$h" = "hostA hostB " ] && cmp -s "$R2/fig6.9/peaks.tsv" "$R3/fig6.9/peaks.tsv" &&
+    ok "SSHLOGIN over two hosts: both used, the same peaks.tsv" ||
+    nok "SSHLOGIN over two hosts (hosts: $h)"
 
 # tab6.1 in quick mode: FRS's uniform density where the thesis puts it
 # (0.650; Lagae and Dutre's good range starts at 0.65).
-if MODE=quick RES="$T/q" nolsan sh "$TOP/scripts/exp-tab6.1.sh" >/dev/null 2>"$T/err"; then
+if env -u FRS_MATRIX MODE=quick RES="$T/q" nolsan sh "$TOP/scripts/exp-tab6.1.sh" >/dev/null 2>"$T/err"; then
 	v=$(awk -F '\t' '$1 == "frs" { print $2 }' "$T/q/tab6.1/tab6.1.tsv")
 	awk -v v="$v" 'BEGIN { exit !(v >= 0.6 && v <= 0.72) }' &&
 	    ok "tab6.1 quick: FRS density $v in [0.6, 0.72]" ||

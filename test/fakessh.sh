@@ -1,0 +1,17 @@
+#!/bin/sh
+# fakessh.sh [ssh options] HOST [--] COMMAND...: run COMMAND on this
+# machine, as ssh would on HOST: a stand-in host for GNU parallel
+# --sshlogin (--ssh test/fakessh.sh) in t_experiments.  Each call appends
+# HOST to $FAKESSH_LOG.
+while [ $# -gt 0 ]; do
+	case $1 in
+	-[bcDEeFIiJLlmOopQRSWw]) shift 2 ;;
+	-*) shift ;;
+	*) break ;;
+	esac
+done
+host=$1
+shift
+[ "${1:-}" = -- ] && shift
+echo "$host" >>"${FAKESSH_LOG:-/dev/null}"
+exec sh -c "$*"
