@@ -440,5 +440,8 @@ exp_end() {
 	} >"$OUT/summary.md"
 	rm -f "$OUT/head.md" "$OUT/rows.md" "$OUT/observed.txt" "$OUT/hw.txt" \
 	    "$OUT/notes.txt"
+	# the time of this mode's last run, for the report's table
+	mkdir -p "$RES/.times"
+	echo "$_secs" >"$RES/.times/$ID.$MODE"
 	echo "$ID: $VERDICT ($_secs s)" >&2
 }
