@@ -209,28 +209,39 @@ sv() { awk -F '\t' -v d="$1" -v c="$2" '$1 == d { print $c }' "$OUT/slopes.tsv";
 dv() { awk -F '\t' -v d="$1" '$1 == d { print $3 }' "$OUT/density.tsv"; }
 o=""
 for d in $DISTS; do o="$o${o:+ / }$(sv $d 2)"; done
-row "star D2 slope $(echo $DISTS | tr ' ' /)" "$o" "not in the thesis; 2-D FRS: about -0.75 (fig6.3); random -0.5, jittered in 3-D -(1/2 + 1/6) = -0.67, QMC ~ -1"
+row "star D2 slope $(echo $DISTS | tr ' ' /)" "$o" "not in the thesis; expected from theory: random -0.5, jittered -(1/2 + 1/6) = -0.67, QMC about -1"
 o=""
 for d in $DISTS; do o="$o${o:+ / }$(dv $d)"; done
-row "density rho at n = $ND, $(echo $DISTS | tr ' ' /)" "$o" "not in the thesis; 2-D FRS 0.650 (Table 6.1), dart throwing is the reference"
-bm=$(awk -F '\t' '$1 == "blob3" { printf "%s%s %s/%s", s, $2, $5, $6; s = ", " }' "$OUT/importance.tsv")
-row "blob3 (sigma 0.15): sd per axis, FRS / volume" "$bm" "-"
-rz=$(awk -F '\t' '$1 == "ramp3" && $2 == "z" { print $3 " / " $4 }' "$OUT/importance.tsv")
-row "ramp3: mean z, FRS / volume" "$rz" "-"
+row "density rho at n = $ND, $(echo $DISTS | tr ' ' /)" "$o" "not in the thesis for 3-D (2-D FRS: 0.650 against the reference's 0.700, Table 6.1); reference here: dart throwing"
+# imp VOLUME COLUMN: the values of a column of importance.tsv, per axis
+imp() { awk -F '\t' -v v="$1" -v c="$2" '$1 == v { printf "%s%s %s", s, $2, $c; s = ", " }' "$OUT/importance.tsv"; }
+row "blob3 (sigma 0.15): sd per axis" "$(imp blob3 5)" "not in the thesis; expected (the volume's, closed form): $(imp blob3 6)"
+row "ramp3: mean per axis" "$(imp ramp3 3)" "not in the thesis; expected (the volume's, closed form): $(imp ramp3 4)"
 tl=$(awk -F '\t' 'NR > 1 { l = $6 " / " $7 " ns (n = " $1 ")" } END { print l }' "$OUT/time.tsv")
-row "thresholding time per sample, 3-D / 2-D, sorted, one thread" "$tl" "-"
+row "thresholding time per sample, 3-D / 2-D, sorted, one thread" "$tl" "not in the thesis"
 
-# Verdict: FRS's 3-D discrepancy converges faster than random's and its
-# sets are denser than random ones; importance moments within 0.01.
-ok=$(awk -F '\t' -v f="$(sv frs 2)" -v r="$(sv random 2)" -v df="$(dv frs)" -v dr="$(dv random)" \
-    'BEGIN { print (f < r && df > dr) ? 1 : 0 }')
-imp=$(awk -F '\t' 'NR > 1 { d = $3 - $4; e = $5 - $6; if (d < -0.01 || d > 0.01 || e < -0.01 || e > 0.01) bad = 1 }
-    END { print bad ? 0 : 1 }' "$OUT/importance.tsv")
-what="3-D FRS (sigma 4): D2 slope $(sv frs 2) against random's $(sv random 2), density $(dv frs) against random's $(dv random) and dart throwing's $(dv dart); coordinate means and deviations of blob3 and ramp3 $( [ "$imp" = 1 ] && echo within || echo not all within) 0.01 of the volume's"
-if [ "$MODE" = tiny ]; then
-	exp_end differs "tiny mode (n up to 2^$KMAX, $M sets) is a smoke test only. $what."
-elif [ "$ok" = 1 ] && [ "$imp" = 1 ]; then
-	exp_end reproduced "Not a thesis experiment; it checks the thesis' claim that FRS works in k dimensions: $what."
-else
-	exp_end differs "Not a thesis experiment; the k-D claim does not fully hold here: $what."
-fi
+# The claims, checked: frs(7) and the thesis (Sec. 4.1) call FRS
+# k-dimensional; in 3-D it should keep what it has in the plane: a star
+# discrepancy converging faster than random's, a density near dart
+# throwing's (2-D, Table 6.1: FRS at 0.93 of the reference; here at least
+# 0.9), and samples that follow the importance volume (coordinate means
+# and deviations within 0.01 of the volume's).
+exp_note "Not a thesis experiment: the thesis claims FRS in k dimensions (Sec. 4.1) but measures it only in the plane; the checks ask whether 3-D FRS (sigma 4, the 64^3 matrix) keeps what FRS has in the plane; m = $M sets per n."
+f=$(sv frs 2)
+r=$(sv random 2)
+check_order "3-D FRS converges faster than random (star D2 slope)" "$f / $r" "$f < $r"
+f=$(dv frs)
+r=$(dv random)
+d=$(dv dart)
+check_order "3-D FRS denser than random (rho at n = $ND)" "$f / $r" "$f > $r"
+check "3-D FRS about as dense as dart throwing (rho at least 0.9 x dart's $d)" "$f" "$f >= 0.9 * $d"
+for v in blob3 ramp3; do
+	e=$(awk -F '\t' -v v=$v '$1 == v { d = $3 - $4; e = $5 - $6; d = d < 0 ? -d : d; e = e < 0 ? -e : e
+	    if (d > m) m = d; if (e > m) m = e } END { printf "%.4f", m }' "$OUT/importance.tsv")
+	check "3-D FRS follows $v: coordinate means and deviations within 0.01 of the volume's (largest difference)" "$e" "$e <= 0.01"
+done
+f=$(sv frs 2)
+j=$(sv jittered 2)
+observe "$f < $j" "3-D FRS's D2 also falls faster than jittered sampling's (slope $f against $j)."
+observe "$f >= $j" "3-D FRS's D2 falls more slowly than jittered sampling's (slope $f against $j)."
+exp_end

@@ -91,10 +91,13 @@ done
 # peak of the radial mean beyond 0.3 spacings, mean anisotropy of the
 # annuli from 0.5 to 6 spacings, RMS difference to dart's radial mean
 # from 0 to 6 spacings (over dart's annuli; an annulus that dda leaves
-# out, all zero, counts as 0), and RMS difference between FRS and jittered FRS
-# of the same S_M (NaN for dart)
+# out, all zero, counts as 0), RMS difference between FRS and jittered FRS
+# of the same S_M (NaN for dart), and beyond 2 spacings (2.2 to 6, dart's
+# annuli) the strongest value (spike, where: spike_dist) and the RMS
+# deviation from the Poisson level 1 (sd_beyond2): a ring of FRS there
+# that dart lacks is one of the matrix
 {
-	printf 'sampler\tS_M\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_dart\trms_frs_jitter\n'
+	printf 'sampler\tS_M\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_dart\trms_frs_jitter\tspike_dist\tspike\tsd_beyond2\n'
 	awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(
 		for jit in none random; do for s in $SIZES; do
 			printf '%s:%s:%s ' "$(sname $jit)" $s "$(set_points $s $jit)"
@@ -102,16 +105,21 @@ done
 	$1 == "dart" { ref[$3 + 0] = $4 + 0 }
 	END {
 		for (i = 1; i <= no; i++) {
-			key = order[i]; s2 = 0; t2 = 0
+			key = order[i]; s2 = 0; t2 = 0; sp = -1; u2 = 0; nu = 0
 			other = (nm[key] == "frs" ? "frs-jitter" : "frs") SUBSEP pm[key]
 			for (j = 1; j <= nd; j++) {
 				d = ds[j]; e = val[key, d] - ref[d]; s2 += e * e
 				e = val[key, d] - val[other, d]; t2 += e * e
+				if (d >= 2.2) {
+					if (val[key, d] > sp) { sp = val[key, d]; sq = d }
+					u2 += (val[key, d] - 1) ^ 2; nu++
+				}
 			}
 			pn = nm[key] == "dart" ? n : np[key]
-			printf "%s\t%s\t%d\t%s\t%.4g\t%.4g\t%.2f\t%.4f\t%s\n", nm[key], pm[key], sets, pn,
+			printf "%s\t%s\t%d\t%s\t%.4g\t%.4g\t%.2f\t%.4f\t%s\t%.4g\t%.4f\t%.4f\n", nm[key], pm[key], sets, pn,
 			    pd[key], pk[key], an[key] / na[key], sqrt(s2 / nd),
-			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(t2 / nd))
+			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(t2 / nd)),
+			    sq, sp, sqrt(u2 / nu)
 		}
 	}' "$OUT/radial.tsv"
 } >"$OUT/stats.tsv"
@@ -145,7 +153,9 @@ NS=$(echo $SIZES | wc -w)
 
 # 6. summary
 st() { awk -F '\t' -v n="$1" -v s="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next } $1 == n && $2 == s { print $col[c] }' "$OUT/stats.tsv"; }
-small=$(echo $SIZES | awk '{ print $1 }')
+# elem DIST: a distance in mean spacings as window elements (the window
+# is MAP elements a side, n_s = 1)
+elem() { awk -v d="$1" -v n=$N -v w=$MAP 'BEGIN { printf "%.1f", d * sqrt(2 / (sqrt(3) * n)) * w }'; }
 row "dart: radial peak (spacings, height)" "$(st dart 0 peak_dist), $(st dart 0 peak_power)" "reference row: dark disc, bright annulus"
 for s in $SIZES; do
 	row "S_M=$s: anisotropy FRS / jittered (dB)" "$(st frs $s aniso_db) / $(st frs-jitter $s aniso_db) (dart $(st dart 0 aniso_db))" \
@@ -154,16 +164,51 @@ for s in $SIZES; do
 	    "$([ $s -le 256 ] && echo 'jittered: too random, deviates' || echo 'close to the reference')"
 	row "S_M=$s: RMS of radial mean FRS - jittered" "$(st frs $s rms_frs_jitter)" \
 	    "$([ $s -le 256 ] && echo 'differ (FRS regular)' || echo 'FRS closely matches jittered FRS')"
+	row "S_M=$s: strongest value beyond 2 spacings, FRS / jittered (at spacings)" \
+	    "$(st frs $s spike) ($(st frs $s spike_dist)) / $(st frs-jitter $s spike) ($(st frs-jitter $s spike_dist))" \
+	    "$([ $s -le 256 ] && echo 'regularities expected' || echo "no artifacts; dart: $(st dart 0 spike) ($(st dart 0 spike_dist))")"
 done
 
-# verdict: small S_M must be more anisotropic than the largest; the
-# largest close to dart
-big=$(echo $SIZES | awk '{ print $NF }')
-ok=$(awk -v a="$(st frs $small aniso_db)" -v b="$(st frs $big aniso_db)" \
-    -v r="$(st frs $big rms_vs_dart)" -v rs="$(st frs-jitter $small rms_vs_dart)" \
-    'BEGIN { print (a > b + 1 && r < rs) ? 1 : 0 }')
-if [ "$ok" = 1 ]; then
-	exp_end reproduced "FRS with a small matrix ($small^2) shows the regular, spiky DDA (anisotropy $(st frs $small aniso_db) dB against $(st frs $big aniso_db) dB at $big^2) and its jittered sets deviate from dart throwing (RMS $(st frs-jitter $small rms_vs_dart)); from 512 on FRS, jittered FRS and dart agree (RMS $(st frs $big rms_vs_dart) at $big), as the thesis finds."
-else
-	exp_end differs "the trend of the thesis (regular DDA for small S_M, agreement with dart from 512 on) is not clear in these numbers; see stats.tsv ($MODE mode, $SETS sets)."
-fi
+# The thesis' claims on S_M, checked for every S_M run: up to 256 FRS is
+# regular (its anisotropy 3 dB above that of every S_M >= 512), jitter
+# lowers that, and FRS and jittered FRS deviate strongly from dart
+# throwing (RMS at least 1.2 times the largest of S_M >= 512, each
+# sampler against its own); from 512 on both are close to dart (RMS below
+# 0.1, a tenth of the Poisson level), match each other (their RMS below
+# half the RMS to dart) and show no ring beyond 2 spacings that dart
+# lacks (at most dart's strongest value there plus 2 of dart's deviations
+# from 1 there).
+exp_note "Dart throwing is the reference; $SETS sets of n = $N per setting; close to dart means an RMS of the radial mean below 0.1 (a tenth of the Poisson level) from 0 to 6 spacings."
+amax=$(for s in $SIZES; do [ $s -ge 512 ] && st frs $s aniso_db; done | sort -g | tail -n 1)
+fmax=$(for s in $SIZES; do [ $s -ge 512 ] && st frs $s rms_vs_dart; done | sort -g | tail -n 1)
+rmax=$(for s in $SIZES; do [ $s -ge 512 ] && st frs-jitter $s rms_vs_dart; done | sort -g | tail -n 1)
+dsp=$(st dart 0 spike)
+lim=$(awk -v a="$dsp" -v b="$(st dart 0 sd_beyond2)" 'BEGIN { printf "%.4f", a + 2 * b }')
+for s in $SIZES; do
+	af=$(st frs $s aniso_db)
+	aj=$(st frs-jitter $s aniso_db)
+	rf=$(st frs $s rms_vs_dart)
+	rj=$(st frs-jitter $s rms_vs_dart)
+	if [ $s -le 256 ]; then
+		check "S_M = $s: FRS strongly regular (anisotropy >= 3 dB above S_M >= 512's largest, $amax dB)" \
+		    "$af dB" "$af >= $amax + 3"
+		check_order "S_M = $s: jittered FRS less regular than FRS (anisotropy)" \
+		    "$aj / $af dB" "$aj < $af"
+		check "S_M = $s: FRS and jittered FRS deviate strongly from dart (RMS >= 1.2 x the largest of S_M >= 512, $fmax / $rmax)" \
+		    "$rf / $rj" "$rf >= 1.2 * $fmax && $rj >= 1.2 * $rmax"
+	else
+		t=$(st frs $s rms_frs_jitter)
+		check "S_M = $s: FRS and jittered FRS close to dart (RMS < 0.1)" \
+		    "$rf / $rj" "$rf < 0.1 && $rj < 0.1"
+		check "S_M = $s: FRS matches jittered FRS (RMS between them < half jittered's RMS to dart)" \
+		    "$t / $rj" "$t < 0.5 * $rj"
+		sf=$(st frs $s spike)
+		sj=$(st frs-jitter $s spike)
+		check "S_M = $s: no ring beyond 2 spacings that dart lacks (FRS and jittered at most $lim: dart's $dsp + 2 sd)" \
+		    "$sf / $sj" "$sf <= $lim && $sj <= $lim"
+		d=$(st frs $s spike_dist)
+		observe "$sf > $lim" \
+		    "At S_M = $s FRS has a ring at $d spacings ($(elem $d) window elements) of height $sf, where dart stays below $dsp."
+	fi
+done
+exp_end

@@ -326,7 +326,7 @@ for s in $ESAMPLERS; do o="$o${o:+ / }$(sl $s 5)"; done
 row "env: rmse slope ifrs/ijfrs/ihsw/random/jittered/halton/dart" "$o" \
     'not in the thesis; theory: random -0.5; importance sampling by L sin(theta) leaves f/p ~ max(0, cos theta), which lowers the rmse by a constant factor'
 big() {	# big SAMPLER INTEGRAND: rmse at the largest n
-	awk -F '\t' -v s="$1" -v f="$2" 'NR > 1 && $1 == s && $4 == f { v = $5 } END { print v }' "$OUT/rmse.tsv"
+	awk -F '\t' -v s="$1" -v f="$2" 'NR > 1 && $1 == s && $4 == f { v = $5 } END { printf "%.4g\n", v }' "$OUT/rmse.tsv"
 }
 for f in $FUNCS; do
 	o=""
@@ -337,22 +337,61 @@ o=""
 for s in $ESAMPLERS; do o="$o${o:+ / }$(big $s env)"; done
 row "env: rmse at n = 2^$KMAX ifrs/ijfrs/ihsw/random/jittered/halton/dart" "$o" "-"
 
-# Verdict: random converges as n^-1/2, and FRS, jittered FRS and the
-# stratified samplers beat it on every integrand at the largest n.
-ok=1
-why=""
-rs=$(sl random 2)
-awk -v a="$rs" 'BEGIN { exit !(a > -0.62 && a < -0.38) }' ||
-    { ok=0; why="$why random's gauss slope $rs is not near -0.5;"; }
-for f in $FUNCS; do for s in frs jfrs jittered; do
-	awk -v a="$(big $s $f)" -v b="$(big random $f)" 'BEGIN { exit !(a < b) }' ||
-	    { ok=0; why="$why $s not below random on $f at the largest n;"; }
-done; done
-why=${why%;}
-if [ "$MODE" = tiny ]; then
-	exp_end differs "tiny mode (n = 16, 32, m = $M) is a smoke test only; checks:${why:- all hold}. Not a thesis experiment: the verdict compares with Monte Carlo theory."
-elif [ $ok = 1 ]; then
-	exp_end reproduced "Not a thesis experiment; the verdict compares with Monte Carlo theory: random converges as n^-1/2 (gauss slope $rs), and FRS, jittered FRS and jittered sampling have a lower rmse than random on every integrand at n = 2^$KMAX with m = $M sets; slopes in the table and slopes.tsv, times in rmse.tsv (the time per set includes each program's start and, for FRS, reading the matrix)."
-else
-	exp_end differs "Not a thesis experiment; against Monte Carlo theory:$why; see the rows."
-fi
+# The claims, checked on this run: plain Monte Carlo (random) converges
+# as n^-1/2 on every integrand (slope within 0.12); jittered sampling and
+# Halton as the theory in the rows says (gauss: -1, at most -0.85; disc
+# and step: -0.75 within 0.15); FRS and jittered FRS beat random on every
+# uniform integrand at the largest n; and importance sampling lowers the
+# rmse of env below every uniform sampler's at the largest n.
+exp_note "Not a thesis experiment: the checks are Monte Carlo theory and the claims of frs(7) and of this script; m = $M sets per n, n = 2^$KMIN..2^$KMAX."
+exp_note "The time per set includes each program's start and, for FRS, reading the matrix."
+o=""
+c=""
+for i in 2 3 4 5; do
+	a=$(sl random $i)
+	o="$o${o:+ / }$a"
+	c="$c${c:+ && }$a > -0.62 && $a < -0.38"
+done
+check "uniform random converges as n^-1/2 on gauss, disc, step and env (slope -0.5 +- 0.12)" "$o" "$c"
+for s in jittered halton; do
+	a=$(sl $s 2)
+	b=$(sl $s 3)
+	e=$(sl $s 4)
+	check "$(label $s): slope about -1 on gauss (<= -0.85), -0.75 +- 0.15 on disc and step" "$a / $b / $e" \
+	    "$a <= -0.85 && $b >= -0.9 && $b <= -0.6 && $e >= -0.9 && $e <= -0.6"
+done
+for s in frs jfrs; do
+	o=""
+	c=""
+	for f in $FUNCS; do
+		a=$(big $s $f)
+		b=$(big random $f)
+		o="$o${o:+, }$a / $b"
+		c="$c${c:+ && }$a < $b"
+	done
+	check_order "$(label $s) beats uniform random on gauss, disc and step (rmse at n = 2^$KMAX)" "$o" "$c"
+done
+# the best uniform sampler on env
+bu=$(for s in random jittered halton dart; do echo "$(big $s env) $s"; done | sort -g | head -n 1)
+bv=${bu% *}
+bs=${bu#* }
+for s in ifrs ijfrs ihsw; do
+	a=$(big $s env)
+	check_order "$(label $s) beats every uniform sampler on env, the best being $(label $bs) (rmse at n = 2^$KMAX)" \
+	    "$a / $bv" "$a < $bv"
+done
+o=""
+c=""
+for f in $FUNCS; do
+	o="$o${o:+, }$(big frs $f) / $(big dart $f)"
+	c="$c${c:+ && }$(big frs $f) < $(big dart $f)"
+done
+observe "$c" "FRS also has a lower rmse than dart throwing on gauss, disc and step at n = 2^$KMAX ($o)."
+o=""
+c=""
+for f in $FUNCS; do
+	o="$o${o:+, }$(big vfrs $f) / $(big frs $f)"
+	c="$c${c:+ || }$(big vfrs $f) < $(big frs $f)"
+done
+observe "!($c)" "FRS on the void-and-cluster matrix has a higher rmse than on FRD on gauss, disc and step at n = 2^$KMAX ($o)."
+exp_end
