@@ -172,6 +172,16 @@ frs-sample -m "$M" -i blob -n 3000 -a stack -T -o "$T/stack.txt"
 cl_run frs-sample -m "$M" -i blob -n 3000 -a flat1 --device cl:0 -T -o "$T/flat1.txt"
 cmp -s "$T/stack.txt" "$T/flat1.txt" && ok "-a flat1 gives Stack's bytes" ||
     nok "-a flat1 gives Stack's bytes"
+# n = 1 on const with the default matrix: no sample, so empty buffers
+# (once CL_INVALID_VALUE from every OpenCL algorithm)
+for a in naive sorted flat1; do
+	frs-sample -i const -n 1 -a "$([ $a = flat1 ] && echo stack || echo $a)" \
+	    -o "$T/c1.pts" &&
+	    cl_run frs-sample -i const -n 1 -a $a --device cl -o "$T/l1.pts" &&
+	    cmp -s "$T/c1.pts" "$T/l1.pts" &&
+	    ok "--device cl -a $a -n 1 on const (no sample): the CPU's bytes" ||
+	    nok "--device cl -a $a -n 1 on const (no sample): the CPU's bytes"
+done
 cl_run frs-sample --list-devices >"$T/dev.txt" && head -n 1 "$T/dev.txt" | grep -q '^cl:0' &&
     ok "--list-devices starts with cl:0" || nok "--list-devices starts with cl:0"
 expect_fail "--device cl:63" 1 "cl:63" "$T/o.pts" cl_run frs-sample -m "$M" -n 10 --device cl:63 -o "$T/o.pts"

@@ -137,15 +137,19 @@ static void phase(struct clrun *c, double *acc)
 	c->t = now;
 }
 
-/* A buffer of size bytes, copied from host or filled with zeros. */
+/* A buffer of size bytes, copied from host or filled with zeros.  A
+ * zero-filled one is made whole words long, at least one (the fill writes
+ * words, and an empty buffer is still bound to a kernel argument). */
 static int buffer(struct clrun *c, size_t size, const void *host, cl_mem *b)
 {
+	size_t words = size ? (size + 3) / 4 * 4 : 4;
+
 	if (host != NULL)
 		return ocl_buffer(c->o, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
 		    size, host, b);
-	if (ocl_buffer(c->o, CL_MEM_READ_WRITE, size, NULL, b) < 0)
+	if (ocl_buffer(c->o, CL_MEM_READ_WRITE, words, NULL, b) < 0)
 		return -1;
-	return ocl_fill32(c->o, *b, size ? (size + 3) / 4 * 4 : 4, 0);
+	return ocl_fill32(c->o, *b, words, 0);
 }
 
 static int alloc_fail(void)

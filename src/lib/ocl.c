@@ -271,6 +271,8 @@ int ocl_buffer(struct ocl *o, cl_mem_flags flags, size_t size,
 
 	if (host != NULL && size > 0)
 		flags |= CL_MEM_COPY_HOST_PTR;
+	if (size == 0)	/* one byte of nothing: there is no host data */
+		flags &= ~(cl_mem_flags)(CL_MEM_COPY_HOST_PTR | CL_MEM_USE_HOST_PTR);
 	*b = clCreateBuffer(o->ctx, flags, size ? size : 1,
 	    size ? (void *)(uintptr_t)host : NULL, &err);
 	if (err != CL_SUCCESS) {
