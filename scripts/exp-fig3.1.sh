@@ -18,7 +18,7 @@
 #   quick: S = 256, 2 matrices per p (1638 dots; ~25 s of CPU, p = 0.01
 #          being the slowest at ~6 s a matrix)
 #   full:  S = 512, 10 matrices per p (6554 dots), the thesis' parameters
-#          (~30 s a matrix for p = 0.01, ~10 minutes of CPU in all)
+#          (~30 s a matrix for p = 0.01; 656 s on 2 cores in all)
 # Output ($OUT): radial.tsv (dots_of p freq f_over_fp power aniso_db),
 # dots_of last or first, f_p = sqrt(dots) the principal frequency;
 # stats.tsv (dots_of p size matrices dots lowpass peak peak_f_over_fp

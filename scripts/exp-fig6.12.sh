@@ -124,18 +124,80 @@ hi=$((K + K / 4))
 
 v() { awk -F '\t' -v d="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i } $1 == d { print $h[c] }' "$OUT/aniso.tsv"; }
 row "elongation of the DDA's empty disc (1 = round): ref / FRS / HSW dart" "$(v ref elongation) / $(v frs elongation) / $(v hsw-dart elongation) (HSW's long axis at $(v hsw-dart angle_deg) deg)" "HSW's set highly anisotropic; FRS close to the reference"
-row "mean DDA anisotropy, $r1..6 spacings (dB): ref / FRS / HSW dart" "$(v ref mean_aniso_db) / $(v frs mean_aniso_db) / $(v hsw-dart mean_aniso_db)" "the annulus measure: HSW's distortion lies inside the first ring, where it removes the ring rather than varying along the annuli"
+row "mean DDA anisotropy, $r1..6 spacings (dB): ref / FRS / HSW dart" "$(v ref mean_aniso_db) / $(v frs mean_aniso_db) / $(v hsw-dart mean_aniso_db)" "not in the thesis (it shows the DDA images)"
 row "first radial-mean peak (dist, power): ref / FRS / HSW" "$(v ref peak1_dist), $(v ref peak1_power) / $(v frs peak1_dist), $(v frs peak1_power) / $(v hsw-dart peak1_dist), $(v hsw-dart peak1_power)" "FRS's ring like the reference's; HSW's distorted"
 
-res=$(awk -F '\t' '
-	$1 == "ref" { re = $6 } $1 == "frs" { fe = $6 } $1 == "hsw-dart" { he = $6 }
+
+# The sharpest peak beyond FRS's first ring: from where the first peak has
+# fallen below 1 out to 4 spacings, the largest height above the mean of
+# the annuli 0.2 spacings either side; "dist prominence" (-1: none).
+prom() {
+	awk -F '\t' 'NR > 1 { n++; d[n] = $1; p[n] = $2; if ($2 > bp) { bp = $2; bi = n } }
 	END {
-		df = fe - re; if (df < 0) df = -df
-		dh = he - re; if (dh < 0) dh = -dh
-		print (he > 1.5) ? "hsw" : "no", (3 * df < dh) ? "frs" : "no"
-	}' "$OUT/aniso.tsv")
-if [ "$res" = "hsw frs" ]; then
-	exp_end reproduced "HSW warps its Poisson-disk input along the ridge: its DDA has no ring and an empty disc stretched $(v hsw-dart elongation) : 1, while FRS keeps a round disc ($(v frs elongation) : 1, the reference $(v ref elongation) : 1) and the reference's ring at the same distance.  The annulus-averaged anisotropy does not separate them (table), and FRS's is a few dB above the reference's: the lattice lines and the matrix ring also seen in fig6.10-6.11.$( [ "$MODE" = tiny ] && echo '  (Tiny mode: too few points and sets for the numbers to mean much.)')"
-else
-	exp_end differs "The empty disc of HSW's DDA is not clearly more elongated ($(v hsw-dart elongation) : 1) than FRS's ($(v frs elongation) : 1, the reference $(v ref elongation) : 1)$( [ "$MODE" = tiny ] && echo '; tiny mode has too few points and sets for a stable DDA'); see fig6.12.png."
-fi
+		k = int(0.2 / (d[2] - d[1]) + 0.5); if (k < 1) k = 1
+		for (i = bi; i <= n && p[i] >= 1; i++) ;
+		best = -1; bd = -1
+		for (; i + k <= n && d[i] <= 4; i++)
+			if (i > k && p[i] - (p[i - k] + p[i + k]) / 2 > best) {
+				best = p[i] - (p[i - k] + p[i + k]) / 2; bd = d[i]
+			}
+		printf "%.2f %.3f", bd, best
+	}' "$OUT/radial-$1.tsv"
+}
+# shellcheck disable=SC2046
+set -- $(prom frs)
+fsd=$1 fsp=$2
+# shellcheck disable=SC2046
+set -- $(prom ref)
+rsd=$1 rsp=$2
+row "sharpest peak beyond the first ring (dist, height above its surroundings): FRS / ref" "$fsd, $fsp / $rsd, $rsp" "FRS: no isolated peaks"
+# Where the matrix's force was cut off, seen from the ridge (most points):
+# R = min(cap S, max(reach spacing, R_eps)) cells (frd-gen(1)), the
+# spacing there r_u W / sqrt(max / mean) cells of the window W; in
+# spacings.  0 when the matrix's header does not give it.
+cached "$C/$MAP-frs-n$N-setup.txt" sh -c "frs-sample -v -i $MAP -n $N -S 1 -o /dev/null 2>&1"
+cached "$C/$MAP-info.txt" imap info $MAP
+W=$(sed -n 's/.*window \([0-9]*\)x.*/\1/p' "$C/$MAP-frs-n$N-setup.txt" | head -n 1)
+mat() { LC_ALL=C head -c 4096 "$FRS_MATRIX" | tr '\000' '\n' | sed -n "s/^$1=//p" | head -n 1; }
+RING=$(awk -v f="$(mat force)" -v s="$(mat s)" -v q="$(mat q)" -v t="$(mat tol)" \
+    -v r="$(mat reach)" -v c="$(mat cap)" -v sz="$(mat size)" -v n="$N" -v w="$W" \
+    -v mx="$(awk '$1 == "max" { print $2 }' "$C/$MAP-info.txt")" \
+    -v mn="$(awk '$1 == "mean" { print $2 }' "$C/$MAP-info.txt")" '
+	BEGIN {
+		split(sz, d, "x"); S = (d[2] + 0 < d[1] + 0) ? d[2] : d[1]
+		sp = sqrt(2 / (sqrt(3) * n)) * w / sqrt(mx / mn)
+		if (f == "power") re = s * (t ^ (-1 / q) - 1)
+		else if (f == "exp") re = s * (log(1 / t)) ^ (1 / q)
+		else { print 0; exit }
+		R = r * sp; if (re > R) R = re
+		if (c > 0 && c * S < R) R = c * S
+		printf "%.1f %.2f", R, R / sp
+	}')
+RCELLS=${RING% *}
+RSP=${RING#* }
+
+# The claims of Sec. 6.3 on Fig. 6.12, checked.
+re=$(v ref elongation) fe=$(v frs elongation) he=$(v hsw-dart elongation)
+rd=$(v ref peak1_dist) rp=$(v ref peak1_power)
+fd=$(v frs peak1_dist) fp=$(v frs peak1_power)
+hd=$(v hsw-dart peak1_dist) hp=$(v hsw-dart peak1_power)
+check "HSW's set highly anisotropic even from Poisson-disk input (its DDA's empty disc elongated beyond 1.5 : 1)" \
+    "$he : 1 (long axis at $(v hsw-dart angle_deg) deg)" "$he > 1.5"
+check "FRS close to the reference: a round empty disc (elongation within 0.15 of the reference's)" \
+    "$fe / $re" "$fe - $re < 0.15 && $re - $fe < 0.15"
+check_order "FRS closer to the reference than HSW (elongation of the empty disc)" \
+    "FRS $fe, HSW $he / reference $re" "($fe - $re) * ($fe - $re) < ($he - $re) * ($he - $re)"
+check "FRS's ring like the reference's (first peak's distance and height within 20 %)" \
+    "$fd, $fp / $rd, $rp" \
+    "$fd >= 0.8 * $rd && $fd <= 1.2 * $rd && $fp >= 0.8 * $rp && $fp <= 1.2 * $rp"
+check "HSW's ring distorted (its first peak 20 % off the reference's distance, or 0.2 lower)" \
+    "$hd, $hp / $rd, $rp" "$hd < 0.8 * $rd || $hd > 1.2 * $rd || $hp < $rp - 0.2"
+check "no isolated peaks in FRS (its sharpest peak beyond the first ring at most 0.05 higher above its surroundings than the reference's)" \
+    "$fsp at $fsd / $rsp at $rsd spacings" "$fsp <= $rsp + 0.05"
+observe "$fsp > $rsp + 0.05 && $RSP > 0 && $fsd > 0.9 * $RSP && $fsd < 1.1 * $RSP" \
+    "FRS's sharpest peak beyond its first ring, at $fsd spacings, lies within 10 % of where the matrix's force was cut off, seen from the ridge: $RCELLS cells, $RSP spacings of the ridge's points (cutoff=$(mat cutoff), from the header of $(basename "$FRS_MATRIX"); frd-gen(1): a force cut off at R leaves a ring at R)."
+fa=$(v frs mean_aniso_db) ra=$(v ref mean_aniso_db) ha=$(v hsw-dart mean_aniso_db)
+observe "$he > 1.5 && $ha - $fa < 2 && $fa - $ha < 2" \
+    "The mean anisotropy over the annuli from $r1 to 6 spacings does not separate HSW from FRS ($ha against $fa dB); the elongation of the empty disc does."
+observe "$fa > $ra + 2" "FRS's mean anisotropy is $fa dB against the reference's $ra dB."
+exp_end

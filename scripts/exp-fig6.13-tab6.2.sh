@@ -309,7 +309,7 @@ if has 8; then
 fi
 # (3) Sorted the fastest FRS implementation, at 2^8 and at the largest n
 # of the others
-for e in 8 $ES; do
+for e in $(printf '8\n%s\n' "$ES" | sort -un); do
 	has "$e" || continue
 	set -- $(awk -F'\t' -v x="$e" 'NR > 1 && $1 == x { n = split("naive level1 stack", A, " "); for (i = 1; i <= n; i++) if ($(i + 2) != "-" && (b == "" || $(i + 2) < b)) { b = $(i + 2); ba = A[i] } print b, ba }' "$OUT/avg.tsv")
 	[ $# = 2 ] || continue

@@ -259,7 +259,7 @@ lowest() {
 }
 # closer CLASS A B F "claim": the D2 of FRS and of jittered FRS is F
 # times closer to A's than to B's on a log scale (F = 2: much closer).
-closer() {	# closer CLASS A B F "claim"
+closer() {
 	cf=$(at "$1" frs 4) cj=$(at "$1" jfrs 4)
 	ca=$(at "$1" "$2" 4) cb=$(at "$1" "$3" 4)
 	check "$5" "FRS $(g3 "$cf"), jittered $(g3 "$cj") / $(label "$2") $(g3 "$ca") / $(label "$3") $(g3 "$cb")" \
@@ -270,8 +270,9 @@ closer() {	# closer CLASS A B F "claim"
 # slightly better jittered FRS between Poisson disk and Halton.
 lowest star D2 halton
 rs=$(at star random 4)
-rn=$(for d in $DISTS; do [ $d = random ] || at star $d 4; done | sort -g | tail -n 1)
-check_order "star: uniform random highest D2 of all" "$(g3 "$rs") / next $(g3 "$rn")" "$rs > $rn"
+rn=$(for d in $DISTS; do [ $d = random ] || echo "$(at star $d 4) $d"; done | sort -g | tail -n 1)
+check_order "star: uniform random highest D2 of all" \
+    "$(g3 "$rs") / next $(label "${rn#* }") $(g3 "${rn% *}")" "$rs > ${rn% *}"
 for ms in D2 Dinf; do
 	below star $ms halton frs "FRS between Poisson disk and Halton"
 	below star $ms frs dart "FRS between Poisson disk and Halton"
@@ -350,7 +351,7 @@ check "Poisson disk's D2 asymptotics very similar to random's (slopes within 0.1
     "Poisson disk/random $sd" "$cdr == 1" \
     "the thesis' dart sets were not necessarily maximal (its words); ours are n points at 0.7 of the densest packing's distance (ref-sample(1))"
 check "Halton's D2 slope steeper than random's (by 0.1), every class" "Halton/random $sh" "$chr == 1"
-observe "$NNOISY > 0" "Of the D2 reversals, $NNOISY lie within 2 standard errors of the means of $M sets, so more sets may settle them: $NOISY."
+observe "$NNOISY > 0" "Of the D2 reversals, $NNOISY lie within 2 standard errors of the means of the $M sets: $NOISY."
 
 exp_note "m = $M sets (the thesis: 1000), n up to 2^$KMAX (2^13); FRS's n is the mean size of its sets, the regular grid's the nearest square."
 exp_note "Star and rect D2 and Dinf are exact (closed forms; rect above n = $REXACT on a grid of $RGRID), where the thesis used grids of 3000 and 500; half uses a border grid of $HGRID, quad and circle $SHAPES random shapes per set (the thesis: 3000 and 3000^2)."

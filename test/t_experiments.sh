@@ -102,17 +102,31 @@ n=$(grep '^tab6.1 ' "$T/new" | grep -v -c '/j\?frs-[a-z]*-n')
 [ "$n" = 0 ] && ok "new matrix: tab6.1 recomputes only its FRS cells" ||
     nok "new matrix: tab6.1 recomputes $n cells that do not use FRS"
 
+# plant FILE VALUE: set the rho column of a cached density table.
+plant() {
+	awk -F '\t' -v OFS='\t' -v v="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "rho") k = i }
+	    NR > 1 { $k = v } { print }' "$1" >"$T/p" && cat "$T/p" >"$1"
+}
+verdict() { sed -n 's/^\*\*Verdict: \([^.]*\)\.\*\*.*/\1/p' "$R/$1/summary.md"; }
+
 # A planted wrong number: regular's density of 0.1 instead of 0.930
-# flips the check of the regular grid (and so the verdict).
-f=$(ls "$R"/cache/tab6.1/regular-uniform-*.tsv)
-awk -F '\t' -v OFS='\t' 'NR > 1 { $NF = "0.100" } { print }' "$f" >"$T/p" &&
-    cat "$T/p" >"$f"
+# fails the check of the regular grid, and the verdict names it.
+plant "$(ls "$R"/cache/tab6.1/regular-uniform-*.tsv)" 0.100
 sh "$TOP/scripts/exp-tab6.1.sh" >/dev/null 2>&1
 c=$(awk -F '\t' '$2 ~ /0\.100/ && $3 == "fails"' "$R/tab6.1/checks.tsv" |
     awk 'END { print NR }')
 [ "$c" -ge 1 ] && grep -q '^\*\*Verdict: differs\.\*\* .*0\.100' "$R/tab6.1/summary.md" &&
     ok "planted regular rho 0.100: its check fails, the verdict says so" ||
     nok "planted regular rho 0.100: not caught"
+# 3-D FRS's density planted at 0.1, below random's: 3d's verdict turns
+# from reproduced to differs, with the reversal said first.
+v0=$(verdict 3d)
+plant "$(ls "$R"/cache/3d/frs-n*-rho.tsv)" 0.010
+sh "$TOP/scripts/exp-3d.sh" >/dev/null 2>&1
+[ "$v0" = reproduced ] && [ "$(verdict 3d)" = differs ] &&
+    grep -q '^\*\*Verdict: differs\.\*\* Reversed here: 3-D FRS denser' "$R/3d/summary.md" &&
+    ok "planted 3-D FRS rho 0.010: reproduced turns to differs, reversal first" ||
+    nok "planted 3-D FRS rho 0.010: verdict $v0 -> $(verdict 3d)"
 
 # ONLY selects by id or alias; an unknown one is an error.
 R2=$T/only
@@ -134,7 +148,8 @@ h=$(sort -u "$T/hosts" 2>/dev/null | tr '\n' ' ')
 
 # tab6.1 in quick mode: FRS's uniform density where the thesis puts it
 # (0.650; Lagae and Dutre's good range starts at 0.65).
-if env -u FRS_MATRIX MODE=quick RES="$T/q" nolsan sh "$TOP/scripts/exp-tab6.1.sh" >/dev/null 2>"$T/err"; then
+unset FRS_MATRIX
+if MODE=quick RES="$T/q" nolsan sh "$TOP/scripts/exp-tab6.1.sh" >/dev/null 2>"$T/err"; then
 	v=$(awk -F '\t' '$1 == "frs" { print $2 }' "$T/q/tab6.1/tab6.1.tsv")
 	awk -v v="$v" 'BEGIN { exit !(v >= 0.6 && v <= 0.72) }' &&
 	    ok "tab6.1 quick: FRS density $v in [0.6, 0.72]" ||
