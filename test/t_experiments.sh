@@ -128,6 +128,18 @@ sh "$TOP/scripts/exp-3d.sh" >/dev/null 2>&1
     ok "planted 3-D FRS rho 0.010: reproduced turns to differs, reversal first" ||
     nok "planted 3-D FRS rho 0.010: verdict $v0 -> $(verdict 3d)"
 
+# Another environment map: tab6.1 recomputes its Environment column and
+# nothing else (its cells once were named without the map).
+imap gen ramp -s 128x64 -o "$T/env2.exr"
+m1=$(misses)
+ENVMAP=$T/env2.exr xmake ONLY=tab6.1 experiments >/dev/null 2>&1
+tail -n +$((m1 + 1)) "$R/cache/misses" >"$T/new2"
+a=$(grep -c -e '-environment-' -e '/env-' "$T/new2")
+b=$(grep -v -c -e '-environment-' -e '/env-' "$T/new2")
+[ "$a" -ge 1 ] && [ "$b" = 0 ] &&
+    ok "ENVMAP changed: tab6.1 recomputes its $a environment steps only" ||
+    nok "ENVMAP changed: $a environment steps, $b others recomputed"
+
 # ONLY selects by id or alias; an unknown one is an error.
 R2=$T/only
 RES=$R2 nolsan xmake ONLY=fig6.9 experiments >/dev/null 2>"$T/err" &&
