@@ -24,7 +24,7 @@
 . "$(dirname "$0")/explib.sh"
 exp_begin fig4.5-4.6 "DDA of FRS and jittered FRS for sparsity sigma" \
     "Sec. 4.7, Figs. 4.5 and 4.6: sigma = 1, 2, 4, 8, 16, S_M = 512, 10 sets of 1024 uniform samples" \
-    "about 15 s"
+    "about 15 s (measured)"
 
 SM=$(pick 128 512 512)
 SETS=$(pick 2 10 10)

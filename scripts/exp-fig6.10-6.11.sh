@@ -27,7 +27,7 @@ if [ "${1:-}" = --cached ]; then
 fi
 exp_begin fig6.10-6.11 "DDA power spectra of adaptive sampling" \
     "Sec. 6.3, Fig. 6.10 and 6.11: 10 sets of 1024 points, maps Gaussian blob, linear gradient, environment, constant; relaxation dart throwing, FRS, jittered FRS (sigma 8), HSW with random, regular, Halton and Poisson-disk input; DDA with a Gaussian kernel and eps = 12" \
-    "about a minute"
+    "about 80 s (measured)"
 
 N=$(pick 128 1024 1024)
 M=$(pick 1 6 10)

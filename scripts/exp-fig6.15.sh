@@ -20,7 +20,7 @@
 . "$(dirname "$0")/explib.sh"
 exp_begin fig6.15 "Share of time per task, Sorted FRS and HSW" \
     "Sec. 6.4, Fig. 6.15: proportional time of the tasks of Sorted (sigma 4) and HSW (Halton) on the Gaussian blob, GTX 680" \
-    "about 1 minute"
+    "about 80 s (measured)"
 
 NS=$(pick "8 12" "8 12 16 20 24" "4 8 12 16 20 24")
 REPS=$(pick 1 2 5)

@@ -149,7 +149,7 @@ fi
 NS=$(k=$KMAX; while [ $k -ge "$KMIN" ]; do echo $((1 << k)); k=$((k - 1)); done)
 exp_begin mc "Integration error (beyond the thesis)" \
     "not in the thesis (issue 13); Monte Carlo rmse of gauss, disc and step, and of env lit by $(basename "$ENVMAP") with importance sampling, by mc-error(1), n = 2^$KMIN..2^$KMAX, m = $M sets" \
-    "about 7 minutes on 2 cores (dart throwing and FRS at n = 2^16 dominate)"
+    "about 7 minutes on 2 cores (measured; dart throwing and FRS at n = 2^16 dominate)"
 mkdir -p "$D"
 cached "$VACM" frd-gen -q --method vac -s "$VS" -S 1
 # the equirect-weighted map that FRS and HSW both sample, made once

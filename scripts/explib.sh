@@ -76,7 +76,11 @@ exp_begin() {
 # A cached file FILE keeps FILE.key, a checksum of everything that made
 # it: the mode, the command's words, the content of every word that is a
 # file (inputs, and outputs of earlier cached steps), of every program
-# the command runs, and of the experiment's inputs (exp_uses).  A rerun
+# the command runs, and of the experiment's inputs (exp_uses); for a
+# shell function, also its text and that of the functions it calls, so
+# that editing a script's prose recomputes nothing.  A function must
+# therefore take what it reads as words (or name its output after its
+# parameters, as the scripts do).  A rerun
 # with the same key reuses FILE; touch or cp -p change nothing; any
 # changed content recomputes exactly what depends on it.  Every miss is
 # a line "ID FILE" in $CACHE/misses (t_experiments counts them).
@@ -104,14 +108,14 @@ exp_uses() {
 }
 
 # progs_of CMD...: the programs a command runs: those of BIN it names,
-# or, for a shell function, those its body names (the function of the
-# script, else of explib; a function it calls in turn is not followed).
+# or, for a shell function, those named by its text and by the functions
+# it calls (fn_body).
 progs_of() {
 	if [ -x "$BIN/$1" ]; then
 		for _w in "$@"; do
 			[ -x "$BIN/$_w" ] && echo "$_w"
 		done
-		return
+		return 0
 	fi
 	fn_body "$@" >"$CACHE/.body.$$"
 	for _p in "$BIN"/*; do
@@ -122,18 +126,32 @@ progs_of() {
 	return 0
 }
 
-# fn_body NAME: the text of shell function NAME, from "NAME() {" to the
-# first "}" alone on a line, in the script or else in explib.sh; the
-# command itself when neither defines it (sh -c "...").
+# fn_body CMD...: the text of shell function CMD's first word and of
+# every function of the script and explib.sh that it calls, in turn
+# (each function from "NAME() {" to the first "}" alone on a line, the
+# script's before explib's); the command itself when it is no function
+# (sh -c "...").
 fn_body() {
-	for _s in "$0" "$TOP/scripts/explib.sh"; do
-		if grep -q "^$1() *{" "$_s"; then
-			awk -v f="$1" '$0 ~ "^" f "\\(\\) *\\{" { on = 1 }
-			    on { print } on && /^}/ { exit }' "$_s"
-			return
-		fi
-	done
-	printf '%s\n' "$@"
+	awk -v start="$1" '
+	FNR == 1 { on = "" }
+	on == "" && match($0, /^[A-Za-z_][A-Za-z0-9_]*\(\) *\{/) {
+		on = substr($0, 1, index($0, "(") - 1)
+		if (on in text) { on = ""; next }	# the script wins
+		text[on] = ""
+	}
+	on != "" { text[on] = text[on] $0 "\n"; if ($0 ~ /^}/) on = "" }
+	END {
+		if (!(start in text)) exit 1
+		todo[1] = start; nt = 1; seen[start] = 1
+		for (i = 1; i <= nt; i++) {
+			t = text[todo[i]]
+			printf "%s", t
+			for (f in text)
+				if (!(f in seen) && t ~ ("(^|[^A-Za-z0-9_])" f "([^A-Za-z0-9_]|$)")) {
+					seen[f] = 1; todo[++nt] = f
+				}
+		}
+	}' "$0" "$TOP/scripts/explib.sh" || printf '%s\n' "$@"
 }
 
 # cache_key FILE CMD...: the key of CMD making FILE (see above).  Words
@@ -150,7 +168,7 @@ cache_key() {
 			[ -f "$_w" ] && echo "file $(file_sum "$_w")"
 		done
 		if ! [ -x "$BIN/$1" ] && ! [ -f "$1" ]; then
-			echo "script $(file_sum "$0") $(file_sum "$TOP/scripts/explib.sh")"
+			echo "code $(fn_body "$@" | sha1sum | cut -c 1-40)"
 		fi
 		for _p in $(progs_of "$@"); do
 			echo "prog $_p $(file_sum "$BIN/$_p")"
