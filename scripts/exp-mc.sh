@@ -100,6 +100,7 @@ run_one() {
 	w=$b.d
 	rm -rf "$w"
 	mkdir -p "$w"
+	alone	# the generation is timed: no other job beside it
 	t0=$(date +%s.%N)
 	case ${1#i} in
 	frs | jfrs | vfrs)
@@ -116,6 +117,7 @@ run_one() {
 		ref-sample -q -j 1 -k "$1" -n "$2" --sets "$M" -o "$w/all.pts" ;;
 	esac
 	t1=$(date +%s.%N)
+	together
 	awk -v a="$t0" -v b="$t1" -v m="$M" \
 	    'BEGIN { printf "%.6f\t%d\n", b - a, m }' >"$b.time"
 	case ${1#i} in
@@ -136,10 +138,12 @@ run_one() {
 }
 
 if [ "${1:-}" = job ]; then	# worker: sh exp-mc.sh job SAMPLER N
+	job_lock
 	cached "$(base "$2" "$3").tsv" run_one uni "$2" "$3"
 	exit 0
 fi
 if [ "${1:-}" = envjob ]; then	# worker: sh exp-mc.sh envjob SAMPLER N
+	job_lock
 	# the maps last: run_one reads them, the cache key needs them
 	cached "$(ebase "$2" "$3").tsv" run_one env "$2" "$3" "$EMAP" "$ENVMAP"
 	exit 0

@@ -223,6 +223,22 @@ par_run() {
 	fi
 }
 
+# job_lock, alone, together: a par_run job of a timing experiment calls
+# job_lock first (a shared lock of the experiment's jobs), alone before
+# what it times and together after it, so that a timed part never runs
+# beside another job of the experiment (make runs the experiment itself
+# beside no other; mk/experiments.mk).
+job_lock() {
+	exec 9>"$CACHE/.$ID.lock"
+	flock -s 9
+}
+alone() {
+	flock -x 9
+}
+together() {
+	flock -s 9
+}
+
 # timing_inputs MAPS: the inputs of the timing experiments.  FRP is the
 # default matrix prepared with frd-prep -a all (tiny mode: the .frd
 # itself; only the untimed setup differs), ENV128 the environment map at
