@@ -105,21 +105,18 @@ done
 	$1 == "dart" { ref[$3 + 0] = $4 + 0 }
 	END {
 		for (i = 1; i <= no; i++) {
-			key = order[i]; s2 = 0; t2 = 0; sp = -1; u2 = 0; nu = 0
+			key = order[i]; s2 = 0; t2 = 0
 			other = (nm[key] == "frs" ? "frs-jitter" : "frs") SUBSEP pm[key]
 			for (j = 1; j <= nd; j++) {
 				d = ds[j]; e = val[key, d] - ref[d]; s2 += e * e
 				e = val[key, d] - val[other, d]; t2 += e * e
-				if (d >= 2.2) {
-					if (val[key, d] > sp) { sp = val[key, d]; sq = d }
-					u2 += (val[key, d] - 1) ^ 2; nu++
-				}
 			}
+			beyond(key)
 			pn = nm[key] == "dart" ? n : np[key]
 			printf "%s\t%s\t%d\t%s\t%.4g\t%.4g\t%.2f\t%.4f\t%s\t%.4g\t%.4f\t%.4f\n", nm[key], pm[key], sets, pn,
 			    pd[key], pk[key], an[key] / na[key], sqrt(s2 / nd),
 			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(t2 / nd)),
-			    sq, sp, sqrt(u2 / nu)
+			    sq, sp, sdv
 		}
 	}' "$OUT/radial.tsv"
 } >"$OUT/stats.tsv"

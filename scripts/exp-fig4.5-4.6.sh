@@ -113,23 +113,20 @@ done
 		done; done)" "$RADIAL_AWK"'
 	END {
 		for (i = 1; i <= no; i++) {
-			key = order[i]; s2 = 0; t2 = 0; sp = -1; u2 = 0; nu = 0
+			key = order[i]; s2 = 0; t2 = 0
 			g = (nm[key] == "frs" || nm[key] == "regular" ? "regular" : "jittered-grid") SUBSEP 0
 			r = "dart" SUBSEP 0
 			for (j = 1; j <= nd; j++) {
 				d = ds[j]
 				e = val[key, d] - val[g, d]; s2 += e * e
 				e = val[key, d] - val[r, d]; t2 += e * e
-				if (d >= 2.2) {
-					if (val[key, d] > sp) { sp = val[key, d]; sq = d }
-					u2 += (val[key, d] - 1) ^ 2; nu++
-				}
 			}
+			beyond(key)
 			printf "%s\t%s\t%d\t%s\t%.4g\t%.4g\t%.2f\t%s\t%.4f\t%.4g\t%.4f\t%.4f\n", nm[key], pm[key],
 			    nm[key] == "regular" ? 1 : sets, nm[key] == "regular" || nm[key] == "dart" || nm[key] == "jittered-grid" ? n : np[key],
 			    pd[key], pk[key], an[key] / na[key],
 			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(s2 / nd)), sqrt(t2 / nd),
-			    sq, sp, sqrt(u2 / nu)
+			    sq, sp, sdv
 		}
 	}' "$OUT/radial.tsv"
 } >"$OUT/stats.tsv"

@@ -304,7 +304,8 @@ set_points() {
 # nm[] and pm[]): the peak beyond 0.3 spacings (pk, at pd), the summed
 # anisotropy from 0.5 to 6 spacings (an over na), every value val[key,d],
 # and dart's distances up to 6 spacings (ds[1..nd]); np[] from -v
-# pts_list "sampler:param:points ...".  The experiment adds its END.
+# pts_list "sampler:param:points ..."; beyond(key) gives the strongest
+# value past 2 spacings.  The experiment adds its END.
 RADIAL_AWK='
 	BEGIN { k = split(pts_list, a, " "); for (i = 1; i <= k; i++) { split(a[i], b, ":"); np[b[1] SUBSEP b[2]] = b[3] } }
 	NR == 1 { next }
@@ -316,6 +317,19 @@ RADIAL_AWK='
 		if (d >= 0.3 && p > pk[key]) { pk[key] = p; pd[key] = d }
 		if (d >= 0.5 && d <= 6) { an[key] += $5; na[key]++ }
 		if (d <= 6 && $1 == "dart") ds[++nd] = d
+	}
+	# beyond(key): over dart'"'"'s annuli from 2.2 spacings on, the strongest
+	# value of key (left in sp, at sq) and its RMS deviation from the
+	# Poisson level 1 (sdv): a ring there that dart lacks is the matrix'"'"'s
+	function beyond(key,   j, d, u2, nu) {
+		sp = -1; u2 = 0; nu = 0
+		for (j = 1; j <= nd; j++) {
+			d = ds[j]
+			if (d < 2.2) continue
+			if (val[key, d] > sp) { sp = val[key, d]; sq = d }
+			u2 += (val[key, d] - 1) ^ 2; nu++
+		}
+		sdv = sqrt(u2 / nu)
 	}'
 
 # awk function best(lo, hi) over the annuli f[1..n] with powers p[]: the
