@@ -76,7 +76,7 @@ exp_begin() {
 # A cached file FILE keeps FILE.key, a checksum of everything that made
 # it: the mode, the command's words, the content of every word that is a
 # file (inputs, and outputs of earlier cached steps), of every program
-# the command runs, and of the experiment's inputs (exp_uses); for a
+# the command runs, and of the matrix frs-sample reads; for a
 # shell function, also its text and that of the functions it calls, so
 # that editing a script's prose recomputes nothing.  A function must
 # therefore take what it reads as words (or name its output after its
@@ -96,34 +96,6 @@ file_sum() {
 		printf '%s\t%s\n' "$_st" "$_h" >>"$CACHE/sums"
 	fi
 	echo "$_h"
-}
-
-# exp_uses FILE...: inputs of every cached step of this experiment that
-# its commands do not name (a map a function reads); they go into every
-# key.  The matrices frs-sample finds by itself, EXP_MATRIX (default
-# FRS_MATRIX), go into the key of every step that runs frs-sample.
-EXP_USES=
-exp_uses() {
-	EXP_USES="$*"
-}
-
-# progs_of CMD...: the programs a command runs: those of BIN it names,
-# or, for a shell function, those named by its text and by the functions
-# it calls (fn_body).
-progs_of() {
-	if [ -x "$BIN/$1" ]; then
-		for _w in "$@"; do
-			[ -x "$BIN/$_w" ] && echo "$_w"
-		done
-		return 0
-	fi
-	fn_body "$@" >"$CACHE/.body.$$"
-	for _p in "$BIN"/*; do
-		_b=$(basename "$_p")
-		grep -q -w -F -e "$_b" "$CACHE/.body.$$" && echo "$_b"
-	done
-	rm -f "$CACHE/.body.$$"
-	return 0
 }
 
 # fn_body CMD...: the text of shell function CMD's first word and of
@@ -157,9 +129,22 @@ fn_body() {
 # cache_key FILE CMD...: the key of CMD making FILE (see above).  Words
 # named like FILE (its path up to the extension, then another one) are
 # the step's own further outputs (a --png beside the table), not inputs.
+# The programs a command runs: those of BIN it names or, for a shell
+# function, those its text and the functions it calls name (fn_body).
 cache_key() {
 	_s=${1%.*}
 	shift
+	if [ -x "$BIN/$1" ]; then
+		_progs=$(for _w in "$@"; do [ -x "$BIN/$_w" ] && echo "$_w"; done; :)
+		_code=
+	else
+		fn_body "$@" >"$CACHE/.body.$$"
+		_code=$(sha1sum <"$CACHE/.body.$$" | cut -c 1-40)
+		_progs=$(for _p in "$BIN"/*; do
+			grep -q -w -F -e "${_p##*/}" "$CACHE/.body.$$" && echo "${_p##*/}"
+		done; :)
+		rm -f "$CACHE/.body.$$"
+	fi
 	{
 		echo "mode $MODE"
 		printf 'word %s\n' "$@"
@@ -167,10 +152,8 @@ cache_key() {
 			case $_w in "$_s".*) continue ;; esac
 			[ -f "$_w" ] && echo "file $(file_sum "$_w")"
 		done
-		if ! [ -x "$BIN/$1" ] && ! [ -f "$1" ]; then
-			echo "code $(fn_body "$@" | sha1sum | cut -c 1-40)"
-		fi
-		for _p in $(progs_of "$@"); do
+		[ -n "$_code" ] && echo "code $_code"
+		for _p in $_progs; do
 			echo "prog $_p $(file_sum "$BIN/$_p")"
 			case $_p in
 			frs-sample | frd-prep)
@@ -178,9 +161,6 @@ cache_key() {
 					echo "matrix $(file_sum "$_m")"
 				done ;;
 			esac
-		done
-		for _f in $EXP_USES; do
-			echo "uses $(file_sum "$_f")"
 		done
 	} | sha1sum | cut -c 1-40
 }
@@ -200,13 +180,6 @@ cached() {
 	mv -f "$_f.tmp.$$" "$_f"
 	echo "$_k" >"$_f.key.tmp.$$"
 	mv -f "$_f.key.tmp.$$" "$_f.key"
-}
-
-# fresh FILE CMD...: FILE is up to date for CMD (cached would reuse it);
-# for the scripts that hand only the missing jobs to par_run.
-fresh() {
-	_f=$1
-	[ -s "$_f" ] && [ "$(cat "$_f.key" 2>/dev/null)" = "$(cache_key "$@")" ]
 }
 
 # par_run: run the shell commands on standard input, one a line, with GNU
