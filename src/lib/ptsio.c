@@ -435,15 +435,60 @@ int pts_writer_begin(struct pts_writer *w, FILE *fp, const char *name,
 	return 0;
 }
 
+/* Coordinates outside [0, 1) are the writer's caller's bug. */
+static int check_coords(const struct pts_writer *w, const double *recs,
+    size_t n)
+{
+	unsigned ncol = w->dims + w->extra;
+
+	for (size_t k = 0; k < n; k++)
+		for (unsigned i = 0; i < w->dims; i++) {
+			double v = recs[k * ncol + i];
+			if (!(v >= 0.0 && v < 1.0))
+				return frs_fail("%s: internal error: coordinate "
+				    "%.17g of point %llu is outside [0,1)", w->name,
+				    v, (unsigned long long)(w->written + k));
+		}
+	return 0;
+}
+
+int pts_writer_put_n(struct pts_writer *w, const double *recs, size_t n)
+{
+	size_t nval = n * (w->dims + w->extra);
+
+	if (w->text) {
+		for (size_t k = 0; k < n; k++)
+			if (pts_writer_put(w, recs + k * (w->dims + w->extra)) < 0)
+				return -1;
+		return 0;
+	}
+	if (check_coords(w, recs, n) < 0)
+		return -1;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+	{
+		double tmp[1024];
+		for (size_t i = 0; i < nval; i += 1024) {
+			size_t m = nval - i < 1024 ? nval - i : 1024;
+			memcpy(tmp, recs + i, m * sizeof *tmp);
+			io_le_f64(tmp, m);
+			if (fwrite(tmp, 8, m, w->fp) != m)
+				return frs_fail_errno("%s: write error", w->name);
+		}
+	}
+#else
+	if (fwrite(recs, 8, nval, w->fp) != nval)
+		return frs_fail_errno("%s: write error", w->name);
+#endif
+	w->written += n;
+	return 0;
+}
+
 int pts_writer_put(struct pts_writer *w, const double *rec)
 {
 	unsigned ncol = w->dims + w->extra;
 
-	for (unsigned i = 0; i < w->dims; i++)
-		if (!(rec[i] >= 0.0 && rec[i] < 1.0))
-			return frs_fail("%s: internal error: coordinate %.17g of "
-			    "point %llu is outside [0,1)", w->name, rec[i],
-			    (unsigned long long)w->written);
+	if (check_coords(w, rec, 1) < 0)
+		return -1;
 	if (w->text) {
 		for (unsigned i = 0; i < ncol; i++)
 			if (fprintf(w->fp, i ? " %.17g" : "%.17g", rec[i]) < 0)
@@ -490,12 +535,10 @@ int pts_write(FILE *fp, const char *name, const struct frs_points *p,
     int text)
 {
 	struct pts_writer w;
-	size_t ncol = p->dims + p->extra;
 
 	if (pts_writer_begin(&w, fp, name, p->dims, p->extra, p->n, text) < 0)
 		return -1;
-	for (size_t i = 0; i < p->n; i++)
-		if (pts_writer_put(&w, p->x + i * ncol) < 0)
-			return -1;
+	if (pts_writer_put_n(&w, p->x, p->n) < 0)
+		return -1;
 	return pts_writer_end(&w);
 }

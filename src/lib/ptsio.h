@@ -73,6 +73,9 @@ struct pts_writer {
 int pts_writer_begin(struct pts_writer *w, FILE *fp, const char *name,
     unsigned dims, unsigned extra, uint64_t count, int text);
 int pts_writer_put(struct pts_writer *w, const double *rec);
+/* n records at once (n * (dims + extra) values): one check pass and one
+ * write; the fast path of the samplers. */
+int pts_writer_put_n(struct pts_writer *w, const double *recs, size_t n);
 int pts_writer_end(struct pts_writer *w);
 
 /* Write a whole set. */
