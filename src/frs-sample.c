@@ -274,36 +274,6 @@ static void check_room(const struct opts *o, size_t size)
 
 /* ---- OpenCL: what the public API does not cover -------------------- */
 
-static int put_elem(struct pts_writer *w, const struct opts *o,
-    const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_elem *e)
-{
-	double rec[4];
-	unsigned k = 2;
-
-	frs_point(s, e, &rec[0], &rec[1]);
-	if (o->pdf)
-		rec[k++] = api_pdf(s, map, e);
-	if (o->nsteps > 1)
-		rec[k++] = (double)(e->step + 1);
-	return pts_writer_put(w, rec);
-}
-
-/* Write one set's points: progressive steps in turn, each in map order
- * (the order of frs_draw_each). */
-static int put_set(struct pts_writer *w, const struct opts *o,
-    const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_result *r)
-{
-	for (uint32_t step = 0; step < o->nsteps; step++)
-		for (uint64_t c = 0; c < r->nchunk; c++)
-			for (uint64_t i = 0; i < r->chunk[c].n; i++)
-				if (r->chunk[c].e[i].step == step &&
-				    put_elem(w, o, s, map, &r->chunk[c].e[i]) < 0)
-					return -1;
-	return 0;
-}
-
 static int needs_minmap(int a)
 {
 	return a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2 ||
@@ -338,55 +308,48 @@ struct out {
 	int noted;		/* the mask's note was printed */
 	double t;		/* seconds spent writing */
 	struct frscl_times ct;	/* OpenCL phases, summed over the sets */
-	/* -v: the matrix element of every sample of set 0 */
+	/* -v: how many samples of set 0 show each matrix element */
 	const struct frs_setup *s0;
-	uint64_t *mi;
-	size_t nmi, cap;
+	uint32_t *uses;
+	uint64_t nnoted;
 	int collect, have;
+	double *rec;		/* records with extra columns */
+	size_t reccap;
 };
 
-/* -v: remember the matrix element that sample (x, y) of set 0 shows
- * (its window element is floor(x S_W): jitter stays inside it). */
+/* -v: count the matrix element that sample (x, y) of set 0 shows (its
+ * window element is floor(x S_W): jitter stays inside it). */
 static void note_point(struct out *u, double x, double y)
 {
 	const struct frs_setup *s = u->s0;
+	uint64_t i;
 
 	if (!u->collect)
 		return;
-	if (u->nmi == u->cap) {
-		size_t ncap = u->cap ? 2 * u->cap : 4096;
-		uint64_t *n = realloc(u->mi, ncap * sizeof *n);
-		if (n == NULL) {
-			u->collect = 0;	/* -v goes without the share */
-			return;
-		}
-		u->mi = n;
-		u->cap = ncap;
+	if (u->uses == NULL &&
+	    (u->uses = calloc((size_t)s->mw * s->mh, sizeof *u->uses)) == NULL) {
+		u->collect = 0;	/* -v goes without the share */
+		return;
 	}
-	u->mi[u->nmi++] = frs_matrix_index(s, (uint64_t)(x * (double)s->sw),
+	i = frs_matrix_index(s, (uint64_t)(x * (double)s->sw),
 	    (uint64_t)(y * (double)s->sh));
-}
-
-static int u64_cmp(const void *a, const void *b)
-{
-	uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-	return x < y ? -1 : x > y;
+	if (u->uses[i] < UINT32_MAX)
+		u->uses[i]++;
+	u->nnoted++;
 }
 
 /* The share of the noted samples whose matrix element another one
- * shows too. */
+ * shows too: O(n + S_M^2), not a sort of the samples. */
 static double reused_share(struct out *u)
 {
-	size_t reused = 0;
+	uint64_t reused = 0;
+	size_t n = (size_t)u->s0->mw * u->s0->mh;
 
-	if (u->nmi == 0)
+	if (u->nnoted == 0 || u->uses == NULL)
 		return 0.0;
-	qsort(u->mi, u->nmi, sizeof *u->mi, u64_cmp);
-	for (size_t i = 0; i < u->nmi; i++)
-		if ((i > 0 && u->mi[i - 1] == u->mi[i]) ||
-		    (i + 1 < u->nmi && u->mi[i + 1] == u->mi[i]))
-			reused++;
-	return (double)reused / (double)u->nmi;
+	for (size_t i = 0; i < n; i++)
+		reused += u->uses[i] >= 2 ? u->uses[i] : 0;
+	return (double)reused / (double)u->nnoted;
 }
 
 /* Open the output at the first set: with one set its count goes into
@@ -413,24 +376,69 @@ static int out_batch(void *ctx, const double *xy, const double *pdf,
     const uint32_t *step, size_t k, uint64_t total)
 {
 	struct out *u = ctx;
-	double t0 = progress_now(), rec[4];
+	double t0 = progress_now();
 	int rc = out_begin(u, total);
+	unsigned ncol = 2u + (pdf != NULL ? 1u : 0u) + (step != NULL ? 1u : 0u);
 
 	u->n = total;
-
-	for (size_t i = 0; rc == 0 && i < k; i++) {
-		unsigned c = 2;
-		rec[0] = xy[2 * i];
-		rec[1] = xy[2 * i + 1];
-		note_point(u, rec[0], rec[1]);
-		if (pdf != NULL)
-			rec[c++] = pdf[i];
-		if (step != NULL)
-			rec[c++] = (double)(step[i] + 1);
-		rc = pts_writer_put(&u->w, rec);
+	for (size_t i = 0; u->collect && i < k; i++)
+		note_point(u, xy[2 * i], xy[2 * i + 1]);
+	if (rc == 0 && ncol == 2)
+		rc = pts_writer_put_n(&u->w, xy, k);
+	else if (rc == 0 && k * ncol > u->reccap) {
+		free(u->rec);
+		u->reccap = k * ncol;
+		if ((u->rec = malloc(u->reccap * sizeof *u->rec)) == NULL) {
+			u->reccap = 0;
+			rc = frs_fail("out of memory");
+		}
+	}
+	if (rc == 0 && ncol > 2) {
+		double *rec = u->rec;
+		for (size_t i = 0; i < k; i++, rec += ncol) {
+			unsigned c = 2;
+			rec[0] = xy[2 * i];
+			rec[1] = xy[2 * i + 1];
+			if (pdf != NULL)
+				rec[c++] = pdf[i];
+			if (step != NULL)
+				rec[c++] = (double)(step[i] + 1);
+		}
+		rc = pts_writer_put_n(&u->w, u->rec, k);
 	}
 	u->t += progress_now() - t0;
 	return rc;
+}
+
+/* Write one set's points through out_batch, a batch at a time:
+ * progressive steps in turn, each in map order (the order of
+ * frs_draw_each). */
+#define PUT_BATCH 4096
+static int put_set(struct out *u, const struct frs_setup *s,
+    const struct frs_imap *map, const struct frs_result *r)
+{
+	const struct opts *o = u->o;
+	static double xy[2 * PUT_BATCH], pdf[PUT_BATCH];
+	static uint32_t step[PUT_BATCH];
+	size_t k = 0;
+
+	for (uint32_t st = 0; st < o->nsteps; st++)
+		for (uint64_t c = 0; c < r->nchunk; c++)
+			for (uint64_t i = 0; i < r->chunk[c].n; i++) {
+				const struct frs_elem *e = &r->chunk[c].e[i];
+				if (e->step != st)
+					continue;
+				frs_point(s, e, &xy[2 * k], &xy[2 * k + 1]);
+				pdf[k] = api_pdf(s, map, e);
+				step[k] = e->step;
+				if (++k == PUT_BATCH && out_batch(u, xy, o->pdf ?
+				    pdf : NULL, o->nsteps > 1 ? step : NULL, k,
+				    r->count) < 0)
+					return -1;
+				k = k == PUT_BATCH ? 0 : k;
+			}
+	return k > 0 ? out_batch(u, xy, o->pdf ? pdf : NULL, o->nsteps > 1 ?
+	    step : NULL, k, r->count) : 0;
 }
 
 /* ---- loading --------------------------------------------------------- */
@@ -513,7 +521,6 @@ static uint64_t one_set(struct ocl *ocl, const struct opts *o,
 	if (o->cl) {
 		struct frs_setup s;
 		struct frs_result r;
-		double t0;
 		struct frscl_times ct;
 		sample_cl(ocl, o, smp, seed, &s, &r);
 		frscl_last_times(&ct);
@@ -521,17 +528,10 @@ static uint64_t one_set(struct ocl *ocl, const struct opts *o,
 		u->ct.upload += ct.upload;
 		u->ct.kernel += ct.kernel;
 		u->ct.download += ct.download;
-		t0 = progress_now();
 		if (out_begin(u, r.count) < 0 || (o->count_only ? 0 :
-		    put_set(&u->w, o, &s, &smp->map, &r)) < 0) {
+		    put_set(u, &s, &smp->map, &r)) < 0) {
 			frs_result_free(&r);
 			return UINT64_MAX;
-		}
-		u->t += progress_now() - t0;
-		for (uint64_t i = 0; u->collect && i < r.chunk[0].n; i++) {
-			double x, y;
-			frs_point(&s, &r.chunk[0].e[i], &x, &y);
-			note_point(u, x, y);
 		}
 		count = r.count;
 		frs_result_free(&r);
@@ -845,7 +845,8 @@ int main(int argc, char **argv)
 		frscl_release(&ocl);
 		ocl_close(&ocl);
 	}
-	free(u.mi);
+	free(u.uses);
+	free(u.rec);
 	frs_sampler_free(smp);
 	frs_mask_free(mask);
 	return 0;

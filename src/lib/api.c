@@ -745,6 +745,28 @@ static int batch_one(void *ctx, const struct frs_elem *e)
 	return b->p.k == BATCH ? flush(b) : 0;
 }
 
+/* One step: the chunks' elements converted a batch at a time. */
+static int each_run(struct batch *b, const struct frs_result *r)
+{
+	for (uint64_t c = 0; c < r->nchunk; c++) {
+		const struct frs_elem *e = r->chunk[c].e;
+		uint64_t left = r->chunk[c].n;
+		while (left > 0) {
+			size_t k = BATCH - b->p.k;
+			k = left < k ? (size_t)left : k;
+			frs_points(b->p.su, e, k, b->xy + 2 * b->p.k);
+			for (size_t i = 0; b->p.pdf != NULL && i < k; i++)
+				b->pdf[b->p.k + i] = api_pdf(b->p.su, b->p.map, &e[i]);
+			b->p.k += k;
+			e += k;
+			left -= k;
+			if (b->p.k == BATCH && flush(b) != 0)
+				return -1;
+		}
+	}
+	return 0;
+}
+
 int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
     unsigned nsteps, uint64_t seed, int want_pdf, frs_point_fn fn,
     void *ctx, frs_error *err)
@@ -767,7 +789,10 @@ int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
 	b->fn = fn;
 	b->ctx = ctx;
 	b->total = stored(&r);
-	stop = each_elem(&r, nsteps, batch_one, b) < 0 || flush(b) != 0;
+	if (nsteps == 1)
+		stop = each_run(b, &r) < 0 || flush(b) != 0;
+	else
+		stop = each_elem(&r, nsteps, batch_one, b) < 0 || flush(b) != 0;
 	frs_result_free(&r);
 	free(b);
 	if (stop)

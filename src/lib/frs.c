@@ -287,23 +287,13 @@ static int pair_cmp(const void *a, const void *b)
 	return x->v < y->v ? -1 : x->v > y->v;
 }
 
-/* Listing 5.10, keeping every element of a block (no n_t cap: the
- * thesis's cap 2 n_s^2 / sigma^2 is 0 for n_s < sigma and too small for
- * some blocks, and a sample lost there is a bias). */
-static int make_sorted(struct frs_prep *p, uint32_t b)
+/* The block lists by comparison sort: any matrix values. */
+static void sort_blocks(struct frs_prep *p, struct pair *tmp)
 {
 	const struct frs_matrix *m = p->m;
-	uint32_t bw = m->w / b, bh = m->h / b;
+	uint32_t b = p->block, bw = m->w / b, bh = m->h / b;
 	size_t bb = (size_t)b * b;
-	struct pair *tmp = malloc(bb * sizeof *tmp);
 
-	p->block = b;
-	p->sval = malloc(m->n * sizeof *p->sval);
-	p->sidx = malloc(m->n * sizeof *p->sidx);
-	if (tmp == NULL || p->sval == NULL || p->sidx == NULL) {
-		free(tmp);
-		return frs_fail("out of memory for the sorted lists");
-	}
 	for (uint32_t by = 0; by < bh; by++)
 		for (uint32_t bx = 0; bx < bw; bx++) {
 			size_t base = ((size_t)by * bw + bx) * bb;
@@ -316,8 +306,97 @@ static int make_sorted(struct frs_prep *p, uint32_t b)
 				p->sidx[base + k] = tmp[k].i;
 			}
 		}
-	free(tmp);
+}
+
+/* The position of every value (the inverse permutation), or 0 when the
+ * values are not the permutation of 0 .. n - 1 that frd(5) promises
+ * (then the lists are made by sort_blocks). */
+static int invert(const struct frs_matrix *m, uint32_t *inv)
+{
+	memset(inv, 0xff, m->n * sizeof *inv);
+	for (size_t i = 0; i < m->n; i++) {
+		uint32_t v = m->v[i];
+		if (v >= m->n || inv[v] != UINT32_MAX)
+			return 0;
+		inv[v] = (uint32_t)i;
+	}
+	return 1;
+}
+
+struct scatter {
+	struct frs_prep *p;
+	const uint32_t *inv;
+	uint32_t rows;		/* block rows per task */
+};
+
+/* Counting sort of the blocks of block rows [b, e) * rows: the values in
+ * increasing order, each appended to its block's list.  Every task reads
+ * all of inv and writes only its blocks, so tasks share nothing. */
+static int scatter_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct scatter *sc = ctx;
+	struct frs_prep *p = sc->p;
+	const struct frs_matrix *m = p->m;
+	uint32_t blk = p->block, bw = m->w / blk, lb = 0, lw = 0;
+	uint64_t r0 = b * sc->rows * blk, r1 = e * sc->rows * blk;
+	size_t bb = (size_t)blk * blk, nb;
+	size_t *fill;
+
+	r1 = r1 < m->h ? r1 : m->h;
+	nb = (size_t)((r1 - r0) / blk) * bw;
+	if ((fill = malloc(nb * sizeof *fill)) == NULL)
+		return frs_fail("out of memory for the sorted lists");
+	while ((1u << lb) < blk)
+		lb++;
+	while ((1u << lw) < m->w)
+		lw++;
+	for (size_t k = 0; k < nb; k++)
+		fill[k] = (size_t)(r0 / blk * bw + k) * bb;
+	for (size_t v = 0; v < m->n; v++) {
+		uint32_t i = sc->inv[v], x = i & (m->w - 1), y = i >> lw;
+		size_t k, at;
+		if (y < r0 || y >= r1)
+			continue;
+		k = (size_t)((y - r0) >> lb) * bw + (x >> lb);
+		at = fill[k]++;
+		p->sval[at] = (uint32_t)v;
+		p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+	}
+	free(fill);
 	return 0;
+}
+
+/* Listing 5.10, keeping every element of a block (no n_t cap: the
+ * thesis's cap 2 n_s^2 / sigma^2 is 0 for n_s < sigma and too small for
+ * some blocks, and a sample lost there is a bias).  A permutation (every
+ * matrix read through frd(5)) is sorted by counting, O(S_M^2) for any
+ * block size, in parallel over block rows; other values by qsort. */
+static int make_sorted(struct frs_prep *p, uint32_t b)
+{
+	const struct frs_matrix *m = p->m;
+	uint32_t *inv = malloc(m->n * sizeof *inv);
+	struct pair *tmp = NULL;
+	int rc = 0;
+
+	p->block = b;
+	p->sval = malloc(m->n * sizeof *p->sval);
+	p->sidx = malloc(m->n * sizeof *p->sidx);
+	if (inv == NULL || p->sval == NULL || p->sidx == NULL)
+		rc = frs_fail("out of memory for the sorted lists");
+	else if (invert(m, inv)) {
+		uint32_t bh = m->h / b, nt = (uint32_t)frs_threads();
+		struct scatter sc = { p, inv, 0 };
+		nt = nt < 1 ? 1 : nt > bh ? bh : nt;
+		sc.rows = (bh + nt - 1) / nt;
+		rc = frs_parallel((bh + sc.rows - 1) / sc.rows, 1, scatter_task,
+		    &sc, NULL);
+	} else if ((tmp = malloc((size_t)b * b * sizeof *tmp)) == NULL)
+		rc = frs_fail("out of memory for the sorted lists");
+	else
+		sort_blocks(p, tmp);
+	free(inv);
+	free(tmp);
+	return rc;
 }
 
 int frs_prepare(struct frs_prep *p, const struct frs_matrix *m, int minmap,
@@ -824,4 +903,20 @@ void frs_point(const struct frs_setup *s, const struct frs_elem *e,
 	}
 	*x = frs_below_one(((double)e->x + jx) / (double)s->sw);
 	*y = frs_below_one(((double)e->y + jy) / (double)s->sh);
+}
+
+void frs_points(const struct frs_setup *s, const struct frs_elem *e,
+    size_t n, double *xy)
+{
+	double sw = (double)s->sw, sh = (double)s->sh;
+
+	if (s->jitter != FRS_JITTER_NONE) {
+		for (size_t i = 0; i < n; i++)
+			frs_point(s, &e[i], &xy[2 * i], &xy[2 * i + 1]);
+		return;
+	}
+	for (size_t i = 0; i < n; i++) {
+		xy[2 * i] = frs_below_one(((double)e[i].x + 0.5) / sw);
+		xy[2 * i + 1] = frs_below_one(((double)e[i].y + 0.5) / sh);
+	}
 }

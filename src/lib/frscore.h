@@ -26,6 +26,7 @@
 #ifndef FRS_FRSCORE_H
 #define FRS_FRSCORE_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "frdio.h"
@@ -168,6 +169,10 @@ double frs_below_one(double v);
 /* The point of an element, in [0, 1)^2, with the setup's jitter. */
 void frs_point(const struct frs_setup *s, const struct frs_elem *e,
     double *x, double *y);
+/* frs_point of n elements into xy (x, y pairs): the same values, one
+ * loop without calls when there is no jitter. */
+void frs_points(const struct frs_setup *s, const struct frs_elem *e,
+    size_t n, double *xy);
 
 #endif
 
