@@ -307,6 +307,7 @@ struct out {
 	uint64_t n;		/* samples of the set being drawn */
 	int noted;		/* the mask's note was printed */
 	double t;		/* seconds spent writing */
+	double tnote;		/* and in note_point, apart from the phases */
 	struct frscl_times ct;	/* OpenCL phases, summed over the sets */
 	/* -v: how many samples of set 0 show each matrix element */
 	const struct frs_setup *s0;
@@ -381,8 +382,13 @@ static int out_batch(void *ctx, const double *xy, const double *pdf,
 	unsigned ncol = 2u + (pdf != NULL ? 1u : 0u) + (step != NULL ? 1u : 0u);
 
 	u->n = total;
-	for (size_t i = 0; u->collect && i < k; i++)
-		note_point(u, xy[2 * i], xy[2 * i + 1]);
+	if (u->collect) {
+		double t1 = progress_now();
+		for (size_t i = 0; i < k; i++)
+			note_point(u, xy[2 * i], xy[2 * i + 1]);
+		u->tnote += progress_now() - t1;
+		t0 += progress_now() - t1;
+	}
 	if (rc == 0 && ncol == 2)
 		rc = pts_writer_put_n(&u->w, xy, k);
 	else if (rc == 0 && k * ncol > u->reccap) {
@@ -580,8 +586,11 @@ static void report(const struct opts *o, const struct frs_setup *s0,
 		    (unsigned long long)o->sets, (unsigned long long)cli.seed,
 		    (unsigned long long)(cli.seed + o->sets - 1));
 	fprintf(stderr, "frs-sample: %llu samples (%s); setup %.6f s, "
-	    "thresholding %.6f s, output %.6f s\n", (unsigned long long)total,
+	    "thresholding %.6f s, output %.6f s", (unsigned long long)total,
 	    frscl_algo_name(o->algo), tsetup, tthr, u->t);
+	if (u->tnote > 0.0)
+		fprintf(stderr, " (and %.6f s for -v's share)", u->tnote);
+	fputc('\n', stderr);
 	if (o->cl)
 		fprintf(stderr, "frs-sample: OpenCL device %s: build %.6f s, "
 		    "to the device %.6f s, kernels %.6f s, back and offsets "
@@ -839,7 +848,8 @@ int main(int argc, char **argv)
 		cli_die_lib();
 	u.t += progress_now() - t0;
 	if (o.verbose)
-		report(&o, &s0, total, tsetup, progress_now() - t1 - u.t, &u,
+		report(&o, &s0, total, tsetup, progress_now() - t1 - u.t -
+		    u.tnote, &u,
 		    &ocl);
 	if (o.cl) {
 		frscl_release(&ocl);

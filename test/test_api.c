@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 
 #include "frs.h"
+#include "api.h"
 #include "frdio.h"
 #include "imap.h"
 #include "ptsio.h"
@@ -469,6 +470,108 @@ static void test_threads_option(void **state)
 	}
 	for (int t = 0; t < 4; t++)
 		drawn_free(&d[t]);
+}
+
+/* frs_draw_each's batches, gathered. */
+struct wave_gather {
+	double *xy, *pdf;
+	size_t n, cap;
+};
+
+static int wave_gather(void *ctx, const double *xy, const double *pdf,
+    const uint32_t *step, size_t k, uint64_t total)
+{
+	struct wave_gather *g = ctx;
+
+	assert_null(step);
+	if (g->cap == 0) {
+		g->cap = (size_t)total;
+		g->xy = malloc(2 * g->cap * sizeof *g->xy);
+		g->pdf = malloc(g->cap * sizeof *g->pdf);
+		assert_non_null(g->xy);
+		assert_non_null(g->pdf);
+	}
+	assert_true(g->n + k <= g->cap && total == g->cap);
+	memcpy(g->xy + 2 * g->n, xy, 2 * k * sizeof *xy);
+	memcpy(g->pdf + g->n, pdf, k * sizeof *pdf);
+	g->n += k;
+	return 0;
+}
+
+static int rec3_cmp(const void *a, const void *b)
+{
+	const double *p = a, *q = b;
+
+	for (int i = 0; i < 3; i++)
+		if (p[i] != q[i])
+			return p[i] < q[i] ? -1 : 1;
+	return 0;
+}
+
+/* The records (x, y, pdf) of d in increasing order. */
+static double *sorted_records(const struct drawn *d)
+{
+	double *r = records(d, 1, 0);
+
+	qsort(r, d->n, 3 * sizeof *r, rec3_cmp);
+	return r;
+}
+
+/* Sorted with one step goes from the thresholding straight to the
+ * caller (frs_draw) or in waves to the callback (frs_draw_each): the
+ * samples of Naive through the store of the whole run (Sorted gives a
+ * block's samples in value order, Naive in row order), and the same
+ * bytes for 1 and 3 threads and waves of 1 to 2^20 samples (many chunks
+ * to a wave, a chunk to a wave, chunks larger than a wave). */
+static void test_direct_path(void **state)
+{
+	uint64_t n = 20000, waves[] = { (uint64_t)1 << 20, 1, 700, 5000 };
+	struct frs_options o;
+	struct drawn ref, first = { 0, NULL, NULL, NULL };
+	frs_sampler *s;
+	double *a, *b;
+
+	(void)state;
+	frs_options_init(&o);
+	o.algorithm = FRS_ALG_NAIVE;
+	o.jitter = FRS_JIT_RANDOM;
+	s = sampler_f64(mask, &blob, &o);
+	ref = draw(s, &n, 1, 3, 1);
+	frs_sampler_free(s);
+	o.algorithm = FRS_ALG_SORTED;
+	for (int t = 1; t <= 3; t += 2)
+		for (size_t w = 0; w < sizeof waves / sizeof *waves; w++) {
+			struct wave_gather g = { NULL, NULL, 0, 0 };
+			struct drawn d;
+			frs_error e;
+			o.threads = t;
+			api_wave = waves[w];
+			s = sampler_f64(mask, &blob, &o);
+			d = draw(s, &n, 1, 3, 1);
+			assert_int_equal(frs_draw_each(s, &n, 1, 3, 1, wave_gather,
+			    &g, &e), FRS_OK);
+			frs_sampler_free(s);
+			if (first.n == 0)
+				first = d;
+			assert_int_equal(d.n, ref.n);
+			assert_int_equal(g.n, ref.n);
+			assert_memory_equal(d.xy, first.xy, 2 * ref.n * sizeof(double));
+			assert_memory_equal(d.pdf, first.pdf, ref.n * sizeof(double));
+			assert_memory_equal(g.xy, first.xy, 2 * ref.n * sizeof(double));
+			assert_memory_equal(g.pdf, first.pdf, ref.n * sizeof(double));
+			free(g.xy);
+			free(g.pdf);
+			if (d.xy != first.xy)
+				drawn_free(&d);
+		}
+	api_wave = (uint64_t)1 << 20;
+	a = sorted_records(&ref);
+	b = sorted_records(&first);
+	assert_memory_equal(a, b, 3 * ref.n * sizeof *a);
+	free(a);
+	free(b);
+	drawn_free(&first);
+	drawn_free(&ref);
 }
 
 /* frs_count: frs-sample --count-only, and what frs_draw makes. */
@@ -1755,6 +1858,7 @@ int main(void)
 		cmocka_unit_test(test_float_map),
 		cmocka_unit_test(test_stride),
 		cmocka_unit_test(test_threads_option),
+		cmocka_unit_test(test_direct_path),
 		cmocka_unit_test(test_count),
 		cmocka_unit_test(test_info),
 		cmocka_unit_test(test_wrap),

@@ -569,14 +569,13 @@ static int check_steps(const uint64_t *steps, unsigned nsteps,
 	return FRS_OK;
 }
 
-/* Threshold the window for steps with this seed; r and su for the
- * caller.  A code. */
-static int run(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
-    uint64_t seed, int count_only, struct frs_setup *su,
-    struct frs_result *r, frs_error *err)
+/* The setup and prepared matrix of a run for steps with this seed, and
+ * the sampler's thread count set.  A code. */
+static int begin_run(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, struct frs_setup *su,
+    struct frs_prep *view, frs_error *err)
 {
 	enum frs_algo a;
-	struct frs_prep view;
 	int minmap, rc;
 	uint32_t block = 0;
 
@@ -592,12 +591,128 @@ static int run(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
 		minmap = 1;
 	if (a == FRS_SORTED)
 		block = api_sorted_block(su);
-	if (api_mask_prep(s->mask, minmap, block, &view) < 0)
+	if (api_mask_prep(s->mask, minmap, block, view) < 0)
 		return lib_err(err, FRS_E_FORMAT);
 	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
-	if (frs_sample(su, &s->map, &view, a, steps, nsteps, count_only, r) < 0)
+	return FRS_OK;
+}
+
+/* Threshold the window for steps with this seed; r and su for the
+ * caller.  A code. */
+static int run(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
+    uint64_t seed, int count_only, struct frs_setup *su,
+    struct frs_result *r, frs_error *err)
+{
+	struct frs_prep view;
+	int rc = begin_run(s, steps, nsteps, seed, su, &view, err);
+
+	if (rc != FRS_OK)
+		return rc;
+	if (frs_sample(su, &s->map, &view, algos[s->opt.algorithm], steps,
+	    nsteps, count_only, r) < 0)
 		return lib_err(err, FRS_E_LIMIT);
 	return FRS_OK;
+}
+
+/*
+ * Sorted, one step: the samples go straight from the thresholding to
+ * their place, each chunk converted by the thread that made it, with no
+ * store of the whole run.  A count first (Sorted counts a block by one
+ * bisection, a few milliseconds for 2^24 samples) places every chunk.
+ */
+struct direct {
+	const struct frs_setup *su;
+	const struct frs_imap *map;
+	const uint64_t *at;	/* chunk c's first sample */
+	uint64_t base;		/* the sample at xy[0] */
+	double *xy, *pdf;
+};
+
+static int direct_chunk(void *ctx, uint64_t ci, const struct frs_chunk *c)
+{
+	const struct direct *d = ctx;
+	uint64_t o = d->at[ci] - d->base, want = d->at[ci + 1] - d->at[ci];
+
+	if (c->n != want)
+		return frs_fail("internal error: chunk %llu has %llu samples, "
+		    "its count said %llu", (unsigned long long)ci,
+		    (unsigned long long)c->n, (unsigned long long)want);
+	if (c->n == 0)
+		return 0;
+	frs_points(d->su, c->e, (size_t)c->n, d->xy + 2 * o);
+	for (uint64_t i = 0; d->pdf != NULL && i < c->n; i++)
+		d->pdf[o + i] = api_pdf(d->su, d->map, &c->e[i]);
+	return 0;
+}
+
+static int direct_ok(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps)
+{
+	return s != NULL && steps != NULL && nsteps == 1 &&
+	    algos[s->opt.algorithm] == FRS_SORTED;
+}
+
+/* The count of every chunk: at[c] the first sample of chunk c, at[nchunk]
+ * the total.  A code; *at is the caller's to free. */
+static int chunk_starts(const frs_sampler *s, const struct frs_setup *su,
+    const struct frs_prep *view, uint64_t **at, frs_error *err)
+{
+	struct frs_result r;
+	uint64_t nc = frs_nchunks(su);
+
+	if ((*at = malloc((nc + 1) * sizeof **at)) == NULL)
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	if (frs_sample(su, &s->map, view, FRS_SORTED, &su->n, 1, 1, &r) < 0) {
+		free(*at);
+		*at = NULL;
+		return lib_err(err, FRS_E_LIMIT);
+	}
+	(*at)[0] = 0;
+	for (uint64_t c = 0; c < nc; c++)
+		(*at)[c + 1] = (*at)[c] + r.chunk[c].count;
+	frs_result_free(&r);
+	return FRS_OK;
+}
+
+/* Sizes of the chunks c0 .. c1 - 1, for their stores. */
+static uint64_t *chunk_caps(const uint64_t *at, uint64_t c0, uint64_t c1)
+{
+	uint64_t *cap = malloc((c1 - c0 + 1) * sizeof *cap);
+
+	for (uint64_t c = c0; cap != NULL && c < c1; c++)
+		cap[c - c0] = at[c + 1] - at[c];
+	return cap;
+}
+
+static int draw_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
+    double *xy, double *pdf, size_t bufcap, size_t *count, frs_error *err)
+{
+	struct frs_setup su;
+	struct frs_prep view;
+	struct direct d;
+	uint64_t *at, *cap, nc;
+	int rc = begin_run(s, &n, 1, seed, &su, &view, err);
+
+	if (rc != FRS_OK || (rc = chunk_starts(s, &su, &view, &at, err)) != FRS_OK)
+		return rc;
+	nc = frs_nchunks(&su);
+	*count = (size_t)at[nc];
+	if (at[nc] > bufcap) {
+		free(at);
+		return set_err(err, FRS_E_BUFFER, "frs_draw: the buffer is "
+		    "too small; *count says how many samples there are");
+	}
+	if ((cap = chunk_caps(at, 0, nc)) == NULL) {
+		free(at);
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	}
+	d = (struct direct){ &su, &s->map, at, 0, xy, pdf };
+	if (frs_sample_each(&su, &s->map, &view, FRS_SORTED, 0, nc, cap,
+	    direct_chunk, &d) < 0)
+		rc = lib_err(err, FRS_E_LIMIT);
+	free(cap);
+	free(at);
+	return rc != FRS_OK ? rc : ok(err);
 }
 
 uint32_t api_sorted_block(const struct frs_setup *su)
@@ -678,6 +793,8 @@ int frs_draw_progressive(const frs_sampler *s, const uint64_t *steps,
 	if (count == NULL || (xy == NULL && cap > 0))
 		return arg_err(err, "frs_draw: NULL argument");
 	*count = 0;
+	if (direct_ok(s, steps, nsteps))
+		return draw_direct(s, steps[0], seed, xy, pdf, cap, count, err);
 	if ((rc = run(s, steps, nsteps, seed, 0, &su, &r, err)) != FRS_OK)
 		return rc;
 	n = stored(&r);
@@ -767,6 +884,76 @@ static int each_run(struct batch *b, const struct frs_result *r)
 	return 0;
 }
 
+/* Samples per wave of frs_draw_each's direct path: the chunks made in
+ * parallel before the callback takes them, in order (api.h). */
+uint64_t api_wave = (uint64_t)1 << 20;
+
+/* The chunks from c0 whose samples fit a wave (at least one). */
+static uint64_t wave_end(const uint64_t *at, uint64_t c0, uint64_t nc)
+{
+	uint64_t c1 = c0 + 1;
+
+	while (c1 < nc && at[c1 + 1] - at[c0] <= api_wave)
+		c1++;
+	return c1;
+}
+
+/* Hand the wave's samples to the callback, BATCH at a time. */
+static int wave_out(struct batch *b, const double *xy, const double *pdf,
+    uint64_t n)
+{
+	for (uint64_t i = 0; i < n; i += BATCH) {
+		size_t k = n - i < BATCH ? (size_t)(n - i) : BATCH;
+		if (b->fn(b->ctx, xy + 2 * i, pdf != NULL ? pdf + i : NULL, NULL,
+		    k, b->total) != 0)
+			return -1;
+	}
+	return 0;
+}
+
+static int each_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
+    int want_pdf, struct batch *b, frs_error *err)
+{
+	struct frs_setup su;
+	struct frs_prep view;
+	struct direct d;
+	uint64_t *at = NULL, nc, most = 0;
+	double *xy = NULL, *pdf = NULL;
+	int rc = begin_run(s, &n, 1, seed, &su, &view, err);
+
+	if (rc != FRS_OK || (rc = chunk_starts(s, &su, &view, &at, err)) != FRS_OK)
+		return rc;
+	nc = frs_nchunks(&su);
+	b->total = at[nc];
+	for (uint64_t c0 = 0, c1; c0 < nc; c0 = c1) {
+		c1 = wave_end(at, c0, nc);
+		most = at[c1] - at[c0] > most ? at[c1] - at[c0] : most;
+	}
+	xy = malloc((size_t)(2 * most + 1) * sizeof *xy);
+	pdf = want_pdf ? malloc((size_t)(most + 1) * sizeof *pdf) : NULL;
+	if (xy == NULL || (want_pdf && pdf == NULL))
+		rc = set_err(err, FRS_E_NOMEM, "out of memory");
+	for (uint64_t c0 = 0, c1; rc == FRS_OK && c0 < nc; c0 = c1) {
+		uint64_t *cap;
+		c1 = wave_end(at, c0, nc);
+		if ((cap = chunk_caps(at, c0, c1)) == NULL) {
+			rc = set_err(err, FRS_E_NOMEM, "out of memory");
+			break;
+		}
+		d = (struct direct){ &su, &s->map, at, at[c0], xy, pdf };
+		if (frs_sample_each(&su, &s->map, &view, FRS_SORTED, c0, c1, cap,
+		    direct_chunk, &d) < 0)
+			rc = lib_err(err, FRS_E_LIMIT);
+		else if (wave_out(b, xy, pdf, at[c1] - at[c0]) < 0)
+			rc = set_err(err, FRS_E_CALLBACK, "stopped by the callback");
+		free(cap);
+	}
+	free(xy);
+	free(pdf);
+	free(at);
+	return rc != FRS_OK ? rc : ok(err);
+}
+
 int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
     unsigned nsteps, uint64_t seed, int want_pdf, frs_point_fn fn,
     void *ctx, frs_error *err)
@@ -780,6 +967,13 @@ int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
 		return arg_err(err, "frs_draw_each: NULL callback");
 	if ((b = malloc(sizeof *b)) == NULL)
 		return set_err(err, FRS_E_NOMEM, "out of memory");
+	b->fn = fn;
+	b->ctx = ctx;
+	if (direct_ok(s, steps, nsteps)) {
+		rc = each_direct(s, steps[0], seed, want_pdf, b, err);
+		free(b);
+		return rc;
+	}
 	if ((rc = run(s, steps, nsteps, seed, 0, &su, &r, err)) != FRS_OK) {
 		free(b);
 		return rc;

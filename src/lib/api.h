@@ -47,6 +47,11 @@ struct frs_hsw {
 	struct frs_imap map;
 };
 
+/* Samples per wave of frs_draw_each with Sorted and one step (a wave:
+ * the chunks thresholded in parallel before the callback takes them);
+ * tests lower it to cross wave boundaries. */
+extern uint64_t api_wave;
+
 /* The setup of n samples with this seed, options applied; -1 after
  * frs_fail. */
 int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,

@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frscore.h"
 #include "err.h"
+#include "mem.h"
 #include "par.h"
 #include "rng.h"
 #include "tile.h"
@@ -308,19 +309,36 @@ static void sort_blocks(struct frs_prep *p, struct pair *tmp)
 		}
 }
 
-/* The position of every value (the inverse permutation), or 0 when the
- * values are not the permutation of 0 .. n - 1 that frd(5) promises
- * (then the lists are made by sort_blocks). */
-static int invert(const struct frs_matrix *m, uint32_t *inv)
+/* Whether the values are the permutation of 0 .. n - 1 that frd(5)
+ * promises (a bitmap of n bits: it stays in cache, unlike inv). */
+static int is_permutation(const struct frs_matrix *m)
 {
-	memset(inv, 0xff, m->n * sizeof *inv);
-	for (size_t i = 0; i < m->n; i++) {
+	uint64_t *seen = calloc((m->n + 63) / 64 + 1, sizeof *seen);
+	int ok = seen != NULL;
+
+	for (size_t i = 0; ok && i < m->n; i++) {
 		uint32_t v = m->v[i];
-		if (v >= m->n || inv[v] != UINT32_MAX)
-			return 0;
-		inv[v] = (uint32_t)i;
+		ok = v < m->n && !(seen[v / 64] >> (v % 64) & 1);
+		seen[v / 64] |= ok ? (uint64_t)1 << (v % 64) : 0;
 	}
-	return 1;
+	free(seen);
+	return ok;
+}
+
+struct invert {
+	const uint32_t *v;
+	uint32_t *inv;
+};
+
+/* inv[v[i]] = i over [b, e): blind stores, distinct for a permutation,
+ * so tasks may run side by side. */
+static int invert_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct invert *iv = ctx;
+
+	for (uint64_t i = b; i < e; i++)
+		iv->inv[iv->v[i]] = (uint32_t)i;
+	return 0;
 }
 
 struct scatter {
@@ -374,22 +392,26 @@ static int scatter_task(void *ctx, uint64_t b, uint64_t e)
 static int make_sorted(struct frs_prep *p, uint32_t b)
 {
 	const struct frs_matrix *m = p->m;
-	uint32_t *inv = malloc(m->n * sizeof *inv);
+	uint32_t *inv = mem_big(m->n * sizeof *inv);
 	struct pair *tmp = NULL;
 	int rc = 0;
 
 	p->block = b;
-	p->sval = malloc(m->n * sizeof *p->sval);
-	p->sidx = malloc(m->n * sizeof *p->sidx);
+	p->sval = mem_big(m->n * sizeof *p->sval);
+	p->sidx = mem_big(m->n * sizeof *p->sidx);
 	if (inv == NULL || p->sval == NULL || p->sidx == NULL)
 		rc = frs_fail("out of memory for the sorted lists");
-	else if (invert(m, inv)) {
+	else if (is_permutation(m)) {
 		uint32_t bh = m->h / b, nt = (uint32_t)frs_threads();
+		struct invert iv = { m->v, inv };
 		struct scatter sc = { p, inv, 0 };
 		nt = nt < 1 ? 1 : nt > bh ? bh : nt;
 		sc.rows = (bh + nt - 1) / nt;
-		rc = frs_parallel((bh + sc.rows - 1) / sc.rows, 1, scatter_task,
-		    &sc, NULL);
+		rc = frs_parallel(m->n, (m->n + nt - 1) / nt, invert_task, &iv,
+		    NULL);
+		if (rc == 0)
+			rc = frs_parallel((bh + sc.rows - 1) / sc.rows, 1,
+			    scatter_task, &sc, NULL);
 	} else if ((tmp = malloc((size_t)b * b * sizeof *tmp)) == NULL)
 		rc = frs_fail("out of memory for the sorted lists");
 	else
@@ -464,6 +486,11 @@ struct run {
 	unsigned nsteps;
 	int count_only;
 	struct frs_result *r;
+	/* frs_sample_each: chunks from c0, handed to fn, not kept in r */
+	uint64_t c0;
+	const uint64_t *cap;
+	frs_chunk_fn fn;
+	void *ctx;
 };
 
 /* What one pixel's work needs. */
@@ -759,41 +786,67 @@ static void pix_sorted(struct pix *px)
 		}
 }
 
+/* The map rows of chunk ci into px->c. */
+static void chunk_rows(struct pix *px, uint64_t ci)
+{
+	const struct run *run = px->run;
+	const struct frs_setup *s = run->s;
+
+	for (uint64_t py = ci * ROWS_PER_CHUNK;
+	    py < (ci + 1) * ROWS_PER_CHUNK && py < s->ih; py++)
+		for (uint64_t pxi = 0; pxi < s->iw; pxi++) {
+			double imp = run->map->v[py * s->iw + pxi];
+			if (!(imp > 0.0))
+				continue;	/* zero importance costs nothing */
+			for (unsigned k = 0; k < run->nsteps; k++)
+				frs_thr_make(&px->th[k], run->tau[k] *
+				    (imp * s->iscale), s->rule);
+			px->lim = px->th[run->nsteps - 1].lim;
+			if (px->lim == 0)
+				continue;
+			px->x0 = pxi * s->ns;
+			px->y0 = py * s->ns;
+			switch (run->algo) {
+			case FRS_NAIVE: pix_naive(px); break;
+			case FRS_STACK: pix_stack(px); break;
+			case FRS_LEVEL1: pix_level(px, 1); break;
+			case FRS_LEVEL2: pix_level(px, 2); break;
+			default: pix_sorted(px); break;
+			}
+		}
+}
+
 static int rows_task(void *ctx, uint64_t b, uint64_t e)
 {
 	const struct run *run = ctx;
-	const struct frs_setup *s = run->s;
 	struct pix px;
 
 	px.run = run;
 	for (unsigned k = 0; k < TCACHE; k++)
 		px.tc.e[k].valid = 0;
 	for (uint64_t ci = b; ci < e; ci++) {
-		px.c = &run->r->chunk[ci];
-		for (uint64_t py = ci * ROWS_PER_CHUNK;
-		    py < (ci + 1) * ROWS_PER_CHUNK && py < s->ih; py++)
-			for (uint64_t pxi = 0; pxi < s->iw; pxi++) {
-				double imp = run->map->v[py * s->iw + pxi];
-				if (!(imp > 0.0))
-					continue;	/* zero importance costs nothing */
-				for (unsigned k = 0; k < run->nsteps; k++)
-					frs_thr_make(&px.th[k], run->tau[k] *
-					    (imp * s->iscale), s->rule);
-				px.lim = px.th[run->nsteps - 1].lim;
-				if (px.lim == 0)
-					continue;
-				px.x0 = pxi * s->ns;
-				px.y0 = py * s->ns;
-				switch (run->algo) {
-				case FRS_NAIVE: pix_naive(&px); break;
-				case FRS_STACK: pix_stack(&px); break;
-				case FRS_LEVEL1: pix_level(&px, 1); break;
-				case FRS_LEVEL2: pix_level(&px, 2); break;
-				default: pix_sorted(&px); break;
-				}
-			}
-		if (px.c->failed)
+		struct frs_chunk c = { 0 };
+		int rc = 0;
+		if (run->fn == NULL) {
+			px.c = &run->r->chunk[ci];
+			chunk_rows(&px, ci);
+			if (px.c->failed)
+				return frs_fail("out of memory for the samples");
+			continue;
+		}
+		/* frs_sample_each: a store of its own, sized in advance. */
+		c.cap = run->cap != NULL ? run->cap[ci] : 0;
+		if (c.cap > 0 && (c.e = malloc(c.cap * sizeof *c.e)) == NULL)
 			return frs_fail("out of memory for the samples");
+		px.c = &c;
+		chunk_rows(&px, run->c0 + ci);
+		if (c.failed)
+			rc = frs_fail("out of memory for the samples");
+		else
+			rc = run->fn(run->ctx, run->c0 + ci, &c);
+		free(c.e);
+		if (rc < 0)
+			return -1;
 	}
 	return 0;
 }
@@ -832,19 +885,43 @@ int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
 	return 0;
 }
 
+uint64_t frs_nchunks(const struct frs_setup *s)
+{
+	return (s->ih + ROWS_PER_CHUNK - 1) / ROWS_PER_CHUNK;
+}
+
+int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_prep *p, enum frs_algo algo, uint64_t c0, uint64_t c1,
+    const uint64_t *cap, frs_chunk_fn fn, void *ctx)
+{
+	double tau;
+	struct run run = { s, map, p, algo, &tau, 1, 0, NULL, c0, cap, fn,
+	    ctx };
+
+	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), &s->n, 1, 0,
+	    &tau) < 0)
+		return -1;
+	if (c1 > frs_nchunks(s) || c0 > c1)
+		return frs_fail("frs_sample_each: chunks %llu to %llu of %llu",
+		    (unsigned long long)c0, (unsigned long long)c1,
+		    (unsigned long long)frs_nchunks(s));
+	return frs_parallel(c1 - c0, 1, rows_task, &run, NULL);
+}
+
 int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs_result *r)
 {
 	double tau[16];
-	struct run run = { s, map, p, algo, tau, nsteps, count_only, r };
+	struct run run = { s, map, p, algo, tau, nsteps, count_only, r, 0,
+	    NULL, NULL, NULL };
 	int rc;
 
 	memset(r, 0, sizeof *r);
 	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), steps,
 	    nsteps, count_only, tau) < 0)
 		return -1;
-	r->nchunk = (s->ih + ROWS_PER_CHUNK - 1) / ROWS_PER_CHUNK;
+	r->nchunk = frs_nchunks(s);
 	r->chunk = calloc(r->nchunk, sizeof *r->chunk);
 	if (r->chunk == NULL)
 		return frs_fail("out of memory");

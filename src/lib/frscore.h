@@ -142,6 +142,21 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs_result *r);
 void frs_result_free(struct frs_result *r);
+
+/*
+ * One step without a result: the chunks c0 .. c1 - 1 of the window (map
+ * rows in chunks), each handed to fn by the thread that
+ * thresholded it, then dropped; cap[c - c0], if cap is not NULL, sizes
+ * chunk c's store (its count from a count_only run makes it exact).  fn
+ * runs in parallel for different chunks.  Memory in proportion to the
+ * chunks in flight, not to the samples.
+ */
+typedef int (*frs_chunk_fn)(void *ctx, uint64_t ci, const struct frs_chunk *c);
+int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_prep *p, enum frs_algo algo, uint64_t c0, uint64_t c1,
+    const uint64_t *cap, frs_chunk_fn fn, void *ctx);
+/* The number of chunks of the window's map rows. */
+uint64_t frs_nchunks(const struct frs_setup *s);
 /* Progressive counts: 1 to 16, increasing. */
 int frs_steps_check(const uint64_t *steps, unsigned nsteps);
 /* The argument checks of frs_sample (and frs_sample_cl): the steps, the

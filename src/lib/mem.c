@@ -1,10 +1,14 @@
 #define _POSIX_C_SOURCE 200809L
+/* madvise and MADV_HUGEPAGE (Linux) are outside POSIX. */
+#define _DEFAULT_SOURCE
 #include "mem.h"
 #include "err.h"
 
 #include <errno.h>
 #include <stdlib.h>
 #include <stdio.h>
+#include <string.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 /* Parse "123", "512M", "8G", "1.5T" (binary units); 0 when not a size. */
@@ -122,4 +126,25 @@ void *mem_realloc(const char *what, void *p, uint64_t nmemb, uint64_t size)
 		frs_set_errkind(FRS_ERRKIND_MEM);
 	}
 	return q;
+}
+
+/* Big buffers in 2 MiB pages where the system offers them
+ * (transparent huge pages in "madvise" mode): a 16 MiB matrix then costs
+ * 8 page faults instead of 4096, which for the sorted lists of one run
+ * was a third of the setup. */
+#define HUGE_PAGE ((size_t)2 << 20)
+
+void *mem_big(size_t bytes)
+{
+	void *p = NULL;
+
+	if (bytes < 2 * HUGE_PAGE)
+		return malloc(bytes ? bytes : 1);
+	if (posix_memalign(&p, HUGE_PAGE, (bytes + HUGE_PAGE - 1) &
+	    ~(HUGE_PAGE - 1)) != 0)
+		return NULL;
+#ifdef MADV_HUGEPAGE
+	(void)madvise(p, bytes, MADV_HUGEPAGE);	/* a hint: failure is fine */
+#endif
+	return p;
 }

@@ -26,6 +26,9 @@ void *mem_calloc(const char *what, uint64_t nmemb, uint64_t size);
 /* realloc to nmemb * size bytes, checked the same way; on failure p is
  * untouched. */
 void *mem_realloc(const char *what, void *p, uint64_t nmemb, uint64_t size);
+/* malloc for large buffers, in huge pages where available; free() frees
+ * it.  No ceiling check (the caller's). */
+void *mem_big(size_t bytes);
 /* "12.5 GiB": bytes in the largest binary unit that keeps it >= 1. */
 const char *mem_human(uint64_t bytes, char buf[32]);
 
