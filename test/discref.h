@@ -79,4 +79,35 @@ static inline void ref_star_grid3(const double *xyz, size_t n, uint32_t s,
 	*d2 = (double)sqrtl(sum / ((long double)s * s * s));
 }
 
+/* D2^2 of the L2 star discrepancy of n points of k coordinates by
+ * Warnock's formula as written, every ordered pair, in long double with
+ * a compensated (Kahan) sum of the pairs: O(n^2), the oracle of the
+ * O(n log n) and O(n log^2 n) pair sums of disc.c and disc3.c. */
+static inline long double ref_warnock_sq(const double *x, size_t n,
+    unsigned k)
+{
+	long double s1 = 0, s2 = 0, c = 0, t3 = 1, t2 = 1;
+
+	for (unsigned d = 0; d < k; d++)
+		t3 /= 3, t2 /= 2;
+	for (size_t i = 0; i < n; i++) {
+		long double p = 1;
+		for (unsigned d = 0; d < k; d++) {
+			long double v = x[k * i + d];
+			p *= 1 - v * v;
+		}
+		s1 += p;
+		for (size_t j = 0; j < n; j++) {
+			long double q = 1, y, t;
+			for (unsigned d = 0; d < k; d++)
+				q *= 1 - fmaxl(x[k * i + d], x[k * j + d]);
+			y = q - c;
+			t = s2 + y;
+			c = (t - s2) - y;
+			s2 = t;
+		}
+	}
+	return t3 - 2 * t2 * s1 / n + s2 / ((long double)n * n);
+}
+
 #endif
