@@ -440,33 +440,66 @@ void disc_ctx_free(struct disc_ctx *c)
 	free(c);
 }
 
+/* D2 and Dinf of star or rect, each unless left out. */
+static int set_box(const struct disc_opts *o, const double *xy, size_t n,
+    int par, struct disc_result *r)
+{
+	int star = o->cls == DISC_STAR;
+
+	if (!o->no_d2) {
+		r->d2 = o->exact_d2 ? (star ? disc_star_l2_exact(xy, n) :
+		    disc_rect_l2_exact(xy, n)) : (star ?
+		    disc_star_l2_grid(xy, n, o->grid) :
+		    disc_rect_l2_grid(xy, n, o->grid));
+		if (r->d2 < 0)
+			return -1;
+	}
+	if (o->no_dinf)
+		return 0;
+	if (o->exact_dinf)
+		return star ? disc_star_dinf_exact(xy, n, &r->dinf) :
+		    disc_rect_dinf_exact(xy, n, par, &r->dinf);
+	return star ? disc_star_dinf_grid(xy, n, o->grid, par, &r->dinf) :
+	    disc_rect_dinf_grid(xy, n, o->grid, par, &r->dinf);
+}
+
+/* The values left out are NAN, also where they came for free. */
+static void mask(const struct disc_opts *o, struct disc_result *r)
+{
+	if (o->no_d2)
+		r->d2 = NAN;
+	if (o->no_dinf)
+		r->dinf = NAN;
+}
+
 int disc_set(struct disc_ctx *c, const double *xy, size_t n, int par,
     struct disc_result *r)
 {
 	const struct disc_opts *o = &c->o;
+	int rc;
 
 	if (n == 0)
 		return frs_fail("no points");
 	switch (o->cls) {
 	case DISC_STAR:
-		r->d2 = o->exact_d2 ? disc_star_l2_exact(xy, n) :
-		    disc_star_l2_grid(xy, n, o->grid);
-		if (r->d2 < 0)
-			return -1;
-		return o->exact_dinf ? disc_star_dinf_exact(xy, n, &r->dinf) :
-		    disc_star_dinf_grid(xy, n, o->grid, par, &r->dinf);
 	case DISC_RECT:
-		r->d2 = o->exact_d2 ? disc_rect_l2_exact(xy, n) :
-		    disc_rect_l2_grid(xy, n, o->grid);
-		if (r->d2 < 0)
-			return -1;
-		return o->exact_dinf ? disc_rect_dinf_exact(xy, n, par, &r->dinf) :
-		    disc_rect_dinf_grid(xy, n, o->grid, par, &r->dinf);
+		rc = set_box(o, xy, n, par, r);
+		break;
 	case DISC_HALF:
-		return disc_half(xy, n, o->grid, par, r);
+		rc = disc_half(xy, n, o->grid, par, r);
+		break;
 	default:
-		return disc_shapes_run(c->sh, xy, n, par, r);
+		rc = disc_shapes_run(c->sh, xy, n, par, r);
 	}
+	mask(o, r);
+	return rc;
+}
+
+/* Whether a 3-D set takes the grid: for a D2 or a Dinf that is wanted
+ * and not exact. */
+static int grid3_needed(const struct disc_opts *o)
+{
+	return (!o->no_d2 && !o->exact_d2) || (!o->no_dinf && !o->exact_dinf);
 }
 
 int disc_check(const struct disc_opts *o, unsigned dims, size_t n)
@@ -481,16 +514,16 @@ int disc_check(const struct disc_opts *o, unsigned dims, size_t n)
 	if (o->cls != DISC_STAR)
 		return frs_fail("class %s is 2-D only; 3-D sets take -c star",
 		    disc_class_name(o->cls));
-	if (o->exact_d2 && n > DISC3_MAX_EXACT_D2)
-		return frs_fail("%zu points: the closed-form 3-D D2 takes "
-		    "O(n^2) time and is limited to %d points; leave out "
-		    "--exact", n, DISC3_MAX_EXACT_D2);
-	if (o->exact_dinf && n > DISC3_MAX_EXACT_N)
+	if (o->exact_d2 && !o->no_d2 && n > DISC3_MAX_EXACT_D2)
+		return frs_fail("%zu points: the closed-form 3-D D2 uses "
+		    "32-bit ranks and is limited to %zu points", n,
+		    DISC3_MAX_EXACT_D2);
+	if (o->exact_dinf && !o->no_dinf && n > DISC3_MAX_EXACT_N)
 		return frs_fail("%zu points: the exact 3-D Dinf takes O(n^3) "
 		    "time and is limited to %d points; use --grid S (with "
-		    "--exact: exact D2, Dinf on the grid)", n,
+		    "--exact: exact D2, Dinf on the grid) or --d2-only", n,
 		    DISC3_MAX_EXACT_N);
-	if (!o->exact_dinf && (o->grid < 2 || o->grid > DISC3_MAX_GRID))
+	if (grid3_needed(o) && (o->grid < 2 || o->grid > DISC3_MAX_GRID))
 		return frs_fail("--grid %u: a 3-D grid has s^3 boxes and takes "
 		    "O(s^3) time; 2 to %d allowed", o->grid, DISC3_MAX_GRID);
 	return 0;
@@ -504,17 +537,20 @@ double disc_tests_dims(const struct disc_opts *o, unsigned dims)
 }
 
 /* 3-D star: the grid gives D2 and Dinf in one sweep; --exact replaces
- * D2, and without a grid Dinf too. */
+ * D2, and without a grid Dinf too; a value left out is not computed
+ * unless the grid gives it anyway. */
 static int set3(const struct disc_opts *o, const double *xyz, size_t n,
     int par, struct disc_result *r)
 {
-	if (!o->exact_dinf && disc3_star_grid(xyz, n, o->grid, par, r) < 0)
+	if (grid3_needed(o) && disc3_star_grid(xyz, n, o->grid, par, r) < 0)
 		return -1;
-	if (o->exact_dinf && disc3_star_dinf_exact(xyz, n, par, &r->dinf) < 0)
+	if (o->exact_dinf && !o->no_dinf &&
+	    disc3_star_dinf_exact(xyz, n, par, &r->dinf) < 0)
 		return -1;
-	if (o->exact_d2 &&
+	if (o->exact_d2 && !o->no_d2 &&
 	    (r->d2 = disc_star_l2_exact_k(xyz, n, 3, par)) < 0)
 		return -1;
+	mask(o, r);
 	return 0;
 }
 
