@@ -111,7 +111,7 @@ for dn in $(for e in $Z2; do echo 2:$e; done; for e in $Z3; do echo 3:$e; done);
 		    'BEGIN { print r == "" ? 0 : r * (n / a) ^ 2 }')
 		if awk -v p="$pred" -v l=$SCIPYLIM 'BEGIN { exit !(p <= l) }'; then
 			"$GEN" -q -d $d -k halton -n $n -S 1 -T -o "$T/z.txt"
-			reps=$(awk -v p="$pred" 'BEGIN { print p > 5 ? 1 : 2 }')
+			reps=$(awk -v p="$pred" 'BEGIN { print (p > 5 ? 1 : 2) }')
 			set -- $(python3 "$T/sp.py" "$T/z.txt" $d $reps)
 			sp=$1 spv=$2 sprev=$1 snprev=$n
 		else
