@@ -1,5 +1,7 @@
 #!/bin/sh
-# discrepancy: what accuracy costs.  (a) the exact L2 star discrepancy
+# discrepancy: what accuracy costs.  (0) the exact L2 star D2 alone, 2-D
+# and 3-D, against scipy in-process and against commit 034c211 built
+# beside it (scripts/benchlib.sh: baseline_build); (a) the exact L2 star discrepancy
 # against the brute-force reference (test/ref_disc) and scipy's published
 # timings, and the star grid against the reference's summed-area table,
 # (b) per class D2 and Dinf against seconds per set, at the
@@ -55,9 +57,118 @@ field() { tail -n 1 "$1" | cut -f "$2"; }
 # Points in one of M sets of FILE (regular and jittered round n).
 perset() { echo $(( ($(wc -c <"$1") - 32) / 16 / $2 )); }
 
+# ---------------------------------------------------------------- (0)
+# The exact L2 star D2 alone (issue 22): ours (--exact --d2-only) against
+# scipy.stats.qmc.discrepancy(method='L2-star', workers=1) timed inside
+# Python on the same points, and against the programs of BASE, the
+# commit the issue starts from, built beside ours (baseline_build).
+BASE=034c211
+SCIPYLIM=60	# scipy only where predicted (n^2) to take up to SCIPYLIM s
+BASELIM=60	# the baseline likewise (its D2 is O(n^2) in 3-D)
+cat >"$T/sp.py" <<'PY'
+import sys, time
+try:
+    import numpy as np
+    from scipy.stats import qmc
+except Exception:
+    print("unavailable")
+    sys.exit(0)
+if sys.argv[1] == "probe":
+    print("ok")
+    sys.exit(0)
+x = np.loadtxt(sys.argv[1], comments="#", ndmin=2)[:, :int(sys.argv[2])]
+best = None
+for _ in range(int(sys.argv[3])):
+    t = time.perf_counter()
+    v = qmc.discrepancy(x, method="L2-star", workers=1)
+    t = time.perf_counter() - t
+    best = t if best is None or t < best else best
+print("%.6f %.17g" % (best, v))
+PY
+if BB=$(baseline_build $BASE); then BDISC=$BB/discrepancy; else BDISC=""; fi
+SCIPY=$(python3 "$T/sp.py" probe 2>/dev/null || echo unavailable)
+echo "discrepancy: exact L2 star D2 alone, halton points, one thread, whole process"
+echo "(ours: --exact --d2-only -j 1; scipy: qmc.discrepancy L2-star workers=1,"
+echo " in-process, the best of 2 (1 above 5 s); base: $BASE built beside ours,"
+echo " which has no --d2-only: base_exact is its --exact (D2 and the exact Dinf),"
+echo " base_d2 its --exact --grid 2 (D2 and a 2x2 grid's Dinf, its cheapest D2)"
+[ "$SCIPY" = unavailable ] && echo " scipy not available: its columns are left out"
+[ -z "$BDISC" ] && echo " the baseline did not build: its columns are left out"
+printf '%-4s %-8s %9s %10s %9s %11s %10s %8s %-14s %-6s %9s\n' dims n ours_s \
+    scipy_s vs_scipy base_exact_s base_d2_s vs_base target result D2_vs_sp
+sprev="" snprev="" bprev="" bnprev=""
+if [ -n "${BENCH_QUICK:-}" ]; then Z2="16" Z3="12 16"; else Z2="16 20" Z3="12 16 20"; fi
+for dn in $(for e in $Z2; do echo 2:$e; done; for e in $Z3; do echo 3:$e; done); do
+	d=${dn%:*} n=$((1 << ${dn#*:}))
+	f=$T/z.pts
+	"$GEN" -q -d $d -k halton -n $n -S 1 -o "$f"
+	timerep "$T/o" "$DISC" -q -j 1 --exact --d2-only "$f"
+	ours=$SEC d2=$(field "$T/o" 4)
+	if [ "$d" != "${dprev:-}" ]; then sprev="" snprev="" dprev=$d; fi
+	sp=- spv=""
+	if [ "$SCIPY" != unavailable ]; then
+		pred=$(awk -v r="$sprev" -v a="$snprev" -v n=$n \
+		    'BEGIN { print r == "" ? 0 : r * (n / a) ^ 2 }')
+		if awk -v p="$pred" -v l=$SCIPYLIM 'BEGIN { exit !(p <= l) }'; then
+			"$GEN" -q -d $d -k halton -n $n -S 1 -T -o "$T/z.txt"
+			reps=$(awk -v p="$pred" 'BEGIN { print (p > 5 ? 1 : 2) }')
+			set -- $(python3 "$T/sp.py" "$T/z.txt" $d $reps)
+			sp=$1 spv=$2 sprev=$1 snprev=$n
+		else
+			sp="~$(awk -v p="$pred" 'BEGIN { printf "%.0f", p }')"
+		fi
+	fi
+	be=- bd=-
+	if [ -n "$BDISC" ]; then
+		if { [ $d = 2 ] && [ $n -le 65536 ]; } || { [ $d = 3 ] && [ $n -le 4096 ]; }; then
+			timerep "$T/b" "$BDISC" -q -j 1 --exact "$f"
+			be=$SEC
+		fi
+		pred=$(awk -v r="$bprev" -v a="$bnprev" -v n=$n -v d=$d \
+		    'BEGIN { print r == "" || d == 2 ? 0 : r * (n / a) ^ 2 }')
+		if awk -v p="$pred" -v l=$BASELIM 'BEGIN { exit !(p <= l) }' &&
+		    "$BDISC" -q -j 1 --exact --grid 2 "$f" >"$T/b" 2>/dev/null; then
+			timerep "$T/b" "$BDISC" -q -j 1 --exact --grid 2 "$f"
+			bd=$SEC
+			[ $d = 3 ] && bprev=$SEC bnprev=$n
+		else
+			# refused at once (its limit), or too slow to run
+			rc=0
+			timeout 5 "$BDISC" -q -j 1 --exact --grid 2 "$f" \
+			    >/dev/null 2>&1 || rc=$?
+			if [ $rc = 1 ]; then bd=refused; else
+				bd="~$(awk -v p="$pred" 'BEGIN { printf "%.0f", p }')"
+			fi
+		fi
+	fi
+	case $d:$n in
+	2:65536) tg="<=0.2,>=30x" ;;
+	2:1048576) tg="<5" ;;
+	*) tg="-" ;;
+	esac
+	awk -v d=$d -v n=$n -v o="$ours" -v sp="$sp" -v spv="$spv" -v be="$be" \
+	    -v bd="$bd" -v tg="$tg" -v d2="$d2" 'BEGIN {
+		num = "^[0-9.]+$"
+		vs = sp ~ num ? sprintf("%.0f", sp / o) : (sp ~ /^~/ ? "~" sprintf("%.0f", substr(sp, 2) / o) : "-")
+		b = bd ~ num ? bd : (be ~ num ? be : "")
+		vb = b == "" ? "-" : sprintf("%.0f", b / o)
+		if (bd ~ /^~/) vb = "~" sprintf("%.0f", substr(bd, 2) / o)
+		res = "-"
+		if (tg == "<5") res = o < 5 ? "PASS" : "MISS"
+		if (tg ~ /^<=0.2/) res = (o <= 0.2 && (sp !~ num || sp / o >= 30)) ? "PASS" : "MISS"
+		rel = spv == "" ? "-" : sprintf("%.1e", (d2 - spv) / spv)
+		printf "%-4d %-8d %9.4f %10s %9s %11s %10s %8s %-14s %-6s %9s\n", d, n, o, sp, vs, be, bd, vb, tg, res, rel
+	}'
+done
+echo "(vs_scipy, vs_base: how many times faster than scipy and than base's"
+echo " base_d2, or base_exact where base_d2 is missing; ~: predicted from the"
+echo " last run, n^2, not run; refused: base's limit; D2_vs_sp: ours, 9 digits,"
+echo " against scipy's value)"
+
+echo
 # ---------------------------------------------------------------- (a)
 echo "discrepancy: exact L2 star discrepancy (Warnock), one thread, halton points"
-echo "(ours: -c star --exact --grid 2 -j 1, D2 alone, O(n log n); ref: ref_disc"
+echo "(ours: -c star --exact --d2-only -j 1, O(n log n); ref: ref_disc"
 echo " warnock, the O(n^2) double loop; scipy: qmc.discrepancy L2-star, published)"
 printf '%-8s %10s %10s %9s %9s %8s %9s %-6s %10s\n' n ours_s ref_s speedup \
     scipy_s target vs_scipy result D2_reldiff
@@ -66,7 +177,7 @@ for e in $AN; do
 	n=$((1 << e))
 	f=$T/a.pts
 	"$GEN" -q -k halton -n $n -S 1 -o "$f"
-	timerep "$T/o" "$DISC" -q -j 1 -c star --exact --grid 2 "$f"
+	timerep "$T/o" "$DISC" -q -j 1 -c star --exact --d2-only "$f"
 	ours=$SEC
 	d2=$(field "$T/o" 4)
 	# The reference is O(n^2): predict it from the last size run.

@@ -50,3 +50,34 @@ uniform_frs() {
 		}' "$_u/rad"
 	rm -rf "$_u"
 }
+
+# baseline_build COMMIT [VARIANT]: the programs of COMMIT (a commit, tag
+# or branch of this repository), built once with its own Makefile from a
+# git archive into build/base/HASH/ (VARIANT bench by default, as make
+# bench builds ours), and its bin directory printed.  Later calls, from
+# any benchmark, reuse the build; a build that failed half-way is redone
+# (the stamp comes last).  Notes and errors go to standard error.
+baseline_build() {
+	_bc=$1 _bv=${2:-bench}
+	_btop=$(git rev-parse --show-toplevel 2>/dev/null ||
+	    { cd "$(dirname "$0")/.." && pwd; })
+	_bh=$(git -C "$_btop" rev-parse --short=12 "$_bc^{commit}") || {
+		echo "baseline_build: $_bc: not a commit" >&2; return 1; }
+	_bd=$_btop/build/base/$_bh
+	if [ ! -e "$_bd/built-$_bv" ]; then
+		echo "baseline_build: building $_bc ($_bh) in $_bd" >&2
+		rm -rf "$_bd/src" && mkdir -p "$_bd/src" &&
+		    git -C "$_btop" archive "$_bh" | tar -x -C "$_bd/src" || {
+			echo "baseline_build: $_bc: git archive failed" >&2
+			return 1
+		}
+		make -C "$_bd/src" -j"$(nproc)" VARIANT="$_bv" progs \
+		    >"$_bd/build-$_bv.log" 2>&1 || {
+			echo "baseline_build: $_bc: make failed; see" \
+			    "$_bd/build-$_bv.log" >&2
+			return 1
+		}
+		: >"$_bd/built-$_bv"
+	fi
+	echo "$_bd/src/build/$_bv/bin"
+}

@@ -19,6 +19,7 @@
 
 static const char usage[] =
     "usage: discrepancy [-c CLASS] [--grid S] [--shapes K] [--exact]\n"
+    "                   [--d2-only | --dinf-only]\n"
     "                   [--sets N] [--per-set | --group n|file|all]\n"
     "                   [-S SEED] [-j N] [-q]\n"
     "                   [-o FILE] FILE...\n"
@@ -33,8 +34,11 @@ static const char usage[] =
     "                    (default 9000000)\n"
     "      --exact       closed-form D2 (star: Warnock; rect: all boxes)\n"
     "                    and exact Dinf over the critical boxes (star\n"
-    "                    O(n^1.5), rect O(n^3)); 3-D star: D2 O(n^2),\n"
-    "                    Dinf O(n^3), at most 2048 points\n"
+    "                    O(n^1.5), rect O(n^3)); 3-D star: D2\n"
+    "                    O(n log^2 n), Dinf O(n^3), at most 4096 points\n"
+    "      --d2-only     D2 alone (with --exact: no exact Dinf);\n"
+    "                    the Dinf columns read nan\n"
+    "      --dinf-only   Dinf alone; the D2 columns read nan\n"
     "      --sets N      split every file into sets of N points\n"
     "      --per-set     a row per set instead of one per point count\n"
     "      --group G     a row per point count (n, default), per input\n"
@@ -47,13 +51,15 @@ static const char usage[] =
     "  -h, --help        this help;  --version  the version\n";
 
 enum { OPT_GRID = OPT_FIRST_PRIVATE, OPT_SHAPES, OPT_EXACT, OPT_SETS,
-    OPT_PER_SET, OPT_GROUP };
+    OPT_PER_SET, OPT_GROUP, OPT_D2_ONLY, OPT_DINF_ONLY };
 
 static const struct option longopts[] = {
 	{ "class", required_argument, NULL, 'c' },
 	{ "grid", required_argument, NULL, OPT_GRID },
 	{ "shapes", required_argument, NULL, OPT_SHAPES },
 	{ "exact", no_argument, NULL, OPT_EXACT },
+	{ "d2-only", no_argument, NULL, OPT_D2_ONLY },
+	{ "dinf-only", no_argument, NULL, OPT_DINF_ONLY },
 	{ "sets", required_argument, NULL, OPT_SETS },
 	{ "per-set", no_argument, NULL, OPT_PER_SET },
 	{ "group", required_argument, NULL, OPT_GROUP },
@@ -77,19 +83,32 @@ static int one_set(void *arg, uint64_t b, uint64_t e)
 	return 0;
 }
 
+/* The method, and ":D2" or ":Dinf" when only that one was computed. */
 static void method(const struct disc_opts *o, char *buf, size_t len)
 {
+	const char *only = o->no_dinf ? ":D2" : o->no_d2 ? ":Dinf" : "";
+
 	if (o->cls == DISC_QUAD || o->cls == DISC_CIRCLE)
-		snprintf(buf, len, "random%llu",
-		    (unsigned long long)o->shapes);
+		snprintf(buf, len, "random%llu%s",
+		    (unsigned long long)o->shapes, only);
 	else if (o->cls == DISC_HALF)
-		snprintf(buf, len, "border%u", o->grid);
-	else if (o->exact_d2 && o->exact_dinf)
-		snprintf(buf, len, "exact");
+		snprintf(buf, len, "border%u%s", o->grid, only);
+	else if (o->exact_d2 && (o->exact_dinf || o->no_dinf))
+		snprintf(buf, len, "exact%s", only);
 	else if (o->exact_d2)
 		snprintf(buf, len, "exact+grid%u", o->grid);
 	else
-		snprintf(buf, len, "grid%u", o->grid);
+		snprintf(buf, len, "grid%u%s", o->grid, only);
+}
+
+/* A discrepancy, or nan for one left out (printf's "nan" for NAN is
+ * not promised by C for every libc; the table's is). */
+static void put_value(FILE *fp, double v, int skipped)
+{
+	if (skipped)
+		fputs("nan", fp);
+	else
+		fprintf(fp, "%.9g", v);
 }
 
 /* File names in a table: tabs and newlines would break its columns. */
@@ -105,9 +124,12 @@ static void per_set_rows(FILE *fp, const struct disc_opts *o,
 {
 	fprintf(fp, "class\tn\tset\tD2\tDinf\tshapes\tmethod\tfile\n");
 	for (size_t i = 0; i < nsets; i++) {
-		fprintf(fp, "%s\t%zu\t%zu\t%.9g\t%.9g\t%.17g\t%s\t",
-		    disc_class_name(o->cls), sets[i].n, i, res[i].d2,
-		    res[i].dinf, tests, meth);
+		fprintf(fp, "%s\t%zu\t%zu\t", disc_class_name(o->cls),
+		    sets[i].n, i);
+		put_value(fp, res[i].d2, o->no_d2);
+		fputc('\t', fp);
+		put_value(fp, res[i].dinf, o->no_dinf);
+		fprintf(fp, "\t%.17g\t%s\t", tests, meth);
 		put_name(fp, sets[i].file);
 		fputc('\n', fp);
 	}
@@ -143,14 +165,21 @@ static void group_rows(FILE *fp, const struct disc_opts *o, enum pt_group g,
 				var += c1 * c1;
 				done[j] = 1;
 			}
-		fprintf(fp, "%s\t%.10g\t%.0f\t%.9g\t", disc_class_name(o->cls),
-		    sn / m, m, s1);
-		if (m > 1)
+		fprintf(fp, "%s\t%.10g\t%.0f\t", disc_class_name(o->cls),
+		    sn / m, m);
+		put_value(fp, s1, o->no_d2);
+		fputc('\t', fp);
+		if (o->no_d2)
+			fputs("nan", fp);
+		else if (m > 1)
 			fprintf(fp, "%.3g", sqrt(var / (m - 1) / m));
 		else
 			fputc('-', fp);
-		fprintf(fp, "\t%.9g\t%.9g\t%.17g\t%s\n", smax, sinf / m,
-		    tests, meth);
+		fputc('\t', fp);
+		put_value(fp, smax, o->no_dinf);
+		fputc('\t', fp);
+		put_value(fp, sinf / m, o->no_dinf);
+		fprintf(fp, "\t%.17g\t%s\n", tests, meth);
 	}
 	free(done);
 }
@@ -165,6 +194,20 @@ static void check_sets(const struct disc_opts *o, const struct pt_set *sets,
 			frs_fail_context(sets[i].file);
 			cli_die_lib();
 		}
+}
+
+/* --d2-only and --dinf-only: one of them, and not where the grid of
+ * --exact --grid would give only what is left out, or --exact nothing. */
+static void only_checks(const struct disc_opts *o, int have_grid)
+{
+	if (o->no_d2 && o->no_dinf)
+		cli_usage_error("--d2-only and --dinf-only exclude each other");
+	if (o->no_dinf && o->exact_d2 && have_grid)
+		cli_usage_error("--d2-only: --grid with --exact is the grid of "
+		    "Dinf, which --d2-only leaves out; drop --grid");
+	if (o->no_d2 && o->exact_d2 && have_grid)
+		cli_usage_error("--dinf-only: --exact with --grid is the exact "
+		    "D2, which --dinf-only leaves out; drop --exact");
 }
 
 int main(int argc, char **argv)
@@ -201,6 +244,8 @@ int main(int argc, char **argv)
 			have_shapes = 1;
 			break;
 		case OPT_EXACT: o.exact_d2 = 1; break;
+		case OPT_D2_ONLY: o.no_dinf = 1; break;
+		case OPT_DINF_ONLY: o.no_d2 = 1; break;
 		case OPT_SETS:
 			per = (size_t)cli_u64("--sets", optarg, 1,
 			    (uint64_t)1 << 40);
@@ -231,6 +276,7 @@ int main(int argc, char **argv)
 	if (o.cls == DISC_RECT && have_grid && o.grid > DISC_MAX_RECT_GRID)
 		cli_usage_error("--grid: at most %d for rect",
 		    DISC_MAX_RECT_GRID);
+	only_checks(&o, have_grid);
 	o.exact_dinf = o.exact_d2 && !have_grid && disc_has_exact_dinf(o.cls);
 	if (!have_grid)
 		o.grid = o.cls == DISC_RECT ? DISC_RECT_GRID :
@@ -271,7 +317,7 @@ int main(int argc, char **argv)
 	disc_ctx_free(run.ctx);
 
 	method(&o, meth, sizeof meth);
-	tests = o.exact_d2 && o.exact_dinf ? 0.0 :
+	tests = o.exact_d2 && (o.exact_dinf || o.no_dinf) ? 0.0 :
 	    disc_tests_dims(&o, ps.dims);
 	if (outfile_open(&of, cli.out, 0) < 0)
 		cli_die_lib();

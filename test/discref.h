@@ -79,4 +79,86 @@ static inline void ref_star_grid3(const double *xyz, size_t n, uint32_t s,
 	*d2 = (double)sqrtl(sum / ((long double)s * s * s));
 }
 
+/* Sets for the pair-sum tests, n points of k coordinates in x: kind 0
+ * uniform random, 1 Halton-like (radical inverses, bases 2, 3, 5, 7,
+ * shifted by the index seed), 2 ties (coordinates in eighths: equal
+ * values, duplicate points, points on 0), 3 the hard ones together:
+ * random with every third point's first coordinate 0, every fourth
+ * point a copy of the one before, and the largest double below 1.
+ * splitmix64 for the random numbers: nothing shared with the library. */
+static inline double ref_u01(uint64_t *s)
+{
+	uint64_t z = (*s += 0x9e3779b97f4a7c15u);
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+	return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
+}
+
+static inline double ref_radical(uint64_t i, unsigned b)
+{
+	double f = 1, r = 0;
+	for (; i > 0; i /= b) {
+		f /= b;
+		r += f * (double)(i % b);
+	}
+	return r;
+}
+
+static inline void ref_pair_set(double *x, size_t n, unsigned k, int kind,
+    uint64_t seed)
+{
+	static const unsigned base[] = { 2, 3, 5, 7 };
+
+	for (size_t i = 0; i < n; i++)
+		for (unsigned d = 0; d < k; d++) {
+			double v = ref_u01(&seed);
+			if (kind == 1)
+				v = ref_radical(i + seed % 97, base[d % 4]);
+			else if (kind == 2)
+				v = floor(v * 8) / 8;
+			x[k * i + d] = v;
+		}
+	if (kind != 3)
+		return;
+	for (size_t i = 0; i < n; i++) {
+		if (i % 3 == 0)
+			x[k * i] = 0.0;
+		if (i % 4 == 3)
+			for (unsigned d = 0; d < k; d++)
+				x[k * i + d] = x[k * (i - 1) + d];
+	}
+	x[k - 1] = nextafter(1.0, 0.0);
+}
+
+/* D2^2 of the L2 star discrepancy of n points of k coordinates by
+ * Warnock's formula as written, every ordered pair, in long double with
+ * a compensated (Kahan) sum of the pairs: O(n^2), the oracle of the
+ * O(n log n) and O(n log^2 n) pair sums of disc.c and disc3.c. */
+static inline long double ref_warnock_sq(const double *x, size_t n,
+    unsigned k)
+{
+	long double s1 = 0, s2 = 0, c = 0, t3 = 1, t2 = 1;
+
+	for (unsigned d = 0; d < k; d++)
+		t3 /= 3, t2 /= 2;
+	for (size_t i = 0; i < n; i++) {
+		long double p = 1;
+		for (unsigned d = 0; d < k; d++) {
+			long double v = x[k * i + d];
+			p *= 1 - v * v;
+		}
+		s1 += p;
+		for (size_t j = 0; j < n; j++) {
+			long double q = 1, y, t;
+			for (unsigned d = 0; d < k; d++)
+				q *= 1 - fmaxl(x[k * i + d], x[k * j + d]);
+			y = q - c;
+			t = s2 + y;
+			c = (t - s2) - y;
+			s2 = t;
+		}
+	}
+	return t3 - 2 * t2 * s1 / n + s2 / ((long double)n * n);
+}
+
 #endif

@@ -89,6 +89,41 @@ for c in "star --grid 500" "rect --grid 60" "half --grid 60" \
 	    ok "halton < random ($c)" || nok "halton $h >= random $r ($c)"
 done
 
+# --d2-only, --dinf-only: the value of the full run, the other column
+# nan, the method saying which.
+for c in "star --exact" "rect --exact" "star --grid 300" "rect --grid 40"; do
+	discrepancy -c $c "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/full"
+	discrepancy -c $c --d2-only "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/d2o"
+	discrepancy -c $c --dinf-only "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/dio"
+	m=$(col method "$T/full")
+	[ "$(cut -f 1-5 "$T/full")" = "$(cut -f 1-5 "$T/d2o")" ] &&
+	    [ "$(col Dinf "$T/d2o" 2) $(col Dinf_mean "$T/d2o" 2)" = "nan nan" ] &&
+	    [ "$(col method "$T/d2o")" = "$m:D2" ] &&
+	    ok "--d2-only: D2 of the full run, Dinf nan ($c)" ||
+	    nok "--d2-only ($c): $(sed -n 2p "$T/d2o"), full $(sed -n 2p "$T/full")"
+	[ "$(cut -f 6-7 "$T/full")" = "$(cut -f 6-7 "$T/dio")" ] &&
+	    [ "$(col D2 "$T/dio" 2) $(col D2_se "$T/dio" 2)" = "nan nan" ] &&
+	    [ "$(col method "$T/dio")" = "$m:Dinf" ] &&
+	    ok "--dinf-only: Dinf of the full run, D2 nan ($c)" ||
+	    nok "--dinf-only ($c): $(sed -n 2p "$T/dio"), full $(sed -n 2p "$T/full")"
+done
+[ "$(col shapes "$T/d2o")" = 608400 ] && ok "--d2-only: the grid's shapes" ||
+    nok "--d2-only shapes $(col shapes "$T/d2o")"
+discrepancy --exact --d2-only --per-set "$T/h.pts" >"$T/d2p"
+[ "$(col Dinf "$T/d2p")" = nan ] && [ "$(col shapes "$T/d2p")" = 0 ] &&
+    [ "$(col method "$T/d2p")" = exact:D2 ] && ok "--d2-only --per-set" ||
+    nok "--d2-only --per-set: $(sed -n 2p "$T/d2p")"
+# the classes that find both at once: the value left out all the same
+discrepancy -c half --grid 50 --d2-only "$T/h.pts" >"$T/hd"
+[ "$(col Dinf "$T/hd")" = nan ] && [ "$(col method "$T/hd")" = border50:D2 ] &&
+    ok "--d2-only with half" || nok "--d2-only half: $(sed -n 2p "$T/hd")"
+expect_fail "--d2-only --dinf-only" 2 "--d2-only and --dinf-only exclude each other" - \
+    discrepancy --d2-only --dinf-only "$T/h.pts"
+expect_fail "--exact --grid --d2-only" 2 "--d2-only: --grid with --exact" - \
+    discrepancy --exact --grid 30 --d2-only "$T/h.pts"
+expect_fail "--exact --grid --dinf-only" 2 "--dinf-only: --exact with --grid" - \
+    discrepancy --exact --grid 30 --dinf-only "$T/h.pts"
+
 # -o: atomic, nothing left on failure.
 check "-o FILE" discrepancy -c star --grid 100 -o "$T/out.tsv" "$T/h.pts"
 [ -s "$T/out.tsv" ] && ok "-o wrote the table" || nok "-o wrote the table"
@@ -257,6 +292,16 @@ expect_fail "3-D exact Dinf above 4096 points" 1 \
     "c4097.txt: 4097 points: the exact 3-D Dinf" "$T/o3d" \
     discrepancy --exact -o "$T/o3d" "$T/c4097.txt"
 grep -q "use --grid" "$T/err" && ok "the limit suggests --grid" || nok "limit message"
+# --d2-only: past the exact Dinf's limit, the D2 of --exact --grid
+check "3-D 4097 points, --exact --d2-only" discrepancy --exact --d2-only \
+    -o "$T/o3o" "$T/c4097.txt"
+discrepancy --exact --grid 20 "$T/c4097.txt" >"$T/o3g2"
+[ "$(col D2 "$T/o3o")" = "$(col D2 "$T/o3g2")" ] && [ "$(col Dinf "$T/o3o")" = nan ] &&
+    [ "$(col method "$T/o3o")" = exact:D2 ] && ok "3-D --exact --d2-only: D2, Dinf nan" ||
+    nok "3-D --d2-only: $(sed -n 2p "$T/o3o"), exact+grid $(sed -n 2p "$T/o3g2")"
+discrepancy --exact --dinf-only "$T/c64.txt" >"$T/o3i"
+[ "$(col Dinf "$T/o3i")" = "$(col Dinf "$T/e3")" ] && [ "$(col D2 "$T/o3i")" = nan ] &&
+    ok "3-D --exact --dinf-only" || nok "3-D --dinf-only: $(sed -n 2p "$T/o3i")"
 check "3-D 4097 points, --exact --grid" discrepancy --exact --grid 20 -o "$T/o3g" "$T/c4097.txt"
 expect_fail "3-D --grid 1001" 1 "c64.txt: --grid 1001" "$T/o3d" \
     discrepancy --grid 1001 -o "$T/o3d" "$T/c64.txt"

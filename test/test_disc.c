@@ -122,6 +122,53 @@ static void star_warnock(void **state)
 	}
 }
 
+/* The O(n log n) sweep against Warnock's formula as written
+ * (discref.h), to 1e-14 on D2^2 (a difference of terms near 0.1): the
+ * sets of ref_pair_set, small odd n, and sizes on both sides of the
+ * radix sort's insertion-sort cut (256). */
+static void star_l2_oracle(void **state)
+{
+	static const size_t ns[] = { 1, 2, 3, 5, 7, 33, 255, 256, 257, 700 };
+	(void)state;
+	for (int kind = 0; kind < 4; kind++)
+		for (size_t t = 0; t < sizeof ns / sizeof *ns; t++) {
+			size_t n = ns[t];
+			double *xy = malloc(2 * n * sizeof *xy), d;
+			long double r;
+			assert_non_null(xy);
+			ref_pair_set(xy, n, 2, kind, 7 + t);
+			d = disc_star_l2_exact(xy, n);
+			r = ref_warnock_sq(xy, n, 2);
+			if (fabsl((long double)d * d - r) > 1e-14L)
+				fail_msg("kind %d n %zu: D2^2 %.17g, oracle %.17Lg",
+				    kind, n, d * d, r);
+			free(xy);
+		}
+}
+
+/* disc_order: ascending, equal values by index, -0 equal to +0; the
+ * radix sort and the small-n path alike. */
+static void order_stable(void **state)
+{
+	static const size_t ns[] = { 1, 5, 255, 256, 3000 };
+	(void)state;
+	for (size_t t = 0; t < sizeof ns / sizeof *ns; t++) {
+		size_t n = ns[t];
+		double *v = malloc(n * sizeof *v);
+		uint32_t *o = malloc(n * sizeof *o);
+		uint64_t seed = t;
+		assert_non_null(v), assert_non_null(o);
+		for (size_t i = 0; i < n; i++)
+			v[i] = i % 7 == 0 ? (i % 2 ? -0.0 : 0.0) :
+			    floor(ref_u01(&seed) * 16) / 16;
+		assert_int_equal(disc_order(v, n, 1, o), 0);
+		for (size_t i = 1; i < n; i++)
+			assert_true(v[o[i - 1]] < v[o[i]] ||
+			    (v[o[i - 1]] == v[o[i]] && o[i - 1] < o[i]));
+		free(v), free(o);
+	}
+}
+
 /* Regular k x k grid at the cell centres: T^2 = 1/(18k^2) + 7/(288k^4)
  * (Warnock's sums factor into 1-D sums of (i + 1/2)/k). */
 static void star_regular(void **state)
@@ -730,6 +777,8 @@ int main(void)
 		cmocka_unit_test(circle_exact),
 		cmocka_unit_test(boundary_rule),
 		cmocka_unit_test(star_warnock),
+		cmocka_unit_test(star_l2_oracle),
+		cmocka_unit_test(order_stable),
 		cmocka_unit_test(star_regular),
 		cmocka_unit_test(rect_regular),
 		cmocka_unit_test(grids_brute),

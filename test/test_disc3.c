@@ -88,6 +88,52 @@ static void l2_direct(void **state)
 		}
 }
 
+/* The O(n log^2 n) divide and conquer against Warnock's formula as
+ * written (discref.h), to 1e-14 on D2^2: the sets of ref_pair_set,
+ * sizes around the blocks of 32 points and the levels above them, on
+ * one thread and on the team (the same bits). */
+static void l2_cdq_oracle(void **state)
+{
+	static const size_t ns[] = { 1, 2, 3, 5, 31, 32, 33, 63, 65, 97,
+	    257, 1000 };
+	(void)state;
+	frs_set_threads(2);
+	for (int kind = 0; kind < 4; kind++)
+		for (size_t t = 0; t < sizeof ns / sizeof *ns; t++) {
+			size_t n = ns[t];
+			double *x = malloc(3 * n * sizeof *x), d, e;
+			long double r;
+			assert_non_null(x);
+			ref_pair_set(x, n, 3, kind, 50 + t);
+			d = disc_star_l2_exact_k(x, n, 3, 0);
+			e = disc_star_l2_exact_k(x, n, 3, 1);
+			r = ref_warnock_sq(x, n, 3);
+			if (fabsl((long double)d * d - r) > 1e-14L || d != e)
+				fail_msg("kind %d n %zu: D2^2 %.17g (team %.17g), "
+				    "oracle %.17Lg", kind, n, d * d, e * e, r);
+			free(x);
+		}
+}
+
+/* Every point the same, or on the origin: the ties of all three axes
+ * at once, through the levels (n = 200). */
+static void l2_cdq_ties(void **state)
+{
+	static const double at[] = { 0.0, 0.25, 0.5 };
+	(void)state;
+	for (size_t a = 0; a < 3; a++) {
+		size_t n = 200;
+		double *x = malloc(3 * n * sizeof *x), d;
+		assert_non_null(x);
+		for (size_t i = 0; i < 3 * n; i++)
+			x[i] = at[a];
+		d = disc_star_l2_exact_k(x, n, 3, 1);
+		assert_true(fabsl((long double)d * d - ref_warnock_sq(x, n,
+		    3)) <= 1e-14L);
+		free(x);
+	}
+}
+
 /* k = 2: the O(n log n) sweep of disc.c, another route to the same. */
 static void l2_two_dims(void **state)
 {
@@ -558,6 +604,8 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(l2_direct),
+		cmocka_unit_test(l2_cdq_oracle),
+		cmocka_unit_test(l2_cdq_ties),
 		cmocka_unit_test(l2_two_dims),
 		cmocka_unit_test(l2_product),
 		cmocka_unit_test(expectation),

@@ -108,82 +108,143 @@ double disc_sum(const double *v, size_t k)
 	return s + c;
 }
 
-struct key {
-	double v;
+/* ---- sorting -------------------------------------------------------- */
+
+/* A key whose unsigned order is the order of the doubles: the sign bit
+ * flipped for non-negative values, every bit for negative ones; + 0.0
+ * makes -0 equal to +0. */
+static uint64_t order_key(double v)
+{
+	uint64_t b;
+
+	v += 0.0;
+	memcpy(&b, &v, sizeof b);
+	return b >> 63 ? ~b : b | (uint64_t)1 << 63;
+}
+
+struct rkey {
+	uint64_t k;
 	uint32_t i;
 };
 
-static int key_cmp(const void *a, const void *b)
-{
-	const struct key *p = a, *q = b;
-	if (p->v != q->v)
-		return p->v < q->v ? -1 : 1;
-	return (p->i > q->i) - (p->i < q->i);
-}
+#define RADIX_BITS 11
+#define RADIX_PASSES 6		/* 66 bits */
+#define RADIX (1u << RADIX_BITS)
 
-/* Order of the points by coordinate c (ties by index). */
-static struct key *sorted(const double *xy, size_t n, int c)
+/* Stable: equal keys keep the order of their indices. */
+static void insertion_sort(struct rkey *a, size_t n)
 {
-	struct key *k = malloc(n * sizeof *k);
-	if (k == NULL) {
-		frs_fail("no memory for %zu points", n);
-		return NULL;
+	for (size_t i = 1; i < n; i++) {
+		struct rkey t = a[i];
+		size_t j = i;
+		for (; j > 0 && a[j - 1].k > t.k; j--)
+			a[j] = a[j - 1];
+		a[j] = t;
 	}
-	for (size_t i = 0; i < n; i++) {
-		k[i].v = xy[2 * i + (size_t)c];
-		k[i].i = (uint32_t)i;
+}
+
+/* LSD radix sort, 11 bits a pass, the histograms of every pass counted
+ * at once; a pass whose digit is the same for every key is skipped (the
+ * exponents of coordinates in [0,1) share most of their bits).  It is
+ * stable, so the order is that of qsort by (value, index), in O(n). */
+static void radix_sort(struct rkey *a, struct rkey *b, size_t n,
+    size_t (*h)[RADIX], struct rkey **out)
+{
+	for (size_t i = 0; i < n; i++)
+		for (int p = 0; p < RADIX_PASSES; p++)
+			h[p][(a[i].k >> (RADIX_BITS * p)) & (RADIX - 1)]++;
+	for (int p = 0; p < RADIX_PASSES; p++) {
+		size_t run = 0, *c = h[p];
+		struct rkey *t;
+		if (c[(a[0].k >> (RADIX_BITS * p)) & (RADIX - 1)] == n)
+			continue;
+		for (size_t d = 0; d < RADIX; d++) {
+			size_t m = c[d];
+			c[d] = run, run += m;
+		}
+		for (size_t i = 0; i < n; i++)
+			b[c[(a[i].k >> (RADIX_BITS * p)) & (RADIX - 1)]++] = a[i];
+		t = a, a = b, b = t;
 	}
-	qsort(k, n, sizeof *k, key_cmp);
-	return k;
+	*out = a;
 }
 
-static struct dd fen_prefix(const struct dd *f, size_t r)
+int disc_order(const double *v, size_t n, size_t stride, uint32_t *ord)
 {
-	struct dd s = dd_from(0.0);
-	for (; r > 0; r &= r - 1)
-		s = dd_add(s, f[r]);
-	return s;
+	struct rkey *a = malloc(2 * (n ? n : 1) * sizeof *a), *s = a;
+	size_t (*h)[RADIX] = NULL;
+
+	if (a == NULL)
+		return frs_fail("no memory for %zu points", n);
+	for (size_t i = 0; i < n; i++)
+		a[i].k = order_key(v[i * stride]), a[i].i = (uint32_t)i;
+	if (n < 256)
+		insertion_sort(a, n);
+	else if ((h = calloc(RADIX_PASSES, sizeof *h)) == NULL) {
+		free(a);
+		return frs_fail("no memory for %zu points", n);
+	} else
+		radix_sort(a, a + n, n, h, &s);
+	for (size_t i = 0; i < n; i++)
+		ord[i] = s[i].i;
+	free(a), free(h);
+	return 0;
 }
 
-static void fen_add(struct dd *f, size_t n, size_t r, double v)
-{
-	for (r++; r <= n; r += r & (~r + 1))
-		f[r] = dd_add_d(f[r], v);
-}
+/* ---- the pair sum --------------------------------------------------- */
+
+/* The two Fenwick trees of pair_sum in one array: a prefix query and an
+ * update walk the same nodes of both, so one walk serves the two (half
+ * the cache misses at large n). */
+struct fnode {
+	struct dd f, g;
+};
 
 /* The pair sum of the file comment; u, v hold ux, vx, uy, vy for each
- * point, 4 per point. */
+ * point, 4 per point.  Points in x order; for point k, f sums ux uy and
+ * g ux vy of the points before it by y rank, so that its pairs with
+ * them are vx(k) (vy(k) f(below) + uy(k) g(above)). */
 static int pair_sum(const double *xy, size_t n, const double *u,
     struct dd *out)
 {
-	struct key *kx = sorted(xy, n, 0), *ky = sorted(xy, n, 1);
-	uint32_t *rank = malloc(n * sizeof *rank);
-	struct dd *f = calloc(2 * (n + 1), sizeof *f), *g, tot, diag;
+	uint32_t *ox = malloc(2 * n * sizeof *ox), *rank = malloc(n *
+	    sizeof *rank);
+	struct fnode *t = calloc(n + 1, sizeof *t);
+	struct dd tot, diag, gall;
 
-	if (kx == NULL || ky == NULL || rank == NULL || f == NULL) {
-		free(kx), free(ky), free(rank), free(f);
+	if (ox == NULL || rank == NULL || t == NULL) {
+		free(ox), free(rank), free(t);
 		return frs_fail("no memory for %zu points", n);
 	}
-	g = f + n + 1;
+	if (disc_order(xy, n, 2, ox) < 0 || disc_order(xy + 1, n, 2,
+	    ox + n) < 0) {
+		free(ox), free(rank), free(t);
+		return -1;
+	}
 	for (size_t r = 0; r < n; r++)
-		rank[ky[r].i] = (uint32_t)r;
-	tot = diag = dd_from(0.0);
+		rank[ox[n + r]] = (uint32_t)r;
+	tot = diag = gall = dd_from(0.0);
 	for (size_t k = 0; k < n; k++) {
-		const double *w = u + 4 * (size_t)kx[k].i;
-		size_t r = rank[kx[k].i];
-		struct dd below = fen_prefix(f, r);
-		struct dd above = dd_add(fen_prefix(g, n),
-		    dd_mul_d(fen_prefix(g, r), -1.0));
-		struct dd t = dd_add(dd_mul_d(below, w[3]),
-		    dd_mul_d(above, w[2]));
-		tot = dd_add(tot, dd_mul_d(t, w[1]));
+		const double *w = u + 4 * (size_t)ox[k];
+		size_t r = rank[ox[k]];
+		struct dd below = dd_from(0.0), gbelow = dd_from(0.0), a;
+		for (size_t q = r; q > 0; q &= q - 1) {
+			below = dd_add(below, t[q].f);
+			gbelow = dd_add(gbelow, t[q].g);
+		}
+		a = dd_add(gall, dd_mul_d(gbelow, -1.0));
+		a = dd_add(dd_mul_d(below, w[3]), dd_mul_d(a, w[2]));
+		tot = dd_add(tot, dd_mul_d(a, w[1]));
 		diag = dd_add(diag, dd_mul_d(dd_prod(w[0] * w[1], w[2]),
 		    w[3]));
-		fen_add(f, n, r, w[0] * w[2]);
-		fen_add(g, n, r, w[0] * w[3]);
+		for (size_t q = r + 1; q <= n; q += q & (~q + 1)) {
+			t[q].f = dd_add_d(t[q].f, w[0] * w[2]);
+			t[q].g = dd_add_d(t[q].g, w[0] * w[3]);
+		}
+		gall = dd_add_d(gall, w[0] * w[3]);
 	}
 	*out = dd_add(dd_mul_d(tot, 2.0), diag);
-	free(kx), free(ky), free(rank), free(f);
+	free(ox), free(rank), free(t);
 	return 0;
 }
 
@@ -379,33 +440,66 @@ void disc_ctx_free(struct disc_ctx *c)
 	free(c);
 }
 
+/* D2 and Dinf of star or rect, each unless left out. */
+static int set_box(const struct disc_opts *o, const double *xy, size_t n,
+    int par, struct disc_result *r)
+{
+	int star = o->cls == DISC_STAR;
+
+	if (!o->no_d2) {
+		r->d2 = o->exact_d2 ? (star ? disc_star_l2_exact(xy, n) :
+		    disc_rect_l2_exact(xy, n)) : (star ?
+		    disc_star_l2_grid(xy, n, o->grid) :
+		    disc_rect_l2_grid(xy, n, o->grid));
+		if (r->d2 < 0)
+			return -1;
+	}
+	if (o->no_dinf)
+		return 0;
+	if (o->exact_dinf)
+		return star ? disc_star_dinf_exact(xy, n, &r->dinf) :
+		    disc_rect_dinf_exact(xy, n, par, &r->dinf);
+	return star ? disc_star_dinf_grid(xy, n, o->grid, par, &r->dinf) :
+	    disc_rect_dinf_grid(xy, n, o->grid, par, &r->dinf);
+}
+
+/* The values left out are NAN, also where they came for free. */
+static void mask(const struct disc_opts *o, struct disc_result *r)
+{
+	if (o->no_d2)
+		r->d2 = NAN;
+	if (o->no_dinf)
+		r->dinf = NAN;
+}
+
 int disc_set(struct disc_ctx *c, const double *xy, size_t n, int par,
     struct disc_result *r)
 {
 	const struct disc_opts *o = &c->o;
+	int rc;
 
 	if (n == 0)
 		return frs_fail("no points");
 	switch (o->cls) {
 	case DISC_STAR:
-		r->d2 = o->exact_d2 ? disc_star_l2_exact(xy, n) :
-		    disc_star_l2_grid(xy, n, o->grid);
-		if (r->d2 < 0)
-			return -1;
-		return o->exact_dinf ? disc_star_dinf_exact(xy, n, &r->dinf) :
-		    disc_star_dinf_grid(xy, n, o->grid, par, &r->dinf);
 	case DISC_RECT:
-		r->d2 = o->exact_d2 ? disc_rect_l2_exact(xy, n) :
-		    disc_rect_l2_grid(xy, n, o->grid);
-		if (r->d2 < 0)
-			return -1;
-		return o->exact_dinf ? disc_rect_dinf_exact(xy, n, par, &r->dinf) :
-		    disc_rect_dinf_grid(xy, n, o->grid, par, &r->dinf);
+		rc = set_box(o, xy, n, par, r);
+		break;
 	case DISC_HALF:
-		return disc_half(xy, n, o->grid, par, r);
+		rc = disc_half(xy, n, o->grid, par, r);
+		break;
 	default:
-		return disc_shapes_run(c->sh, xy, n, par, r);
+		rc = disc_shapes_run(c->sh, xy, n, par, r);
 	}
+	mask(o, r);
+	return rc;
+}
+
+/* Whether a 3-D set takes the grid: for a D2 or a Dinf that is wanted
+ * and not exact. */
+static int grid3_needed(const struct disc_opts *o)
+{
+	return (!o->no_d2 && !o->exact_d2) || (!o->no_dinf && !o->exact_dinf);
 }
 
 int disc_check(const struct disc_opts *o, unsigned dims, size_t n)
@@ -420,16 +514,16 @@ int disc_check(const struct disc_opts *o, unsigned dims, size_t n)
 	if (o->cls != DISC_STAR)
 		return frs_fail("class %s is 2-D only; 3-D sets take -c star",
 		    disc_class_name(o->cls));
-	if (o->exact_d2 && n > DISC3_MAX_EXACT_D2)
-		return frs_fail("%zu points: the closed-form 3-D D2 takes "
-		    "O(n^2) time and is limited to %d points; leave out "
-		    "--exact", n, DISC3_MAX_EXACT_D2);
-	if (o->exact_dinf && n > DISC3_MAX_EXACT_N)
+	if (o->exact_d2 && !o->no_d2 && n > DISC3_MAX_EXACT_D2)
+		return frs_fail("%zu points: the closed-form 3-D D2 uses "
+		    "32-bit ranks and is limited to %zu points", n,
+		    DISC3_MAX_EXACT_D2);
+	if (o->exact_dinf && !o->no_dinf && n > DISC3_MAX_EXACT_N)
 		return frs_fail("%zu points: the exact 3-D Dinf takes O(n^3) "
 		    "time and is limited to %d points; use --grid S (with "
-		    "--exact: exact D2, Dinf on the grid)", n,
+		    "--exact: exact D2, Dinf on the grid) or --d2-only", n,
 		    DISC3_MAX_EXACT_N);
-	if (!o->exact_dinf && (o->grid < 2 || o->grid > DISC3_MAX_GRID))
+	if (grid3_needed(o) && (o->grid < 2 || o->grid > DISC3_MAX_GRID))
 		return frs_fail("--grid %u: a 3-D grid has s^3 boxes and takes "
 		    "O(s^3) time; 2 to %d allowed", o->grid, DISC3_MAX_GRID);
 	return 0;
@@ -443,17 +537,20 @@ double disc_tests_dims(const struct disc_opts *o, unsigned dims)
 }
 
 /* 3-D star: the grid gives D2 and Dinf in one sweep; --exact replaces
- * D2, and without a grid Dinf too. */
+ * D2, and without a grid Dinf too; a value left out is not computed
+ * unless the grid gives it anyway. */
 static int set3(const struct disc_opts *o, const double *xyz, size_t n,
     int par, struct disc_result *r)
 {
-	if (!o->exact_dinf && disc3_star_grid(xyz, n, o->grid, par, r) < 0)
+	if (grid3_needed(o) && disc3_star_grid(xyz, n, o->grid, par, r) < 0)
 		return -1;
-	if (o->exact_dinf && disc3_star_dinf_exact(xyz, n, par, &r->dinf) < 0)
+	if (o->exact_dinf && !o->no_dinf &&
+	    disc3_star_dinf_exact(xyz, n, par, &r->dinf) < 0)
 		return -1;
-	if (o->exact_d2 &&
+	if (o->exact_d2 && !o->no_d2 &&
 	    (r->d2 = disc_star_l2_exact_k(xyz, n, 3, par)) < 0)
 		return -1;
+	mask(o, r);
 	return 0;
 }
 

@@ -36,7 +36,10 @@
  *   exact: D2 by Warnock's closed form in k dimensions,
  *            D2^2 = 3^-k - 2^(1-k)/n sum_i prod_d (1 - x_id^2)
  *                   + 1/n^2 sum_i sum_j prod_d (1 - max(x_id, x_jd)),
- *          O(n^2) pairs, at most DISC3_MAX_EXACT_D2 points.
+ *          the pair sum by divide and conquer over x blocks with a
+ *          Fenwick tree over z positions, O(n log^2 n) in double-double
+ *          (disc3.c; 2^20 points in about 5 s), at most
+ *          DISC3_MAX_EXACT_D2 points (32-bit ranks).
  *          Dinf, the supremum of |count/n - abc| over all half-open
  *          boxes, as in 2-D over the critical corners (a, b, c), each
  *          coordinate a point coordinate of its axis or 1:
@@ -70,7 +73,7 @@ enum disc_class { DISC_STAR, DISC_RECT, DISC_QUAD, DISC_HALF, DISC_CIRCLE };
 #define DISC3_STAR_GRID 100	/* 10^6 boxes */
 #define DISC3_MAX_GRID 1000	/* 10^9 boxes */
 #define DISC3_MAX_EXACT_N 4096	/* exact Dinf, O(n^3) */
-#define DISC3_MAX_EXACT_D2 131072	/* closed-form D2, O(n^2) */
+#define DISC3_MAX_EXACT_D2 ((size_t)UINT32_MAX)	/* closed-form D2 */
 
 struct disc_opts {
 	enum disc_class cls;
@@ -79,6 +82,9 @@ struct disc_opts {
 	uint32_t grid;		/* s of the grid methods */
 	uint64_t shapes;	/* K of the random-shape methods */
 	uint64_t seed;
+	int no_d2, no_dinf;	/* leave out D2 / Dinf (NAN in the result);
+				 * only star and rect save the time, and 3-D
+				 * --exact (the grid gives both at once) */
 };
 
 struct disc_result {
@@ -133,7 +139,8 @@ int disc_half(const double *xy, size_t n, uint32_t s, int par,
     struct disc_result *r);
 
 /* 3-D star pieces: Warnock's D2 for points of k >= 1 coordinates
- * (any k; k = 2 is disc_star_l2_exact by another route), the exact Dinf
+ * (k = 3 in O(n log^2 n); any other k by the O(n^2) sum over pairs, so
+ * that k = 2 is disc_star_l2_exact by another route), the exact Dinf
  * and the grid's D2 and Dinf for k = 3.  par: the thread team. */
 double disc_star_l2_exact_k(const double *x, size_t n, unsigned k, int par);
 int disc3_star_dinf_exact(const double *xyz, size_t n, int par,
