@@ -9,12 +9,15 @@
 #include "cli.h"
 #include "frdio.h"
 #include "frscore.h"
+#include "imap.h"
 #include "outfile.h"
+#include "parse.h"
 
 static const char usage[] =
     "usage: frd-prep [-a none|stack|level1|level2|sorted|all] [--check]\n"
     "                [--import frd|raw32|png16|text] [--rank] [-s WxH]\n"
-    "                [--blocks LIST] [-o FILE] [IN]\n"
+    "                [--blocks LIST] [--for LIST [-i MAP] [--sigma S]]\n"
+    "                [-o FILE] [IN]\n"
     "\n"
     "  -a, --algo A       prepare for A: the minmap (stack, level1, level2),\n"
     "                     block-sorted lists (sorted) or both (all), and\n"
@@ -27,13 +30,20 @@ static const char usage[] =
     "  -s, --size WxH     size of a raw32 matrix (default: square)\n"
     "      --blocks LIST  block sizes of the sorted lists (default\n"
     "                     1,2,4,...,256 up to the matrix size)\n"
+    "      --for LIST     the counts to prepare for: with -a sorted or\n"
+    "                     all, the block sizes Sorted needs for them (a\n"
+    "                     table of them under -v); without -a, only the\n"
+    "                     table, on standard output\n"
+    "  -i, --importance MAP  the map of --for (default const, 128x128)\n"
+    "      --sigma S      the sigma of --for (default 8)\n"
     "      --check        check that the values are a permutation\n"
     "  -v, --verbose      print the matrix size and checksum\n"
     "  -o, --output FILE  output (default standard output)\n"
     "  -q, --quiet        no warnings\n"
     "  -h, --help         this help;  --version  the version\n";
 
-enum { OPT_IMPORT = OPT_FIRST_PRIVATE, OPT_RANK, OPT_BLOCKS, OPT_CHECK };
+enum { OPT_IMPORT = OPT_FIRST_PRIVATE, OPT_RANK, OPT_BLOCKS, OPT_CHECK,
+	OPT_FOR, OPT_SIGMA };
 
 static const struct option longopts[] = {
 	{ "algo", required_argument, NULL, 'a' },
@@ -42,6 +52,9 @@ static const struct option longopts[] = {
 	{ "size", required_argument, NULL, 's' },
 	{ "blocks", required_argument, NULL, OPT_BLOCKS },
 	{ "check", no_argument, NULL, OPT_CHECK },
+	{ "for", required_argument, NULL, OPT_FOR },
+	{ "importance", required_argument, NULL, 'i' },
+	{ "sigma", required_argument, NULL, OPT_SIGMA },
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
@@ -67,17 +80,79 @@ static unsigned parse_blocks(const char *s, uint32_t *out)
 	return n;
 }
 
+/* --for: "1024,1048576" (at most 32 counts, each 1 to 2^40). */
+static unsigned parse_counts(const char *s, uint64_t *out)
+{
+	char buf[1024], *tok, *save = NULL;
+	unsigned n = 0;
+
+	if (strlen(s) >= sizeof buf)
+		cli_usage_error("--for: list too long");
+	strcpy(buf, s);
+	for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",",
+	    &save)) {
+		if (n == 32)
+			cli_usage_error("--for: at most 32 counts");
+		out[n++] = (uint64_t)cli_ll("--for", tok, 1, 1LL << 40);
+	}
+	if (n == 0)
+		cli_usage_error("--for: no count");
+	return n;
+}
+
+/*
+ * The setups of the counts on the map, as frs-sample makes them (tiles
+ * auto): the block size of Sorted's lists for each, into blocks (each
+ * size once); a table of them on fp when fp is not NULL.
+ */
+static unsigned blocks_for(const struct frs_matrix *m, const char *imp,
+    double sigma, const uint64_t *n, unsigned nn, uint32_t *blocks, FILE *fp)
+{
+	struct frs_imap map;
+	unsigned nb = 0;
+
+	if (imap_load(imp, 0, 0, 0, &map) < 0)
+		cli_die_lib();
+	if (fp != NULL)
+		fprintf(fp, "n\tn_s\twindow\ttiles\tblock\tminmap\n");
+	for (unsigned k = 0; k < nn; k++) {
+		struct frs_setup su;
+		uint32_t b;
+		unsigned i;
+		if (frs_setup(&su, &map, m, n[k], sigma, 1) < 0)
+			cli_die_lib();
+		su.tiles = frs_tiles_auto(&su);
+		b = su.ns < su.mw ? su.ns : su.mw;
+		b = b < su.mh ? b : su.mh;
+		b = b < frs_tile_max_block(&su) ? b : frs_tile_max_block(&su);
+		if (fp != NULL)
+			fprintf(fp, "%llu\t%u\t%llux%llu\t%s\t%u\t%s\n",
+			    (unsigned long long)n[k], su.ns,
+			    (unsigned long long)su.sw, (unsigned long long)su.sh,
+			    su.tiles == FRS_TILES_PLAIN ? "plain" : "shuffled", b,
+			    b < su.ns ? "yes" : "no");
+		for (i = 0; i < nb && blocks[i] != b; i++)
+			;
+		if (i == nb)
+			blocks[nb++] = b;
+	}
+	imap_free(&map);
+	return nb;
+}
+
 int main(int argc, char **argv)
 {
-	const char *fmt = "frd", *algo = "none", *in;
+	const char *fmt = "frd", *algo = "none", *in, *imp = "const";
 	uint32_t w = 0, h = 0, blocks[32];
-	unsigned nblocks = 0;
+	uint64_t counts[32];
+	unsigned nblocks = 0, ncounts = 0;
+	double sigma = 8.0;
 	int c, rank = 0, check = 0, verbose = 0, minmap, sorted, rc;
 	struct frs_matrix m;
 	struct outfile o;
 
 	cli_init("frd-prep", usage);
-	while ((c = getopt_long(argc, argv, "a:s:v" CLI_COMMON_SHORTOPTS,
+	while ((c = getopt_long(argc, argv, "a:i:s:v" CLI_COMMON_SHORTOPTS,
 	    longopts, NULL)) != -1) {
 		switch (c) {
 		case 'a': algo = optarg; break;
@@ -86,6 +161,9 @@ int main(int argc, char **argv)
 		case OPT_RANK: rank = 1; break;
 		case OPT_BLOCKS: nblocks = parse_blocks(optarg, blocks); break;
 		case OPT_CHECK: check = 1; break;
+		case OPT_FOR: ncounts = parse_counts(optarg, counts); break;
+		case 'i': imp = optarg; break;
+		case OPT_SIGMA: sigma = cli_double("--sigma", optarg, 1.0, 1e6); break;
 		case 'v': verbose = 1; break;
 		default:
 			if (!cli_common_opt(c, optarg))
@@ -120,6 +198,20 @@ int main(int argc, char **argv)
 		cli_die_lib();
 	if (nblocks > 0 && !sorted)
 		cli_usage_error("--blocks needs -a sorted or -a all");
+	if (nblocks > 0 && ncounts > 0)
+		cli_usage_error("--blocks and --for: one or the other");
+	if (ncounts > 0 && !sorted && minmap)
+		cli_usage_error("--for needs -a sorted or -a all, or no -a");
+	if (ncounts > 0 && !sorted) {	/* the table only */
+		blocks_for(&m, imp, sigma, counts, ncounts, blocks, stdout);
+		frd_free(&m);
+		if (fflush(stdout) != 0 || ferror(stdout))
+			cli_die("<stdout>: write error");
+		return 0;
+	}
+	if (ncounts > 0)
+		nblocks = blocks_for(&m, imp, sigma, counts, ncounts, blocks,
+		    verbose ? stderr : NULL);
 	if (sorted && nblocks == 0)
 		for (uint32_t b = 1; b <= 256 && b <= m.w && b <= m.h; b *= 2)
 			blocks[nblocks++] = b;

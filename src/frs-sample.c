@@ -308,6 +308,7 @@ struct out {
 	int noted;		/* the mask's note was printed */
 	double t;		/* seconds spent writing */
 	double tnote;		/* and in note_point, apart from the phases */
+	const frs_mask *mask;	/* for -v */
 	struct frscl_times ct;	/* OpenCL phases, summed over the sets */
 	/* -v: how many samples of set 0 show each matrix element */
 	const struct frs_setup *s0;
@@ -573,6 +574,11 @@ static void report(const struct opts *o, const struct frs_setup *s0,
 	uint64_t tx, ty, nt = frs_tiles(s0, &tx, &ty);
 
 	print_setup(s0, o->matrix);
+	if (u->mask != NULL && u->mask->made != 0)
+		fprintf(stderr, "frs-sample: %s has no sorted lists of blocks of "
+		    "%u: made them here (frd-prep -a sorted --for N makes a .frp "
+		    "that has them)\n", u->mask->frp ? u->mask->frp : o->matrix,
+		    u->mask->made);
 	fprintf(stderr, "frs-sample: %llu tiles (%llux%llu), %s",
 	    (unsigned long long)nt, (unsigned long long)tx,
 	    (unsigned long long)ty, s0->tiles == FRS_TILES_PLAIN ? "plain" :
@@ -818,6 +824,7 @@ int main(int argc, char **argv)
 	t0 = progress_now();
 	mask = load_mask(o.matrix);
 	u.noted = frs_mask_note(mask) != NULL;
+	u.mask = mask;
 	smp = make_sampler(&o, mask, &map);
 	imap_free(&map);
 	first_setup(&o, smp, &s0);

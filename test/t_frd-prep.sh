@@ -71,3 +71,28 @@ frs-sample -m "$T/h.frd" -i blob -n 500 -T -o "$T/h.txt" 2>"$T/warn" &&
     grep -q 'ignored' "$T/warn" && cmp -s "$T/h.txt" "$T/f1.txt" &&
     ok "a damaged .frp beside the matrix is skipped" || nok "a damaged .frp beside the matrix is skipped"
 expect_fail "--blocks without sorted" 2 "--blocks needs" "$T/o.frd" frd-prep --blocks 8 "$T/g.frd" -o "$T/o.frd"
+
+# --for: the block sizes Sorted needs for the counts on a map; a .frp
+# made with them serves those runs without making lists, a .frp without
+# them still gives the points of the .frd (its lists made, said under -v).
+frd-gen -q -s 128 -o "$T/f.frd"
+frd-prep --for 100,20000 -i blob "$T/f.frd" >"$T/for.tsv" &&
+    [ "$(awk -F '\t' 'NR > 1 { printf "%s:%s ", $1, $5 }' "$T/for.tsv")" = "100:2 20000:32 " ] &&
+    ok "--for: blocks 2 and 32 for 100 and 20000 on blob" ||
+    nok "--for: $(tr '\n' ' ' <"$T/for.tsv")"
+frd-prep -a sorted --for 20000 -i blob "$T/f.frd" -o "$T/for.frp"
+frd-prep -a sorted --blocks 4 "$T/f.frd" -o "$T/b4.frp"
+frs-sample -q -m "$T/f.frd" -i blob -n 20000 -o "$T/f0.pts"
+frs-sample -q -m "$T/for.frp" -i blob -n 20000 -v -o "$T/f1.pts" 2>"$T/v1"
+frs-sample -q -m "$T/b4.frp" -i blob -n 20000 -v -o "$T/f2.pts" 2>"$T/v2"
+cmp -s "$T/f0.pts" "$T/f1.pts" && ! grep -q 'no sorted lists' "$T/v1" &&
+    ok "--for's .frp: its lists used" || nok "--for's .frp: $(cat "$T/v1")"
+cmp -s "$T/f0.pts" "$T/f2.pts" &&
+    grep -q 'b4.frp has no sorted lists of blocks of 32: made them here' "$T/v2" &&
+    ok "a .frp without the block: the same points, the lists made, said under -v" ||
+    nok "a .frp without the block: $(cat "$T/v2")"
+expect_fail "--for with --blocks" 2 "one or the other" "$T/x.frp" \
+    frd-prep -a sorted --for 100 --blocks 4 "$T/f.frd" -o "$T/x.frp"
+expect_fail "--for 0" 2 "--for" "$T/x.frp" frd-prep --for 0 "$T/f.frd" -o "$T/x.frp"
+expect_fail "--for with -a stack" 2 "--for needs" "$T/x.frp" \
+    frd-prep -a stack --for 100 "$T/f.frd" -o "$T/x.frp"

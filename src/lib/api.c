@@ -317,6 +317,7 @@ static int make_lists(frs_mask *mk, uint32_t b)
 				return 0;
 			}
 			frs_prep_free(&p);
+			mk->made = b;
 		} else if (!mk->twin) {
 			return -1;
 		} else {

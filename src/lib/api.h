@@ -27,6 +27,7 @@ struct frs_mask {
 	unsigned nlev;		/* minmap levels, lev[0] = m.v */
 	uint32_t *lev[32];
 	uint32_t *sval[32], *sidx[32];	/* sorted lists by log2(block) */
+	uint32_t made;		/* a block size frp lacked, made here */
 	struct frs3_prep p3[32];	/* 3-D sorted lists by log2(block) */
 };
 
