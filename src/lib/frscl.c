@@ -152,6 +152,18 @@ static int buffer(struct clrun *c, size_t size, const void *host, cl_mem *b)
 	return ocl_fill32(c->o, *b, words, 0);
 }
 
+/* The matrix and its lists, read-only and alive for the whole run: the
+ * device may use the host's memory as it is (a CPU device such as PoCL
+ * then copies nothing; a GPU driver copies once, as it would anyway). */
+static int shared_buffer(struct clrun *c, size_t size, const void *host,
+    cl_mem *b)
+{
+	if (size == 0)
+		return buffer(c, size, host, b);
+	return ocl_buffer(c->o, CL_MEM_READ_ONLY | CL_MEM_USE_HOST_PTR, size,
+	    host, b);
+}
+
 static int alloc_fail(void)
 {
 	return frs_fail("out of memory for the samples");
@@ -199,20 +211,36 @@ out:
 	return rc;
 }
 
-/* Read the samples into one chunk. */
+/* Read the samples into the chunk that out_buffer made c->out over. */
 static int take(struct clrun *c, uint64_t total, struct frs_result *r)
 {
 	struct frs_chunk *ch = &r->chunk[0];
 
-	if (total > SIZE_MAX / sizeof(struct frs_elem))
-		return alloc_fail();
-	ch->e = malloc((total ? total : 1) * sizeof *ch->e);
-	if (ch->e == NULL)
-		return alloc_fail();
-	ch->cap = total;
 	if (total > 0 && ocl_read(c->o, c->out, total * sizeof *ch->e, ch->e) < 0)
 		return -1;
 	ch->n = total;
+	return 0;
+}
+
+/* c->out for total samples over the result's one chunk, zeroed: a device
+ * that can use host memory (PoCL) writes the samples in place, and the
+ * read back copies nothing. */
+static int out_buffer(struct clrun *c, uint64_t total, struct frs_result *r)
+{
+	struct frs_chunk *ch = &r->chunk[0];
+
+	if (total > SIZE_MAX / sizeof *ch->e)
+		return alloc_fail();
+	free(ch->e);
+	ch->e = calloc(total ? total : 1, sizeof *ch->e);
+	if (ch->e == NULL)
+		return alloc_fail();
+	ch->cap = total;
+	rel(&c->out);
+	if (ocl_buffer(c->o, CL_MEM_READ_WRITE | CL_MEM_USE_HOST_PTR,
+	    (size_t)total * sizeof *ch->e, ch->e, &c->out) < 0)
+		return -1;
+	phase(c, &last.download);
 	return 0;
 }
 
@@ -264,7 +292,7 @@ static int make_out(struct clrun *c, cl_mem cnt, uint64_t n, int wide,
 		phase(c, &last.download);
 		return 1;
 	}
-	return grow(c, *total, &c->out);
+	return out_buffer(c, *total, r);
 }
 
 /* Read the total samples back: the download phase. */
@@ -486,11 +514,13 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 	    buffer(&c, c.nact * rec * sizeof *thr, thr, &c.thr) < 0)
 		goto out;
 	if (algo == FRS_NAIVE) {
-		if (buffer(&c, p->m->n * sizeof *p->m->v, p->m->v, &c.mat) < 0)
+		if (shared_buffer(&c, p->m->n * sizeof *p->m->v, p->m->v,
+		    &c.mat) < 0)
 			goto out;
 	} else if (algo == FRS_SORTED) {
-		if (buffer(&c, p->m->n * sizeof *p->sval, p->sval, &c.sval) < 0 ||
-		    buffer(&c, p->m->n * sizeof *p->sidx, p->sidx, &c.sidx) < 0)
+		if (shared_buffer(&c, p->m->n * sizeof *p->sval, p->sval,
+		    &c.sval) < 0 || shared_buffer(&c, p->m->n * sizeof *p->sidx,
+		    p->sidx, &c.sidx) < 0)
 			goto out;
 	} else if (upload_minmap(&c, p) < 0) {
 		goto out;

@@ -269,7 +269,7 @@ int ocl_buffer(struct ocl *o, cl_mem_flags flags, size_t size,
 {
 	cl_int err;
 
-	if (host != NULL && size > 0)
+	if (host != NULL && size > 0 && !(flags & CL_MEM_USE_HOST_PTR))
 		flags |= CL_MEM_COPY_HOST_PTR;
 	if (size == 0)	/* one byte of nothing: there is no host data */
 		flags &= ~(cl_mem_flags)(CL_MEM_COPY_HOST_PTR | CL_MEM_USE_HOST_PTR);
