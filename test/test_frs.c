@@ -178,17 +178,18 @@ static void check_lists(const struct frs_matrix *m, const struct frs_prep *p,
 	free(seen);
 }
 
-/* The block lists, by counting (permutations) on 1 and 3 threads and by
- * comparison (values with repeats), hold what they must for every block
- * size of a non-square matrix. */
+/* The block lists hold what they must for every block size of a
+ * non-square matrix, on 1 and 3 threads: many small blocks (radix sorts
+ * of block rows), few large ones (counting over the inverse of a
+ * permutation, qsort of values with repeats). */
 static void sorted_lists(void **state)
 {
 	struct frs_matrix m;
 	(void)state;
 
-	tu_perm_matrix(&m, 64, 32, 9);
+	tu_perm_matrix(&m, 256, 128, 9);	/* b <= 2: more than 4096 blocks */
 	for (int pass = 0; pass < 2; pass++) {
-		for (uint32_t b = 1; b <= 32; b *= 2)
+		for (uint32_t b = 1; b <= 128; b *= 2)
 			for (int t = 1; t <= 3; t += 2) {
 				struct frs_prep p;
 				frs_set_threads(t);

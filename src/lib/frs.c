@@ -347,6 +347,15 @@ struct scatter {
 	uint32_t rows;		/* block rows per task */
 };
 
+static unsigned log2u32(uint32_t v)
+{
+	unsigned l = 0;
+
+	while ((1u << l) < v)
+		l++;
+	return l;
+}
+
 /* Counting sort of the blocks of block rows [b, e) * rows: the values in
  * increasing order, each appended to its block's list.  Every task reads
  * all of inv and writes only its blocks, so tasks share nothing. */
@@ -355,7 +364,8 @@ static int scatter_task(void *ctx, uint64_t b, uint64_t e)
 	const struct scatter *sc = ctx;
 	struct frs_prep *p = sc->p;
 	const struct frs_matrix *m = p->m;
-	uint32_t blk = p->block, bw = m->w / blk, lb = 0, lw = 0;
+	uint32_t blk = p->block, bw = m->w / blk;
+	unsigned lb = log2u32(blk), lw = log2u32(m->w);
 	uint64_t r0 = b * sc->rows * blk, r1 = e * sc->rows * blk;
 	size_t bb = (size_t)blk * blk, nb;
 	size_t *fill;
@@ -364,19 +374,14 @@ static int scatter_task(void *ctx, uint64_t b, uint64_t e)
 	nb = (size_t)((r1 - r0) / blk) * bw;
 	if ((fill = malloc(nb * sizeof *fill)) == NULL)
 		return frs_fail("out of memory for the sorted lists");
-	while ((1u << lb) < blk)
-		lb++;
-	while ((1u << lw) < m->w)
-		lw++;
 	for (size_t k = 0; k < nb; k++)
 		fill[k] = (size_t)(r0 / blk * bw + k) * bb;
 	for (size_t v = 0; v < m->n; v++) {
 		uint32_t i = sc->inv[v], x = i & (m->w - 1), y = i >> lw;
-		size_t k, at;
+		size_t at;
 		if (y < r0 || y >= r1)
 			continue;
-		k = (size_t)((y - r0) >> lb) * bw + (x >> lb);
-		at = fill[k]++;
+		at = fill[(size_t)((y - r0) >> lb) * bw + (x >> lb)]++;
 		p->sval[at] = (uint32_t)v;
 		p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
 	}
@@ -384,34 +389,121 @@ static int scatter_task(void *ctx, uint64_t b, uint64_t e)
 	return 0;
 }
 
+/* Radix sort (LSD, 11-bit digits, stable) of n keys with their
+ * payloads, from (k, i) through (tk, ti); the result ends in (k, i). */
+static void radix_pairs(uint32_t *k, uint32_t *i, uint32_t *tk, uint32_t *ti,
+    size_t n, uint32_t max)
+{
+	for (unsigned sh = 0; sh < 32 && (sh == 0 || (max >> sh) != 0); sh += 11) {
+		size_t cnt[2048] = { 0 }, sum = 0;
+		for (size_t j = 0; j < n; j++)
+			cnt[(k[j] >> sh) & 2047]++;
+		for (size_t d = 0; d < 2048; d++) {
+			size_t c = cnt[d];
+			cnt[d] = sum;
+			sum += c;
+		}
+		for (size_t j = 0; j < n; j++) {
+			size_t at = cnt[(k[j] >> sh) & 2047]++;
+			tk[at] = k[j];
+			ti[at] = i[j];
+		}
+		memcpy(k, tk, n * sizeof *k);
+		memcpy(i, ti, n * sizeof *i);
+	}
+}
+
+/* Small blocks, block rows r0 .. r1 - 1: each row's values (S_M b of
+ * them) sorted in cache with their positions, then dealt to the row's
+ * blocks in that order.  One pass over the whole matrix would scatter to
+ * (S_M / b)^2 places at once. */
+static int sort_rows(void *ctx, uint64_t r0, uint64_t r1)
+{
+	const struct scatter *sc = ctx;
+	struct frs_prep *p = sc->p;
+	const struct frs_matrix *m = p->m;
+	uint32_t blk = p->block, bw = m->w / blk;
+	unsigned lb = log2u32(blk), lw = log2u32(m->w);
+	size_t per = (size_t)m->w * blk, bb = (size_t)blk * blk;
+	uint32_t *t = malloc(4 * per * sizeof *t);
+	size_t *fill = malloc(bw * sizeof *fill);
+
+	if (t == NULL || fill == NULL) {
+		free(t);
+		free(fill);
+		return frs_fail("out of memory for the sorted lists");
+	}
+	for (uint64_t r = r0; r < r1; r++) {
+		size_t base = (size_t)r * per;
+		uint32_t max = 0;
+		for (size_t j = 0; j < per; j++) {	/* the rows are contiguous */
+			t[j] = m->v[base + j];
+			t[per + j] = (uint32_t)(base + j);
+			max = t[j] > max ? t[j] : max;
+		}
+		radix_pairs(t, t + per, t + 2 * per, t + 3 * per, per, max);
+		for (uint32_t k = 0; k < bw; k++)
+			fill[k] = base + k * bb;
+		for (size_t j = 0; j < per; j++) {
+			uint32_t i = t[per + j], x = i & (m->w - 1), y = i >> lw;
+			size_t at = fill[x >> lb]++;
+			p->sval[at] = t[j];
+			p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+		}
+	}
+	free(t);
+	free(fill);
+	return 0;
+}
+
+/* More blocks than this: sort_rows, no global inverse. */
+#define ONE_PASS_BLOCKS 4096
+
+/* The lists by counting over inv, in parallel over block rows. */
+static int count_sort(struct frs_prep *p, const uint32_t *inv)
+{
+	const struct frs_matrix *m = p->m;
+	uint32_t b = p->block, bh = m->h / b, nt = (uint32_t)frs_threads();
+	struct scatter sc = { p, inv, 0 };
+
+	nt = nt < 1 ? 1 : nt > bh ? bh : nt;
+	sc.rows = (bh + nt - 1) / nt;
+	return frs_parallel((bh + sc.rows - 1) / sc.rows, 1, scatter_task, &sc,
+	    NULL);
+}
+
 /* Listing 5.10, keeping every element of a block (no n_t cap: the
  * thesis's cap 2 n_s^2 / sigma^2 is 0 for n_s < sigma and too small for
- * some blocks, and a sample lost there is a bias).  A permutation (every
- * matrix read through frd(5)) is sorted by counting, O(S_M^2) for any
- * block size, in parallel over block rows; other values by qsort. */
+ * some blocks, and a sample lost there is a bias).  O(S_M^2) for any
+ * block size, in parallel over block rows: many small blocks by
+ * sort_rows; few large ones of a permutation (every matrix read through
+ * frd(5)) by counting over the inverse permutation; others by qsort. */
 static int make_sorted(struct frs_prep *p, uint32_t b)
 {
 	const struct frs_matrix *m = p->m;
-	uint32_t *inv = mem_big(m->n * sizeof *inv);
+	uint64_t nblk = (uint64_t)(m->w / b) * (m->h / b);
+	uint32_t *inv = NULL;
 	struct pair *tmp = NULL;
 	int rc = 0;
 
 	p->block = b;
 	p->sval = mem_big(m->n * sizeof *p->sval);
 	p->sidx = mem_big(m->n * sizeof *p->sidx);
-	if (inv == NULL || p->sval == NULL || p->sidx == NULL)
+	if (p->sval == NULL || p->sidx == NULL)
+		rc = frs_fail("out of memory for the sorted lists");
+	else if (nblk > ONE_PASS_BLOCKS) {
+		struct scatter sc = { p, NULL, 0 };
+		rc = frs_parallel(m->h / b, 1, sort_rows, &sc, NULL);
+	} else if ((inv = mem_big(m->n * sizeof *inv)) == NULL)
 		rc = frs_fail("out of memory for the sorted lists");
 	else if (is_permutation(m)) {
-		uint32_t bh = m->h / b, nt = (uint32_t)frs_threads();
+		uint64_t nt = (uint64_t)frs_threads();
 		struct invert iv = { m->v, inv };
-		struct scatter sc = { p, inv, 0 };
-		nt = nt < 1 ? 1 : nt > bh ? bh : nt;
-		sc.rows = (bh + nt - 1) / nt;
+		nt = nt < 1 ? 1 : nt;
 		rc = frs_parallel(m->n, (m->n + nt - 1) / nt, invert_task, &iv,
 		    NULL);
 		if (rc == 0)
-			rc = frs_parallel((bh + sc.rows - 1) / sc.rows, 1,
-			    scatter_task, &sc, NULL);
+			rc = count_sort(p, inv);
 	} else if ((tmp = malloc((size_t)b * b * sizeof *tmp)) == NULL)
 		rc = frs_fail("out of memory for the sorted lists");
 	else
