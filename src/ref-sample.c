@@ -259,9 +259,8 @@ int main(int argc, char **argv)
 				    (unsigned long long)maxf);
 			}
 		}
-		for (uint64_t i = 0; i < placed; i++)
-			if (pts_writer_put(&w, xy + dims * i) < 0)
-				goto fail;
+		if (pts_writer_put_n(&w, xy, (size_t)placed) < 0)
+			goto fail;
 		progress_update(&pr, set + 1);
 	}
 	progress_end(&pr);

@@ -34,7 +34,7 @@ static void roundtrip(void **state)
 		assert_int_equal(p.dims, 2);
 		assert_int_equal(p.extra, 1);
 		assert_int_equal(p.n, 3);
-		/* Bit-exact, text included (%.17g round-trips). */
+		/* Bit-exact, text included (shortest round-trip form). */
 		assert_memory_equal(p.x, pts3, sizeof pts3);
 		pts_free(&p);
 	}
@@ -49,6 +49,64 @@ static void roundtrip(void **state)
 		assert_true(io_get_u64(raw + 24) == 3);
 		free(raw);
 	}
+}
+
+/* The text form, byte for byte: frs_dtoa's shortest strings. */
+static void text_form(void **state)
+{
+	static const char want[] = "#pts dims=2 extra=1 count=3\n"
+	    "0 0.5 0.25\n0.9999999999999999 1e-300 0.1\n"
+	    "0.3333333333333333 0.7071067811865476 0.9999\n";
+	size_t len;
+	unsigned char *raw;
+	(void)state;
+
+	write_set(tu_path("f.txt"), 2, 1, pts3, 3, 1);
+	raw = tu_read(tu_path("f.txt"), &len);
+	assert_int_equal(len, sizeof want - 1);
+	assert_memory_equal(raw, want, len);
+	free(raw);
+}
+
+/* Many records (past the writer's 32 KiB buffer): pts_writer_put_n and
+ * record by record pts_writer_put give the same bytes, read back bit for
+ * bit, extra values of any size and sign included. */
+static void text_many(void **state)
+{
+	enum { N = 6000, NCOL = 4 };
+	double *x = malloc(N * NCOL * sizeof *x);
+	struct frs_points p;
+	struct pts_writer w;
+	unsigned char *a, *b;
+	size_t la, lb;
+	FILE *fp;
+	(void)state;
+
+	assert_non_null(x);
+	for (size_t i = 0; i < N * NCOL; i++) {
+		double u = frs_rand01(7, FRS_STREAM_TEST, i);
+		x[i] = i % NCOL < 2 ? u : ldexp(u - 0.5, (int)(i % 600) - 300);
+	}
+	write_set(tu_path("n.txt"), 2, 2, x, N, 1);
+	fp = fopen(tu_path("one.txt"), "wb");
+	assert_non_null(fp);
+	assert_int_equal(pts_writer_begin(&w, fp, "one", 2, 2, N, 1), 0);
+	for (size_t i = 0; i < N; i++)
+		assert_int_equal(pts_writer_put(&w, x + NCOL * i), 0);
+	assert_int_equal(pts_writer_end(&w), 0);
+	assert_int_equal(fclose(fp), 0);
+	a = tu_read(tu_path("n.txt"), &la);
+	b = tu_read(tu_path("one.txt"), &lb);
+	assert_true(la > 100000);
+	assert_int_equal(la, lb);
+	assert_memory_equal(a, b, la);
+	free(a);
+	free(b);
+	assert_int_equal(pts_read(tu_path("n.txt"), &p), 0);
+	assert_int_equal(p.n, N);
+	assert_memory_equal(p.x, x, N * NCOL * sizeof *x);
+	pts_free(&p);
+	free(x);
 }
 
 /* Text without a header: every column is a coordinate; comments and
@@ -197,6 +255,8 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(roundtrip),
+		cmocka_unit_test(text_form),
+		cmocka_unit_test(text_many),
 		cmocka_unit_test(plain_text),
 		cmocka_unit_test(unknown_count),
 		cmocka_unit_test(bad_text),

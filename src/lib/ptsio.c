@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "ptsio.h"
+#include "dtoa.h"
 #include "err.h"
 #include "mem.h"
 #include "io.h"
@@ -460,18 +461,46 @@ static int check_coords(const struct pts_writer *w, const double *recs,
 	return 0;
 }
 
+/* Lines are gathered up to TEXT_CHUNK bytes and written by one fwrite;
+ * the buffer has room for one more line past that (each value at most
+ * FRS_DTOA_BUF - 1 characters and its separator, then frs_dtoa's NUL). */
+#define TEXT_CHUNK 32768
+
+/* n records as text lines: each value in frs_dtoa's shortest round-trip
+ * form, blank-separated. */
+static int put_text(const struct pts_writer *w, const double *recs,
+    size_t n)
+{
+	unsigned ncol = w->dims + w->extra;
+	char buf[TEXT_CHUNK + PTS_MAXCOLS * FRS_DTOA_BUF];
+	size_t len = 0;
+
+	for (size_t k = 0; k < n; k++, recs += ncol) {
+		for (unsigned i = 0; i < ncol; i++) {
+			len += frs_dtoa(recs[i], buf + len);
+			buf[len++] = i + 1 < ncol ? ' ' : '\n';
+		}
+		if (len >= TEXT_CHUNK || k + 1 == n) {
+			if (fwrite(buf, 1, len, w->fp) != len)
+				return frs_fail_errno("%s: write error", w->name);
+			len = 0;
+		}
+	}
+	return 0;
+}
+
 int pts_writer_put_n(struct pts_writer *w, const double *recs, size_t n)
 {
 	size_t nval = n * (w->dims + w->extra);
 
-	if (w->text) {
-		for (size_t k = 0; k < n; k++)
-			if (pts_writer_put(w, recs + k * (w->dims + w->extra)) < 0)
-				return -1;
-		return 0;
-	}
 	if (check_coords(w, recs, n) < 0)
 		return -1;
+	if (w->text) {
+		if (put_text(w, recs, n) < 0)
+			return -1;
+		w->written += n;
+		return 0;
+	}
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
 	{
 		double tmp[1024];
@@ -498,11 +527,8 @@ int pts_writer_put(struct pts_writer *w, const double *rec)
 	if (check_coords(w, rec, 1) < 0)
 		return -1;
 	if (w->text) {
-		for (unsigned i = 0; i < ncol; i++)
-			if (fprintf(w->fp, i ? " %.17g" : "%.17g", rec[i]) < 0)
-				return frs_fail_errno("%s: write error", w->name);
-		if (putc('\n', w->fp) == EOF)
-			return frs_fail_errno("%s: write error", w->name);
+		if (put_text(w, rec, 1) < 0)
+			return -1;
 	} else {
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
 		double tmp[PTS_MAXCOLS];

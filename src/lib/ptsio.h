@@ -12,7 +12,8 @@
  *   24      8     point count; 0 means "unknown, read to the end"
  *   32            count records of k + e float64
  *
- * Text: one point per line, values separated by blanks, '#' starts a
+ * Text: one point per line, values separated by blanks (written in the
+ * shortest form that reads back exactly, see dtoa.h), '#' starts a
  * comment line; an optional first line "#pts dims=K extra=E count=N"
  * gives the layout (without it every column is a coordinate).
  * Readers detect the form by the magic.
