@@ -60,43 +60,38 @@ static const struct option longopts[] = {
 	{ NULL, 0, NULL, 0 }
 };
 
-static unsigned parse_blocks(const char *s, uint32_t *out)
-{
-	char buf[256], *tok, *save = NULL;
-	unsigned n = 0;
-
-	if (strlen(s) >= sizeof buf)
-		cli_usage_error("--blocks: list too long");
-	strcpy(buf, s);
-	for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",",
-	    &save)) {
-		uint32_t b = (uint32_t)cli_ll("--blocks", tok, 1, 1 << 16);
-		if (b & (b - 1))
-			cli_usage_error("--blocks: %u is not a power of two", b);
-		if (n == 32)
-			cli_usage_error("--blocks: at most 32 sizes");
-		out[n++] = b;
-	}
-	return n;
-}
-
-/* --for: "1024,1048576" (at most 32 counts, each 1 to 2^40). */
-static unsigned parse_counts(const char *s, uint64_t *out)
+/* A comma-separated list of up to 32 integers in [min, max] for opt. */
+static unsigned parse_list(const char *opt, const char *s, uint64_t *out,
+    long long min, long long max)
 {
 	char buf[1024], *tok, *save = NULL;
 	unsigned n = 0;
 
 	if (strlen(s) >= sizeof buf)
-		cli_usage_error("--for: list too long");
+		cli_usage_error("%s: list too long", opt);
 	strcpy(buf, s);
 	for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",",
 	    &save)) {
 		if (n == 32)
-			cli_usage_error("--for: at most 32 counts");
-		out[n++] = (uint64_t)cli_ll("--for", tok, 1, 1LL << 40);
+			cli_usage_error("%s: at most 32 values", opt);
+		out[n++] = (uint64_t)cli_ll(opt, tok, min, max);
 	}
 	if (n == 0)
-		cli_usage_error("--for: no count");
+		cli_usage_error("%s: an empty list", opt);
+	return n;
+}
+
+static unsigned parse_blocks(const char *s, uint32_t *out)
+{
+	uint64_t v[32];
+	unsigned n = parse_list("--blocks", s, v, 1, 1 << 16);
+
+	for (unsigned i = 0; i < n; i++) {
+		if (v[i] & (v[i] - 1))
+			cli_usage_error("--blocks: %llu is not a power of two",
+			    (unsigned long long)v[i]);
+		out[i] = (uint32_t)v[i];
+	}
 	return n;
 }
 
@@ -161,7 +156,8 @@ int main(int argc, char **argv)
 		case OPT_RANK: rank = 1; break;
 		case OPT_BLOCKS: nblocks = parse_blocks(optarg, blocks); break;
 		case OPT_CHECK: check = 1; break;
-		case OPT_FOR: ncounts = parse_counts(optarg, counts); break;
+		case OPT_FOR: ncounts = parse_list("--for", optarg, counts, 1,
+		    1LL << 40); break;
 		case 'i': imp = optarg; break;
 		case OPT_SIGMA: sigma = cli_double("--sigma", optarg, 1.0, 1e6); break;
 		case 'v': verbose = 1; break;

@@ -41,30 +41,12 @@ static double *hard3(size_t n, uint32_t s, uint64_t seed)
 
 /* ---- D2: Warnock's closed form -------------------------------------- */
 
-/* The formula as written, in long double: every ordered pair, max. */
+/* The formula as written (discref.h's oracle), its root. */
 static double warnock_direct(const double *x, size_t n, unsigned k)
 {
-	long double s1 = 0, s2 = 0, c = 0, t3 = 1, t2 = 1;
-	for (unsigned d = 0; d < k; d++)
-		t3 /= 3, t2 /= 2;
-	for (size_t i = 0; i < n; i++) {
-		long double p = 1;
-		for (unsigned d = 0; d < k; d++) {
-			long double v = x[k * i + d];
-			p *= 1 - v * v;
-		}
-		s1 += p;
-		for (size_t j = 0; j < n; j++) {
-			long double q = 1, t;
-			for (unsigned d = 0; d < k; d++)
-				q *= 1 - fmaxl(x[k * i + d], x[k * j + d]);
-			t = s2 + q;
-			c += (s2 - t) + q;
-			s2 = t;
-		}
-	}
-	s2 += c;
-	return (double)sqrtl(t3 - 2 * t2 * s1 / n + s2 / ((long double)n * n));
+	long double sq = ref_warnock_sq(x, n, k);
+
+	return (double)sqrtl(sq > 0 ? sq : 0);
 }
 
 static void l2_direct(void **state)
