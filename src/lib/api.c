@@ -1049,13 +1049,10 @@ void frs_hsw_free(frs_hsw *hw)
 void api_hsw_pdf(const struct hsw_tree *t, const struct frs_imap *map,
     const double *xy, double *pdf, size_t n)
 {
-	double mean = t->total / ((double)map->w * (double)map->h);
+	double mean = hsw_mean(t, map);
 
-	for (size_t i = 0; i < n; i++) {
-		uint32_t px = (uint32_t)(xy[2 * i] * map->w);
-		uint32_t py = (uint32_t)(xy[2 * i + 1] * map->h);
-		pdf[i] = map->v[(uint64_t)py * map->w + px] / mean;
-	}
+	for (size_t i = 0; i < n; i++)
+		pdf[i] = hsw_pdf_at(map, mean, xy[2 * i], xy[2 * i + 1]);
 }
 
 int frs_hsw_warp(const frs_hsw *hw, const double *in, double *out,
