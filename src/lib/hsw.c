@@ -167,6 +167,201 @@ uint64_t hsw_warp(const struct hsw_tree *t, double *x, double *y)
 	return (uint64_t)j * t->w + i;
 }
 
+/* Points per piece of input made at once inside a chunk: small enough
+ * for the first-level cache. */
+#define PIECE 256
+
+double hsw_radical_inverse(uint64_t i, unsigned b)
+{
+	double inv = 1.0 / b, f = inv, r = 0;
+
+	while (i > 0) {
+		r += (double)(i % b) * f;
+		i /= b;
+		f *= inv;
+	}
+	return r < 1.0 ? r : BELOW_ONE;
+}
+
+static uint64_t bit_reverse(uint64_t x)
+{
+	x = (x >> 1 & 0x5555555555555555u) | (x & 0x5555555555555555u) << 1;
+	x = (x >> 2 & 0x3333333333333333u) | (x & 0x3333333333333333u) << 2;
+	x = (x >> 4 & 0x0f0f0f0f0f0f0f0fu) | (x & 0x0f0f0f0f0f0f0f0fu) << 4;
+	x = (x >> 8 & 0x00ff00ff00ff00ffu) | (x & 0x00ff00ff00ff00ffu) << 8;
+	x = (x >> 16 & 0x0000ffff0000ffffu) | (x & 0x0000ffff0000ffffu) << 16;
+	return x >> 32 | x << 32;
+}
+
+/* hsw_radical_inverse(i, 2) for i < 2^53: the digits are the bits of i
+ * mirrored, and the sum of at most 53 powers of two that the loop adds is
+ * exact, so it is the mirrored integer times 2^-64, exactly. */
+static double radical_inverse2(uint64_t i)
+{
+	return (double)bit_reverse(i) * 0x1p-64;
+}
+
+/* Base-3 digits of a 64-bit integer. */
+#define DIGITS3 41
+/* The low digits whose part of the sum comes from a table: 3^6 = 729
+ * sums (6 KiB, for the first-level cache). */
+#define LOW3 6
+#define LOW3N 729
+
+/*
+ * hsw_radical_inverse(i, 3) is r = 0 + d0 w0 + d1 w1 + ... in this order,
+ * with weights w_k the rounded powers (1/3) (1/3) ...; a missing high
+ * digit adds 0, which leaves r as it is.  The sum over the low LOW3
+ * digits depends on i mod 3^LOW3 only (the table low), and the terms of
+ * the high digits are the same over a run of 3^LOW3 indices: a run is a
+ * copy from the table and a few additions of constants, vectorised, and
+ * gives the loop's bits.
+ */
+struct base3 {
+	double w[DIGITS3];
+	double low[LOW3N];
+};
+
+static void base3_init(struct base3 *b)
+{
+	double inv = 1.0 / 3, f = inv;
+
+	for (unsigned k = 0; k < DIGITS3; k++) {
+		b->w[k] = f;
+		f *= inv;
+	}
+	for (unsigned x = 0; x < LOW3N; x++) {
+		double r = 0;
+		for (unsigned k = 0, y = x; k < LOW3; k++, y /= 3)
+			r += (double)(y % 3) * b->w[k];
+		b->low[x] = r;
+	}
+}
+
+/* hsw_radical_inverse(i, 3) for i = first .. first + m - 1 (m <= PIECE)
+ * into out[0], out[2], ... */
+static void radical_inverse3(const struct base3 *b, uint64_t first, size_t m,
+    double *out)
+{
+	uint64_t hi = first / LOW3N;
+	size_t lo = (size_t)(first % LOW3N);
+	double r[PIECE];
+
+	for (size_t q = 0; q < m; hi++, lo = 0) {
+		size_t len = m - q < LOW3N - lo ? m - q : LOW3N - lo;
+		double c[DIGITS3];
+		unsigned nc = 0;
+
+		for (uint64_t h = hi; h > 0; h /= 3, nc++)
+			c[nc] = (double)(h % 3) * b->w[LOW3 + nc];
+		for (size_t s = 0; s < len; s++)
+			r[q + s] = b->low[lo + s];
+		for (unsigned k = 0; k < nc; k++)
+			for (size_t s = 0; s < len; s++)
+				r[q + s] += c[k];
+		q += len;
+	}
+	for (size_t q = 0; q < m; q++)
+		out[2 * q] = r[q] < 1.0 ? r[q] : BELOW_ONE;
+}
+
+static uint64_t grid_side(uint64_t n)
+{
+	uint64_t k = (uint64_t)sqrt((double)n);
+
+	while (k * k < n)
+		k++;
+	while (k > 1 && (k - 1) * (k - 1) >= n)
+		k--;
+	return k;
+}
+
+/* Cell centres (ox = oy = 0.5) or jittered points of the k x k grid for
+ * indices begin .. end - 1: column and row counted, not divided. */
+static void grid_range(int jitter, uint64_t n, uint64_t seed, uint64_t begin,
+    uint64_t end, double *out)
+{
+	uint64_t k = grid_side(n), col = begin % k, row = begin / k;
+	double dk = (double)k;
+
+	for (uint64_t i = begin; i < end; i++) {
+		double ox = 0.5, oy = 0.5;
+		if (jitter) {
+			ox = frs_rand01(seed, FRS_STREAM_HSW, 2 * i);
+			oy = frs_rand01(seed, FRS_STREAM_HSW, 2 * i + 1);
+		}
+		out[0] = ((double)col + ox) / dk;
+		out[1] = ((double)row + oy) / dk;
+		out += 2;
+		if (++col == k) {
+			col = 0;
+			row++;
+		}
+	}
+}
+
+static void piece_range(const struct base3 *b3, enum hsw_input kind,
+    uint64_t n, uint64_t seed, uint64_t begin, uint64_t end, double *out)
+{
+	uint64_t m = end - begin;
+
+	switch (kind) {
+	case HSW_RANDOM:
+		for (uint64_t i = begin; i < end; i++, out += 2) {
+			out[0] = frs_rand01(seed, FRS_STREAM_HSW, 2 * i);
+			out[1] = frs_rand01(seed, FRS_STREAM_HSW, 2 * i + 1);
+		}
+		return;
+	case HSW_REGULAR:
+	case HSW_JITTERED:
+		grid_range(kind == HSW_JITTERED, n, seed, begin, end, out);
+		return;
+	case HSW_HALTON:
+		for (uint64_t q = 0; q < m; q++)
+			out[2 * q] = radical_inverse2(begin + q + 1);
+		radical_inverse3(b3, begin + 1, (size_t)m, out + 1);
+		return;
+	case HSW_HAMMERSLEY:
+		for (uint64_t q = 0; q < m; q++) {
+			out[2 * q] = ((double)(begin + q) + 0.5) / (double)n;
+			out[2 * q + 1] = radical_inverse2(begin + q);
+		}
+		return;
+	}
+}
+
+/* hsw_input_range with the table of base 3 made (Halton only). */
+static void input_range(const struct base3 *b3, enum hsw_input kind,
+    uint64_t n, uint64_t seed, uint64_t begin, uint64_t end, double *out)
+{
+	for (uint64_t p = begin; p < end; p += PIECE) {
+		uint64_t e = end - p < PIECE ? end : p + PIECE;
+		double *o = out + 2 * (p - begin);
+
+		piece_range(b3, kind, n, seed, p, e, o);
+		/* The sets' formulas may round up to 1 (a cell centre of a
+		 * huge grid, say): the largest double below it instead. */
+		for (uint64_t q = 0; q < 2 * (e - p); q++)
+			o[q] = o[q] < 1.0 ? o[q] : BELOW_ONE;
+	}
+}
+
+void hsw_input_range(enum hsw_input kind, uint64_t n, uint64_t seed,
+    uint64_t begin, uint64_t end, double *out)
+{
+	struct base3 b3;
+
+	if (kind == HSW_HALTON)
+		base3_init(&b3);
+	input_range(&b3, kind, n, seed, begin, end, out);
+}
+
+void hsw_input_make(enum hsw_input kind, uint64_t n, uint64_t seed,
+    double *out)
+{
+	hsw_input_range(kind, n, seed, 0, n, out);
+}
+
 /*
  * The warp of many points, written to be vectorised: points in groups of
  * GROUP, level by level (their descents are independent chains of
@@ -268,10 +463,6 @@ static inline void warp_records(const struct hsw_tree *t, const double *in,
 	}
 }
 
-/* Points per piece of input made at once inside a chunk: small enough
- * for the first-level cache. */
-#define PIECE 256
-
 /* Points per chunk of frs_parallel: the unit handed to a thread. */
 #define CHUNK 16384
 
@@ -289,6 +480,10 @@ static int sample_task(void *ctx, uint64_t begin, uint64_t end)
 	const struct sample_job *job = ctx;
 	const struct hsw_source *src = job->src;
 	double buf[2 * PIECE];
+	struct base3 b3;
+
+	if (src->in == NULL && src->kind == HSW_HALTON)
+		base3_init(&b3);
 
 	for (uint64_t p = begin; p < end; p += PIECE) {
 		uint64_t m = end - p < PIECE ? end - p : PIECE, at = job->base + p;
@@ -297,8 +492,8 @@ static int sample_task(void *ctx, uint64_t begin, uint64_t end)
 		if (src->in != NULL)
 			in = src->in + 2 * at;
 		else
-			hsw_input_range(src->kind, src->n, src->seed, at, at + m,
-			    buf);
+			input_range(&b3, src->kind, src->n, src->seed, at,
+			    at + m, buf);
 		if (job->stride == 3)
 			warp_records(job->t, in, (size_t)m, job->out + 3 * p, 3,
 			    job->map, job->mean);
@@ -339,160 +534,4 @@ int hsw_input_parse(const char *name)
 		if (strcmp(name, names[k]) == 0)
 			return k;
 	return -1;
-}
-
-double hsw_radical_inverse(uint64_t i, unsigned b)
-{
-	double inv = 1.0 / b, f = inv, r = 0;
-
-	while (i > 0) {
-		r += (double)(i % b) * f;
-		i /= b;
-		f *= inv;
-	}
-	return r < 1.0 ? r : BELOW_ONE;
-}
-
-static uint64_t bit_reverse(uint64_t x)
-{
-	x = (x >> 1 & 0x5555555555555555u) | (x & 0x5555555555555555u) << 1;
-	x = (x >> 2 & 0x3333333333333333u) | (x & 0x3333333333333333u) << 2;
-	x = (x >> 4 & 0x0f0f0f0f0f0f0f0fu) | (x & 0x0f0f0f0f0f0f0f0fu) << 4;
-	x = (x >> 8 & 0x00ff00ff00ff00ffu) | (x & 0x00ff00ff00ff00ffu) << 8;
-	x = (x >> 16 & 0x0000ffff0000ffffu) | (x & 0x0000ffff0000ffffu) << 16;
-	return x >> 32 | x << 32;
-}
-
-/* hsw_radical_inverse(i, 2) for i < 2^53: the digits are the bits of i
- * mirrored, and the sum of at most 53 powers of two that the loop adds is
- * exact, so it is the mirrored integer times 2^-64, exactly. */
-static double radical_inverse2(uint64_t i)
-{
-	return (double)bit_reverse(i) * 0x1p-64;
-}
-
-/* Base-3 digits of a 64-bit integer. */
-#define DIGITS3 41
-
-/*
- * hsw_radical_inverse(i, 3) for i = first .. first + m - 1 (m <= PIECE)
- * into out[0], out[2], ...: the digits of first once, then counted up;
- * the sum over the digits in the loop's order, with its weights (the
- * same rounded powers of 1/3) and zero terms for missing high digits
- * (r + 0 = r), for all points at once, digit by digit, so that it
- * vectorises.
- */
-static void radical_inverse3(uint64_t first, size_t m, double *out)
-{
-	unsigned char dig[DIGITS3 + 1], col[DIGITS3][PIECE];
-	double w[DIGITS3], r[PIECE], inv = 1.0 / 3, f = inv;
-	unsigned nd = 0;
-
-	for (uint64_t x = first + (m - 1); x > 0; x /= 3) {
-		w[nd++] = f;
-		f *= inv;
-	}
-	for (unsigned k = 0; k <= nd; k++)
-		dig[k] = 0;
-	for (uint64_t x = first, k = 0; x > 0; x /= 3)
-		dig[k++] = (unsigned char)(x % 3);
-	for (size_t q = 0; q < m; q++) {
-		for (unsigned k = 0; k < nd; k++)
-			col[k][q] = dig[k];
-		for (unsigned k = 0; k < nd && ++dig[k] == 3; k++)
-			dig[k] = 0;
-	}
-	for (size_t q = 0; q < m; q++)
-		r[q] = 0;
-	for (unsigned k = 0; k < nd; k++)
-		for (size_t q = 0; q < m; q++)
-			r[q] += (double)col[k][q] * w[k];
-	for (size_t q = 0; q < m; q++)
-		out[2 * q] = r[q] < 1.0 ? r[q] : BELOW_ONE;
-}
-
-static uint64_t grid_side(uint64_t n)
-{
-	uint64_t k = (uint64_t)sqrt((double)n);
-
-	while (k * k < n)
-		k++;
-	while (k > 1 && (k - 1) * (k - 1) >= n)
-		k--;
-	return k;
-}
-
-/* Cell centres (ox = oy = 0.5) or jittered points of the k x k grid for
- * indices begin .. end - 1: column and row counted, not divided. */
-static void grid_range(int jitter, uint64_t n, uint64_t seed, uint64_t begin,
-    uint64_t end, double *out)
-{
-	uint64_t k = grid_side(n), col = begin % k, row = begin / k;
-	double dk = (double)k;
-
-	for (uint64_t i = begin; i < end; i++) {
-		double ox = 0.5, oy = 0.5;
-		if (jitter) {
-			ox = frs_rand01(seed, FRS_STREAM_HSW, 2 * i);
-			oy = frs_rand01(seed, FRS_STREAM_HSW, 2 * i + 1);
-		}
-		out[0] = ((double)col + ox) / dk;
-		out[1] = ((double)row + oy) / dk;
-		out += 2;
-		if (++col == k) {
-			col = 0;
-			row++;
-		}
-	}
-}
-
-static void piece_range(enum hsw_input kind, uint64_t n, uint64_t seed,
-    uint64_t begin, uint64_t end, double *out)
-{
-	uint64_t m = end - begin;
-
-	switch (kind) {
-	case HSW_RANDOM:
-		for (uint64_t i = begin; i < end; i++, out += 2) {
-			out[0] = frs_rand01(seed, FRS_STREAM_HSW, 2 * i);
-			out[1] = frs_rand01(seed, FRS_STREAM_HSW, 2 * i + 1);
-		}
-		return;
-	case HSW_REGULAR:
-	case HSW_JITTERED:
-		grid_range(kind == HSW_JITTERED, n, seed, begin, end, out);
-		return;
-	case HSW_HALTON:
-		for (uint64_t q = 0; q < m; q++)
-			out[2 * q] = radical_inverse2(begin + q + 1);
-		radical_inverse3(begin + 1, (size_t)m, out + 1);
-		return;
-	case HSW_HAMMERSLEY:
-		for (uint64_t q = 0; q < m; q++) {
-			out[2 * q] = ((double)(begin + q) + 0.5) / (double)n;
-			out[2 * q + 1] = radical_inverse2(begin + q);
-		}
-		return;
-	}
-}
-
-void hsw_input_range(enum hsw_input kind, uint64_t n, uint64_t seed,
-    uint64_t begin, uint64_t end, double *out)
-{
-	for (uint64_t p = begin; p < end; p += PIECE) {
-		uint64_t e = end - p < PIECE ? end : p + PIECE;
-		double *o = out + 2 * (p - begin);
-
-		piece_range(kind, n, seed, p, e, o);
-		/* The sets' formulas may round up to 1 (a cell centre of a
-		 * huge grid, say): the largest double below it instead. */
-		for (uint64_t q = 0; q < 2 * (e - p); q++)
-			o[q] = o[q] < 1.0 ? o[q] : BELOW_ONE;
-	}
-}
-
-void hsw_input_make(enum hsw_input kind, uint64_t n, uint64_t seed,
-    double *out)
-{
-	hsw_input_range(kind, n, seed, 0, n, out);
 }
