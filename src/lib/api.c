@@ -1081,11 +1081,22 @@ int frs_hsw_draw(const frs_hsw *hw, enum frs_hsw_input input, uint64_t n,
 	static const enum hsw_input kinds[] = {
 		HSW_RANDOM, HSW_REGULAR, HSW_JITTERED, HSW_HALTON, HSW_HAMMERSLEY
 	};
+	struct hsw_source src = { HSW_HALTON, n, seed, NULL };
 
 	if (hw == NULL || (xy == NULL && n > 0))
 		return arg_err(err, "frs_hsw_draw: NULL argument");
 	if ((unsigned)input > FRS_HSW_HAMMERSLEY)
 		return arg_err(err, "frs_hsw_draw: unknown input set");
-	hsw_input_make(kinds[input], n, seed, xy);
-	return frs_hsw_warp(hw, xy, xy, pdf, (size_t)n, threads, err);
+	if (threads < 0 || threads > 1024)
+		return arg_err(err, "frs_hsw_draw: threads must lie in 0 .. "
+		    "1024");
+	/* The set made and warped chunk by chunk, as frs_hsw_warp would
+	 * warp it. */
+	src.kind = kinds[input];
+	frs_set_threads(threads > 0 ? threads : 1);
+	if (hsw_sample(&hw->t, &src, NULL, 0, n, xy) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	if (pdf != NULL)
+		api_hsw_pdf(&hw->t, &hw->map, xy, pdf, (size_t)n);
+	return ok(err);
 }

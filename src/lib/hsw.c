@@ -167,6 +167,9 @@ uint64_t hsw_warp(const struct hsw_tree *t, double *x, double *y)
 	return (uint64_t)j * t->w + i;
 }
 
+/* Points per chunk of frs_parallel: the unit handed to a thread. */
+#define CHUNK 16384
+
 /* Points per piece of input made at once inside a chunk: small enough
  * for the first-level cache. */
 #define PIECE 256
@@ -356,10 +359,27 @@ void hsw_input_range(enum hsw_input kind, uint64_t n, uint64_t seed,
 	input_range(&b3, kind, n, seed, begin, end, out);
 }
 
+struct input_job {
+	enum hsw_input kind;
+	uint64_t n, seed;
+	double *out;
+};
+
+static int input_task(void *ctx, uint64_t begin, uint64_t end)
+{
+	const struct input_job *job = ctx;
+
+	hsw_input_range(job->kind, job->n, job->seed, begin, end,
+	    job->out + 2 * begin);
+	return 0;
+}
+
 void hsw_input_make(enum hsw_input kind, uint64_t n, uint64_t seed,
     double *out)
 {
-	hsw_input_range(kind, n, seed, 0, n, out);
+	struct input_job job = { kind, n, seed, out };
+
+	frs_parallel(n, CHUNK, input_task, &job, NULL);
 }
 
 /*
@@ -462,9 +482,6 @@ static inline void warp_records(const struct hsw_tree *t, const double *in,
 		}
 	}
 }
-
-/* Points per chunk of frs_parallel: the unit handed to a thread. */
-#define CHUNK 16384
 
 struct sample_job {
 	const struct hsw_tree *t;

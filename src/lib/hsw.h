@@ -60,7 +60,7 @@ enum hsw_input {
 };
 /* Name to kind; -1 if the name is none of them. */
 int hsw_input_parse(const char *name);
-/* n pairs into out (2n doubles). */
+/* n pairs into out (2n doubles), in parallel with frs_parallel. */
 void hsw_input_make(enum hsw_input kind, uint64_t n, uint64_t seed,
     double *out);
 /* The pairs of indices begin .. end - 1 of the n-point set (2 (end -
