@@ -197,9 +197,9 @@ static double *make_input(struct opts *o)
 	return pts;
 }
 
-/* Points per round of warping and writing: the record buffer (6 MiB
+/* Points per round of warping and writing: the record buffer (1.5 MiB
  * with --pdf), filled by all threads, then written at once. */
-#define ROUND ((uint64_t)1 << 18)
+#define ROUND ((uint64_t)1 << 16)
 
 /* Seconds spent warping and writing. */
 struct times {

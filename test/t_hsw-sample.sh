@@ -44,7 +44,7 @@ hsw-sample -i blob -n 20000 -j 1 -o "$T/j1.pts"
 hsw-sample -i blob -n 20000 -j 2 -o "$T/j2.pts"
 cmp -s "$T/j1.pts" "$T/j2.pts" && ok "-j 1 and -j 2 give the same bytes" ||
     nok "-j 1 and -j 2 give the same bytes"
-# Over two rounds of warping and writing (2^18 points) and many chunks:
+# Over several rounds of warping and writing (2^16 points) and chunks:
 # thread counts, and a file of the points against the set made on the
 # fly, give the same bytes, with the density column too.
 hsw-sample -i blob -s 100x60 -n 300001 --pdf -j 1 -o "$T/r1.pts"
