@@ -214,7 +214,7 @@ struct times {
  * are the same for any thread count, round or chunk size.
  */
 static int write_rounds(const struct opts *o, const frs_hsw *hw,
-    struct hswcl *hc, const double *pts, struct pts_writer *w,
+    struct hswcl *hc, double *pts, struct pts_writer *w,
     struct times *tm)
 {
 	struct hsw_source src = { HSW_HALTON, o->n, cli.seed, pts };
@@ -229,7 +229,7 @@ static int write_rounds(const struct opts *o, const frs_hsw *hw,
 	if ((rec = mem_calloc("output buffer", cap, stride * sizeof *rec)) ==
 	    NULL)
 		return -1;
-	if (hc != NULL && hswcl_warp_points(hc, pts, (double *)pts, o->n) < 0)
+	if (hc != NULL && hswcl_warp_points(hc, pts, pts, o->n) < 0)
 		goto out;
 	for (uint64_t b = 0; b < o->n; b += ROUND) {
 		uint64_t m = o->n - b < ROUND ? o->n - b : ROUND;
@@ -260,7 +260,7 @@ out:
 }
 
 static void warp_and_write(const struct opts *o, const frs_hsw *hw,
-    struct hswcl *hc, const double *pts, struct times *tm)
+    struct hswcl *hc, double *pts, struct times *tm)
 {
 	struct outfile of;
 	struct pts_writer w;
