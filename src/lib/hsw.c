@@ -386,14 +386,28 @@ void hsw_input_make(enum hsw_input kind, uint64_t n, uint64_t seed,
  * The warp of many points, written to be vectorised: points in groups of
  * GROUP, level by level (their descents are independent chains of
  * divisions that the processor overlaps, or that one vector instruction
- * does together), every choice a select instead of a branch.  The
- * arithmetic is split's and place's operation for operation, so the
- * points are hsw_warp's bit for bit:
- *   t - f a  is t - a or t (f is 1 or 0, a finite),
- *   f b + (1 - f) a  is b or a,
- *   and the second split's c[cx] + c[cx + 2] is the first split's a or b.
+ * does together), no branch on a choice.  The results are split's and
+ * place's, bit for bit: with f = 0 or 1 and sums finite and not negative,
+ * split's t - f a is exactly t or t - a, and f b + (1 - f) a exactly a or
+ * b, which pick chooses; the second split's c[cx] + c[cx + 2] is the
+ * first split's a or b.
  */
 #define GROUP 16
+
+/* x where c is 1, y where c is 0, by the bits: neither a branch on a
+ * coin toss, which a scalar build would make of a select, nor
+ * arithmetic. */
+static inline double pick(int c, double x, double y)
+{
+	uint64_t m = (uint64_t)0 - (uint64_t)c, bx, by;
+	double r;
+
+	memcpy(&bx, &x, sizeof bx);
+	memcpy(&by, &y, sizeof by);
+	bx = (bx & m) | (by & ~m);
+	memcpy(&r, &bx, sizeof r);
+	return r;
+}
 
 static void descend_group(const struct hsw_tree *t, double *restrict u,
     double *restrict v, uint32_t *restrict i, uint32_t *restrict j)
@@ -419,18 +433,20 @@ static void descend_group(const struct hsw_tree *t, double *restrict u,
 		for (unsigned q = 0; q < GROUP; q++) {
 			double a = c0[q] + c2[q], b = c1[q] + c3[q];
 			double tu = u[q] * (a + b);
-			unsigned cx = (tu >= a) & (b > 0);
-			double nu = (cx ? tu - a : tu) / (cx ? b : a);
-			double a2 = cx ? c1[q] : c0[q], b2 = cx ? c3[q] : c2[q];
-			double tv = v[q] * (cx ? b : a);
-			unsigned cy = (tv >= a2) & (b2 > 0);
-			double nv = (cy ? tv - a2 : tv) / (cy ? b2 : a2);
+			int cx = (tu >= a) & (b > 0);
+			double den = pick(cx, b, a);
+			double nu = pick(cx, tu - a, tu) / den;
+			double a2 = pick(cx, c1[q], c0[q]);
+			double b2 = pick(cx, c3[q], c2[q]);
+			double tv = v[q] * den;
+			int cy = (tv >= a2) & (b2 > 0);
+			double nv = pick(cy, tv - a2, tv) / pick(cy, b2, a2);
 
 			u[q] = nu < BELOW_ONE ? nu : BELOW_ONE;
 			v[q] = nv < BELOW_ONE ? nv : BELOW_ONE;
-			k[q] = 4 * k[q] + 2 * cy + cx;
-			i[q] = 2 * i[q] + cx;
-			j[q] = 2 * j[q] + cy;
+			k[q] = 4 * k[q] + 2 * (uint32_t)cy + (uint32_t)cx;
+			i[q] = 2 * i[q] + (uint32_t)cx;
+			j[q] = 2 * j[q] + (uint32_t)cy;
 		}
 	}
 }
