@@ -28,7 +28,7 @@ fi
 # base_hsw DIR REV: the path of hsw-sample built (VARIANT=bench) from the
 # tree of commit REV in DIR/src, made unless DIR/rev already names REV.
 base_hsw() {
-	_dir=$1 _rev=$(git rev-parse --verify -q "$2^{commit}") || {
+	_dir=$1 _rev=$(git rev-parse --verify -q "$2^{commit}" 2>/dev/null) || {
 		echo "bench-hsw: $2: no such commit" >&2
 		return 1
 	}
@@ -66,7 +66,11 @@ for map in $MAPS; do
 	done
 done
 
-BASE=$(base_hsw "$BASE_DIR" "$BASE_REV")
+# Without git or the commit (a release tarball) the comparison is skipped.
+if ! BASE=$(base_hsw "$BASE_DIR" "$BASE_REV"); then
+	echo "bench-hsw: no hsw-sample of $BASE_REV: the comparison is skipped" >&2
+	exit 0
+fi
 
 # best LOG2N THREADS: the least whole-process seconds of ours and of the
 # base over RUNS runs, each run one of ours then one of the base; sets
