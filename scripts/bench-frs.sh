@@ -1,5 +1,6 @@
 #!/bin/sh
-# frs-sample and hsw-sample: the analogue of thesis Table 6.2 and Fig. 6.13.  n = 2^0 ..
+# frs-sample: the analogue of thesis Table 6.2 and Fig. 6.13 (hsw-sample's
+# part is scripts/bench-hsw.sh).  n = 2^0 ..
 # 2^24 samples from four 128^2 maps, S_M = 2048 (data/default.frd
 # prepared as a .frp), sigma 8, every implementation on one thread and on
 # all; the thresholding time reported by -v (output to /dev/null) and
@@ -73,26 +74,6 @@ for vol in blob3 shell3; do
 done
 
 echo
-echo "hsw-sample (Halton input): seconds to warp (-v) and whole process, same maps"
-printf '%-7s %-6s %3s %10s %11s %9s %9s\n' map log2n thr samples warp_s Msamp/s process_s
-for map in $MAPS; do
-	imp=$map
-	[ "$map" = sunset ] && imp=$T/sunset.exr
-	for e in $NS; do
-		n=$((1 << e))
-		for j in 1 $ALL; do
-			$TIME -f "%e" -o "$T/t" "$BUILD/bin/hsw-sample" -q -i "$imp" -n $n \
-			    -j $j -v -o /dev/null 2>"$T/v"
-			w=$(sed -n 's/.*warping \([0-9.]*\) s.*/\1/p' "$T/v")
-			awk -v m=$map -v e=$e -v j=$j -v n=$n -v w="$w" -v p="$(cat "$T/t")" 'BEGIN {
-				rate = (w > 0) ? n / w / 1e6 : 0
-				printf "%-7s %-6s %3s %10d %11.6f %9.1f %9.2f\n", m, e, j, n, w, rate, p }'
-			[ "$j" = "$ALL" ] && break
-		done
-	done
-done
-
-echo
 echo "Sorted, 2^24 samples from the blob map, one thread, against the thesis"
 "$FRS" -q -m "$T/M.frp" -i blob -n 16777216 -j 1 -v -o /dev/null 2>"$T/v"
 th=$(grep 'samples (' "$T/v" | sed 's/.*thresholding \([0-9.]*\) s.*/\1/')
@@ -100,7 +81,3 @@ $TIME -f "%M" -o "$T/mem" "$FRS" -q -m "$T/M.frp" -i blob -n 16777216 -j 1 -o "$
 awk -v t="$th" -v mem="$(cat "$T/mem")" -v out="$(wc -c <"$T/out.pts")" 'BEGIN {
 	printf "thresholding %.4f s (target 0.1 s); thesis 0.883 s on a Q6600: %.1fx\n", t, 0.883 / t
 	printf "peak memory %.0f MiB; the output is %.0f MiB, the matrix 16 MiB (target: at most output + 2 x matrix = %.0f MiB)\n", mem / 1024, out / 1048576, out / 1048576 + 32 }'
-
-"$BUILD/bin/hsw-sample" -q -i blob -n 16777216 -j 1 -v -o /dev/null 2>"$T/v"
-w=$(sed -n 's/.*warping \([0-9.]*\) s.*/\1/p' "$T/v")
-awk -v w="$w" 'BEGIN { printf "HSW 2^24 from the blob map, one thread: warping %.3f s (target 1 s); thesis 100 s on a Q6600: %.0fx\n", w, 100 / w }'

@@ -197,45 +197,86 @@ static double *make_input(struct opts *o)
 	return pts;
 }
 
-/* Warp the input in place through the public API, or on the device. */
-static void warp(const struct opts *o, const frs_hsw *hw, struct hswcl *hc,
-    double *pts, double *pdf)
-{
-	frs_error err;
+/* Points per round of warping and writing: the record buffer (1.5 MiB
+ * with --pdf), filled by all threads, then written at once. */
+#define ROUND ((uint64_t)1 << 16)
 
-	if (hc != NULL) {
-		if (hswcl_warp_points(hc, pts, pts, o->n) < 0)
-			cli_die_lib();
-		if (pdf != NULL)
-			api_hsw_pdf(&hw->t, &hw->map, pts, pdf, (size_t)o->n);
-		return;
+/* Seconds spent warping and writing. */
+struct times {
+	double warp, out;
+};
+
+/*
+ * Rounds of ROUND points: warped into the record buffer (x, y and the
+ * density with --pdf) by all threads, or, with the device, warped there
+ * beforehand (pts) and packed here; then written by one
+ * pts_writer_put_n.  A point depends only on its index, so the bytes
+ * are the same for any thread count, round or chunk size.
+ */
+static int write_rounds(const struct opts *o, const frs_hsw *hw,
+    struct hswcl *hc, double *pts, struct pts_writer *w,
+    struct times *tm)
+{
+	struct hsw_source src = { HSW_HALTON, o->n, cli.seed, pts };
+	const struct frs_imap *map = o->pdf ? &hw->map : NULL;
+	unsigned stride = o->pdf ? 3 : 2;
+	uint64_t cap = o->n < ROUND ? o->n : ROUND;
+	double *rec, t0 = progress_now(), mean = hsw_mean(&hw->t, &hw->map);
+	int rc = -1;
+
+	if (pts == NULL && o->input != INPUT_DART)
+		src.kind = (enum hsw_input)o->input;
+	if ((rec = mem_calloc("output buffer", cap, stride * sizeof *rec)) ==
+	    NULL)
+		return -1;
+	if (hc != NULL && hswcl_warp_points(hc, pts, pts, o->n) < 0)
+		goto out;
+	for (uint64_t b = 0; b < o->n; b += ROUND) {
+		uint64_t m = o->n - b < ROUND ? o->n - b : ROUND;
+		double t1;
+
+		if (hc == NULL) {
+			if (hsw_sample(&hw->t, &src, map, b, b + m, rec) < 0)
+				goto out;
+		} else
+			for (uint64_t q = 0; q < m; q++) {
+				double *r = rec + q * stride;
+				r[0] = pts[2 * (b + q)];
+				r[1] = pts[2 * (b + q) + 1];
+				if (map != NULL)
+					r[2] = hsw_pdf_at(map, mean, r[0], r[1]);
+			}
+		t1 = progress_now();
+		tm->warp += t1 - t0;
+		if (pts_writer_put_n(w, rec, (size_t)m) < 0)
+			goto out;
+		t0 = progress_now();
+		tm->out += t0 - t1;
 	}
-	if (frs_hsw_warp(hw, pts, pts, pdf, (size_t)o->n, cli.threads,
-	    &err) != FRS_OK)
-		cli_die("%s", err.message);
+	rc = 0;
+out:
+	free(rec);
+	return rc;
 }
 
-static void write_points(const struct opts *o, const double *pts,
-    const double *pdf)
+static void warp_and_write(const struct opts *o, const frs_hsw *hw,
+    struct hswcl *hc, double *pts, struct times *tm)
 {
 	struct outfile of;
 	struct pts_writer w;
+	double t0;
 
 	if (outfile_open(&of, cli.out, !cli.text) < 0)
 		cli_die_lib();
 	if (pts_writer_begin(&w, of.fp, of.name, 2, (unsigned)o->pdf, o->n,
-	    cli.text) < 0)
+	    cli.text) < 0 || write_rounds(o, hw, hc, pts, &w, tm) < 0)
 		goto fail;
-	for (uint64_t i = 0; i < o->n; i++) {
-		double rec[3] = { pts[2 * i], pts[2 * i + 1],
-		    o->pdf ? pdf[i] : 0 };
-		if (pts_writer_put(&w, rec) < 0)
-			goto fail;
-	}
+	t0 = progress_now();
 	if (pts_writer_end(&w) < 0)
 		goto fail;
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
+	tm->out += progress_now() - t0;
 	return;
 fail:
 	outfile_abort(&of);
@@ -252,7 +293,8 @@ int main(int argc, char **argv)
 	frs_error err;
 	struct ocl dev;
 	struct hswcl hc;
-	double *pts, *pdf = NULL, t0, t1, t2, t3;
+	double *pts = NULL, t0, t1;
+	struct times tm = { 0, 0 };
 
 	cli_init("hsw-sample", usage);
 	parse_opts(argc, argv, &o);
@@ -266,14 +308,12 @@ int main(int argc, char **argv)
 		cli_die("%s: %s", o.imp, err.message);
 	if (o.cl && hswcl_init(&hc, &dev, &hw->t) < 0)
 		cli_die_lib();
-	pts = make_input(&o);
-	if (o.pdf && (pdf = mem_calloc("--pdf", o.n, sizeof *pdf)) == NULL)
-		cli_die_lib();
+	/* The sets are made on the fly, chunk by chunk, except for the
+	 * device, which is handed them all. */
+	if (o.file != NULL || o.input == INPUT_DART || o.cl)
+		pts = make_input(&o);
 	t1 = progress_now();
-	warp(&o, hw, o.cl ? &hc : NULL, pts, pdf);
-	t2 = progress_now();
-	write_points(&o, pts, pdf);
-	t3 = progress_now();
+	warp_and_write(&o, hw, o.cl ? &hc : NULL, pts, &tm);
 	if (o.verbose) {
 		fprintf(stderr, "hsw-sample: map %ux%u padded to %ux%u "
 		    "(%u levels), mean %.6g; input %s, %llu points, %d "
@@ -283,7 +323,7 @@ int main(int argc, char **argv)
 		    names[o.input], (unsigned long long)o.n,
 		    frs_threads());
 		fprintf(stderr, "hsw-sample: setup %.6f s, warping %.6f s, "
-		    "output %.6f s\n", t1 - t0, t2 - t1, t3 - t2);
+		    "output %.6f s\n", t1 - t0, tm.warp, tm.out);
 		if (o.cl)
 			fprintf(stderr, "hsw-sample: device %s: program and "
 			    "tree %.6f s; points written %.6f s, kernel %.6f "
@@ -295,7 +335,6 @@ int main(int argc, char **argv)
 		ocl_close(&dev);
 	}
 	free(pts);
-	free(pdf);
 	frs_hsw_free(hw);
 	imap_free(&map);
 	return 0;

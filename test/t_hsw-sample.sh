@@ -44,6 +44,22 @@ hsw-sample -i blob -n 20000 -j 1 -o "$T/j1.pts"
 hsw-sample -i blob -n 20000 -j 2 -o "$T/j2.pts"
 cmp -s "$T/j1.pts" "$T/j2.pts" && ok "-j 1 and -j 2 give the same bytes" ||
     nok "-j 1 and -j 2 give the same bytes"
+# Over several rounds of warping and writing (2^16 points) and chunks:
+# thread counts, and a file of the points against the set made on the
+# fly, give the same bytes, with the density column too.
+hsw-sample -i blob -s 100x60 -n 300001 --pdf -j 1 -o "$T/r1.pts"
+hsw-sample -i blob -s 100x60 -n 300001 --pdf -j 3 -o "$T/r3.pts"
+cmp -s "$T/r1.pts" "$T/r3.pts" && ok "-n 300001 --pdf: -j 1 and -j 3 the same bytes" ||
+    nok "-n 300001 --pdf: -j 1 and -j 3 the same bytes"
+hsw-sample -i blob -n 300001 --input random -S 5 -o "$T/in.pts"
+hsw-sample -i blob -n 300001 --input "$T/in.pts" -j 1 -o "$T/f1.pts"
+hsw-sample -i blob -n 300001 --input "$T/in.pts" -j 3 -o "$T/f3.pts"
+cmp -s "$T/f1.pts" "$T/f3.pts" && ok "--input FILE, 300001 points: -j 1 and -j 3 the same bytes" ||
+    nok "--input FILE, 300001 points: -j 1 and -j 3 the same bytes"
+hsw-sample -i blob -n 20000 --pdf -T -j 1 -o "$T/t1.txt"
+hsw-sample -i blob -n 20000 --pdf -T -j 3 -o "$T/t3.txt"
+cmp -s "$T/t1.txt" "$T/t3.txt" && ok "-T --pdf: -j 1 and -j 3 the same text" ||
+    nok "-T --pdf: -j 1 and -j 3 the same text"
 hsw-sample -i blob -n 100 --input random -S 2 -o "$T/s2.pts"
 hsw-sample -i blob -n 100 --input random -S 3 -o "$T/s3.pts"
 cmp -s "$T/s2.pts" "$T/s3.pts" && nok "-S changes random input" || ok "-S changes random input"
@@ -93,6 +109,16 @@ if cl_run hsw-sample --list-devices >"$T/dev" 2>"$T/err"; then
 		    ok "--device cl, $m: the CPU's bytes" ||
 		    nok "--device cl, $m: the CPU's bytes"
 	done
+	cl_run hsw-sample -i blob -s 100x60 -n 300001 --pdf --device cl \
+	    -o "$T/rcl.pts"
+	cmp -s "$T/r1.pts" "$T/rcl.pts" &&
+	    ok "--device cl, -n 300001 --pdf: the bytes of -j 1" ||
+	    nok "--device cl, -n 300001 --pdf: the bytes of -j 1"
+	cl_run hsw-sample -i blob -n 300001 --input "$T/in.pts" --device cl \
+	    -o "$T/fcl.pts"
+	cmp -s "$T/f1.pts" "$T/fcl.pts" &&
+	    ok "--device cl, --input FILE: the bytes of -j 1" ||
+	    nok "--device cl, --input FILE: the bytes of -j 1"
 	hsw-sample -i blob -s 100x60 -n 5000 --input dart -S 4 --pdf -T \
 	    --device cpu -o "$T/cpu.txt"
 	cl_run hsw-sample -i blob -s 100x60 -n 5000 --input dart -S 4 --pdf -T \

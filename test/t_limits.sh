@@ -23,8 +23,16 @@ limit "frs-sample -n: the samples' need" 100M \
     frs-sample -n 100000000 -o "$T/a.pts"
 limit "frs-sample: the default matrix" 8M "2048x2048 matrix: needs 16.0 MiB" \
     "$T/a.pts" frs-sample -n 100 -o "$T/a.pts"
-limit "hsw-sample -n" 10M "-n 1000000: needs 15.3 MiB" "$T/a.pts" \
-    hsw-sample -i blob -n 1000000 -o "$T/a.pts"
+limit "hsw-sample -n, --input dart" 10M "-n 1000000: needs 15.3 MiB" "$T/a.pts" \
+    hsw-sample -i blob -n 1000000 --input dart -o "$T/a.pts"
+# A generated set is made and written chunk by chunk: its memory does
+# not grow with n.
+if env FRS_MAX_MEM=10M hsw-sample -i blob -n 1000000 -o "$T/h.pts" 2>"$T/err"; then
+	ok "hsw-sample -n 1000000 (Halton) within 10M"
+else
+	nok "hsw-sample -n 1000000 (Halton) within 10M: $(head -n 1 "$T/err")"
+fi
+rm -f "$T/h.pts"
 limit "ref-sample -n" 10M "1000000 points: needs 15.3 MiB" "$T/a.pts" \
     ref-sample -n 1000000 -o "$T/a.pts"
 limit "imap gen -s" 1M "2000x2000 map: needs 30.5 MiB" "$T/a.png" \

@@ -7,6 +7,7 @@
 #include "imap.h"
 #include "moments.h"
 #include "par.h"
+#include "rng.h"
 
 /* n halton points warped by map m into a new array. */
 static double *warp(const struct frs_imap *m, uint64_t n, enum hsw_input in)
@@ -221,6 +222,129 @@ static void test_inputs(void **state)
 	assert_near(p[2 * 3 + 1], 0.75, 0);
 }
 
+/* The input sets by their defining formulas, one index at a time: the
+ * oracle of the chunked, table-driven hsw_input_range. */
+static void input_oracle(enum hsw_input kind, uint64_t n, uint64_t seed,
+    uint64_t i, double *x, double *y)
+{
+	uint64_t k = 1;
+
+	while (k * k < n)
+		k++;
+	switch (kind) {
+	case HSW_RANDOM:
+		*x = frs_rand01(seed, FRS_STREAM_HSW, 2 * i);
+		*y = frs_rand01(seed, FRS_STREAM_HSW, 2 * i + 1);
+		break;
+	case HSW_REGULAR:
+		*x = ((double)(i % k) + 0.5) / (double)k;
+		*y = ((double)(i / k) + 0.5) / (double)k;
+		break;
+	case HSW_JITTERED:
+		*x = ((double)(i % k) + frs_rand01(seed, FRS_STREAM_HSW, 2 * i)) /
+		    (double)k;
+		*y = ((double)(i / k) +
+		    frs_rand01(seed, FRS_STREAM_HSW, 2 * i + 1)) / (double)k;
+		break;
+	case HSW_HALTON:
+		*x = hsw_radical_inverse(i + 1, 2);
+		*y = hsw_radical_inverse(i + 1, 3);
+		break;
+	case HSW_HAMMERSLEY:
+		*x = ((double)i + 0.5) / (double)n;
+		*y = hsw_radical_inverse(i, 2);
+		break;
+	}
+	*x = *x < 1.0 ? *x : nextafter(1.0, 0.0);
+	*y = *y < 1.0 ? *y : nextafter(1.0, 0.0);
+}
+
+/* Ranges anywhere in the index space, across the table's 3^6 and the
+ * digits' 3^k boundaries and up to 2^36, give the oracle's bits. */
+static void test_input_ranges(void **state)
+{
+	static const uint64_t starts[] = { 0, 1, 700, 728, 2186, 59040,
+	    43046700, 3486784390, 68719476000 };
+	uint64_t n = (uint64_t)1 << 36, m = 600;
+	double *p = malloc(2 * m * sizeof *p);
+
+	(void)state;
+	assert_non_null(p);
+	for (int kind = HSW_RANDOM; kind <= HSW_HAMMERSLEY; kind++)
+		for (size_t s = 0; s < sizeof starts / sizeof *starts; s++) {
+			uint64_t b = starts[s];
+			hsw_input_range((enum hsw_input)kind, n, 3, b, b + m, p);
+			for (uint64_t q = 0; q < m; q++) {
+				double x, y;
+				input_oracle((enum hsw_input)kind, n, 3, b + q, &x, &y);
+				if (x != p[2 * q] || y != p[2 * q + 1])
+					fail_msg("kind %d, index %llu: (%a, %a), "
+					    "oracle (%a, %a)", kind,
+					    (unsigned long long)(b + q), p[2 * q],
+					    p[2 * q + 1], x, y);
+			}
+		}
+	/* and hsw_input_make from 0 */
+	hsw_input_make(HSW_HALTON, m, 1, p);
+	for (uint64_t q = 0; q < m; q++) {
+		double x, y;
+		input_oracle(HSW_HALTON, m, 1, q, &x, &y);
+		assert_true(x == p[2 * q] && y == p[2 * q + 1]);
+	}
+	free(p);
+}
+
+/* hsw_sample: records of n points over several chunks (16384) and
+ * pieces, with and without the density; one point at a time (hsw_warp,
+ * hsw_pdf_at) is the oracle; 1 and 3 threads and a range cut at odd
+ * places inside chunks give the same bytes; a given array (hsw_warp_points)
+ * the same as the set made on the fly. */
+static void test_sample_chunks(void **state)
+{
+	static const uint64_t cuts[] = { 0, 1, 255, 16383, 16400, 40001, 50000 };
+	uint64_t n = 50000;
+	struct frs_imap m;
+	struct hsw_tree t;
+	struct hsw_source src = { HSW_HALTON, 50000, 1, NULL };
+	double *a = malloc(3 * n * sizeof *a), *b = malloc(3 * n * sizeof *b);
+	double *in = malloc(2 * n * sizeof *in), mean;
+
+	(void)state;
+	assert_true(a != NULL && b != NULL && in != NULL);
+	assert_int_equal(imap_load("blob", 100, 37, 0, &m), 0);
+	assert_int_equal(hsw_build(&t, &m), 0);
+	mean = hsw_mean(&t, &m);
+	hsw_input_make(HSW_HALTON, n, 1, in);
+	frs_set_threads(1);
+	assert_int_equal(hsw_sample(&t, &src, &m, 0, n, a), 0);
+	for (uint64_t i = 0; i < n; i++) {
+		double x = in[2 * i], y = in[2 * i + 1];
+		hsw_warp(&t, &x, &y);
+		if (x != a[3 * i] || y != a[3 * i + 1] ||
+		    hsw_pdf_at(&m, mean, x, y) != a[3 * i + 2])
+			fail_msg("point %llu: (%a, %a), one at a time (%a, %a)",
+			    (unsigned long long)i, a[3 * i], a[3 * i + 1], x, y);
+	}
+	frs_set_threads(3);
+	memset(b, 0xff, 3 * n * sizeof *b);
+	for (size_t c = 0; c + 1 < sizeof cuts / sizeof *cuts; c++)
+		assert_int_equal(hsw_sample(&t, &src, &m, cuts[c], cuts[c + 1],
+		    b + 3 * cuts[c]), 0);
+	assert_memory_equal(a, b, 3 * n * sizeof *a);
+	/* without the density, and from the array */
+	assert_int_equal(hsw_sample(&t, &src, NULL, 0, n, b), 0);
+	for (uint64_t i = 0; i < n; i++)
+		assert_true(b[2 * i] == a[3 * i] && b[2 * i + 1] == a[3 * i + 1]);
+	assert_int_equal(hsw_warp_points(&t, in, in, n), 0);
+	assert_memory_equal(in, b, 2 * n * sizeof *b);
+	frs_set_threads(1);
+	hsw_free(&t);
+	imap_free(&m);
+	free(a);
+	free(b);
+	free(in);
+}
+
 static void test_all_zero(void **state)
 {
 	struct frs_imap m;
@@ -245,6 +369,8 @@ int main(void)
 		cmocka_unit_test(test_padding),
 		cmocka_unit_test(test_count_and_threads),
 		cmocka_unit_test(test_inputs),
+		cmocka_unit_test(test_input_ranges),
+		cmocka_unit_test(test_sample_chunks),
 		cmocka_unit_test(test_all_zero),
 	};
 	return cmocka_run_group_tests(tests, NULL, tu_teardown);

@@ -1269,13 +1269,10 @@ void frs_hsw_free(frs_hsw *hw)
 void api_hsw_pdf(const struct hsw_tree *t, const struct frs_imap *map,
     const double *xy, double *pdf, size_t n)
 {
-	double mean = t->total / ((double)map->w * (double)map->h);
+	double mean = hsw_mean(t, map);
 
-	for (size_t i = 0; i < n; i++) {
-		uint32_t px = (uint32_t)(xy[2 * i] * map->w);
-		uint32_t py = (uint32_t)(xy[2 * i + 1] * map->h);
-		pdf[i] = map->v[(uint64_t)py * map->w + px] / mean;
-	}
+	for (size_t i = 0; i < n; i++)
+		pdf[i] = hsw_pdf_at(map, mean, xy[2 * i], xy[2 * i + 1]);
 }
 
 int frs_hsw_warp(const frs_hsw *hw, const double *in, double *out,
@@ -1304,11 +1301,22 @@ int frs_hsw_draw(const frs_hsw *hw, enum frs_hsw_input input, uint64_t n,
 	static const enum hsw_input kinds[] = {
 		HSW_RANDOM, HSW_REGULAR, HSW_JITTERED, HSW_HALTON, HSW_HAMMERSLEY
 	};
+	struct hsw_source src = { HSW_HALTON, n, seed, NULL };
 
 	if (hw == NULL || (xy == NULL && n > 0))
 		return arg_err(err, "frs_hsw_draw: NULL argument");
 	if ((unsigned)input > FRS_HSW_HAMMERSLEY)
 		return arg_err(err, "frs_hsw_draw: unknown input set");
-	hsw_input_make(kinds[input], n, seed, xy);
-	return frs_hsw_warp(hw, xy, xy, pdf, (size_t)n, threads, err);
+	if (threads < 0 || threads > 1024)
+		return arg_err(err, "frs_hsw_draw: threads must lie in 0 .. "
+		    "1024");
+	/* The set made and warped chunk by chunk, as frs_hsw_warp would
+	 * warp it. */
+	src.kind = kinds[input];
+	frs_set_threads(threads > 0 ? threads : 1);
+	if (hsw_sample(&hw->t, &src, NULL, 0, n, xy) < 0)
+		return lib_err(err, FRS_E_LIMIT);
+	if (pdf != NULL)
+		api_hsw_pdf(&hw->t, &hw->map, xy, pdf, (size_t)n);
+	return ok(err);
 }

@@ -60,9 +60,45 @@ enum hsw_input {
 };
 /* Name to kind; -1 if the name is none of them. */
 int hsw_input_parse(const char *name);
-/* n pairs into out (2n doubles). */
+/* n pairs into out (2n doubles), in parallel with frs_parallel. */
 void hsw_input_make(enum hsw_input kind, uint64_t n, uint64_t seed,
     double *out);
+/* The pairs of indices begin .. end - 1 of the n-point set (2 (end -
+ * begin) doubles): hsw_input_make's values, for a piece of the range. */
+void hsw_input_range(enum hsw_input kind, uint64_t n, uint64_t seed,
+    uint64_t begin, uint64_t end, double *out);
 /* Radical inverse of i in base b, in [0, 1). */
 double hsw_radical_inverse(uint64_t i, unsigned b);
+
+/* Density I / mean I of the pixel of point (x, y), inside the map. */
+static inline double hsw_pdf_at(const struct frs_imap *map, double mean,
+    double x, double y)
+{
+	uint32_t px = (uint32_t)(x * map->w), py = (uint32_t)(y * map->h);
+
+	return map->v[(uint64_t)py * map->w + px] / mean;
+}
+
+/* The mean of the map the tree was built from, as hsw_pdf_at wants it. */
+static inline double hsw_mean(const struct hsw_tree *t,
+    const struct frs_imap *map)
+{
+	return t->total / ((double)map->w * (double)map->h);
+}
+
+/* The points to warp: the pairs of in, or, where in is NULL, the n-point
+ * set kind made on the fly. */
+struct hsw_source {
+	enum hsw_input kind;
+	uint64_t n, seed;
+	const double *in;
+};
+
+/* Points begin .. end - 1 of src warped into records out[0 ..]: x, y
+ * and, where map (the tree's own map) is not NULL, the density
+ * (hsw_pdf_at), so 2 or 3 doubles each.  In parallel with frs_parallel,
+ * in chunks of the index range; a point depends on its index only, so the
+ * bytes are the same for any thread count and any cut of the range. */
+int hsw_sample(const struct hsw_tree *t, const struct hsw_source *src,
+    const struct frs_imap *map, uint64_t begin, uint64_t end, double *out);
 #endif
