@@ -107,8 +107,10 @@ $(B)/gen/clsrc.c: $(CLSRC) scripts/cl2c.sh
 $(B)/gen/clsrc.o: $(B)/gen/clsrc.c
 	$(CC) $(CSTD) $(VFLAGS) $(CFLAGS) -c $< -o $@
 
-ALL_CXXFLAGS = -std=c++14 -Wall -Wextra $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
-	$(CXXFLAGS) -MMD -MP
+# -ffp-contract=off: g++ fuses a * b + c by default (gcc in C11 mode does
+# not), so imap_luma inlined here gave other EXR maps under -march=native.
+ALL_CXXFLAGS = -std=c++14 -ffp-contract=off -Wall -Wextra $(VFLAGS) \
+	-Isrc/lib $(PKG_CFLAGS) $(CXXFLAGS) -MMD -MP
 
 $(B)/lib/%.o: src/lib/%.cc
 	@mkdir -p $(@D)
