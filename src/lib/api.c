@@ -638,7 +638,7 @@ static int direct_chunk(void *ctx, uint64_t ci, const struct frs_chunk *c)
 		return frs_fail("internal error: chunk %llu has %llu samples, "
 		    "its count said %llu", (unsigned long long)ci,
 		    (unsigned long long)c->n, (unsigned long long)want);
-	if (c->n == 0)
+	if (c->n == 0 || c->xy != NULL)	/* none, or made in place */
 		return 0;
 	frs_points(d->su, c->e, (size_t)c->n, d->xy + 2 * o);
 	for (uint64_t i = 0; d->pdf != NULL && i < c->n; i++)
@@ -675,14 +675,72 @@ static int chunk_starts(const frs_sampler *s, const struct frs_setup *su,
 	return FRS_OK;
 }
 
-/* Sizes of the chunks c0 .. c1 - 1, for their stores. */
-static uint64_t *chunk_caps(const uint64_t *at, uint64_t c0, uint64_t c1)
-{
-	uint64_t *cap = malloc((c1 - c0 + 1) * sizeof *cap);
+/* Samples per wave of the direct path: the chunks thresholded in
+ * parallel, into one store that every wave reuses (api.h). */
+uint64_t api_wave = (uint64_t)1 << 20;
 
-	for (uint64_t c = c0; cap != NULL && c < c1; c++)
-		cap[c - c0] = at[c + 1] - at[c];
-	return cap;
+/* The chunks from c0 whose samples fit a wave, and with more than one
+ * thread at least two a thread: a peaked map puts most samples in a few
+ * chunks, and a wave of one would leave the other threads idle. */
+static uint64_t wave_end(const uint64_t *at, uint64_t c0, uint64_t nc)
+{
+	uint64_t c1 = c0 + 1, t = (uint64_t)frs_threads();
+	uint64_t least = t > 1 ? 2 * t : 1;
+
+	while (c1 < nc && (c1 - c0 < least || at[c1 + 1] - at[c0] <= api_wave))
+		c1++;
+	return c1;
+}
+
+/* The most samples of a wave. */
+static uint64_t wave_most(const uint64_t *at, uint64_t nc)
+{
+	uint64_t most = 0;
+
+	for (uint64_t c0 = 0, c1; c0 < nc; c0 = c1) {
+		c1 = wave_end(at, c0, nc);
+		most = at[c1] - at[c0] > most ? at[c1] - at[c0] : most;
+	}
+	return most;
+}
+
+/*
+ * Threshold wave after wave, the elements of a wave in one store (its
+ * pages touched once for the run, not once per chunk), each chunk turned
+ * into points by direct_chunk where d says; after each wave, out(octx,
+ * first sample, samples) if out is not NULL.  d->base follows the wave
+ * when wave_base (a buffer of one wave), else stays (the whole run's).
+ */
+static int direct_waves(const frs_sampler *s, const struct frs_setup *su,
+    const struct frs_prep *view, const uint64_t *at, struct direct *d,
+    int wave_base, int (*out)(void *, uint64_t, uint64_t), void *octx,
+    frs_error *err)
+{
+	uint64_t nc = frs_nchunks(su), most = wave_most(at, nc);
+	struct frs_elem *store = malloc((size_t)(most + 1) * sizeof *store);
+	uint64_t *rel = malloc((size_t)(nc + 1) * sizeof *rel);
+	int rc = FRS_OK;
+
+	if (store == NULL || rel == NULL)
+		rc = set_err(err, FRS_E_NOMEM, "out of memory");
+	for (uint64_t c0 = 0, c1, o; rc == FRS_OK && c0 < nc; c0 = c1) {
+		c1 = wave_end(at, c0, nc);
+		for (uint64_t c = c0; c <= c1; c++)
+			rel[c - c0] = at[c] - at[c0];
+		if (wave_base)
+			d->base = at[c0];
+		o = at[c0] - d->base;
+		if (frs_sample_each(su, &s->map, view, FRS_SORTED, c0, c1, rel,
+		    store, d->xy != NULL ? d->xy + 2 * o : NULL,
+		    d->pdf != NULL ? d->pdf + o : NULL,
+		    direct_chunk, d) < 0)
+			rc = lib_err(err, FRS_E_LIMIT);
+		else if (out != NULL && out(octx, at[c0], at[c1] - at[c0]) != 0)
+			rc = set_err(err, FRS_E_CALLBACK, "stopped by the callback");
+	}
+	free(store);
+	free(rel);
+	return rc;
 }
 
 static int draw_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
@@ -691,7 +749,7 @@ static int draw_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
 	struct frs_setup su;
 	struct frs_prep view;
 	struct direct d;
-	uint64_t *at, *cap, nc;
+	uint64_t *at, nc;
 	int rc = begin_run(s, &n, 1, seed, &su, &view, err);
 
 	if (rc != FRS_OK || (rc = chunk_starts(s, &su, &view, &at, err)) != FRS_OK)
@@ -703,15 +761,8 @@ static int draw_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
 		return set_err(err, FRS_E_BUFFER, "frs_draw: the buffer is "
 		    "too small; *count says how many samples there are");
 	}
-	if ((cap = chunk_caps(at, 0, nc)) == NULL) {
-		free(at);
-		return set_err(err, FRS_E_NOMEM, "out of memory");
-	}
 	d = (struct direct){ &su, &s->map, at, 0, xy, pdf };
-	if (frs_sample_each(&su, &s->map, &view, FRS_SORTED, 0, nc, cap,
-	    direct_chunk, &d) < 0)
-		rc = lib_err(err, FRS_E_LIMIT);
-	free(cap);
+	rc = direct_waves(s, &su, &view, at, &d, 0, NULL, NULL, err);
 	free(at);
 	return rc != FRS_OK ? rc : ok(err);
 }
@@ -885,28 +936,23 @@ static int each_run(struct batch *b, const struct frs_result *r)
 	return 0;
 }
 
-/* Samples per wave of frs_draw_each's direct path: the chunks made in
- * parallel before the callback takes them, in order (api.h). */
-uint64_t api_wave = (uint64_t)1 << 20;
+/* A wave's samples (from xy[0], pdf[0]) to the callback, BATCH at a
+ * time. */
+struct wave_cb {
+	struct batch *b;
+	const double *xy, *pdf;
+};
 
-/* The chunks from c0 whose samples fit a wave (at least one). */
-static uint64_t wave_end(const uint64_t *at, uint64_t c0, uint64_t nc)
+static int wave_out(void *ctx, uint64_t first, uint64_t n)
 {
-	uint64_t c1 = c0 + 1;
+	const struct wave_cb *w = ctx;
+	struct batch *b = w->b;
 
-	while (c1 < nc && at[c1 + 1] - at[c0] <= api_wave)
-		c1++;
-	return c1;
-}
-
-/* Hand the wave's samples to the callback, BATCH at a time. */
-static int wave_out(struct batch *b, const double *xy, const double *pdf,
-    uint64_t n)
-{
+	(void)first;
 	for (uint64_t i = 0; i < n; i += BATCH) {
 		size_t k = n - i < BATCH ? (size_t)(n - i) : BATCH;
-		if (b->fn(b->ctx, xy + 2 * i, pdf != NULL ? pdf + i : NULL, NULL,
-		    k, b->total) != 0)
+		if (b->fn(b->ctx, w->xy + 2 * i, w->pdf != NULL ? w->pdf + i :
+		    NULL, NULL, k, b->total) != 0)
 			return -1;
 	}
 	return 0;
@@ -918,37 +964,23 @@ static int each_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
 	struct frs_setup su;
 	struct frs_prep view;
 	struct direct d;
-	uint64_t *at = NULL, nc, most = 0;
+	struct wave_cb w;
+	uint64_t *at = NULL, most;
 	double *xy = NULL, *pdf = NULL;
 	int rc = begin_run(s, &n, 1, seed, &su, &view, err);
 
 	if (rc != FRS_OK || (rc = chunk_starts(s, &su, &view, &at, err)) != FRS_OK)
 		return rc;
-	nc = frs_nchunks(&su);
-	b->total = at[nc];
-	for (uint64_t c0 = 0, c1; c0 < nc; c0 = c1) {
-		c1 = wave_end(at, c0, nc);
-		most = at[c1] - at[c0] > most ? at[c1] - at[c0] : most;
-	}
+	b->total = at[frs_nchunks(&su)];
+	most = wave_most(at, frs_nchunks(&su));
 	xy = malloc((size_t)(2 * most + 1) * sizeof *xy);
 	pdf = want_pdf ? malloc((size_t)(most + 1) * sizeof *pdf) : NULL;
 	if (xy == NULL || (want_pdf && pdf == NULL))
 		rc = set_err(err, FRS_E_NOMEM, "out of memory");
-	for (uint64_t c0 = 0, c1; rc == FRS_OK && c0 < nc; c0 = c1) {
-		uint64_t *cap;
-		c1 = wave_end(at, c0, nc);
-		if ((cap = chunk_caps(at, c0, c1)) == NULL) {
-			rc = set_err(err, FRS_E_NOMEM, "out of memory");
-			break;
-		}
-		d = (struct direct){ &su, &s->map, at, at[c0], xy, pdf };
-		if (frs_sample_each(&su, &s->map, &view, FRS_SORTED, c0, c1, cap,
-		    direct_chunk, &d) < 0)
-			rc = lib_err(err, FRS_E_LIMIT);
-		else if (wave_out(b, xy, pdf, at[c1] - at[c0]) < 0)
-			rc = set_err(err, FRS_E_CALLBACK, "stopped by the callback");
-		free(cap);
-	}
+	d = (struct direct){ &su, &s->map, at, 0, xy, pdf };
+	w = (struct wave_cb){ b, xy, pdf };
+	if (rc == FRS_OK)
+		rc = direct_waves(s, &su, &view, at, &d, 1, wave_out, &w, err);
 	free(xy);
 	free(pdf);
 	free(at);

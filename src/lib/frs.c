@@ -11,7 +11,7 @@
 #include <string.h>
 
 /* Map rows per parallel chunk. */
-#define ROWS_PER_CHUNK 2
+#define ROWS_PER_CHUNK 1
 
 static const char *const algo_names[FRS_NALGO] = {
 	"naive", "stack", "level1", "level2", "sorted"
@@ -580,7 +580,9 @@ struct run {
 	struct frs_result *r;
 	/* frs_sample_each: chunks from c0, handed to fn, not kept in r */
 	uint64_t c0;
-	const uint64_t *cap;
+	const uint64_t *at;
+	struct frs_elem *store;
+	double *xy, *pdf;	/* points made in place, or NULL */
 	frs_chunk_fn fn;
 	void *ctx;
 };
@@ -592,6 +594,7 @@ struct pix {
 	struct frs_thr th[16];	/* per step; th[nsteps - 1] is the last */
 	uint64_t lim;
 	uint64_t x0, y0;	/* the pixel's first window element */
+	double pdf;		/* its density, for points made in place */
 	struct tcache tc;
 };
 
@@ -609,7 +612,8 @@ static void emit(struct pix *px, uint64_t x, uint64_t y, uint32_t v)
 		return;
 	if (px->c->n == px->c->cap) {
 		uint64_t ncap = px->c->cap ? 2 * px->c->cap : 1024;
-		struct frs_elem *ne = realloc(px->c->e, ncap * sizeof *ne);
+		struct frs_elem *ne = px->c->fixed ? NULL :
+		    realloc(px->c->e, ncap * sizeof *ne);
 		if (ne == NULL) {
 			px->c->failed = 1;
 			return;
@@ -743,6 +747,43 @@ static void pix_level(struct pix *px, unsigned n)
 			level_block(px, L, px->x0 + bx * b, px->y0 + by * b);
 }
 
+/* The k elements of a block that take_block accepted, as points (no
+ * jitter: the centre of the element) straight into the chunk's xy, with
+ * the pixel's density: frs_point and api_pdf without the elements in
+ * between, a third of the memory traffic. */
+static void take_points(struct pix *px, const struct frs_tile *t,
+    const uint32_t *idx, uint32_t b, unsigned lb, uint64_t x, uint64_t y,
+    uint64_t k)
+{
+	const struct frs_setup *s = px->run->s;
+	struct frs_chunk *c = px->c;
+	double sw = (double)s->sw, sh = (double)s->sh, *o;
+	uint64_t ex, ey;
+
+	if (c->n + k > c->cap) {
+		c->failed = 1;
+		return;
+	}
+	o = c->xy + 2 * c->n;
+	if (t->flip == 0 && t->perm[0] == 0) {	/* plain: the fast path */
+		for (uint64_t j = 0; j < k; j++) {
+			o[2 * j] = frs_below_one(((double)(x + (idx[j] & (b - 1))) +
+			    0.5) / sw);
+			o[2 * j + 1] = frs_below_one(((double)(y + (idx[j] >> lb)) +
+			    0.5) / sh);
+		}
+	} else {
+		for (uint64_t j = 0; j < k; j++) {
+			inblock(t, b, lb, idx[j], x, y, &ex, &ey);
+			o[2 * j] = frs_below_one(((double)ex + 0.5) / sw);
+			o[2 * j + 1] = frs_below_one(((double)ey + 0.5) / sh);
+		}
+	}
+	for (uint64_t j = 0; c->pdf != NULL && j < k; j++)
+		c->pdf[c->n + j] = px->pdf;
+	c->n += k;
+}
+
 /* Listing 5.11: the sorted values of each block, until one is too
  * large.  One step: the values below lim by bisection, the last of them
  * through its coin if it needs one (values are distinct, so only it can),
@@ -774,12 +815,16 @@ static void take_block(struct pix *px, const struct frs_tile *t,
 	c->count += k;
 	if (px->run->count_only || k == 0)
 		return;
+	if (c->xy != NULL) {
+		take_points(px, t, idx, b, lb, x, y, k);
+		return;
+	}
 	if (c->n + k > c->cap) {
 		uint64_t ncap = c->cap ? 2 * c->cap : 1024;
 		struct frs_elem *ne;
 		while (ncap < c->n + k)
 			ncap *= 2;
-		ne = realloc(c->e, ncap * sizeof *ne);
+		ne = c->fixed ? NULL : realloc(c->e, ncap * sizeof *ne);
 		if (ne == NULL) {
 			c->failed = 1;
 			return;
@@ -898,6 +943,7 @@ static void chunk_rows(struct pix *px, uint64_t ci)
 				continue;
 			px->x0 = pxi * s->ns;
 			px->y0 = py * s->ns;
+			px->pdf = imp / s->mean;
 			switch (run->algo) {
 			case FRS_NAIVE: pix_naive(px); break;
 			case FRS_STACK: pix_stack(px); break;
@@ -926,17 +972,20 @@ static int rows_task(void *ctx, uint64_t b, uint64_t e)
 				return frs_fail("out of memory for the samples");
 			continue;
 		}
-		/* frs_sample_each: a store of its own, sized in advance. */
-		c.cap = run->cap != NULL ? run->cap[ci] : 0;
-		if (c.cap > 0 && (c.e = malloc(c.cap * sizeof *c.e)) == NULL)
-			return frs_fail("out of memory for the samples");
+		/* frs_sample_each: the chunk's place in the caller's store. */
+		c.e = run->store + run->at[ci];
+		c.cap = run->at[ci + 1] - run->at[ci];
+		c.fixed = 1;
+		if (run->xy != NULL) {
+			c.xy = run->xy + 2 * run->at[ci];
+			c.pdf = run->pdf != NULL ? run->pdf + run->at[ci] : NULL;
+		}
 		px.c = &c;
 		chunk_rows(&px, run->c0 + ci);
 		if (c.failed)
 			rc = frs_fail("out of memory for the samples");
 		else
 			rc = run->fn(run->ctx, run->c0 + ci, &c);
-		free(c.e);
 		if (rc < 0)
 			return -1;
 	}
@@ -984,15 +1033,21 @@ uint64_t frs_nchunks(const struct frs_setup *s)
 
 int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, uint64_t c0, uint64_t c1,
-    const uint64_t *cap, frs_chunk_fn fn, void *ctx)
+    const uint64_t *at, struct frs_elem *store, double *xy, double *pdf,
+    frs_chunk_fn fn, void *ctx)
 {
 	double tau;
-	struct run run = { s, map, p, algo, &tau, 1, 0, NULL, c0, cap, fn,
-	    ctx };
+	struct run run = { s, map, p, algo, &tau, 1, 0, NULL, c0, at, store,
+	    NULL, NULL, fn, ctx };
 
 	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), &s->n, 1, 0,
 	    &tau) < 0)
 		return -1;
+	/* Points in place need Sorted without jitter (take_points). */
+	if (xy != NULL && algo == FRS_SORTED && s->jitter == FRS_JITTER_NONE) {
+		run.xy = xy;
+		run.pdf = pdf;
+	}
 	if (c1 > frs_nchunks(s) || c0 > c1)
 		return frs_fail("frs_sample_each: chunks %llu to %llu of %llu",
 		    (unsigned long long)c0, (unsigned long long)c1,
@@ -1006,7 +1061,7 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
 {
 	double tau[16];
 	struct run run = { s, map, p, algo, tau, nsteps, count_only, r, 0,
-	    NULL, NULL, NULL };
+	    NULL, NULL, NULL, NULL, NULL, NULL };
 	int rc;
 
 	memset(r, 0, sizeof *r);

@@ -123,6 +123,8 @@ struct frs_chunk {
 	uint64_t n, cap;
 	uint64_t count;
 	int failed;
+	int fixed;		/* e is room in a caller's store: never grown */
+	double *xy, *pdf;	/* frs_sample_each's points made in place */
 };
 
 struct frs_result {
@@ -145,16 +147,22 @@ void frs_result_free(struct frs_result *r);
 
 /*
  * One step without a result: the chunks c0 .. c1 - 1 of the window (map
- * rows in chunks), each handed to fn by the thread that
- * thresholded it, then dropped; cap[c - c0], if cap is not NULL, sizes
- * chunk c's store (its count from a count_only run makes it exact).  fn
- * runs in parallel for different chunks.  Memory in proportion to the
- * chunks in flight, not to the samples.
+ * rows in chunks), each in the caller's store, from store + at[c - c0]
+ * with room for at[c - c0 + 1] - at[c - c0] elements (the counts of a
+ * count_only run: exact), handed to fn by the thread that thresholded it.
+ * fn runs in parallel for different chunks; a chunk that overflows its
+ * room fails.  Memory in proportion to the chunks in flight, not to the
+ * samples of the run.
  */
 typedef int (*frs_chunk_fn)(void *ctx, uint64_t ci, const struct frs_chunk *c);
+/* xy (and pdf, if not NULL) not NULL: with Sorted and no jitter each
+ * chunk's points go straight to xy + 2 at[c - c0] (its densities to pdf
+ * + at[c - c0]), frs_points and api_pdf as they would give them, and
+ * the chunk handed to fn has xy set and no elements. */
 int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, uint64_t c0, uint64_t c1,
-    const uint64_t *cap, frs_chunk_fn fn, void *ctx);
+    const uint64_t *at, struct frs_elem *store, double *xy, double *pdf,
+    frs_chunk_fn fn, void *ctx);
 /* The number of chunks of the window's map rows. */
 uint64_t frs_nchunks(const struct frs_setup *s);
 /* Progressive counts: 1 to 16, increasing. */
