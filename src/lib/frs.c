@@ -341,12 +341,6 @@ static int invert_task(void *ctx, uint64_t b, uint64_t e)
 	return 0;
 }
 
-struct scatter {
-	struct frs_prep *p;
-	const uint32_t *inv;
-	uint32_t rows;		/* block rows per task */
-};
-
 static unsigned log2u32(uint32_t v)
 {
 	unsigned l = 0;
@@ -356,36 +350,57 @@ static unsigned log2u32(uint32_t v)
 	return l;
 }
 
-/* Counting sort of the blocks of block rows [b, e) * rows: the values in
- * increasing order, each appended to its block's list.  Every task reads
- * all of inv and writes only its blocks, so tasks share nothing. */
-static int scatter_task(void *ctx, uint64_t b, uint64_t e)
+/* Counting sort over the inverse permutation, in parallel over ranges
+ * of values: a first pass counts each range's values per block, the
+ * prefix sums over ranges then give every range its place in each
+ * block's list, and a second pass puts them there.  Each pass reads its
+ * range of inv once; no thread reads what another one does. */
+struct scatter {
+	struct frs_prep *p;
+	const uint32_t *inv;
+	uint64_t span;		/* values per range */
+	uint64_t nblk;		/* blocks */
+	uint64_t *fill;		/* per range and block: count, then place */
+};
+
+/* The block of matrix index i (lb = log2 block, lw = log2 width). */
+static uint64_t block_of(const struct frs_matrix *m, uint32_t i, unsigned lb,
+    unsigned lw)
+{
+	return (uint64_t)((i >> lw) >> lb) * (m->w >> lb) + ((i & (m->w - 1)) >> lb);
+}
+
+static int count_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct scatter *sc = ctx;
+	const struct frs_matrix *m = sc->p->m;
+	unsigned lb = log2u32(sc->p->block), lw = log2u32(m->w);
+
+	for (uint64_t r = b; r < e; r++) {
+		uint64_t *cnt = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
+		for (uint64_t v = r * sc->span; v < v1 && v < m->n; v++)
+			cnt[block_of(m, sc->inv[v], lb, lw)]++;
+	}
+	return 0;
+}
+
+static int place_task(void *ctx, uint64_t b, uint64_t e)
 {
 	const struct scatter *sc = ctx;
 	struct frs_prep *p = sc->p;
 	const struct frs_matrix *m = p->m;
-	uint32_t blk = p->block, bw = m->w / blk;
+	uint32_t blk = p->block;
 	unsigned lb = log2u32(blk), lw = log2u32(m->w);
-	uint64_t r0 = b * sc->rows * blk, r1 = e * sc->rows * blk;
-	size_t bb = (size_t)blk * blk, nb;
-	size_t *fill;
 
-	r1 = r1 < m->h ? r1 : m->h;
-	nb = (size_t)((r1 - r0) / blk) * bw;
-	if ((fill = malloc(nb * sizeof *fill)) == NULL)
-		return frs_fail("out of memory for the sorted lists");
-	for (size_t k = 0; k < nb; k++)
-		fill[k] = (size_t)(r0 / blk * bw + k) * bb;
-	for (size_t v = 0; v < m->n; v++) {
-		uint32_t i = sc->inv[v], x = i & (m->w - 1), y = i >> lw;
-		size_t at;
-		if (y < r0 || y >= r1)
-			continue;
-		at = fill[(size_t)((y - r0) >> lb) * bw + (x >> lb)]++;
-		p->sval[at] = (uint32_t)v;
-		p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+	for (uint64_t r = b; r < e; r++) {
+		uint64_t *at = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
+		for (uint64_t v = r * sc->span; v < v1 && v < m->n; v++) {
+			uint32_t i = sc->inv[v], x = i & (m->w - 1), y = i >> lw;
+			uint64_t k = at[block_of(m, i, lb, lw)]++;
+			p->sval[k] = (uint32_t)v;
+			p->sidx[k] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+		}
 	}
-	free(fill);
 	return 0;
 }
 
@@ -459,17 +474,32 @@ static int sort_rows(void *ctx, uint64_t r0, uint64_t r1)
 /* More blocks than this: sort_rows, no global inverse. */
 #define ONE_PASS_BLOCKS 4096
 
-/* The lists by counting over inv, in parallel over block rows. */
+/* The lists by counting over inv: count, place each range, put. */
 static int count_sort(struct frs_prep *p, const uint32_t *inv)
 {
 	const struct frs_matrix *m = p->m;
-	uint32_t b = p->block, bh = m->h / b, nt = (uint32_t)frs_threads();
-	struct scatter sc = { p, inv, 0 };
+	uint64_t nt = (uint64_t)frs_threads(), bb = (uint64_t)p->block * p->block;
+	struct scatter sc = { p, inv, 0, 0, NULL };
+	int rc;
 
-	nt = nt < 1 ? 1 : nt > bh ? bh : nt;
-	sc.rows = (bh + nt - 1) / nt;
-	return frs_parallel((bh + sc.rows - 1) / sc.rows, 1, scatter_task, &sc,
-	    NULL);
+	nt = nt < 1 ? 1 : nt;
+	sc.span = (m->n + nt - 1) / nt;
+	sc.nblk = m->n / bb;
+	if ((sc.fill = calloc(nt * sc.nblk, sizeof *sc.fill)) == NULL)
+		return frs_fail("out of memory for the sorted lists");
+	rc = frs_parallel(nt, 1, count_task, &sc, NULL);
+	for (uint64_t k = 0; rc == 0 && k < sc.nblk; k++) {
+		uint64_t at = k * bb;
+		for (uint64_t r = 0; r < nt; r++) {
+			uint64_t c = sc.fill[r * sc.nblk + k];
+			sc.fill[r * sc.nblk + k] = at;
+			at += c;
+		}
+	}
+	if (rc == 0)
+		rc = frs_parallel(nt, 1, place_task, &sc, NULL);
+	free(sc.fill);
+	return rc;
 }
 
 /* Listing 5.10, keeping every element of a block (no n_t cap: the
@@ -492,7 +522,7 @@ static int make_sorted(struct frs_prep *p, uint32_t b)
 	if (p->sval == NULL || p->sidx == NULL)
 		rc = frs_fail("out of memory for the sorted lists");
 	else if (nblk > ONE_PASS_BLOCKS) {
-		struct scatter sc = { p, NULL, 0 };
+		struct scatter sc = { p, NULL, 0, 0, NULL };
 		rc = frs_parallel(m->h / b, 1, sort_rows, &sc, NULL);
 	} else if ((inv = mem_big(m->n * sizeof *inv)) == NULL)
 		rc = frs_fail("out of memory for the sorted lists");
