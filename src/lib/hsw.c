@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "err.h"
+#include "frscore.h"
 #include "mem.h"
 #include "hsw.h"
 #include "par.h"
@@ -174,16 +175,11 @@ uint64_t hsw_warp(const struct hsw_tree *t, double *x, double *y)
  * for the first-level cache. */
 #define PIECE 256
 
+/* frs_radical_inverse (frscore.h), the one loop for both samplers, kept
+ * below 1. */
 double hsw_radical_inverse(uint64_t i, unsigned b)
 {
-	double inv = 1.0 / b, f = inv, r = 0;
-
-	while (i > 0) {
-		r += (double)(i % b) * f;
-		i /= b;
-		f *= inv;
-	}
-	return r < 1.0 ? r : BELOW_ONE;
+	return frs_below_one(frs_radical_inverse(i, b));
 }
 
 static uint64_t bit_reverse(uint64_t x)
