@@ -384,6 +384,23 @@ static int count_task(void *ctx, uint64_t b, uint64_t e)
 	return 0;
 }
 
+/* Entries gathered per block before they go to its list: one cache
+ * line of values and one of indices, written whole, where single stores
+ * to many lists at once would each fetch a line first. */
+#define GATHER 16
+
+struct gather {
+	uint32_t v[GATHER], i[GATHER];
+};
+
+static void put_run(struct frs_prep *p, uint64_t *at, const struct gather *g,
+    unsigned n)
+{
+	memcpy(p->sval + *at, g->v, n * sizeof *g->v);
+	memcpy(p->sidx + *at, g->i, n * sizeof *g->i);
+	*at += n;
+}
+
 static int place_task(void *ctx, uint64_t b, uint64_t e)
 {
 	const struct scatter *sc = ctx;
@@ -391,16 +408,33 @@ static int place_task(void *ctx, uint64_t b, uint64_t e)
 	const struct frs_matrix *m = p->m;
 	uint32_t blk = p->block;
 	unsigned lb = log2u32(blk), lw = log2u32(m->w);
+	struct gather *g = malloc(sc->nblk * sizeof *g);
+	unsigned char *ng = calloc(sc->nblk, 1);
 
+	if (g == NULL || ng == NULL) {
+		free(g);
+		free(ng);
+		return frs_fail("out of memory for the sorted lists");
+	}
 	for (uint64_t r = b; r < e; r++) {
 		uint64_t *at = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
 		for (uint64_t v = r * sc->span; v < v1 && v < m->n; v++) {
 			uint32_t i = sc->inv[v], x = i & (m->w - 1), y = i >> lw;
-			uint64_t k = at[block_of(m, i, lb, lw)]++;
-			p->sval[k] = (uint32_t)v;
-			p->sidx[k] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+			uint64_t k = block_of(m, i, lb, lw);
+			g[k].v[ng[k]] = (uint32_t)v;
+			g[k].i[ng[k]] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+			if (++ng[k] == GATHER) {
+				put_run(p, &at[k], &g[k], GATHER);
+				ng[k] = 0;
+			}
+		}
+		for (uint64_t k = 0; k < sc->nblk; k++) {
+			put_run(p, &at[k], &g[k], ng[k]);
+			ng[k] = 0;
 		}
 	}
+	free(g);
+	free(ng);
 	return 0;
 }
 
