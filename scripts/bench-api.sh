@@ -78,6 +78,6 @@ for n in $NS; do
 			esac
 			row "$p" "$j" "$c" "$s"
 		done <"$T/api"
-		[ "$ALL" = 1 ] && break
+		if [ "$ALL" = 1 ]; then break; fi
 	done
 done

@@ -43,7 +43,7 @@ row() {
 			r = (nv != "" && t > 0) ? sprintf("%.1f", nv / t) : "-"
 			rate = (t > 0) ? c / t / 1e6 : 0
 			printf "%-7s %-6s %-7s %3s %10d %11.6f %9.1f %9.2f %9s\n", m, e, a, j, c, t, rate, p, r }'
-		[ "$j" = "$ALL" ] && break
+		if [ "$j" = "$ALL" ]; then break; fi
 	done
 }
 

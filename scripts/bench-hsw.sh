@@ -61,7 +61,7 @@ for map in $MAPS; do
 			awk -v m=$map -v e=$e -v j=$j -v n=$n -v w="$w" -v p="$SEC" 'BEGIN {
 				rate = (w > 0) ? n / w / 1e6 : 0
 				printf "%-7s %-6s %3s %10d %11.6f %9.1f %9.2f\n", m, e, j, n, w, rate, p }'
-			[ "$j" = "$ALL" ] && break
+			if [ "$j" = "$ALL" ]; then break; fi
 		done
 	done
 done
@@ -97,7 +97,7 @@ for e in 20 24; do
 			printf "%-6s %3s %9.3f %9.3f %9.2f\n", e, j, o, b, b / o }'
 		[ $e = 24 ] && [ $j = 1 ] && one=$OURS
 		[ $e = 24 ] && all=$OURS
-		[ "$j" = "$ALL" ] && break
+		if [ "$j" = "$ALL" ]; then break; fi
 	done
 done
 "$HSW" -q -i blob -n 16777216 -j 1 -v -o /dev/null 2>"$T/v"

@@ -305,9 +305,10 @@ static void seams(int64_t w, int64_t h, int64_t mw, int64_t mh, int64_t wx,
 		double sp = sqrt((double)w * (double)h / ((double)g.n * pdf));
 		double b = fmin(border_dist(g.x[i], mw, wx),
 		    border_dist(g.y[i], mh, wy));
-		int64_t d2;
+		int64_t d2 = 0;
 		size_t nb;
-		grid_knn(&g, i, 1, &d2, &nb);
+		if (grid_knn(&g, i, 1, &d2, &nb) == 0)
+			continue;	/* a lone point has no spacing */
 		if (b < 0.5 * sp)
 			nearv[nn++] = sqrt((double)d2) / sp;
 		else
