@@ -729,8 +729,14 @@ static uint32_t minmap_at(struct pix *px, unsigned l, uint64_t x, uint64_t y)
 {
 	const struct frs_setup *s = px->run->s;
 	uint64_t lx, ly;
-	const struct frs_tile *t = tile_at(s, &px->tc, x, y, &lx, &ly);
+	const struct frs_tile *t;
 
+	if (s->tiles == FRS_TILES_PLAIN) {	/* the identity: no tile lookup */
+		lx = wrap(s->wx + x, s->mw);
+		ly = wrap(s->wy + y, s->mh);
+		return px->run->p->lev[l][(ly >> l) * (s->mw >> l) + (lx >> l)];
+	}
+	t = tile_at(s, &px->tc, x, y, &lx, &ly);
 	return px->run->p->lev[l][block_index(s, t, l, lx, ly)];
 }
 
