@@ -6,6 +6,7 @@
 # all; the thresholding time reported by -v (output to /dev/null) and
 # the whole process.  BENCH_QUICK=1: the blob map, fewer counts.
 set -eu
+. "$(dirname "$0")/benchlib.sh"
 BUILD=${1:-build/bench}
 FRS=$BUILD/bin/frs-sample
 T=$(mktemp -d)
@@ -15,13 +16,7 @@ ALL=$(nproc)
 
 "$BUILD/bin/frd-prep" -a all data/default.frd -o "$T/M.frp"
 "$BUILD/bin/imap" convert --equirect -s 128x128 data/sunset.exr "$T/sunset.exr" 2>/dev/null
-if [ -n "${BENCH_QUICK:-}" ]; then
-	MAPS="blob"
-	NS="0 16 24"
-else
-	MAPS="const blob ramp sunset"
-	NS="0 4 8 12 16 20 24"
-fi
+bench_sizes
 
 # row NAME LOG2N ALGO MAXNAIVE ARGS...: one implementation on one thread
 # and on all, a table row each; the naive time of the same n (set by its

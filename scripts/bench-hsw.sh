@@ -17,13 +17,7 @@ T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 ALL=$(nproc)
 
-if [ -n "${BENCH_QUICK:-}" ]; then
-	MAPS="blob"
-	NS="0 16 24"
-else
-	MAPS="const blob ramp sunset"
-	NS="0 4 8 12 16 20 24"
-fi
+bench_sizes
 
 # base_hsw DIR REV: the path of hsw-sample built (VARIANT=bench) from the
 # tree of commit REV in DIR/src, made unless DIR/rev already names REV.

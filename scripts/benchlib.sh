@@ -81,3 +81,15 @@ baseline_build() {
 	fi
 	echo "$_bd/src/build/$_bv/bin"
 }
+
+# bench_sizes: MAPS and NS (log2 of the counts) of the frs-sample and
+# hsw-sample tables; fewer with BENCH_QUICK.
+bench_sizes() {
+	if [ -n "${BENCH_QUICK:-}" ]; then
+		MAPS="blob"
+		NS="0 16 24"
+	else
+		MAPS="const blob ramp sunset"
+		NS="0 4 8 12 16 20 24"
+	fi
+}
