@@ -310,19 +310,13 @@ static void sort_blocks(struct frs_prep *p, struct pair *tmp)
 }
 
 /* Whether the values are the permutation of 0 .. n - 1 that frd(5)
- * promises (a bitmap of n bits: it stays in cache, unlike inv). */
+ * promises: frd_check_permutation's answer without its message. */
 static int is_permutation(const struct frs_matrix *m)
 {
-	uint64_t *seen = calloc((m->n + 63) / 64 + 1, sizeof *seen);
-	int ok = seen != NULL;
-
-	for (size_t i = 0; ok && i < m->n; i++) {
-		uint32_t v = m->v[i];
-		ok = v < m->n && !(seen[v / 64] >> (v % 64) & 1);
-		seen[v / 64] |= ok ? (uint64_t)1 << (v % 64) : 0;
-	}
-	free(seen);
-	return ok;
+	if (frd_check_permutation(m, "") == 0)
+		return 1;
+	frs_clearerr();
+	return 0;
 }
 
 struct invert {
@@ -339,15 +333,6 @@ static int invert_task(void *ctx, uint64_t b, uint64_t e)
 	for (uint64_t i = b; i < e; i++)
 		iv->inv[iv->v[i]] = (uint32_t)i;
 	return 0;
-}
-
-static unsigned log2u32(uint32_t v)
-{
-	unsigned l = 0;
-
-	while ((1u << l) < v)
-		l++;
-	return l;
 }
 
 /* Counting sort over the inverse permutation, in parallel over ranges
@@ -374,7 +359,7 @@ static int count_task(void *ctx, uint64_t b, uint64_t e)
 {
 	const struct scatter *sc = ctx;
 	const struct frs_matrix *m = sc->p->m;
-	unsigned lb = log2u32(sc->p->block), lw = log2u32(m->w);
+	unsigned lb = log2u64(sc->p->block), lw = log2u64(m->w);
 
 	for (uint64_t r = b; r < e; r++) {
 		uint64_t *cnt = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
@@ -407,7 +392,7 @@ static int place_task(void *ctx, uint64_t b, uint64_t e)
 	struct frs_prep *p = sc->p;
 	const struct frs_matrix *m = p->m;
 	uint32_t blk = p->block;
-	unsigned lb = log2u32(blk), lw = log2u32(m->w);
+	unsigned lb = log2u64(blk), lw = log2u64(m->w);
 	struct gather *g = malloc(sc->nblk * sizeof *g);
 	unsigned char *ng = calloc(sc->nblk, 1);
 
@@ -472,7 +457,7 @@ static int sort_rows(void *ctx, uint64_t r0, uint64_t r1)
 	struct frs_prep *p = sc->p;
 	const struct frs_matrix *m = p->m;
 	uint32_t blk = p->block, bw = m->w / blk;
-	unsigned lb = log2u32(blk), lw = log2u32(m->w);
+	unsigned lb = log2u64(blk), lw = log2u64(m->w);
 	size_t per = (size_t)m->w * blk, bb = (size_t)blk * blk;
 	uint32_t *t = malloc(4 * per * sizeof *t);
 	size_t *fill = malloc(bw * sizeof *fill);
@@ -817,6 +802,14 @@ static void pix_level(struct pix *px, unsigned n)
 			level_block(px, L, px->x0 + bx * b, px->y0 + by * b);
 }
 
+/* The coordinate of window element e with jitter j in [0, 1) on a side
+ * of the window: the one formula of frs_point, frs_points and
+ * take_points. */
+static double coord(uint64_t e, double j, double side)
+{
+	return frs_below_one(((double)e + j) / side);
+}
+
 /* The k elements of a block that take_block accepted, as points (no
  * jitter: the centre of the element) straight into the chunk's xy, with
  * the pixel's density: frs_point and api_pdf without the elements in
@@ -837,16 +830,14 @@ static void take_points(struct pix *px, const struct frs_tile *t,
 	o = c->xy + 2 * c->n;
 	if (t->flip == 0 && t->perm[0] == 0) {	/* plain: the fast path */
 		for (uint64_t j = 0; j < k; j++) {
-			o[2 * j] = frs_below_one(((double)(x + (idx[j] & (b - 1))) +
-			    0.5) / sw);
-			o[2 * j + 1] = frs_below_one(((double)(y + (idx[j] >> lb)) +
-			    0.5) / sh);
+			o[2 * j] = coord(x + (idx[j] & (b - 1)), 0.5, sw);
+			o[2 * j + 1] = coord(y + (idx[j] >> lb), 0.5, sh);
 		}
 	} else {
 		for (uint64_t j = 0; j < k; j++) {
 			inblock(t, b, lb, idx[j], x, y, &ex, &ey);
-			o[2 * j] = frs_below_one(((double)ex + 0.5) / sw);
-			o[2 * j + 1] = frs_below_one(((double)ey + 0.5) / sh);
+			o[2 * j] = coord(ex, 0.5, sw);
+			o[2 * j + 1] = coord(ey, 0.5, sh);
 		}
 	}
 	for (uint64_t j = 0; c->pdf != NULL && j < k; j++)
@@ -1195,8 +1186,8 @@ void frs_point(const struct frs_setup *s, const struct frs_elem *e,
 		jx -= floor(jx);
 		jy -= floor(jy);
 	}
-	*x = frs_below_one(((double)e->x + jx) / (double)s->sw);
-	*y = frs_below_one(((double)e->y + jy) / (double)s->sh);
+	*x = coord(e->x, jx, (double)s->sw);
+	*y = coord(e->y, jy, (double)s->sh);
 }
 
 void frs_points(const struct frs_setup *s, const struct frs_elem *e,
@@ -1210,7 +1201,7 @@ void frs_points(const struct frs_setup *s, const struct frs_elem *e,
 		return;
 	}
 	for (size_t i = 0; i < n; i++) {
-		xy[2 * i] = frs_below_one(((double)e[i].x + 0.5) / sw);
-		xy[2 * i + 1] = frs_below_one(((double)e[i].y + 0.5) / sh);
+		xy[2 * i] = coord(e[i].x, 0.5, sw);
+		xy[2 * i + 1] = coord(e[i].y, 0.5, sh);
 	}
 }
