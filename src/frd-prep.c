@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api.h"
 #include "cli.h"
 #include "frdio.h"
 #include "frscore.h"
@@ -117,15 +118,13 @@ static unsigned blocks_for(const struct frs_matrix *m, const char *imp,
 		if (frs_setup(&su, &map, m, n[k], sigma, 1) < 0)
 			cli_die_lib();
 		su.tiles = frs_tiles_auto(&su);
-		b = su.ns < su.mw ? su.ns : su.mw;
-		b = b < su.mh ? b : su.mh;
-		b = b < frs_tile_max_block(&su) ? b : frs_tile_max_block(&su);
+		b = api_sorted_block(&su);
 		if (fp != NULL)
 			fprintf(fp, "%llu\t%u\t%llux%llu\t%s\t%u\t%s\n",
 			    (unsigned long long)n[k], su.ns,
 			    (unsigned long long)su.sw, (unsigned long long)su.sh,
 			    su.tiles == FRS_TILES_PLAIN ? "plain" : "shuffled", b,
-			    b < su.ns ? "yes" : "no");
+			    api_sorted_minmap(&su) ? "yes" : "no");
 		for (i = 0; i < nb && blocks[i] != b; i++)
 			;
 		if (i == nb)
