@@ -417,35 +417,17 @@ static int out_batch(void *ctx, const double *xy, const double *pdf,
 	return rc;
 }
 
-/* Write one set's points through out_batch, a batch at a time:
- * progressive steps in turn, each in map order (the order of
- * frs_draw_each). */
-#define PUT_BATCH 4096
+/* Write one set's points as frs_draw_each gives them, through
+ * out_batch. */
 static int put_set(struct out *u, const struct frs_setup *s,
     const struct frs_imap *map, const struct frs_result *r)
 {
-	const struct opts *o = u->o;
-	static double xy[2 * PUT_BATCH], pdf[PUT_BATCH];
-	static uint32_t step[PUT_BATCH];
-	size_t k = 0;
+	int rc = api_result_each(s, map, r, u->o->nsteps, u->o->pdf, out_batch,
+	    u);
 
-	for (uint32_t st = 0; st < o->nsteps; st++)
-		for (uint64_t c = 0; c < r->nchunk; c++)
-			for (uint64_t i = 0; i < r->chunk[c].n; i++) {
-				const struct frs_elem *e = &r->chunk[c].e[i];
-				if (e->step != st)
-					continue;
-				frs_point(s, e, &xy[2 * k], &xy[2 * k + 1]);
-				pdf[k] = api_pdf(s, map, e);
-				step[k] = e->step;
-				if (++k == PUT_BATCH && out_batch(u, xy, o->pdf ?
-				    pdf : NULL, o->nsteps > 1 ? step : NULL, k,
-				    r->count) < 0)
-					return -1;
-				k = k == PUT_BATCH ? 0 : k;
-			}
-	return k > 0 ? out_batch(u, xy, o->pdf ? pdf : NULL, o->nsteps > 1 ?
-	    step : NULL, k, r->count) : 0;
+	if (rc == FRS_E_NOMEM)
+		return frs_fail("out of memory");
+	return rc == FRS_OK ? 0 : -1;	/* else the writer's message */
 }
 
 /* ---- loading --------------------------------------------------------- */

@@ -987,6 +987,28 @@ static int each_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
 	return rc != FRS_OK ? rc : ok(err);
 }
 
+int api_result_each(const struct frs_setup *su, const struct frs_imap *map,
+    const struct frs_result *r, unsigned nsteps, int want_pdf,
+    frs_point_fn fn, void *ctx)
+{
+	struct batch *b = malloc(sizeof *b);
+	int stop;
+
+	if (b == NULL)
+		return FRS_E_NOMEM;
+	b->p = (struct put){ su, map, b->xy, want_pdf ? b->pdf : NULL,
+	    nsteps > 1 ? b->step : NULL, 0 };
+	b->fn = fn;
+	b->ctx = ctx;
+	b->total = stored(r);
+	if (nsteps == 1)
+		stop = each_run(b, r) < 0 || flush(b) != 0;
+	else
+		stop = each_elem(r, nsteps, batch_one, b) < 0 || flush(b) != 0;
+	free(b);
+	return stop ? FRS_E_CALLBACK : FRS_OK;
+}
+
 int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
     unsigned nsteps, uint64_t seed, int want_pdf, frs_point_fn fn,
     void *ctx, frs_error *err)
@@ -994,36 +1016,27 @@ int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
 	struct frs_setup su;
 	struct frs_result r;
 	struct batch *b;
-	int rc, stop;
+	int rc;
 
 	if (fn == NULL)
 		return arg_err(err, "frs_draw_each: NULL callback");
-	if ((b = malloc(sizeof *b)) == NULL)
-		return set_err(err, FRS_E_NOMEM, "out of memory");
-	b->fn = fn;
-	b->ctx = ctx;
 	if (direct_ok(s, steps, nsteps)) {
+		if ((b = malloc(sizeof *b)) == NULL)
+			return set_err(err, FRS_E_NOMEM, "out of memory");
+		b->fn = fn;
+		b->ctx = ctx;
 		rc = each_direct(s, steps[0], seed, want_pdf, b, err);
 		free(b);
 		return rc;
 	}
-	if ((rc = run(s, steps, nsteps, seed, 0, &su, &r, err)) != FRS_OK) {
-		free(b);
+	if ((rc = run(s, steps, nsteps, seed, 0, &su, &r, err)) != FRS_OK)
 		return rc;
-	}
-	b->p = (struct put){ &su, &s->map, b->xy, want_pdf ? b->pdf : NULL,
-	    nsteps > 1 ? b->step : NULL, 0 };
-	b->fn = fn;
-	b->ctx = ctx;
-	b->total = stored(&r);
-	if (nsteps == 1)
-		stop = each_run(b, &r) < 0 || flush(b) != 0;
-	else
-		stop = each_elem(&r, nsteps, batch_one, b) < 0 || flush(b) != 0;
+	rc = api_result_each(&su, &s->map, &r, nsteps, want_pdf, fn, ctx);
 	frs_result_free(&r);
-	free(b);
-	if (stop)
-		return set_err(err, FRS_E_CALLBACK, "stopped by the callback");
+	if (rc == FRS_E_NOMEM)
+		return set_err(err, rc, "out of memory");
+	if (rc == FRS_E_CALLBACK)
+		return set_err(err, rc, "stopped by the callback");
 	return ok(err);
 }
 

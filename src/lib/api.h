@@ -68,6 +68,12 @@ uint32_t api_sorted_block(const struct frs_setup *su);
  * pixel (shuffled tiles), and the minmap skips dark pixels and blocks. */
 int api_sorted_minmap(const struct frs_setup *su);
 /* A sample's density I / mean I. */
+/* A result's samples to fn in frs_draw_each's batches and order (the
+ * steps in turn, each in map order); FRS_OK, FRS_E_NOMEM, or
+ * FRS_E_CALLBACK when fn returned non-zero. */
+int api_result_each(const struct frs_setup *su, const struct frs_imap *map,
+    const struct frs_result *r, unsigned nsteps, int want_pdf,
+    frs_point_fn fn, void *ctx);
 double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
     const struct frs_elem *e);
 /* The densities of n warped points. */
