@@ -939,27 +939,28 @@ static int each_run(struct batch *b, const struct frs_result *r)
 /* A wave's samples (from xy[0], pdf[0]) to the callback, BATCH at a
  * time. */
 struct wave_cb {
-	struct batch *b;
+	frs_point_fn fn;
+	void *ctx;
+	uint64_t total;
 	const double *xy, *pdf;
 };
 
 static int wave_out(void *ctx, uint64_t first, uint64_t n)
 {
 	const struct wave_cb *w = ctx;
-	struct batch *b = w->b;
 
 	(void)first;
 	for (uint64_t i = 0; i < n; i += BATCH) {
 		size_t k = n - i < BATCH ? (size_t)(n - i) : BATCH;
-		if (b->fn(b->ctx, w->xy + 2 * i, w->pdf != NULL ? w->pdf + i :
-		    NULL, NULL, k, b->total) != 0)
+		if (w->fn(w->ctx, w->xy + 2 * i, w->pdf != NULL ? w->pdf + i :
+		    NULL, NULL, k, w->total) != 0)
 			return -1;
 	}
 	return 0;
 }
 
 static int each_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
-    int want_pdf, struct batch *b, frs_error *err)
+    int want_pdf, frs_point_fn fn, void *ctx, frs_error *err)
 {
 	struct frs_setup su;
 	struct frs_prep view;
@@ -971,14 +972,13 @@ static int each_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
 
 	if (rc != FRS_OK || (rc = chunk_starts(s, &su, &view, &at, err)) != FRS_OK)
 		return rc;
-	b->total = at[frs_nchunks(&su)];
 	most = wave_most(at, frs_nchunks(&su));
 	xy = malloc((size_t)(2 * most + 1) * sizeof *xy);
 	pdf = want_pdf ? malloc((size_t)(most + 1) * sizeof *pdf) : NULL;
 	if (xy == NULL || (want_pdf && pdf == NULL))
 		rc = set_err(err, FRS_E_NOMEM, "out of memory");
 	d = (struct direct){ &su, &s->map, at, 0, xy, pdf };
-	w = (struct wave_cb){ b, xy, pdf };
+	w = (struct wave_cb){ fn, ctx, at[frs_nchunks(&su)], xy, pdf };
 	if (rc == FRS_OK)
 		rc = direct_waves(s, &su, &view, at, &d, 1, wave_out, &w, err);
 	free(xy);
@@ -1015,20 +1015,12 @@ int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
 {
 	struct frs_setup su;
 	struct frs_result r;
-	struct batch *b;
 	int rc;
 
 	if (fn == NULL)
 		return arg_err(err, "frs_draw_each: NULL callback");
-	if (direct_ok(s, steps, nsteps)) {
-		if ((b = malloc(sizeof *b)) == NULL)
-			return set_err(err, FRS_E_NOMEM, "out of memory");
-		b->fn = fn;
-		b->ctx = ctx;
-		rc = each_direct(s, steps[0], seed, want_pdf, b, err);
-		free(b);
-		return rc;
-	}
+	if (direct_ok(s, steps, nsteps))
+		return each_direct(s, steps[0], seed, want_pdf, fn, ctx, err);
 	if ((rc = run(s, steps, nsteps, seed, 0, &su, &r, err)) != FRS_OK)
 		return rc;
 	rc = api_result_each(&su, &s->map, &r, nsteps, want_pdf, fn, ctx);
