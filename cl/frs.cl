@@ -283,7 +283,7 @@ __kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
  * as take_block / pix_sorted of src/lib/frs.c. */
 __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
     __global const uint *sval, __global const uint *sidx,
-    __global ulong *cnt, __global const ulong *off, __global uint *out,
+    __global const uint *slen, __global ulong *cnt, __global const ulong *off, __global uint *out,
     int write)
 {
 	ulong i = get_global_id(0);
@@ -310,7 +310,7 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 			val = sval + blk * bb;
 			idx = sidx + blk * bb;
 			if (p.nsteps == 1) {
-				ulong lo = 0, hi = bb, k;
+				ulong lo = 0, hi = slen[blk], k;
 				while (lo < hi) {
 					ulong mid = lo + (hi - lo) / 2;
 					if (val[mid] < p.lim)
@@ -334,7 +334,7 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 				}
 				continue;
 			}
-			for (ulong k = 0; k < bb && val[k] < p.lim; k++) {
+			for (ulong k = 0; k < slen[blk] && val[k] < p.lim; k++) {
 				inblock(&tc.t, b, lb, idx[k], x, y, &ex, &ey);
 				emit(&p, ex, ey, val[k]);
 			}

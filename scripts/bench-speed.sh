@@ -14,7 +14,7 @@ set -eu
 . "$(dirname "$0")/benchlib.sh"
 BUILD=${1:-build/bench}
 OURS=$BUILD/bin
-BASE_COMMIT=034c211
+BASE_COMMIT=${BENCH_BASE:-034c211}	# BENCH_BASE: another commit to compare with
 MAT=data/default.frd
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT

@@ -110,21 +110,27 @@ static unsigned blocks_for(const struct frs_matrix *m, const char *imp,
 	if (imap_load(imp, 0, 0, 0, &map) < 0)
 		cli_die_lib();
 	if (fp != NULL)
-		fprintf(fp, "n\tn_s\twindow\ttiles\tblock\tminmap\n");
+		fprintf(fp, "n\tn_s\twindow\ttiles\tblock\tminmap\tvalues\t"
+		    "from_frp\n");
 	for (unsigned k = 0; k < nn; k++) {
 		struct frs_setup su;
+		uint64_t vals;
 		uint32_t b;
 		unsigned i;
 		if (frs_setup(&su, &map, m, n[k], sigma, 1) < 0)
 			cli_die_lib();
 		su.tiles = frs_tiles_auto(&su);
 		b = api_sorted_block(&su);
+		vals = api_lists_below(&su, &n[k], 1);
+		vals = vals < m->n ? vals : m->n;
 		if (fp != NULL)
-			fprintf(fp, "%llu\t%u\t%llux%llu\t%s\t%u\t%s\n",
+			fprintf(fp, "%llu\t%u\t%llux%llu\t%s\t%u\t%s\t%llu\t%s\n",
 			    (unsigned long long)n[k], su.ns,
 			    (unsigned long long)su.sw, (unsigned long long)su.sh,
 			    su.tiles == FRS_TILES_PLAIN ? "plain" : "shuffled", b,
-			    api_sorted_minmap(&su) ? "yes" : "no");
+			    api_sorted_minmap(&su) ? "yes" : "no",
+			    (unsigned long long)vals,
+			    api_lists_from_frp(m, vals) ? "yes" : "no");
 		for (i = 0; i < nb && blocks[i] != b; i++)
 			;
 		if (i == nb)

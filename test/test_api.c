@@ -574,6 +574,48 @@ static void test_direct_path(void **state)
 	drawn_free(&ref);
 }
 
+/* One sampler's draws of growing and shrinking counts: each as a fresh
+ * sampler's (its lists, made for the values the first draw reaches,
+ * grow to the complete ones when a later draw needs more), and the
+ * progressive draw nested in them. */
+static void test_lists_grow(void **state)
+{
+	uint64_t ns[] = { 50, 3000, 200, 60000, 50 }, steps[2] = { 50, 3000 };
+	struct frs_options o;
+	frs_sampler *s, *f;
+	frs_mask *mk, *fresh;
+	struct drawn d, r;
+
+	(void)state;
+	frs_options_init(&o);
+	assert_int_equal(frs_mask_load(&mk, MATRIX, NULL), FRS_OK);
+	s = sampler_f64(mk, &blob, &o);
+	for (size_t i = 0; i < sizeof ns / sizeof *ns; i++) {
+		assert_int_equal(frs_mask_load(&fresh, MATRIX, NULL), FRS_OK);
+		f = sampler_f64(fresh, &blob, &o);
+		d = draw(s, &ns[i], 1, 5, 1);
+		r = draw(f, &ns[i], 1, 5, 1);
+		assert_int_equal(d.n, r.n);
+		assert_memory_equal(d.xy, r.xy, 2 * d.n * sizeof(double));
+		drawn_free(&d);
+		drawn_free(&r);
+		frs_sampler_free(f);
+		frs_mask_free(fresh);
+	}
+	d = draw(s, steps, 2, 5, 1);
+	assert_int_equal(frs_mask_load(&fresh, MATRIX, NULL), FRS_OK);
+	f = sampler_f64(fresh, &blob, &o);
+	r = draw(f, steps, 2, 5, 1);
+	assert_int_equal(d.n, r.n);
+	assert_memory_equal(d.xy, r.xy, 2 * d.n * sizeof(double));
+	drawn_free(&d);
+	drawn_free(&r);
+	frs_sampler_free(f);
+	frs_mask_free(fresh);
+	frs_sampler_free(s);
+	frs_mask_free(mk);
+}
+
 /* frs_count: frs-sample --count-only, and what frs_draw makes. */
 static void test_count(void **state)
 {
@@ -1859,6 +1901,7 @@ int main(void)
 		cmocka_unit_test(test_stride),
 		cmocka_unit_test(test_threads_option),
 		cmocka_unit_test(test_direct_path),
+		cmocka_unit_test(test_lists_grow),
 		cmocka_unit_test(test_count),
 		cmocka_unit_test(test_info),
 		cmocka_unit_test(test_wrap),

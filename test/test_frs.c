@@ -151,7 +151,8 @@ static void thread_order(void **state)
 
 /* Check the sorted lists of p (block b) against the definition: in
  * each block, values ascending, each the matrix value at its in-block
- * index, every index of the block once. */
+ * index, every index of the block once; with p->below, exactly the
+ * elements of the block below it. */
 static void check_lists(const struct frs_matrix *m, const struct frs_prep *p,
     uint32_t b)
 {
@@ -161,9 +162,14 @@ static void check_lists(const struct frs_matrix *m, const struct frs_prep *p,
 	assert_non_null(seen);
 	for (uint32_t by = 0; by < m->h / b; by++)
 		for (uint32_t bx = 0; bx < m->w / b; bx++) {
-			size_t base = ((size_t)by * (m->w / b) + bx) * bb;
+			size_t blk = (size_t)by * (m->w / b) + bx, base = blk * bb;
+			size_t want = 0;
+			for (size_t k = 0; k < bb; k++)
+				want += m->v[((size_t)by * b + k / b) * m->w +
+				    (size_t)bx * b + k % b] < p->below;
+			assert_int_equal(p->slen[blk], want);
 			memset(seen, 0, bb);
-			for (size_t k = 0; k < bb; k++) {
+			for (size_t k = 0; k < p->slen[blk]; k++) {
 				uint32_t i = p->sidx[base + k];
 				size_t at = ((size_t)by * b + i / b) * m->w +
 				    (size_t)bx * b + i % b;
@@ -201,6 +207,86 @@ static void sorted_lists(void **state)
 			m.v[i] /= 3;
 	}
 	frs_set_threads(1);
+	frd_free(&m);
+}
+
+/* Lists of the values below a bound: exactly those elements, on 1 and 3
+ * threads, for every block size; complete lists from half the values on
+ * or when the values below repeat. */
+static void lists_below(void **state)
+{
+	static const uint64_t below[] = { 0, 1, 37, 1000, 16383, 16384 };
+	struct frs_matrix m;
+	(void)state;
+
+	tu_perm_matrix(&m, 256, 128, 5);
+	for (int pass = 0; pass < 2; pass++) {
+		for (uint32_t b = 1; b <= 128; b *= 4)
+			for (size_t i = 0; i < 6; i++) {
+				struct frs_prep p;
+				frs_set_threads(1 + 2 * (int)(i % 2));
+				assert_int_equal(frs_prepare_below(&p, &m, 0, b,
+				    below[i]), 0);
+				assert_true(p.below == (below[i] < m.n / 2 &&
+				    (pass == 0 || below[i] == 0) ? below[i] :
+				    FRS_ALL_VALUES));
+				check_lists(&m, &p, b);
+				frs_prep_free(&p);
+			}
+		for (size_t i = 0; i < m.n; i++)	/* 0 and 1 twice */
+			m.v[i] = m.v[i] < 4 ? m.v[i] / 2 : m.v[i];
+	}
+	frs_set_threads(1);
+	frd_free(&m);
+}
+
+/* Sorted over lists of the values its thresholds reach (frs_lim_most)
+ * gives Naive's elements, progressive steps too; lists one value short
+ * are refused. */
+static void sorted_below(void **state)
+{
+	static const char *maps[] = { "blob", "ramp", "sky" };
+	uint64_t steps[2] = { 300, 3000 };
+	struct frs_matrix m;
+	(void)state;
+
+	tu_perm_matrix(&m, 256, 256, 3);
+	for (size_t mi = 0; mi < 3; mi++)
+		for (unsigned ns = 1; ns <= 2; ns++) {
+			struct frs_imap map;
+			struct frs_setup s;
+			struct frs_result ref, r;
+			struct frs_prep p;
+			struct frs_elem *a, *b;
+			uint64_t lim;
+			uint32_t blk;
+			tu_map_of(maps[mi], 32, 32, &map);
+			assert_int_equal(frs_setup(&s, &map, &m, steps[ns - 1], 4.0,
+			    11), 0);
+			run(&s, &map, &m, FRS_NAIVE, steps, ns, &ref);
+			lim = frs_lim_most(&s, frs_tau(&s, steps[ns - 1]));
+			blk = s.ns < m.w ? s.ns : m.w;
+			assert_true(lim > 1 && lim < m.n / 2);
+			assert_int_equal(frs_prepare_below(&p, &m, 0, blk, lim), 0);
+			assert_true(p.below == lim);
+			assert_int_equal(frs_sample(&s, &map, &p, FRS_SORTED, steps,
+			    ns, 0, &r), 0);
+			assert_true(r.count == ref.count);
+			a = tu_elems(&ref, 1);
+			b = tu_elems(&r, 1);
+			assert_memory_equal(a, b, r.count * sizeof *a);
+			free(a);
+			free(b);
+			frs_result_free(&r);
+			p.below = lim - 1;
+			assert_int_equal(frs_sample(&s, &map, &p, FRS_SORTED, steps,
+			    ns, 0, &r), -1);
+			assert_non_null(strstr(frs_errmsg(), "the lists hold"));
+			frs_clearerr();
+			frs_prep_free(&p);
+			frs_result_free(&ref);
+			imap_free(&map);
+		}
 	frd_free(&m);
 }
 
@@ -248,6 +334,8 @@ int main(void)
 		cmocka_unit_test(thread_order),
 		cmocka_unit_test(progressive),
 		cmocka_unit_test(sorted_lists),
+		cmocka_unit_test(lists_below),
+		cmocka_unit_test(sorted_below),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -104,9 +104,14 @@ static void mask_free_parts(frs_mask *mk)
 	for (unsigned l = 1; l < mk->nlev; l++)
 		free(mk->lev[l]);
 	for (unsigned b = 0; b < 32; b++) {
-		free(mk->sval[b]);
-		free(mk->sidx[b]);
+		frs_prep_free(&mk->lists[b]);
 		frs3_prep_free(&mk->p3[b]);
+	}
+	while (mk->old != NULL) {
+		struct old_lists *o = mk->old;
+		mk->old = o->next;
+		frs_prep_free(&o->p);
+		free(o);
 	}
 	if (!mk->wrapped)
 		frd_free(&mk->m);
@@ -297,24 +302,46 @@ const char *frs_mask_note(const frs_mask *mk)
 	return mk != NULL && mk->note[0] ? mk->note : NULL;
 }
 
-/* Sorted lists of block size b: from the .frp when it has them, made
- * here otherwise.  Damaged lists are an error in a .frp loaded as such;
- * in the twin of a .frd they are noted and the twin is dropped.  Called
- * with the lock held. */
-static int make_lists(frs_mask *mk, uint32_t b)
+/* Keep the lists p in slot l; the lists there before (too short for
+ * this run) stay until the mask is freed. */
+static int keep_lists(frs_mask *mk, unsigned l, struct frs_prep *p)
+{
+	if (mk->lists[l].sval != NULL) {
+		struct old_lists *o = malloc(sizeof *o);
+		if (o == NULL) {
+			frs_prep_free(p);
+			return frs_fail("out of memory");
+		}
+		o->p = mk->lists[l];
+		o->next = mk->old;
+		mk->old = o;
+	}
+	mk->lists[l] = *p;
+	mk->lists[l].m = &mk->m;
+	mk->lists[l].nlev = 0;
+	mk->lists[l].lev[0] = NULL;
+	return 0;
+}
+
+/* Sorted lists of block size b holding the values below `below`: from
+ * a .frp loaded as such when it has them, from the twin of a .frd when
+ * the run needs half the values or more (reading complete lists costs
+ * more than making the few a smaller run needs), made here otherwise.
+ * Damaged lists are an error in a .frp loaded as such; in the twin they
+ * are noted and the twin is dropped.  Called with the lock held. */
+static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
 {
 	unsigned l = log2u(b);
 	struct frs_prep p;
 
-	if (mk->frp != NULL) {
+	if (mk->frp != NULL && (!mk->twin || api_lists_from_frp(&mk->m, below))) {
 		struct frs_matrix tm;
 		if (frp_read(mk->frp, &tm, &p, b) == 0) {
 			frd_free(&tm);
 			if (p.block == b) {
-				mk->sval[l] = p.sval, mk->sidx[l] = p.sidx;
-				p.sval = p.sidx = NULL;
-				frs_prep_free(&p);
-				return 0;
+				for (unsigned k = 1; k < p.nlev; k++)
+					free(p.lev[k]);
+				return keep_lists(mk, l, &p);
 			}
 			frs_prep_free(&p);
 			mk->made = b;
@@ -328,12 +355,9 @@ static int make_lists(frs_mask *mk, uint32_t b)
 		}
 		frs_clearerr();		/* make them instead */
 	}
-	if (frs_prepare(&p, &mk->m, 0, b) < 0)
+	if (frs_prepare_below(&p, &mk->m, 0, b, below) < 0)
 		return -1;
-	mk->sval[l] = p.sval, mk->sidx[l] = p.sidx;
-	p.sval = p.sidx = NULL;
-	frs_prep_free(&p);
-	return 0;
+	return keep_lists(mk, l, &p);
 }
 
 static int make_minmap(frs_mask *mk)
@@ -348,16 +372,17 @@ static int make_minmap(frs_mask *mk)
 }
 
 int api_mask_prep(const frs_mask *cmk, int minmap, uint32_t block,
-    struct frs_prep *view)
+    uint64_t below, struct frs_prep *view)
 {
 	frs_mask *mk = (frs_mask *)cmk;	/* only the lazy parts change */
+	const struct frs_prep *have = block ? &mk->lists[log2u(block)] : NULL;
 	int rc = 0;
 
 	pthread_mutex_lock(&mk->lock);
 	if (minmap && mk->nlev <= 1)
 		rc = make_minmap(mk);
-	if (rc == 0 && block && mk->sval[log2u(block)] == NULL)
-		rc = make_lists(mk, block);
+	if (rc == 0 && block && (have->sval == NULL || have->below < below))
+		rc = make_lists(mk, block, below);
 	memset(view, 0, sizeof *view);
 	view->m = &mk->m;
 	view->nlev = minmap ? mk->nlev : 1;
@@ -365,8 +390,10 @@ int api_mask_prep(const frs_mask *cmk, int minmap, uint32_t block,
 		view->lev[l] = mk->lev[l];
 	if (block && rc == 0) {
 		view->block = block;
-		view->sval = mk->sval[log2u(block)];
-		view->sidx = mk->sidx[log2u(block)];
+		view->sval = have->sval;
+		view->sidx = have->sidx;
+		view->slen = have->slen;
+		view->below = have->below;
 	}
 	pthread_mutex_unlock(&mk->lock);
 	return rc;
@@ -592,7 +619,8 @@ static int begin_run(const frs_sampler *s, const uint64_t *steps,
 		minmap = 1;
 	if (a == FRS_SORTED)
 		block = api_sorted_block(su);
-	if (api_mask_prep(s->mask, minmap, block, view) < 0)
+	if (api_mask_prep(s->mask, minmap, block, a == FRS_SORTED ?
+	    api_lists_below(su, steps, nsteps) : 0, view) < 0)
 		return lib_err(err, FRS_E_FORMAT);
 	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
 	return FRS_OK;
@@ -677,7 +705,7 @@ static int chunk_starts(const frs_sampler *s, const struct frs_setup *su,
 
 /* Samples per wave of the direct path: the chunks thresholded in
  * parallel, into one store that every wave reuses (api.h). */
-uint64_t api_wave = (uint64_t)1 << 20;
+uint64_t api_wave = (uint64_t)1 << 18;
 
 /* The chunks from c0 whose samples fit a wave, and with more than one
  * thread at least two a thread: a peaked map puts most samples in a few
@@ -777,6 +805,17 @@ uint32_t api_sorted_block(const struct frs_setup *su)
 int api_sorted_minmap(const struct frs_setup *su)
 {
 	return api_sorted_block(su) < su->ns;
+}
+
+int api_lists_from_frp(const struct frs_matrix *m, uint64_t below)
+{
+	return below >= m->n / 2;
+}
+
+uint64_t api_lists_below(const struct frs_setup *su, const uint64_t *steps,
+    unsigned nsteps)
+{
+	return frs_lim_most(su, frs_tau(su, steps[nsteps - 1]));
 }
 
 double api_pdf(const struct frs_setup *su, const struct frs_imap *map,

@@ -17,6 +17,11 @@
 #include "frscore.h"
 #include "hsw.h"
 
+struct old_lists {
+	struct frs_prep p;
+	struct old_lists *next;
+};
+
 struct frs_mask {
 	struct frs_matrix m;
 	int wrapped;		/* m.v is the caller's */
@@ -26,7 +31,9 @@ struct frs_mask {
 	pthread_mutex_t lock;	/* over the lazily made parts below */
 	unsigned nlev;		/* minmap levels, lev[0] = m.v */
 	uint32_t *lev[32];
-	uint32_t *sval[32], *sidx[32];	/* sorted lists by log2(block) */
+	struct frs_prep lists[32];	/* sorted lists by log2(block) */
+	struct old_lists *old;	/* lists a later run outgrew: views of
+				 * other threads may still read them */
 	uint32_t made;		/* a block size frp lacked, made here */
 	struct frs3_prep p3[32];	/* 3-D sorted lists by log2(block) */
 };
@@ -58,9 +65,17 @@ extern uint64_t api_wave;
 int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
     struct frs_setup *su);
 /* A view of the mask prepared for an implementation: the minmap and the
- * sorted lists of block (0: none), made on first use and kept. */
+ * sorted lists of block (0: none) holding at least the values below
+ * below (FRS_ALL_VALUES: all), made on first use and kept. */
 int api_mask_prep(const frs_mask *mk, int minmap, uint32_t block,
-    struct frs_prep *view);
+    uint64_t below, struct frs_prep *view);
+/* Whether lists of the values below `below` are read from the .frp
+ * beside a .frd (frs_prepare_below makes fewer faster); a .frp loaded
+ * as such always serves the lists it has. */
+int api_lists_from_frp(const struct frs_matrix *m, uint64_t below);
+/* The values Sorted's lists need for the last of steps: frs_lim_most. */
+uint64_t api_lists_below(const struct frs_setup *su, const uint64_t *steps,
+    unsigned nsteps);
 const struct frs_matrix *api_mask_matrix(const frs_mask *mk);
 /* The block of the sorted lists that a setup uses. */
 uint32_t api_sorted_block(const struct frs_setup *su);

@@ -203,9 +203,14 @@ static int read_sorted(FILE *fp, const char *name, const struct frs_matrix *m,
 			continue;
 		}
 		p->block = size;
+		p->below = FRS_ALL_VALUES;
 		if (read_u32s(fp, name, &p->sval, m->n, "sorted values") < 0 ||
-		    read_u32s(fp, name, &p->sidx, m->n, "sorted indices") < 0)
+		    read_u32s(fp, name, &p->sidx, m->n, "sorted indices") < 0 ||
+		    (p->slen = mem_calloc("sorted lists", m->n / ((uint64_t)size *
+		    size), sizeof *p->slen)) == NULL)
 			return -1;
+		for (uint64_t k = 0; k < m->n / ((uint64_t)size * size); k++)
+			p->slen[k] = size * size;
 		return check_sorted(name, m, p);
 	}
 	return 0;

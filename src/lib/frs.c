@@ -10,8 +10,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Map rows per parallel chunk. */
-#define ROWS_PER_CHUNK 1
+/* Samples a parallel chunk of map pixels is meant to hold: its points
+ * (24 bytes each with the density) stay in a core's cache between the
+ * thresholding that writes them and the output that reads them, and
+ * there are enough chunks for the threads to share even a peaked map. */
+#define CHUNK_SAMPLES 16384
 
 static const char *const algo_names[FRS_NALGO] = {
 	"naive", "stack", "level1", "level2", "sorted"
@@ -249,6 +252,7 @@ void frs_prep_free(struct frs_prep *p)
 		free(p->lev[l]);
 	free(p->sval);
 	free(p->sidx);
+	free(p->slen);
 	memset(p, 0, sizeof *p);
 }
 
@@ -322,7 +326,13 @@ static int is_permutation(const struct frs_matrix *m)
 struct invert {
 	const uint32_t *v;
 	uint32_t *inv;
+	uint64_t below;		/* values from it are left out */
+	uint64_t span;		/* matrix elements per task */
+	uint64_t *kept;		/* per task, the elements below */
 };
+
+/* No element of the matrix has this value (indices stay below 2^31). */
+#define NO_ELEM UINT32_MAX
 
 /* inv[v[i]] = i over [b, e): blind stores, distinct for a permutation,
  * so tasks may run side by side. */
@@ -335,6 +345,24 @@ static int invert_task(void *ctx, uint64_t b, uint64_t e)
 	return 0;
 }
 
+/* The same for the values below iv->below only, into an inv of that
+ * many entries set to NO_ELEM: one read of the matrix, rare stores.
+ * Repeated values store twice but count twice, which
+ * distinct_values then sees. */
+static int invert_below_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct invert *iv = ctx;
+	uint64_t kept = 0;
+
+	for (uint64_t i = b; i < e; i++)
+		if (iv->v[i] < iv->below) {
+			iv->inv[iv->v[i]] = (uint32_t)i;
+			kept++;
+		}
+	iv->kept[b / iv->span] = kept;
+	return 0;
+}
+
 /* Counting sort over the inverse permutation, in parallel over ranges
  * of values: a first pass counts each range's values per block, the
  * prefix sums over ranges then give every range its place in each
@@ -342,7 +370,8 @@ static int invert_task(void *ctx, uint64_t b, uint64_t e)
  * range of inv once; no thread reads what another one does. */
 struct scatter {
 	struct frs_prep *p;
-	const uint32_t *inv;
+	const uint32_t *inv;	/* NO_ELEM: a value the matrix lacks */
+	uint64_t nv;		/* values 0 .. nv - 1 */
 	uint64_t span;		/* values per range */
 	uint64_t nblk;		/* blocks */
 	uint64_t *fill;		/* per range and block: count, then place */
@@ -363,8 +392,9 @@ static int count_task(void *ctx, uint64_t b, uint64_t e)
 
 	for (uint64_t r = b; r < e; r++) {
 		uint64_t *cnt = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
-		for (uint64_t v = r * sc->span; v < v1 && v < m->n; v++)
-			cnt[block_of(m, sc->inv[v], lb, lw)]++;
+		for (uint64_t v = r * sc->span; v < v1 && v < sc->nv; v++)
+			if (sc->inv[v] != NO_ELEM)
+				cnt[block_of(m, sc->inv[v], lb, lw)]++;
 	}
 	return 0;
 }
@@ -403,9 +433,12 @@ static int place_task(void *ctx, uint64_t b, uint64_t e)
 	}
 	for (uint64_t r = b; r < e; r++) {
 		uint64_t *at = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
-		for (uint64_t v = r * sc->span; v < v1 && v < m->n; v++) {
+		for (uint64_t v = r * sc->span; v < v1 && v < sc->nv; v++) {
 			uint32_t i = sc->inv[v], x = i & (m->w - 1), y = i >> lw;
-			uint64_t k = block_of(m, i, lb, lw);
+			uint64_t k;
+			if (i == NO_ELEM)
+				continue;
+			k = block_of(m, i, lb, lw);
 			g[k].v[ng[k]] = (uint32_t)v;
 			g[k].i[ng[k]] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
 			if (++ng[k] == GATHER) {
@@ -494,15 +527,15 @@ static int sort_rows(void *ctx, uint64_t r0, uint64_t r1)
 #define ONE_PASS_BLOCKS 4096
 
 /* The lists by counting over inv: count, place each range, put. */
-static int count_sort(struct frs_prep *p, const uint32_t *inv)
+static int count_sort(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
 {
 	const struct frs_matrix *m = p->m;
 	uint64_t nt = (uint64_t)frs_threads(), bb = (uint64_t)p->block * p->block;
-	struct scatter sc = { p, inv, 0, 0, NULL };
+	struct scatter sc = { p, inv, nv, 0, 0, NULL };
 	int rc;
 
 	nt = nt < 1 ? 1 : nt;
-	sc.span = (m->n + nt - 1) / nt;
+	sc.span = (nv + nt - 1) / nt;
 	sc.nblk = m->n / bb;
 	if ((sc.fill = calloc(nt * sc.nblk, sizeof *sc.fill)) == NULL)
 		return frs_fail("out of memory for the sorted lists");
@@ -514,10 +547,45 @@ static int count_sort(struct frs_prep *p, const uint32_t *inv)
 			sc.fill[r * sc.nblk + k] = at;
 			at += c;
 		}
+		p->slen[k] = (uint32_t)(at - k * bb);
 	}
 	if (rc == 0)
 		rc = frs_parallel(nt, 1, place_task, &sc, NULL);
 	free(sc.fill);
+	return rc;
+}
+
+/* Lists of the values below `below` alone, by counting over an inverse
+ * of that many values; 1 when the values below repeat (the complete
+ * lists then sort them), 0 done, -1 failed. */
+static int sorted_below(struct frs_prep *p, uint64_t below)
+{
+	const struct frs_matrix *m = p->m;
+	uint64_t nt = (uint64_t)frs_threads(), kept = 0, distinct = 0;
+	struct invert iv = { m->v, NULL, below, 0, NULL };
+	int rc;
+
+	nt = nt < 1 ? 1 : nt;
+	iv.span = (m->n + nt - 1) / nt;
+	iv.inv = malloc((size_t)(below + 1) * sizeof *iv.inv);
+	iv.kept = calloc(nt, sizeof *iv.kept);
+	if (iv.inv == NULL || iv.kept == NULL) {
+		free(iv.inv);
+		free(iv.kept);
+		return frs_fail("out of memory for the sorted lists");
+	}
+	memset(iv.inv, 0xff, (size_t)below * sizeof *iv.inv);	/* NO_ELEM */
+	rc = frs_parallel(m->n, iv.span, invert_below_task, &iv, NULL);
+	for (uint64_t t = 0; t < nt; t++)
+		kept += iv.kept[t];
+	for (uint64_t v = 0; v < below; v++)
+		distinct += iv.inv[v] != NO_ELEM;
+	if (rc == 0 && kept == distinct)
+		rc = count_sort(p, iv.inv, below);
+	else if (rc == 0)
+		rc = 1;
+	free(iv.inv);
+	free(iv.kept);
 	return rc;
 }
 
@@ -526,33 +594,49 @@ static int count_sort(struct frs_prep *p, const uint32_t *inv)
  * some blocks, and a sample lost there is a bias).  O(S_M^2) for any
  * block size, in parallel over block rows: many small blocks by
  * sort_rows; few large ones of a permutation (every matrix read through
- * frd(5)) by counting over the inverse permutation; others by qsort. */
-static int make_sorted(struct frs_prep *p, uint32_t b)
+ * frd(5)) by counting over the inverse permutation; others by qsort.
+ * The values below `below` alone, when they are fewer than half, by
+ * sorted_below: then only the pages the lists fill are touched, so the
+ * lists are not in huge pages. */
+static int make_sorted(struct frs_prep *p, uint32_t b, uint64_t below)
 {
 	const struct frs_matrix *m = p->m;
-	uint64_t nblk = (uint64_t)(m->w / b) * (m->h / b);
+	uint64_t nblk = (uint64_t)(m->w / b) * (m->h / b), bb = (uint64_t)b * b;
+	int part = below < m->n / 2;
 	uint32_t *inv = NULL;
 	struct pair *tmp = NULL;
 	int rc = 0;
 
 	p->block = b;
-	p->sval = mem_big(m->n * sizeof *p->sval);
-	p->sidx = mem_big(m->n * sizeof *p->sidx);
-	if (p->sval == NULL || p->sidx == NULL)
-		rc = frs_fail("out of memory for the sorted lists");
-	else if (nblk > ONE_PASS_BLOCKS) {
-		struct scatter sc = { p, NULL, 0, 0, NULL };
+	p->below = FRS_ALL_VALUES;
+	p->sval = part ? malloc(m->n * sizeof *p->sval) :
+	    mem_big(m->n * sizeof *p->sval);
+	p->sidx = part ? malloc(m->n * sizeof *p->sidx) :
+	    mem_big(m->n * sizeof *p->sidx);
+	p->slen = malloc(nblk * sizeof *p->slen);
+	if (p->sval == NULL || p->sidx == NULL || p->slen == NULL)
+		return frs_fail("out of memory for the sorted lists");
+	for (uint64_t k = 0; k < nblk; k++)
+		p->slen[k] = (uint32_t)bb;
+	if (part && (rc = sorted_below(p, below)) <= 0) {
+		if (rc == 0)
+			p->below = below;
+		return rc;
+	}
+	rc = 0;
+	if (nblk > ONE_PASS_BLOCKS) {
+		struct scatter sc = { p, NULL, 0, 0, 0, NULL };
 		rc = frs_parallel(m->h / b, 1, sort_rows, &sc, NULL);
 	} else if ((inv = mem_big(m->n * sizeof *inv)) == NULL)
 		rc = frs_fail("out of memory for the sorted lists");
 	else if (is_permutation(m)) {
 		uint64_t nt = (uint64_t)frs_threads();
-		struct invert iv = { m->v, inv };
+		struct invert iv = { m->v, inv, 0, 0, NULL };
 		nt = nt < 1 ? 1 : nt;
 		rc = frs_parallel(m->n, (m->n + nt - 1) / nt, invert_task, &iv,
 		    NULL);
 		if (rc == 0)
-			rc = count_sort(p, inv);
+			rc = count_sort(p, inv, m->n);
 	} else if ((tmp = malloc((size_t)b * b * sizeof *tmp)) == NULL)
 		rc = frs_fail("out of memory for the sorted lists");
 	else
@@ -565,6 +649,12 @@ static int make_sorted(struct frs_prep *p, uint32_t b)
 int frs_prepare(struct frs_prep *p, const struct frs_matrix *m, int minmap,
     uint32_t block)
 {
+	return frs_prepare_below(p, m, minmap, block, FRS_ALL_VALUES);
+}
+
+int frs_prepare_below(struct frs_prep *p, const struct frs_matrix *m,
+    int minmap, uint32_t block, uint64_t below)
+{
 	memset(p, 0, sizeof *p);
 	p->m = m;
 	p->lev[0] = m->v;
@@ -576,7 +666,7 @@ int frs_prepare(struct frs_prep *p, const struct frs_matrix *m, int minmap,
 	if (block && (block > m->w || block > m->h || !is_pow2(block)))
 		return frs_fail("sorted blocks of %u do not fit the %ux%u matrix",
 		    block, m->w, m->h);
-	if ((minmap && make_minmap(p) < 0) || (block && make_sorted(p, block) < 0)) {
+	if ((minmap && make_minmap(p) < 0) || (block && make_sorted(p, block, below) < 0)) {
 		frs_prep_free(p);
 		return -1;
 	}
@@ -855,13 +945,13 @@ static void take_points(struct pix *px, const struct frs_tile *t,
  * of the fastest implementation.  (x, y): the block's window origin, b =
  * 2^lb its side; t its tile's transform, whose in-block order k undoes. */
 static void take_block(struct pix *px, const struct frs_tile *t,
-    const uint32_t *val, const uint32_t *idx, uint32_t b, unsigned lb,
-    uint64_t x, uint64_t y)
+    const uint32_t *val, const uint32_t *idx, uint32_t len, uint32_t b,
+    unsigned lb, uint64_t x, uint64_t y)
 {
-	uint64_t lo = 0, hi = (uint64_t)b * b, k, ex, ey;
+	uint64_t lo = 0, hi = len, k, ex, ey;
 	struct frs_chunk *c = px->c;
 
-	if (val[0] >= px->lim)
+	if (len == 0 || val[0] >= px->lim)
 		return;
 	while (lo < hi) {
 		uint64_t mid = lo + (hi - lo) / 2;
@@ -971,15 +1061,16 @@ static void pix_sorted(struct pix *px)
 			uint64_t blk = block_index(s, t, lb, lx, ly);
 			const uint32_t *val = p->sval + blk * bb;
 			const uint32_t *idx = p->sidx + blk * bb;
+			uint32_t len = p->slen[blk];
 			/* The block's minimum from the (small) minmap level
 			 * rather than from its list, a cache miss away. */
 			if (nb > 1 && lb < p->nlev && p->lev[lb][blk] >= px->lim)
 				continue;
 			if (run->nsteps == 1) {
-				take_block(px, t, val, idx, b, lb, x, y);
+				take_block(px, t, val, idx, len, b, lb, x, y);
 				continue;
 			}
-			for (uint64_t k = 0; k < bb && val[k] < px->lim; k++) {
+			for (uint64_t k = 0; k < len && val[k] < px->lim; k++) {
 				uint64_t ex, ey;
 				inblock(t, b, lb, idx[k], x, y, &ex, &ey);
 				emit(px, ex, ey, val[k]);
@@ -987,38 +1078,50 @@ static void pix_sorted(struct pix *px)
 		}
 }
 
-/* The map rows of chunk ci into px->c. */
-static void chunk_rows(struct pix *px, uint64_t ci)
+/* Map pixels per chunk, in row-major order: about CHUNK_SAMPLES
+ * samples at the map's mean.  Chunks only divide the work; the samples
+ * come in map order for any chunking. */
+static uint64_t chunk_pixels(const struct frs_setup *s)
+{
+	uint64_t npix = (uint64_t)s->iw * s->ih;
+	uint64_t p = s->n > 0 ? CHUNK_SAMPLES * npix / s->n : npix;
+
+	return p < 1 ? 1 : p > npix ? npix : p;
+}
+
+/* The map pixels of chunk ci into px->c. */
+static void run_chunk(struct pix *px, uint64_t ci)
 {
 	const struct run *run = px->run;
 	const struct frs_setup *s = run->s;
+	uint64_t per = chunk_pixels(s), i1 = (ci + 1) * per;
 
-	for (uint64_t py = ci * ROWS_PER_CHUNK;
-	    py < (ci + 1) * ROWS_PER_CHUNK && py < s->ih; py++)
-		for (uint64_t pxi = 0; pxi < s->iw; pxi++) {
-			double imp = run->map->v[py * s->iw + pxi];
-			if (!(imp > 0.0))
-				continue;	/* zero importance costs nothing */
-			for (unsigned k = 0; k < run->nsteps; k++)
-				frs_thr_make(&px->th[k], run->tau[k] *
-				    (imp * s->iscale), s->rule);
-			px->lim = px->th[run->nsteps - 1].lim;
-			if (px->lim == 0)
-				continue;
-			px->x0 = pxi * s->ns;
-			px->y0 = py * s->ns;
-			px->pdf = imp / s->mean;
-			switch (run->algo) {
-			case FRS_NAIVE: pix_naive(px); break;
-			case FRS_STACK: pix_stack(px); break;
-			case FRS_LEVEL1: pix_level(px, 1); break;
-			case FRS_LEVEL2: pix_level(px, 2); break;
-			default: pix_sorted(px); break;
-			}
+	i1 = i1 < (uint64_t)s->iw * s->ih ? i1 : (uint64_t)s->iw * s->ih;
+	for (uint64_t i = ci * per; i < i1; i++) {
+		uint64_t py = i / s->iw, pxi = i % s->iw;
+		double imp = run->map->v[i];
+		if (!(imp > 0.0))
+			continue;	/* zero importance costs nothing */
+		for (unsigned k = 0; k < run->nsteps; k++)
+			frs_thr_make(&px->th[k], run->tau[k] *
+			    (imp * s->iscale), s->rule);
+		px->lim = px->th[run->nsteps - 1].lim;
+		if (px->lim == 0)
+			continue;
+		px->x0 = pxi * s->ns;
+		px->y0 = py * s->ns;
+		px->pdf = imp / s->mean;
+		switch (run->algo) {
+		case FRS_NAIVE: pix_naive(px); break;
+		case FRS_STACK: pix_stack(px); break;
+		case FRS_LEVEL1: pix_level(px, 1); break;
+		case FRS_LEVEL2: pix_level(px, 2); break;
+		default: pix_sorted(px); break;
 		}
+	}
 }
 
-static int rows_task(void *ctx, uint64_t b, uint64_t e)
+static int chunks_task(void *ctx, uint64_t b, uint64_t e)
 {
 	const struct run *run = ctx;
 	struct pix px;
@@ -1031,7 +1134,7 @@ static int rows_task(void *ctx, uint64_t b, uint64_t e)
 		int rc = 0;
 		if (run->fn == NULL) {
 			px.c = &run->r->chunk[ci];
-			chunk_rows(&px, ci);
+			run_chunk(&px, ci);
 			if (px.c->failed)
 				return frs_fail("out of memory for the samples");
 			continue;
@@ -1045,7 +1148,7 @@ static int rows_task(void *ctx, uint64_t b, uint64_t e)
 			c.pdf = run->pdf != NULL ? run->pdf + run->at[ci] : NULL;
 		}
 		px.c = &c;
-		chunk_rows(&px, run->c0 + ci);
+		run_chunk(&px, run->c0 + ci);
 		if (c.failed)
 			rc = frs_fail("out of memory for the samples");
 		else
@@ -1064,6 +1167,14 @@ int frs_steps_check(const uint64_t *steps, unsigned nsteps)
 		if (steps[k] <= steps[k - 1])
 			return frs_fail("--progressive: counts must increase");
 	return 0;
+}
+
+uint64_t frs_lim_most(const struct frs_setup *s, double tau)
+{
+	struct frs_thr th;
+
+	frs_thr_make(&th, tau * (s->max * s->iscale), s->rule);
+	return th.lim;
 }
 
 int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
@@ -1087,12 +1198,19 @@ int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
 	if (algo == FRS_SORTED && p->block > frs_tile_max_block(s))
 		return frs_fail("-a sorted: shuffled tiles keep blocks of at most "
 		    "%u whole, not %u", frs_tile_max_block(s), p->block);
+	if (algo == FRS_SORTED && p->below != FRS_ALL_VALUES &&
+	    frs_lim_most(s, tau[nsteps - 1]) > p->below)
+		return frs_fail("-a sorted: the lists hold the values below "
+		    "%llu, the thresholds reach %llu",
+		    (unsigned long long)p->below, (unsigned long long)
+		    frs_lim_most(s, tau[nsteps - 1]));
 	return 0;
 }
 
 uint64_t frs_nchunks(const struct frs_setup *s)
 {
-	return (s->ih + ROWS_PER_CHUNK - 1) / ROWS_PER_CHUNK;
+	uint64_t per = chunk_pixels(s);
+	return ((uint64_t)s->iw * s->ih + per - 1) / per;
 }
 
 int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
@@ -1116,7 +1234,7 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
 		return frs_fail("frs_sample_each: chunks %llu to %llu of %llu",
 		    (unsigned long long)c0, (unsigned long long)c1,
 		    (unsigned long long)frs_nchunks(s));
-	return frs_parallel(c1 - c0, 1, rows_task, &run, NULL);
+	return frs_parallel(c1 - c0, 1, chunks_task, &run, NULL);
 }
 
 int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
@@ -1136,7 +1254,7 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
 	r->chunk = calloc(r->nchunk, sizeof *r->chunk);
 	if (r->chunk == NULL)
 		return frs_fail("out of memory");
-	rc = frs_parallel(r->nchunk, 1, rows_task, &run, NULL);
+	rc = frs_parallel(r->nchunk, 1, chunks_task, &run, NULL);
 	for (uint64_t i = 0; i < r->nchunk; i++)
 		r->count += r->chunk[i].count;
 	if (rc < 0)

@@ -97,12 +97,24 @@ struct frs_prep {
 	uint32_t block;		/* block size of the sorted lists, 0: none */
 	uint32_t *sval;		/* per block, ascending values */
 	uint32_t *sidx;		/* and their index inside the block */
+	uint32_t *slen;		/* per block, the length of its list */
+	uint64_t below;		/* the lists hold every value below this */
 };
+
+/* frs_prepare_below's bound for complete lists. */
+#define FRS_ALL_VALUES UINT64_MAX
 
 /* Build the minmap (stack, levels) and, when block > 0, the sorted lists
  * of blocks x blocks (sorted).  Power-of-two matrices only. */
 int frs_prepare(struct frs_prep *p, const struct frs_matrix *m,
     int minmap, uint32_t block);
+/* The same with lists of the values below below only (block b's list at
+ * b * block^2 still, its length slen[b]): a run whose thresholds stay
+ * under it (frs_lim_most) reads nothing else, and they cost a pass over
+ * the matrix and O(below), not O(S_M^2).  Complete lists when below is
+ * not much smaller than the matrix or its values repeat. */
+int frs_prepare_below(struct frs_prep *p, const struct frs_matrix *m,
+    int minmap, uint32_t block, uint64_t below);
 void frs_prep_free(struct frs_prep *p);
 /* The minmap level at which Stack, Level N and Flat 1 start for the
  * wanted level: at most log2 n_s, the top level and the tiling's block. */
@@ -116,7 +128,7 @@ struct frs_elem {
 	uint32_t step;		/* progressive step, 0 for the first */
 };
 
-/* Elements in chunks of map rows, in row order: the same order for any
+/* Elements in chunks of map pixels, in row-major order: the same order for any
  * thread count, and no copy to join them. */
 struct frs_chunk {
 	struct frs_elem *e;
@@ -163,7 +175,7 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, uint64_t c0, uint64_t c1,
     const uint64_t *at, struct frs_elem *store, double *xy, double *pdf,
     frs_chunk_fn fn, void *ctx);
-/* The number of chunks of the window's map rows. */
+/* The number of chunks of map pixels (about 16384 samples each). */
 uint64_t frs_nchunks(const struct frs_setup *s);
 /* Progressive counts: 1 to 16, increasing. */
 int frs_steps_check(const uint64_t *steps, unsigned nsteps);
@@ -173,6 +185,10 @@ int frs_steps_check(const uint64_t *steps, unsigned nsteps);
 int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
     int algo, const char *name, const uint64_t *steps, unsigned nsteps,
     int count_only, double *tau);
+/* The largest lim of any pixel for threshold tau, the brightest
+ * pixel's (the thresholds grow with I, roundings included): the values
+ * the sorted lists must hold. */
+uint64_t frs_lim_most(const struct frs_setup *s, double tau);
 
 /* The threshold of one pixel (or voxel) for one step. */
 struct frs_thr {
