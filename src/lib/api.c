@@ -707,15 +707,18 @@ static int chunk_starts(const frs_sampler *s, const struct frs_setup *su,
  * parallel, into one store that every wave reuses (api.h). */
 uint64_t api_wave = (uint64_t)1 << 18;
 
-/* The chunks from c0 whose samples fit a wave, and with more than one
- * thread at least two a thread: a peaked map puts most samples in a few
- * chunks, and a wave of one would leave the other threads idle. */
+/* The chunks from c0 whose samples fit a wave (api_wave a thread: each
+ * thread's share stays in its cache, and threads start once a wave), and
+ * with more than one thread at least two a thread: a peaked map puts most
+ * samples in a few chunks, and a wave of one would leave the other
+ * threads idle. */
 static uint64_t wave_end(const uint64_t *at, uint64_t c0, uint64_t nc)
 {
 	uint64_t c1 = c0 + 1, t = (uint64_t)frs_threads();
 	uint64_t least = t > 1 ? 2 * t : 1;
 
-	while (c1 < nc && (c1 - c0 < least || at[c1 + 1] - at[c0] <= api_wave))
+	while (c1 < nc && (c1 - c0 < least ||
+	    at[c1 + 1] - at[c0] <= api_wave * t))
 		c1++;
 	return c1;
 }

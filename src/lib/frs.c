@@ -555,6 +555,33 @@ static int count_sort(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
 	return rc;
 }
 
+/* Fewer values than this, or many small blocks: deal_below, whose one
+ * pass over them costs less than count_sort's arrays of every block
+ * (frscore.h). */
+uint64_t frs_deal_below = (uint64_t)1 << 20;
+
+/* The values in order, each appended to its block's list, the lengths
+ * counting as they go: one pass, the lists come out sorted. */
+static void deal_below(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
+{
+	const struct frs_matrix *m = p->m;
+	uint32_t blk = p->block;
+	unsigned lb = log2u64(blk), lw = log2u64(m->w);
+	uint64_t nblk = m->n / ((uint64_t)blk * blk), bb = (uint64_t)blk * blk;
+
+	memset(p->slen, 0, nblk * sizeof *p->slen);
+	for (uint64_t v = 0; v < nv; v++) {
+		uint32_t i = inv[v], x = i & (m->w - 1), y = i >> lw;
+		uint64_t k, at;
+		if (i == NO_ELEM)
+			continue;
+		k = block_of(m, i, lb, lw);
+		at = k * bb + p->slen[k]++;
+		p->sval[at] = (uint32_t)v;
+		p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+	}
+}
+
 /* Lists of the values below `below` alone, by counting over an inverse
  * of that many values; 1 when the values below repeat (the complete
  * lists then sort them), 0 done, -1 failed. */
@@ -580,10 +607,13 @@ static int sorted_below(struct frs_prep *p, uint64_t below)
 		kept += iv.kept[t];
 	for (uint64_t v = 0; v < below; v++)
 		distinct += iv.inv[v] != NO_ELEM;
-	if (rc == 0 && kept == distinct)
-		rc = count_sort(p, iv.inv, below);
-	else if (rc == 0)
+	if (rc == 0 && kept != distinct)
 		rc = 1;
+	else if (rc == 0 && (below < frs_deal_below ||
+	    m->n / ((uint64_t)p->block * p->block) > ONE_PASS_BLOCKS))
+		deal_below(p, iv.inv, below);
+	else if (rc == 0)
+		rc = count_sort(p, iv.inv, below);
 	free(iv.inv);
 	free(iv.kept);
 	return rc;

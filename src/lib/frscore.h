@@ -115,6 +115,10 @@ int frs_prepare(struct frs_prep *p, const struct frs_matrix *m,
  * not much smaller than the matrix or its values repeat. */
 int frs_prepare_below(struct frs_prep *p, const struct frs_matrix *m,
     int minmap, uint32_t block, uint64_t below);
+/* Below this many values (or with many small blocks) the partial lists
+ * are dealt in one serial pass, else counted in parallel; tests lower it
+ * to take both ways. */
+extern uint64_t frs_deal_below;
 void frs_prep_free(struct frs_prep *p);
 /* The minmap level at which Stack, Level N and Flat 1 start for the
  * wanted level: at most log2 n_s, the top level and the tiling's block. */
