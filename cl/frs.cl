@@ -283,11 +283,11 @@ __kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
  * as take_block / pix_sorted of src/lib/frs.c. */
 __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
     __global const uint *sval, __global const uint *sidx,
-    __global const uint *slen, __global ulong *cnt, __global const ulong *off, __global uint *out,
+    __global const uint *soff, __global ulong *cnt, __global const ulong *off, __global uint *out,
     int write)
 {
 	ulong i = get_global_id(0);
-	ulong b, nb, bb;
+	ulong b, nb;
 	uint lb = 0;
 	struct pix p;
 	struct tcache tc;
@@ -298,7 +298,6 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 	pix_init(&p, par, thr, i, off, out, write);
 	b = par[PAR_L];
 	nb = par[PAR_NS] / b;
-	bb = b * b;
 	while (((ulong)1 << lb) < b)
 		lb++;
 	for (ulong by = 0; by < nb; by++)
@@ -307,10 +306,10 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 			__global const uint *val, *idx;
 			tile_at(par, &tc, x, y, &lx, &ly);
 			blk = block_index(par, &tc.t, lb, lx, ly);
-			val = sval + blk * bb;
-			idx = sidx + blk * bb;
+			val = sval + soff[blk];
+			idx = sidx + soff[blk];
 			if (p.nsteps == 1) {
-				ulong lo = 0, hi = slen[blk], k;
+				ulong lo = 0, hi = soff[blk + 1] - soff[blk], k;
 				while (lo < hi) {
 					ulong mid = lo + (hi - lo) / 2;
 					if (val[mid] < p.lim)
@@ -334,7 +333,8 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 				}
 				continue;
 			}
-			for (ulong k = 0; k < slen[blk] && val[k] < p.lim; k++) {
+			for (ulong k = 0; k < soff[blk + 1] - soff[blk] &&
+			    val[k] < p.lim; k++) {
 				inblock(&tc.t, b, lb, idx[k], x, y, &ex, &ey);
 				emit(&p, ex, ey, val[k]);
 			}

@@ -162,14 +162,14 @@ static void check_lists(const struct frs_matrix *m, const struct frs_prep *p,
 	assert_non_null(seen);
 	for (uint32_t by = 0; by < m->h / b; by++)
 		for (uint32_t bx = 0; bx < m->w / b; bx++) {
-			size_t blk = (size_t)by * (m->w / b) + bx, base = blk * bb;
+			size_t blk = (size_t)by * (m->w / b) + bx, base = p->soff[blk];
 			size_t want = 0;
 			for (size_t k = 0; k < bb; k++)
 				want += m->v[((size_t)by * b + k / b) * m->w +
 				    (size_t)bx * b + k % b] < p->below;
-			assert_int_equal(p->slen[blk], want);
+			assert_int_equal(p->soff[blk + 1] - base, want);
 			memset(seen, 0, bb);
-			for (size_t k = 0; k < p->slen[blk]; k++) {
+			for (size_t k = 0; k < want; k++) {
 				uint32_t i = p->sidx[base + k];
 				size_t at = ((size_t)by * b + i / b) * m->w +
 				    (size_t)bx * b + i % b;

@@ -392,7 +392,7 @@ int api_mask_prep(const frs_mask *cmk, int minmap, uint32_t block,
 		view->block = block;
 		view->sval = have->sval;
 		view->sidx = have->sidx;
-		view->slen = have->slen;
+		view->soff = have->soff;
 		view->below = have->below;
 	}
 	pthread_mutex_unlock(&mk->lock);

@@ -206,11 +206,11 @@ static int read_sorted(FILE *fp, const char *name, const struct frs_matrix *m,
 		p->below = FRS_ALL_VALUES;
 		if (read_u32s(fp, name, &p->sval, m->n, "sorted values") < 0 ||
 		    read_u32s(fp, name, &p->sidx, m->n, "sorted indices") < 0 ||
-		    (p->slen = mem_calloc("sorted lists", m->n / ((uint64_t)size *
-		    size), sizeof *p->slen)) == NULL)
+		    (p->soff = mem_calloc("sorted lists", m->n / ((uint64_t)size *
+		    size) + 1, sizeof *p->soff)) == NULL)
 			return -1;
-		for (uint64_t k = 0; k < m->n / ((uint64_t)size * size); k++)
-			p->slen[k] = size * size;
+		for (uint64_t k = 0; k <= m->n / ((uint64_t)size * size); k++)
+			p->soff[k] = (uint32_t)(k * size * size);
 		return check_sorted(name, m, p);
 	}
 	return 0;

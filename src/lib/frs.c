@@ -252,7 +252,7 @@ void frs_prep_free(struct frs_prep *p)
 		free(p->lev[l]);
 	free(p->sval);
 	free(p->sidx);
-	free(p->slen);
+	free(p->soff);
 	memset(p, 0, sizeof *p);
 }
 
@@ -540,14 +540,14 @@ static int count_sort(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
 	if ((sc.fill = calloc(nt * sc.nblk, sizeof *sc.fill)) == NULL)
 		return frs_fail("out of memory for the sorted lists");
 	rc = frs_parallel(nt, 1, count_task, &sc, NULL);
-	for (uint64_t k = 0; rc == 0 && k < sc.nblk; k++) {
-		uint64_t at = k * bb;
+	for (uint64_t k = 0, at = 0; rc == 0 && k < sc.nblk; k++) {
+		p->soff[k] = (uint32_t)at;
 		for (uint64_t r = 0; r < nt; r++) {
 			uint64_t c = sc.fill[r * sc.nblk + k];
 			sc.fill[r * sc.nblk + k] = at;
 			at += c;
 		}
-		p->slen[k] = (uint32_t)(at - k * bb);
+		p->soff[k + 1] = (uint32_t)at;
 	}
 	if (rc == 0)
 		rc = frs_parallel(nt, 1, place_task, &sc, NULL);
@@ -560,26 +560,36 @@ static int count_sort(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
  * (frscore.h). */
 uint64_t frs_deal_below = (uint64_t)1 << 20;
 
-/* The values in order, each appended to its block's list, the lengths
- * counting as they go: one pass, the lists come out sorted. */
-static void deal_below(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
+/* The values in order, counted per block, then each appended to its
+ * block's list: the lists come out sorted. */
+static int deal_below(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
 {
 	const struct frs_matrix *m = p->m;
 	uint32_t blk = p->block;
 	unsigned lb = log2u64(blk), lw = log2u64(m->w);
-	uint64_t nblk = m->n / ((uint64_t)blk * blk), bb = (uint64_t)blk * blk;
+	uint64_t nblk = m->n / ((uint64_t)blk * blk);
+	uint32_t *fill = calloc(nblk, sizeof *fill);
 
-	memset(p->slen, 0, nblk * sizeof *p->slen);
+	if (fill == NULL)
+		return frs_fail("out of memory for the sorted lists");
+	for (uint64_t v = 0; v < nv; v++)
+		if (inv[v] != NO_ELEM)
+			fill[block_of(m, inv[v], lb, lw)]++;
+	p->soff[0] = 0;
+	for (uint64_t k = 0; k < nblk; k++) {
+		p->soff[k + 1] = p->soff[k] + fill[k];
+		fill[k] = p->soff[k];
+	}
 	for (uint64_t v = 0; v < nv; v++) {
-		uint32_t i = inv[v], x = i & (m->w - 1), y = i >> lw;
-		uint64_t k, at;
+		uint32_t i = inv[v], x = i & (m->w - 1), y = i >> lw, at;
 		if (i == NO_ELEM)
 			continue;
-		k = block_of(m, i, lb, lw);
-		at = k * bb + p->slen[k]++;
+		at = fill[block_of(m, i, lb, lw)]++;
 		p->sval[at] = (uint32_t)v;
 		p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
 	}
+	free(fill);
+	return 0;
 }
 
 /* Lists of the values below `below` alone, by counting over an inverse
@@ -611,7 +621,7 @@ static int sorted_below(struct frs_prep *p, uint64_t below)
 		rc = 1;
 	else if (rc == 0 && (below < frs_deal_below ||
 	    m->n / ((uint64_t)p->block * p->block) > ONE_PASS_BLOCKS))
-		deal_below(p, iv.inv, below);
+		rc = deal_below(p, iv.inv, below);
 	else if (rc == 0)
 		rc = count_sort(p, iv.inv, below);
 	free(iv.inv);
@@ -626,34 +636,39 @@ static int sorted_below(struct frs_prep *p, uint64_t below)
  * sort_rows; few large ones of a permutation (every matrix read through
  * frd(5)) by counting over the inverse permutation; others by qsort.
  * The values below `below` alone, when they are fewer than half, by
- * sorted_below: then only the pages the lists fill are touched, so the
- * lists are not in huge pages. */
+ * sorted_below, in lists of just those values. */
 static int make_sorted(struct frs_prep *p, uint32_t b, uint64_t below)
 {
 	const struct frs_matrix *m = p->m;
 	uint64_t nblk = (uint64_t)(m->w / b) * (m->h / b), bb = (uint64_t)b * b;
-	int part = below < m->n / 2;
 	uint32_t *inv = NULL;
 	struct pair *tmp = NULL;
 	int rc = 0;
 
 	p->block = b;
 	p->below = FRS_ALL_VALUES;
-	p->sval = part ? malloc(m->n * sizeof *p->sval) :
-	    mem_big(m->n * sizeof *p->sval);
-	p->sidx = part ? malloc(m->n * sizeof *p->sidx) :
-	    mem_big(m->n * sizeof *p->sidx);
-	p->slen = malloc(nblk * sizeof *p->slen);
-	if (p->sval == NULL || p->sidx == NULL || p->slen == NULL)
+	if ((p->soff = malloc((nblk + 1) * sizeof *p->soff)) == NULL)
 		return frs_fail("out of memory for the sorted lists");
-	for (uint64_t k = 0; k < nblk; k++)
-		p->slen[k] = (uint32_t)bb;
-	if (part && (rc = sorted_below(p, below)) <= 0) {
-		if (rc == 0)
-			p->below = below;
-		return rc;
+	if (below < m->n / 2) {
+		p->sval = malloc((below + 1) * sizeof *p->sval);
+		p->sidx = malloc((below + 1) * sizeof *p->sidx);
+		if (p->sval == NULL || p->sidx == NULL)
+			return frs_fail("out of memory for the sorted lists");
+		if ((rc = sorted_below(p, below)) <= 0) {
+			if (rc == 0)
+				p->below = below;
+			return rc;
+		}
+		free(p->sval);	/* repeated values: the complete lists */
+		free(p->sidx);
+		rc = 0;
 	}
-	rc = 0;
+	p->sval = mem_big(m->n * sizeof *p->sval);
+	p->sidx = mem_big(m->n * sizeof *p->sidx);
+	if (p->sval == NULL || p->sidx == NULL)
+		return frs_fail("out of memory for the sorted lists");
+	for (uint64_t k = 0; k <= nblk; k++)
+		p->soff[k] = (uint32_t)(k * bb);
 	if (nblk > ONE_PASS_BLOCKS) {
 		struct scatter sc = { p, NULL, 0, 0, 0, NULL };
 		rc = frs_parallel(m->h / b, 1, sort_rows, &sc, NULL);
@@ -1077,7 +1092,7 @@ static void pix_sorted(struct pix *px)
 	const struct frs_setup *s = run->s;
 	const struct frs_prep *p = run->p;
 	uint32_t b = p->block;
-	uint64_t nb = s->ns / b, bb = (uint64_t)b * b;
+	uint64_t nb = s->ns / b;
 	unsigned lb = 0;
 
 	while ((1u << lb) < b)
@@ -1089,9 +1104,9 @@ static void pix_sorted(struct pix *px)
 			uint64_t x = px->x0 + bx * b, y = px->y0 + by * b, lx, ly;
 			const struct frs_tile *t = tile_at(s, &px->tc, x, y, &lx, &ly);
 			uint64_t blk = block_index(s, t, lb, lx, ly);
-			const uint32_t *val = p->sval + blk * bb;
-			const uint32_t *idx = p->sidx + blk * bb;
-			uint32_t len = p->slen[blk];
+			const uint32_t *val = p->sval + p->soff[blk];
+			const uint32_t *idx = p->sidx + p->soff[blk];
+			uint32_t len = p->soff[blk + 1] - p->soff[blk];
 			/* The block's minimum from the (small) minmap level
 			 * rather than from its list, a cache miss away. */
 			if (nb > 1 && lb < p->nlev && p->lev[lb][blk] >= px->lim)

@@ -103,7 +103,7 @@ static uint64_t pixel_record(uint64_t *rec, const double *tau, unsigned nsteps,
 struct clrun {
 	struct ocl *o;
 	cl_program prog;
-	cl_mem par, thr, mat, loff, sval, sidx, slen, cnt, off, out, ca, cb, ccnt;
+	cl_mem par, thr, mat, loff, sval, sidx, soff, cnt, off, out, ca, cb, ccnt;
 	cl_kernel k, k2, k3;
 	uint64_t nact;
 	double t;	/* start of the current phase */
@@ -119,7 +119,7 @@ static void rel(cl_mem *m)
 static void clrun_free(struct clrun *c)
 {
 	cl_mem *all[] = { &c->par, &c->thr, &c->mat, &c->loff, &c->sval,
-	    &c->sidx, &c->slen, &c->cnt, &c->off, &c->out, &c->ca, &c->cb, &c->ccnt };
+	    &c->sidx, &c->soff, &c->cnt, &c->off, &c->out, &c->ca, &c->cb, &c->ccnt };
 	for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
 		rel(all[i]);
 	if (c->k)
@@ -328,7 +328,7 @@ static int per_pixel(struct clrun *c, int algo, int count_only,
 		    sizeof c->off, &c->off, sizeof c->out, &c->out, sizeof wr, &wr) :
 		    algo == FRS_SORTED ? ocl_args(c->k, 9, sizeof c->par, &c->par,
 		    sizeof c->thr, &c->thr, sizeof m1, &m1, sizeof m2, &m2,
-		    sizeof c->slen, &c->slen, sizeof c->cnt, &c->cnt,
+		    sizeof c->soff, &c->soff, sizeof c->cnt, &c->cnt,
 		    sizeof c->off, &c->off, sizeof c->out, &c->out, sizeof wr, &wr) :
 		    ocl_args(c->k, 8, sizeof c->par, &c->par, sizeof c->thr, &c->thr,
 		    sizeof m1, &m1, sizeof m2, &m2, sizeof c->cnt, &c->cnt,
@@ -523,10 +523,11 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 			goto out;
 	} else if (algo == FRS_SORTED) {
 		uint64_t nblk = p->m->n / ((uint64_t)p->block * p->block);
-		if (shared_buffer(&c, p->m->n * sizeof *p->sval, p->sval,
-		    &c.sval) < 0 || shared_buffer(&c, p->m->n * sizeof *p->sidx,
-		    p->sidx, &c.sidx) < 0 || shared_buffer(&c, nblk *
-		    sizeof *p->slen, p->slen, &c.slen) < 0)
+		uint64_t nl = p->soff[nblk];	/* entries in all lists */
+		if (shared_buffer(&c, nl * sizeof *p->sval, p->sval,
+		    &c.sval) < 0 || shared_buffer(&c, nl * sizeof *p->sidx,
+		    p->sidx, &c.sidx) < 0 || shared_buffer(&c, (nblk + 1) *
+		    sizeof *p->soff, p->soff, &c.soff) < 0)
 			goto out;
 	} else if (upload_minmap(&c, p) < 0) {
 		goto out;

@@ -97,7 +97,7 @@ struct frs_prep {
 	uint32_t block;		/* block size of the sorted lists, 0: none */
 	uint32_t *sval;		/* per block, ascending values */
 	uint32_t *sidx;		/* and their index inside the block */
-	uint32_t *slen;		/* per block, the length of its list */
+	uint32_t *soff;		/* block k's list: soff[k] .. soff[k + 1] - 1 */
 	uint64_t below;		/* the lists hold every value below this */
 };
 
@@ -108,8 +108,7 @@ struct frs_prep {
  * of blocks x blocks (sorted).  Power-of-two matrices only. */
 int frs_prepare(struct frs_prep *p, const struct frs_matrix *m,
     int minmap, uint32_t block);
-/* The same with lists of the values below below only (block b's list at
- * b * block^2 still, its length slen[b]): a run whose thresholds stay
+/* The same with lists of the values below below only: a run whose thresholds stay
  * under it (frs_lim_most) reads nothing else, and they cost a pass over
  * the matrix and O(below), not O(S_M^2).  Complete lists when below is
  * not much smaller than the matrix or its values repeat. */
