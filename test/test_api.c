@@ -574,6 +574,26 @@ static void test_direct_path(void **state)
 	drawn_free(&ref);
 }
 
+/* s's draw of steps: a fresh mask's, whose lists are made for it. */
+static void same_as_fresh(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps, const struct frs_options *o)
+{
+	frs_mask *fresh;
+	frs_sampler *f;
+	struct drawn d, r;
+
+	assert_int_equal(frs_mask_load(&fresh, MATRIX, NULL), FRS_OK);
+	f = sampler_f64(fresh, &blob, o);
+	d = draw(s, steps, nsteps, 5, 1);
+	r = draw(f, steps, nsteps, 5, 1);
+	assert_int_equal(d.n, r.n);
+	assert_memory_equal(d.xy, r.xy, 2 * d.n * sizeof(double));
+	drawn_free(&d);
+	drawn_free(&r);
+	frs_sampler_free(f);
+	frs_mask_free(fresh);
+}
+
 /* One sampler's draws of growing and shrinking counts: each as a fresh
  * sampler's (its lists, made for the values the first draw reaches,
  * grow to the complete ones when a later draw needs more), and the
@@ -582,36 +602,16 @@ static void test_lists_grow(void **state)
 {
 	uint64_t ns[] = { 50, 3000, 200, 60000, 50 }, steps[2] = { 50, 3000 };
 	struct frs_options o;
-	frs_sampler *s, *f;
-	frs_mask *mk, *fresh;
-	struct drawn d, r;
+	frs_sampler *s;
+	frs_mask *mk;
 
 	(void)state;
 	frs_options_init(&o);
 	assert_int_equal(frs_mask_load(&mk, MATRIX, NULL), FRS_OK);
 	s = sampler_f64(mk, &blob, &o);
-	for (size_t i = 0; i < sizeof ns / sizeof *ns; i++) {
-		assert_int_equal(frs_mask_load(&fresh, MATRIX, NULL), FRS_OK);
-		f = sampler_f64(fresh, &blob, &o);
-		d = draw(s, &ns[i], 1, 5, 1);
-		r = draw(f, &ns[i], 1, 5, 1);
-		assert_int_equal(d.n, r.n);
-		assert_memory_equal(d.xy, r.xy, 2 * d.n * sizeof(double));
-		drawn_free(&d);
-		drawn_free(&r);
-		frs_sampler_free(f);
-		frs_mask_free(fresh);
-	}
-	d = draw(s, steps, 2, 5, 1);
-	assert_int_equal(frs_mask_load(&fresh, MATRIX, NULL), FRS_OK);
-	f = sampler_f64(fresh, &blob, &o);
-	r = draw(f, steps, 2, 5, 1);
-	assert_int_equal(d.n, r.n);
-	assert_memory_equal(d.xy, r.xy, 2 * d.n * sizeof(double));
-	drawn_free(&d);
-	drawn_free(&r);
-	frs_sampler_free(f);
-	frs_mask_free(fresh);
+	for (size_t i = 0; i < sizeof ns / sizeof *ns; i++)
+		same_as_fresh(s, &ns[i], 1, &o);
+	same_as_fresh(s, steps, 2, &o);
 	frs_sampler_free(s);
 	frs_mask_free(mk);
 }
