@@ -18,7 +18,7 @@ extern "C" {
 #endif
 
 #define FRS_API_VERSION_MAJOR 1
-#define FRS_API_VERSION_MINOR 1
+#define FRS_API_VERSION_MINOR 2
 
 /* ---- errors ---------------------------------------------------------- */
 
@@ -43,6 +43,21 @@ typedef struct frs_error {
 const char *frs_code_name(int code);
 /* "0.4.0"; thread-safe. */
 const char *frs_library_version(void);
+
+/* ---- progress (since 1.2) ---------------------------------------------- */
+
+/* Progress of a long task: what names it (a map spec's name such as
+ * "aniso"; valid during the call only), done of total units finished.
+ * A task calls once with done = 0 when it starts, then with done
+ * increasing below total, and once with done = total (at least 1) when
+ * it ends. */
+typedef void (*frs_progress_fn)(void *ctx, const char *what, uint64_t done,
+    uint64_t total);
+/* Report the progress of the library work that this thread starts to
+ * fn(ctx, ...), called in this thread; fn NULL (the default in every
+ * thread) reports nothing.  Per thread: other threads keep their own.
+ * See frs_set_progress(3). */
+void frs_set_progress(frs_progress_fn fn, void *ctx);
 
 /* ---- threshold matrices ---------------------------------------------- */
 
