@@ -1,9 +1,10 @@
 /*
  * libfrs: Forced Random Sampling in-process.  See libfrs(3).
  *
- * Opaque handles, no global state: every function reports failure as a
- * code, with a message in the caller's frs_error when one is given;
- * nothing prints, nothing exits.  Thread safety is stated per function;
+ * Opaque handles, no global state (but for each thread's progress
+ * callback, off unless set): every function reports failure as a code,
+ * with a message in the caller's frs_error when one is given; nothing
+ * prints, nothing exits.  Thread safety is stated per function;
  * in short, a handle is built by one thread and then read by any number
  * at once, each with its own output buffers.
  */
