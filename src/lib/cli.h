@@ -106,7 +106,7 @@ struct cli_bar {
 	double start, last;	/* progress_now() seconds */
 	int active, on, drawn;
 };
-void cli_bar_progress(void *bar, const char *what, uint64_t done,
+void cli_bar_progress(void *ctx, const char *what, uint64_t done,
     uint64_t total);
 
 /* Number of online processors. */
