@@ -44,6 +44,8 @@ TESTSRC = $(wildcard test/test_*.c)
 HARDSRC = $(wildcard test/hard/test_*.c)
 # The benchmarks' reference implementations and drivers (test/bench_*.c).
 REFSRC = $(wildcard test/ref_*.c) $(wildcard test/bench_*.c)
+# Programs on the public API alone, as a user writes them (test/user_*.c).
+USERSRC = $(wildcard test/user_*.c)
 
 # Variant: rel (bin/, portable), san (sanitizers, for make check),
 # bench (-O3 -march=native, for make bench).
@@ -73,6 +75,7 @@ LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o) \
 PROGBIN = $(PROGS:%=$(B)/bin/%)
 TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%) $(HARDSRC:test/hard/%.c=$(B)/test/%)
 REFBIN = $(REFSRC:test/%.c=$(B)/test/%)
+USERBIN = $(USERSRC:test/%.c=$(B)/test/%)
 
 .PHONY: all progs libs tests check demo bench install uninstall clean deps \
 	lint-man experiments
@@ -88,7 +91,7 @@ all: libs
 endif
 
 progs: $(PROGBIN)
-tests: $(TESTBIN) $(PROGBIN) $(REFBIN)
+tests: $(TESTBIN) $(PROGBIN) $(REFBIN) $(USERBIN)
 
 $(B)/libfrs.a: $(LIBOBJ)
 	@mkdir -p $(@D)
@@ -123,7 +126,7 @@ $(B)/lib/%.o: src/lib/%.cc
 # the internal symbols they use.
 SOMAJOR = 1
 SONAME = libfrs.so.$(SOMAJOR)
-SOMINOR = 1
+SOMINOR = 2
 SOFILE = libfrs.so.$(SOMAJOR).$(SOMINOR).0
 PICOBJ = $(LIBOBJ:$(B)/%=$(B)/pic/%)
 SOMAP = src/lib/libfrs.map
@@ -177,7 +180,11 @@ $(B)/test/ref_%: $(B)/test/ref_%.o $(B)/libfrs.a
 $(B)/test/bench_%: $(B)/test/bench_%.o $(B)/libfrs.a
 	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
 
+$(B)/test/user_%: $(B)/test/user_%.o $(B)/libfrs.a
+	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
+
 -include $(LIBOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d) $(REFBIN:=.d) \
+	$(USERBIN:=.d) \
 	$(PICOBJ:.o=.d)
 
 deps:

@@ -17,7 +17,7 @@
 static const char usage[] =
     "usage: pts-render [-q] [-s SIZE] [-r R] [-i MAP] [--color] [-o FILE] [PTS]\n"
     "                  [--log] [--srgb] [--equirect] [--format png|pnm]\n"
-    "                  [--axes xy|xz|yz]\n"
+    "                  [--axes xy|xz|yz] [--alpha A]\n"
     "\n"
     "  PTS                 a point file, binary or text (default: standard\n"
     "                      input, also '-'); x, y are its first two\n"
@@ -25,8 +25,11 @@ static const char usage[] =
     "      --axes AB       the coordinates drawn across and down: xy\n"
     "                      (default), or xz or yz of a 3-D (or higher) set\n"
     "  -s, --size SIZE     image size, N (NxN) or WxH (default 512)\n"
-    "  -r, --radius R      dot radius in pixels (default 1.5 * W / 512,\n"
-    "                      at least 0.7)\n"
+    "  -r, --radius R      dot radius in pixels, the same for every dot\n"
+    "                      (default: from the local spacing of the points,\n"
+    "                      a third of it, from 0.25 up to 1.5 * W / 512\n"
+    "                      but at least 0.7)\n"
+    "      --alpha A       opacity of the dots, 0 to 1 (default 1)\n"
     "  -i, --importance MAP  draw over the importance map MAP (PNG, OpenEXR\n"
     "                      or a procedural spec such as blob) resampled to\n"
     "                      the image size: white for 0, light grey for its\n"
@@ -48,7 +51,7 @@ static const char usage[] =
 
 enum {
 	OPT_LOG = OPT_FIRST_PRIVATE, OPT_COLOR, OPT_SRGB, OPT_EQUIRECT,
-	OPT_FORMAT, OPT_AXES
+	OPT_FORMAT, OPT_AXES, OPT_ALPHA
 };
 
 static const struct option longopts[] = {
@@ -62,6 +65,7 @@ static const struct option longopts[] = {
 	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
 	{ "format", required_argument, NULL, OPT_FORMAT },
 	{ "axes", required_argument, NULL, OPT_AXES },
+	{ "alpha", required_argument, NULL, OPT_ALPHA },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
@@ -104,7 +108,8 @@ int main(int argc, char **argv)
 {
 	const char *in = "-", *imp = NULL, *name;
 	uint32_t w = 512, h = 512;
-	double rad = 0.0;
+	double rad = 0.0, alpha = 1.0;
+	struct raster_spacing sp;
 	int c, logscale = 0, color = 0, flags = IMAP_ALLOW_ZERO;
 	struct frs_points p;
 	struct frs_raster r;
@@ -140,6 +145,9 @@ int main(int argc, char **argv)
 		case OPT_EQUIRECT:
 			flags |= IMAP_EQUIRECT;
 			break;
+		case OPT_ALPHA:
+			alpha = cli_double("--alpha", optarg, 0.0, 1.0);
+			break;
 		case OPT_AXES:
 			parse_axes(optarg, axis);
 			axes = optarg;
@@ -170,8 +178,6 @@ int main(int argc, char **argv)
 		    "be standard input");
 	if (imp == NULL && (logscale || (flags & ~IMAP_ALLOW_ZERO)))
 		cli_usage_error("--log, --srgb and --equirect need -i");
-	if (rad == 0.0)
-		rad = raster_default_radius(w);
 
 	/* The output first: a bad path fails before any work, and standard
 	 * output is never a terminal. */
@@ -202,14 +208,22 @@ int main(int argc, char **argv)
 	}
 
 	ncol = (size_t)p.dims + p.extra;
+	/* No -r: each dot's radius from the spacing around it. */
+	if (rad == 0.0 && raster_spacing_init(&sp, p.x, p.n, ncol, axis[0],
+	    axis[1], w, h) < 0)
+		cli_die_lib();
 	for (size_t k = 0; k < p.n; k++) {
 		const double *x = p.x + k * ncol;
+		double cx = x[axis[0]] * w, cy = x[axis[1]] * h;
 		uint8_t ink[3] = { 0, 0, 0 };
 
 		if (color)
 			raster_ramp(k, p.n, ink);
-		raster_disc(&r, x[axis[0]] * w, x[axis[1]] * h, rad, ink);
+		raster_disc_alpha(&r, cx, cy, rad > 0.0 ? rad :
+		    raster_spacing_radius(&sp, cx, cy), ink, alpha);
 	}
+	if (rad == 0.0)
+		raster_spacing_free(&sp);
 	pts_free(&p);
 
 	format = format_of(format, cli.out);

@@ -35,7 +35,7 @@ missing=""
 for p in $progs; do
 	[ -x "$U/bin/$p" ] || missing="$missing bin/$p"
 done
-for f in include/frs.h lib/libfrs.a lib/libfrs.so.1.1.0 \
+for f in include/frs.h lib/libfrs.a lib/libfrs.so.1.2.0 \
     lib/pkgconfig/frs.pc share/frs/default.frd share/frs/default3.frd \
     share/frs/sunset.exr; do
 	[ -f "$U/$f" ] || missing="$missing $f"
@@ -49,17 +49,17 @@ done
     nok "not installed:$missing"
 cmp -s "$TOP/src/lib/frs.h" "$U/include/frs.h" && ok "frs.h as in src/lib/" ||
     nok "frs.h as in src/lib/"
-[ "$(readlink "$U/lib/libfrs.so.1")" = libfrs.so.1.1.0 ] &&
-    [ "$(readlink "$U/lib/libfrs.so")" = libfrs.so.1.1.0 ] &&
-    ok "libfrs.so and libfrs.so.1 link to libfrs.so.1.1.0" ||
-    nok "libfrs.so and libfrs.so.1 link to libfrs.so.1.1.0"
-readelf -d "$U/lib/libfrs.so.1.1.0" | grep -q 'SONAME.*\[libfrs\.so\.1\]' &&
+[ "$(readlink "$U/lib/libfrs.so.1")" = libfrs.so.1.2.0 ] &&
+    [ "$(readlink "$U/lib/libfrs.so")" = libfrs.so.1.2.0 ] &&
+    ok "libfrs.so and libfrs.so.1 link to libfrs.so.1.2.0" ||
+    nok "libfrs.so and libfrs.so.1 link to libfrs.so.1.2.0"
+readelf -d "$U/lib/libfrs.so.1.2.0" | grep -q 'SONAME.*\[libfrs\.so\.1\]' &&
     ok "soname libfrs.so.1" || nok "soname libfrs.so.1"
 
 # The exported functions are those the header declares, no more.
 grep -o 'frs_[a-z0-9_]*(' "$TOP/src/lib/frs.h" | tr -d '(' | sort -u \
     >"$T/api.txt"
-nm -D --defined-only "$U/lib/libfrs.so.1.1.0" |
+nm -D --defined-only "$U/lib/libfrs.so.1.2.0" |
     awk '$2 != "A" { sub(/@.*/, "", $3); print $3 }' | sort -u >"$T/exported.txt"
 if cmp -s "$T/api.txt" "$T/exported.txt"; then
 	ok "libfrs.so exports the $(wc -l <"$T/api.txt") functions of frs.h"
@@ -67,7 +67,7 @@ else
 	nok "libfrs.so exports the functions of frs.h"
 	diff "$T/api.txt" "$T/exported.txt" | head -n 20 | sed 's/^/# /'
 fi
-nm -D --defined-only "$U/lib/libfrs.so.1.1.0" | grep -qw -e imap_load -e frs_fail &&
+nm -D --defined-only "$U/lib/libfrs.so.1.2.0" | grep -qw -e imap_load -e frs_fail &&
     nok "internal symbols (imap_load, frs_fail) exported" ||
     ok "internal symbols (imap_load, frs_fail) not exported"
 

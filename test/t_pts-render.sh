@@ -121,6 +121,68 @@ pts-render -s 1024 "$T/one.txt" -o "$T/big.pgm" 2>"$T/err" &&
     near "$a" 7.0685835 0.02 && near "$b" 28.2743339 0.01 &&
     ok "default radius 1.5 * W / 512" || nok "default radius 1.5 * W / 512 ($a, $b)"
 
+# The default radius follows the local spacing: a dense set (about one
+# point per 4 square pixels in the middle of a 1024x512 picture, random
+# within a 2-pixel grid) is no solid blob, as it is with today's fixed
+# radius of 3 (-r 3, the default before), and a sparse set keeps the
+# radius 1.5 * W / 512 (the same bytes as -r with it).
+awk 'BEGIN { srand(7); for (j = 0; j < 128; j++) for (i = 0; i < 256; i++)
+	printf "%.17g %.17g\n", 0.25 + (i + rand()) / 512, 0.25 + (j + rand()) / 256 }' \
+    >"$T/dense.txt"
+# dark FILE: the fraction of pixels below 128 in [384, 640) x [160, 352).
+dark() {
+	pixels "$1" 17 | awk '{ x = $1 % 1024; y = int($1 / 1024)
+	    if (x >= 384 && x < 640 && y >= 160 && y < 352) { n++; d += $2 < 128 } }
+	    END { printf "%.4f\n", d / n }'
+}
+pts-render -s 1024x512 -r 3 "$T/dense.txt" -o "$T/dense3.pgm" 2>"$T/err" &&
+    pts-render -s 1024x512 "$T/dense.txt" -o "$T/densed.pgm" 2>>"$T/err" &&
+    d3=$(dark "$T/dense3.pgm") && dd=$(dark "$T/densed.pgm") &&
+    awk -v a="$d3" -v b="$dd" 'BEGIN { exit !(a > 0.99 && b < 0.5 && b > 0.1) }' &&
+    ok "dense set: default radius $dd dark, not solid as -r 3 ($d3)" ||
+    nok "dense set: default radius ${dd:-?} dark, not solid as -r 3 (${d3:-?})"
+pts-render "$T/X.txt" -o "$T/sparse.pgm" 2>"$T/err" &&
+    pts-render -r 1.5 "$T/X.txt" -o "$T/sparse15.pgm" 2>>"$T/err" &&
+    cmp -s "$T/sparse.pgm" "$T/sparse15.pgm" &&
+    ok "sparse set: default radius 1.5 at 512" ||
+    nok "sparse set: default radius 1.5 at 512"
+# Dots shrink only where dense: a sparse point next to the dense patch
+# keeps its full dot (its darkness 9 pi), wherever the file puts it.
+{ echo "0.05 0.5"; cat "$T/dense.txt"; } >"$T/mixed.txt"
+pts-render -s 1024x512 "$T/mixed.txt" -o "$T/mixed.pgm" 2>"$T/err" &&
+    s=$(pixels "$T/mixed.pgm" 17 | awk '{ x = $1 % 1024; y = int($1 / 1024)
+	if (x < 100 && y > 200 && y < 312) s += 1 - $2 / 255 } END { print s }') &&
+    near "$s" 28.2743339 0.01 && ok "a lone point keeps radius 3 at 1024" ||
+    nok "a lone point keeps radius 3 at 1024 (${s:-?})"
+
+# --alpha: a pixel under one dot at opacity 0.5 is half way between the
+# background and the ink: 255 -> 128 on white, 175 -> 88 over the
+# maximum of a map, and (128, 128, 255) for a blue dot on white.
+centre() { od -An -tu1 -j "$(($2 + $3 * (64 * 32 + 32)))" -N"$3" "$1" | tr -s ' '; }
+echo "0.5 0.5" >"$T/mid.txt"
+pts-render -s 64 -r 8 --alpha 0.5 "$T/mid.txt" -o "$T/a.pgm" 2>"$T/err" &&
+    [ "$(centre "$T/a.pgm" 13 1)" = " 128" ] &&
+    ok "--alpha 0.5 on white: 128" || nok "--alpha 0.5 on white: $(centre "$T/a.pgm" 13 1)"
+pts-render -s 64 -r 8 --alpha 0.5 -i const:1 "$T/mid.txt" -o "$T/ai.pgm" 2>"$T/err" &&
+    [ "$(centre "$T/ai.pgm" 13 1)" = " 88" ] &&
+    ok "--alpha 0.5 over grey 175: 88" || nok "--alpha 0.5 over grey 175: $(centre "$T/ai.pgm" 13 1)"
+pts-render -s 64 -r 8 --alpha 0.5 --color "$T/mid.txt" -o "$T/ac.ppm" 2>"$T/err" &&
+    [ "$(centre "$T/ac.ppm" 13 3)" = " 128 128 255" ] &&
+    ok "--alpha 0.5 --color: (128, 128, 255)" ||
+    nok "--alpha 0.5 --color: $(centre "$T/ac.ppm" 13 3)"
+# Two dots over each other at 0.5: 255 -> 128 -> 64.
+printf '0.5 0.5\n0.5 0.5\n' >"$T/mid2.txt"
+pts-render -s 64 -r 8 --alpha 0.5 "$T/mid2.txt" -o "$T/a2.pgm" 2>"$T/err" &&
+    [ "$(centre "$T/a2.pgm" 13 1)" = " 64" ] &&
+    ok "--alpha 0.5 twice: 64" || nok "--alpha 0.5 twice: $(centre "$T/a2.pgm" 13 1)"
+# --alpha 1 is the default, byte for byte; 0 draws nothing.
+pts-render --alpha 1 -i blob "$T/X.txt" -o "$T/a1.png" 2>"$T/err" &&
+    cmp -s "$T/X.png" "$T/a1.png" && ok "--alpha 1 is the default" ||
+    nok "--alpha 1 is the default"
+pts-render --alpha 0 "$T/X.txt" -o "$T/a0.pgm" 2>"$T/err" &&
+    [ "$(pixels "$T/a0.pgm" 15 | awk '$2 != 255' | wc -l)" -eq 0 ] &&
+    ok "--alpha 0 leaves white" || nok "--alpha 0 leaves white"
+
 # The importance background: white for zero, 255 - 80 at the maximum.
 # A tiny dot in a corner leaves the background as it is.
 echo "0.001 0.001" >"$T/corner.txt"
@@ -194,6 +256,16 @@ expect_fail "-s too many pixels" 2 "-s" "$T/o8.png" \
     pts-render -s 65536x65536 "$T/X.txt" -o "$T/o8.png"
 expect_fail "-r 0" 2 "-r" "$T/o9.png" pts-render -r 0 "$T/X.txt" -o "$T/o9.png"
 expect_fail "-r junk" 2 "-r" "$T/o10.png" pts-render -r 1x "$T/X.txt" -o "$T/o10.png"
+expect_fail "--alpha 1.5" 2 "--alpha: 1.5 is out of range [0, 1]" "$T/oa1.png" \
+    pts-render --alpha 1.5 "$T/X.txt" -o "$T/oa1.png"
+expect_fail "--alpha -0.1" 2 "--alpha: -0.1 is out of range [0, 1]" "$T/oa2.png" \
+    pts-render --alpha -0.1 "$T/X.txt" -o "$T/oa2.png"
+expect_fail "--alpha junk" 2 "--alpha: 'half' is not a number" "$T/oa3.png" \
+    pts-render --alpha half "$T/X.txt" -o "$T/oa3.png"
+expect_fail "--alpha nan" 2 "--alpha: nan is not a finite number" "$T/oa4.png" \
+    pts-render --alpha nan "$T/X.txt" -o "$T/oa4.png"
+expect_fail "--alpha empty" 2 "--alpha: empty value" "$T/oa5.png" \
+    pts-render --alpha '' "$T/X.txt" -o "$T/oa5.png"
 expect_fail "unknown option" 2 "usage" "$T/o11.png" \
     pts-render --frobnicate "$T/X.txt" -o "$T/o11.png"
 expect_fail "two inputs" 2 "one point file" "$T/o12.png" \

@@ -1889,6 +1889,79 @@ static void test_sampler3_errors(void **state)
 	frs_mask_free(m3);
 }
 
+/* ---- progress ---------------------------------------------------------- */
+
+struct prog_log {
+	size_t calls;
+	int bad;		/* a call out of order */
+	uint64_t last, total;
+	char what[32];
+};
+
+static void prog_record(void *ctx, const char *what, uint64_t done,
+    uint64_t total)
+{
+	struct prog_log *l = ctx;
+
+	if (l->calls == 0) {
+		snprintf(l->what, sizeof l->what, "%s", what);
+		l->total = total;
+		l->bad |= done != 0;
+	} else {
+		/* Increasing, below total until the one last call. */
+		l->bad |= done <= l->last || l->last == l->total ||
+		    total != l->total || strcmp(what, l->what) != 0;
+	}
+	l->last = done;
+	l->calls++;
+}
+
+static void *load_ramp(void *arg)
+{
+	float *map = NULL;
+	uint32_t w, h;
+
+	(void)arg;
+	if (frs_map_load("ramp", 64, 1024, &map, &w, &h, NULL) != FRS_OK)
+		return arg;
+	frs_map_free(map);
+	return NULL;
+}
+
+/* frs_set_progress: off by default; once set, a procedural map's rows
+ * are reported, from 0 up to the last call at the total, in this thread
+ * only. */
+static void test_progress(void **state)
+{
+	struct prog_log l = { 0, 0, 0, 0, "" };
+	float *map = NULL;
+	uint32_t w, h;
+	pthread_t t;
+	void *res = &l;
+	(void)state;
+
+	assert_null(load_ramp(NULL));	/* nothing set: nothing to call */
+	frs_set_progress(prog_record, &l);
+	assert_int_equal(frs_map_load("ramp", 64, 1024, &map, &w, &h, NULL),
+	    FRS_OK);
+	frs_map_free(map);
+	assert_string_equal(l.what, "ramp");
+	assert_int_equal(l.total, 1024);
+	assert_int_equal(l.last, 1024);
+	assert_false(l.bad);
+	assert_true(l.calls >= 3);	/* start, some rows, end */
+	/* Another thread's work is not this thread's progress. */
+	l = (struct prog_log){ 0, 0, 0, 0, "" };
+	assert_int_equal(pthread_create(&t, NULL, load_ramp, NULL), 0);
+	assert_int_equal(pthread_join(t, &res), 0);
+	assert_null(res);
+	assert_int_equal(l.calls, 0);
+	/* Unset: silent again. */
+	frs_set_progress(NULL, &l);
+	assert_null(load_ramp(NULL));
+	assert_int_equal(l.calls, 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -1923,6 +1996,7 @@ int main(void)
 		cmocka_unit_test(test_null_handles),
 		cmocka_unit_test(test_sampler3),
 		cmocka_unit_test(test_sampler3_errors),
+		cmocka_unit_test(test_progress),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

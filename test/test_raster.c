@@ -314,6 +314,66 @@ static void alloc_limits(void **state)
 	assert_near(raster_default_radius(1), 0.7, 1e-15);
 }
 
+/* raster_spacing: a regular grid of spacing g pixels gives radius g / 3
+ * inside (edges too: the density counts only cells in the picture),
+ * the default radius where sparse, the floor where denser than that. */
+static void spacing_radius(void **state)
+{
+	const uint32_t w = 1024, h = 512;
+	struct raster_spacing sp;
+	double *x;
+	size_t n = 0;
+	(void)state;
+
+	/* 2-pixel grid over the left half, 3 points on the right half. */
+	x = malloc(sizeof *x * 2 * (256 * 256 + 3));
+	assert_non_null(x);
+	for (uint32_t j = 0; j < 256; j++)
+		for (uint32_t i = 0; i < 256; i++, n++) {
+			x[2 * n] = (2.0 * i + 1.0) / w;
+			x[2 * n + 1] = (2.0 * j + 1.0) / h;
+		}
+	for (int k = 0; k < 3; k++, n++) {
+		x[2 * n] = 0.7 + 0.1 * k;
+		x[2 * n + 1] = 0.5;
+	}
+	assert_int_equal(raster_spacing_init(&sp, x, n, 2, 0, 1, w, h), 0);
+	assert_near(sp.cell, 12.0, 1e-15);
+	assert_near(raster_spacing_radius(&sp, 256.5, 256.5), 2.0 / 3.0, 1e-12);
+	assert_near(raster_spacing_radius(&sp, 0.5, 0.5), 2.0 / 3.0, 1e-12);
+	assert_near(raster_spacing_radius(&sp, 900.0, 256.0), 3.0, 1e-15);
+	raster_spacing_free(&sp);
+	/* Half of them piled on one column: the floor. */
+	for (size_t k = 0; k < n; k++)
+		x[2 * k] = 0.5;
+	assert_int_equal(raster_spacing_init(&sp, x, n / 2, 2, 0, 1, w, h), 0);
+	assert_near(raster_spacing_radius(&sp, 512.0, 64.0),
+	    RASTER_SPACING_MIN, 1e-15);
+	raster_spacing_free(&sp);
+	free(x);
+}
+
+/* Opacity: a pixel under the whole disc goes alpha of the way to the
+ * ink; alpha 1 is raster_disc. */
+static void disc_alpha(void **state)
+{
+	struct frs_raster a, b;
+	const uint8_t grey = 100;
+	(void)state;
+
+	assert_int_equal(raster_alloc(&a, 32, 32, 1), 0);
+	assert_int_equal(raster_alloc(&b, 32, 32, 1), 0);
+	raster_disc_alpha(&a, 16.3, 15.8, 6.0, &grey, 0.25);
+	assert_int_equal(a.px[16 * 32 + 16], 216);	/* 255 - 155 / 4 */
+	raster_disc(&b, 16.3, 15.8, 6.0, &grey);
+	raster_free(&a);
+	assert_int_equal(raster_alloc(&a, 32, 32, 1), 0);
+	raster_disc_alpha(&a, 16.3, 15.8, 6.0, &grey, 1.0);
+	assert_memory_equal(a.px, b.px, 32 * 32);
+	raster_free(&a);
+	raster_free(&b);
+}
+
 /* A test picture: every grey level, and dots. */
 static void picture(struct frs_raster *r, uint32_t w, uint32_t h,
     unsigned ch)
@@ -417,6 +477,8 @@ int main(void)
 		cmocka_unit_test(disc_colour),
 		cmocka_unit_test(background),
 		cmocka_unit_test(alloc_limits),
+		cmocka_unit_test(spacing_radius),
+		cmocka_unit_test(disc_alpha),
 		cmocka_unit_test(png_round_trip),
 		cmocka_unit_test(pnm_round_trip),
 		cmocka_unit_test(write_errors),

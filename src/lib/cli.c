@@ -4,6 +4,7 @@
 #include "outfile.h"
 #include "par.h"
 #include "parse.h"
+#include "progress.h"
 
 #include <errno.h>
 #include <stdarg.h>
@@ -54,6 +55,75 @@ void cli_options_done(void)
 		longjmp(*cli_trap, CLI_PARSED);
 }
 
+/* The bar cli_init installs (see cli.h). */
+static struct cli_bar bar;
+
+static void fmt_time(char *buf, size_t n, double s)
+{
+	if (s < 0 || s > 1e7)
+		snprintf(buf, n, "--:--");
+	else if (s >= 3600)
+		snprintf(buf, n, "%d:%02d:%02d", (int)s / 3600,
+		    (int)s / 60 % 60, (int)s % 60);
+	else
+		snprintf(buf, n, "%02d:%02d", (int)s / 60, (int)s % 60);
+}
+
+static void bar_draw(struct cli_bar *b, double now)
+{
+	double el = now - b->start;
+	double frac = b->total ? (double)b->done / (double)b->total : 0.0;
+	double rate = el > 0 ? (double)b->done / el : 0.0;
+	char eta[32];
+	int len = (int)(frac * 30.0 + 0.5);
+
+	fmt_time(eta, sizeof eta, rate > 0 ? (double)(b->total - b->done) /
+	    rate : -1);
+	fprintf(stderr, "\r%s: %s [%-30.*s] %5.1f%% %.3g/s ETA %s ", cli_prog,
+	    b->label, len, "##############################", 100.0 * frac,
+	    rate, eta);
+	fflush(stderr);
+	b->drawn = 1;
+}
+
+void cli_bar_progress(void *ctx, const char *what, uint64_t done,
+    uint64_t total)
+{
+	struct cli_bar *b = ctx;
+	double now;
+
+	if (b->active && done >= b->total) {	/* the end */
+		now = progress_now();
+		b->done = b->total;
+		b->active = 0;
+		if (b->on && (b->drawn || now - b->start >= 1.0)) {
+			bar_draw(b, now);
+			fputc('\n', stderr);
+		}
+		b->on = 0;
+		return;
+	}
+	if (!b->active || done == 0) {		/* a task starts */
+		b->active = 1;
+		b->label = what;
+		b->total = total;
+		b->done = 0;
+		b->start = b->last = progress_now();
+		b->drawn = 0;
+		b->on = !cli.quiet && (cli.progress || isatty(STDERR_FILENO));
+		return;
+	}
+	b->done = done;
+	if (!b->on)
+		return;
+	/* Nothing for the first second; then at most 10 redraws a second. */
+	now = progress_now();
+	if (now - b->start < 1.0 || now - b->last < 0.1)
+		return;
+	b->last = now;
+	bar_draw(b, now);
+}
+
 void cli_init(const char *prog, const char *usage)
 {
 	static int registered;
@@ -65,6 +135,8 @@ void cli_init(const char *prog, const char *usage)
 	cli = (struct cli_common){ NULL, 0, 1, 0, 0, 0 };
 	cli_prog = prog;
 	usage_text = usage;
+	bar = (struct cli_bar){ NULL, 0, 0, 0.0, 0.0, 0, 0, 0 };
+	frs_set_progress(cli_bar_progress, &bar);
 	cli.threads = cli_ncpu();
 	frs_set_threads(cli.threads);
 	frs_set_warn_prefix(prog);

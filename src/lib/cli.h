@@ -91,6 +91,24 @@ extern jmp_buf *cli_trap;
 #define CLI_PARSED 1000
 void cli_options_done(void);
 
+/*
+ * The programs' progress bar: a callback for frs_set_progress(3), which
+ * cli_init installs for the calling thread with a bar of its own.  It
+ * draws "prog: what [###   ]  50.0% 1.23e+04/s ETA 00:42" on standard
+ * error, unless -q, when standard error is a terminal or --progress was
+ * given (decided as each task starts), only after the task has run for a
+ * second, at most 10 times a second, and a last time at 100 % with a
+ * newline when a task that ran a second or more ends.  One task at a time.
+ */
+struct cli_bar {
+	const char *label;
+	uint64_t total, done;
+	double start, last;	/* progress_now() seconds */
+	int active, on, drawn;
+};
+void cli_bar_progress(void *ctx, const char *what, uint64_t done,
+    uint64_t total);
+
 /* Number of online processors. */
 int cli_ncpu(void);
 

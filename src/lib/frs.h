@@ -1,9 +1,10 @@
 /*
  * libfrs: Forced Random Sampling in-process.  See libfrs(3).
  *
- * Opaque handles, no global state: every function reports failure as a
- * code, with a message in the caller's frs_error when one is given;
- * nothing prints, nothing exits.  Thread safety is stated per function;
+ * Opaque handles, no global state (but for each thread's progress
+ * callback, off unless set): every function reports failure as a code,
+ * with a message in the caller's frs_error when one is given; nothing
+ * prints, nothing exits.  Thread safety is stated per function;
  * in short, a handle is built by one thread and then read by any number
  * at once, each with its own output buffers.
  */
@@ -18,7 +19,7 @@ extern "C" {
 #endif
 
 #define FRS_API_VERSION_MAJOR 1
-#define FRS_API_VERSION_MINOR 1
+#define FRS_API_VERSION_MINOR 2
 
 /* ---- errors ---------------------------------------------------------- */
 
@@ -43,6 +44,21 @@ typedef struct frs_error {
 const char *frs_code_name(int code);
 /* "0.4.0"; thread-safe. */
 const char *frs_library_version(void);
+
+/* ---- progress (since 1.2) ---------------------------------------------- */
+
+/* Progress of a long task: what names it (a map spec's name such as
+ * "aniso"; valid during the call only), done of total units finished.
+ * A task calls once with done = 0 when it starts, then with done
+ * increasing below total, and once with done = total (at least 1) when
+ * it ends. */
+typedef void (*frs_progress_fn)(void *ctx, const char *what, uint64_t done,
+    uint64_t total);
+/* Report the progress of the library work that this thread starts to
+ * fn(ctx, ...), called in this thread; fn NULL (the default in every
+ * thread) reports nothing.  Per thread: other threads keep their own.
+ * See frs_set_progress(3). */
+void frs_set_progress(frs_progress_fn fn, void *ctx);
 
 /* ---- threshold matrices ---------------------------------------------- */
 

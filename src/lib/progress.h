@@ -1,19 +1,28 @@
 /*
- * A progress bar with rate and ETA on standard error, drawn only when
- * standard error is a terminal or --progress was given, and only for work
- * that runs longer than about a second.  Not thread-safe: update it from
- * one thread.
+ * Progress of long library work, reported through the callback that the
+ * calling thread set with frs_set_progress (frs.h, frs_set_progress(3));
+ * nothing when none is set.  The library never draws anything itself:
+ * the programs' bar on standard error is the callback cli.c installs.
+ *
+ * A task makes one call with done = 0 at progress_begin, calls with done
+ * increasing below total from progress_update, and one last call with
+ * done = total at progress_end; a task with total 0 reports nothing.
+ * The callback is taken at progress_begin,
+ * so begin, update and end a task from one thread (the one that began it).
  */
 #ifndef FRS_PROGRESS_H
 #define FRS_PROGRESS_H
 
 #include <stdint.h>
 
+#include "frs.h"
+
 struct progress {
 	const char *label;
 	uint64_t total, done;
-	double start, last;
-	int on, drawn;
+	frs_progress_fn fn;	/* NULL: nobody listens */
+	void *ctx;
+	int on;			/* between begin and end, with a callback */
 };
 
 double progress_now(void);	/* monotonic seconds */

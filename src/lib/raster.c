@@ -189,6 +189,12 @@ static int span(double lo, double hi, uint32_t w, uint32_t *a, uint32_t *b)
 void raster_disc(struct frs_raster *r, double cx, double cy, double rad,
     const uint8_t *color)
 {
+	raster_disc_alpha(r, cx, cy, rad, color, 1.0);
+}
+
+void raster_disc_alpha(struct frs_raster *r, double cx, double cy,
+    double rad, const uint8_t *color, double alpha)
+{
 	double r2 = rad * rad;
 	uint32_t j0, j1;
 	unsigned ch = r->channels;
@@ -224,6 +230,13 @@ void raster_disc(struct frs_raster *r, double cx, double cy, double rad,
 		for (uint32_t i = t0; i <= t1; i++) {
 			double g0, g1, c;
 
+			if (i >= f0 && i <= f1 && alpha < 1.0) {
+				for (uint32_t k = i; k <= f1; k++)
+					blend(row + (size_t)k * ch, ch, color,
+					    alpha);
+				i = f1;
+				continue;
+			}
 			if (i >= f0 && i <= f1) {
 				if (ch == 1)
 					memset(row + i, color[0], f1 - i + 1);
@@ -248,7 +261,7 @@ void raster_disc(struct frs_raster *r, double cx, double cy, double rad,
 			c = g1 - g0;
 			if (c > 0.0)
 				blend(row + (size_t)i * ch, ch, color,
-				    c > 1.0 ? 1.0 : c);
+				    (c > 1.0 ? 1.0 : c) * alpha);
 		}
 	}
 }
@@ -258,6 +271,115 @@ double raster_default_radius(uint32_t w)
 	double rad = 1.5 * (double)w / 512.0;
 
 	return rad < 0.7 ? 0.7 : rad;
+}
+
+/* ---- radii from the local spacing ---------------------------------- */
+
+/* Cell index of pixel coordinate v on a side of n cells. */
+static uint32_t cell_of(double v, double cell, uint32_t n)
+{
+	double c = floor(v / cell);
+
+	return !(c >= 0.0) ? 0 : c >= (double)n ? n - 1 : (uint32_t)c;
+}
+
+int raster_spacing_init(struct raster_spacing *s, const double *x,
+    size_t n, size_t ncol, unsigned ax, unsigned ay, uint32_t w,
+    uint32_t h)
+{
+	uint64_t *count;
+	size_t cells;
+
+	memset(s, 0, sizeof *s);
+	s->w = w;
+	s->h = h;
+	s->rmax = raster_default_radius(w);
+	s->cell = RASTER_SPACING_CELL * s->rmax;
+	s->gw = (uint32_t)ceil((double)w / s->cell);
+	s->gh = (uint32_t)ceil((double)h / s->cell);
+	s->gw = s->gw < 1 ? 1 : s->gw;
+	s->gh = s->gh < 1 ? 1 : s->gh;
+	cells = (size_t)s->gw * s->gh;
+	if ((count = mem_calloc("dot radii", cells, sizeof *count)) == NULL)
+		return -1;
+	if ((s->rho = mem_calloc("dot radii", cells, sizeof *s->rho)) == NULL) {
+		free(count);
+		return -1;
+	}
+	for (size_t k = 0; k < n; k++) {
+		const double *p = x + k * ncol;
+		uint32_t i = cell_of(p[ax] * w, s->cell, s->gw);
+		uint32_t j = cell_of(p[ay] * h, s->cell, s->gh);
+		count[(size_t)j * s->gw + i]++;
+	}
+	for (uint32_t j = 0; j < s->gh; j++)
+		for (uint32_t i = 0; i < s->gw; i++) {
+			uint64_t m = 0;
+			double area = 0.0;
+
+			for (uint32_t b = j > 0 ? j - 1 : 0;
+			    b <= j + 1 && b < s->gh; b++) {
+				double ch = fmin(s->cell, (double)h -
+				    b * s->cell);
+				for (uint32_t a = i > 0 ? i - 1 : 0;
+				    a <= i + 1 && a < s->gw; a++) {
+					m += count[(size_t)b * s->gw + a];
+					area += ch * fmin(s->cell, (double)w -
+					    a * s->cell);
+				}
+			}
+			s->rho[(size_t)j * s->gw + i] = area > 0.0 ?
+			    (double)m / area : 0.0;
+		}
+	free(count);
+	return 0;
+}
+
+/* Position between cell centres: the lower cell and the weight of the
+ * upper one, clamped to the outer centres. */
+static void between(double v, double cell, uint32_t n, uint32_t *lo,
+    double *t)
+{
+	double u = v / cell - 0.5;
+
+	if (!(u > 0.0)) {
+		*lo = 0;
+		*t = 0.0;
+	} else if (u >= (double)(n - 1)) {
+		*lo = n - 1;
+		*t = 0.0;
+	} else {
+		*lo = (uint32_t)u;
+		*t = u - (double)*lo;
+	}
+}
+
+double raster_spacing_radius(const struct raster_spacing *s, double px,
+    double py)
+{
+	uint32_t i, j, i1, j1;
+	double tx, ty, rho, rad;
+	const double *g = s->rho;
+
+	between(px, s->cell, s->gw, &i, &tx);
+	between(py, s->cell, s->gh, &j, &ty);
+	i1 = i + 1 < s->gw ? i + 1 : i;
+	j1 = j + 1 < s->gh ? j + 1 : j;
+	rho = (1.0 - ty) * ((1.0 - tx) * g[(size_t)j * s->gw + i] +
+	    tx * g[(size_t)j * s->gw + i1]) +
+	    ty * ((1.0 - tx) * g[(size_t)j1 * s->gw + i] +
+	    tx * g[(size_t)j1 * s->gw + i1]);
+	if (!(rho > 0.0))
+		return s->rmax;
+	rad = RASTER_SPACING_FRACTION / sqrt(rho);
+	return rad < RASTER_SPACING_MIN ? RASTER_SPACING_MIN :
+	    rad > s->rmax ? s->rmax : rad;
+}
+
+void raster_spacing_free(struct raster_spacing *s)
+{
+	free(s->rho);
+	s->rho = NULL;
 }
 
 void raster_ramp(uint64_t k, uint64_t n, uint8_t rgb[3])

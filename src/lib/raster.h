@@ -57,10 +57,55 @@ double raster_coverage(double x0, double y0, double x1, double y1,
  */
 void raster_disc(struct frs_raster *r, double cx, double cy, double rad,
     const uint8_t *color);
+/* The same with opacity alpha in [0, 1]: c becomes alpha * c, so that a
+ * pixel the disc covers whole becomes bg * (1 - alpha) + color * alpha.
+ * alpha 1 is raster_disc, byte for byte. */
+void raster_disc_alpha(struct frs_raster *r, double cx, double cy,
+    double rad, const uint8_t *color, double alpha);
 
 /* The default dot radius for a raster w pixels wide:
  * 1.5 * w / 512, at least 0.7. */
 double raster_default_radius(uint32_t w);
+
+/*
+ * Dot radii that follow the local spacing of a point set, so that dots
+ * shrink where the points are dense instead of merging into a solid
+ * blob (pts-render without -r).  With R = raster_default_radius(w), the
+ * picture is cut into square cells of RASTER_SPACING_CELL * R pixels
+ * (the last row and column may be narrower).  The density of a cell,
+ * points per square pixel, is the count of the 3 x 3 cells around it
+ * (those inside the picture) over their area; the density rho at a
+ * point is the bilinear interpolation between the densities of the
+ * cells' centres (clamped at the edges), the local spacing is
+ * s = 1 / sqrt(rho), and the radius is
+ *
+ *     clamp(RASTER_SPACING_FRACTION * s, RASTER_SPACING_MIN, R)
+ *
+ * (R where rho is 0).  Dots of radius s / 3 cover about pi / 9, 35 %, of
+ * the area wherever the spacing is below 3 R; sparser points keep R.
+ */
+#define RASTER_SPACING_CELL 4.0
+#define RASTER_SPACING_FRACTION (1.0 / 3.0)
+#define RASTER_SPACING_MIN 0.25
+
+struct raster_spacing {
+	uint32_t w, h;		/* the picture, pixels */
+	uint32_t gw, gh;	/* cells across and down */
+	double cell;		/* cell side, pixels */
+	double rmax;		/* R */
+	double *rho;		/* gw * gh densities, row-major */
+};
+
+/* The densities of n points of ncol values each (x: n * ncol doubles),
+ * coordinates ax (across) and ay (down) in [0,1), drawn on a w x h
+ * picture.  -1 with the library's message when out of memory. */
+int raster_spacing_init(struct raster_spacing *s, const double *x,
+    size_t n, size_t ncol, unsigned ax, unsigned ay, uint32_t w,
+    uint32_t h);
+/* The radius for a dot centred at (px, py), pixel units. */
+double raster_spacing_radius(const struct raster_spacing *s, double px,
+    double py);
+void raster_spacing_free(struct raster_spacing *s);
 
 /* The colour of dot k of n for --color: a ramp from blue (first) to red
  * (last), R = round(255 t), G = 0, B = 255 - R with t = k / (n - 1). */
