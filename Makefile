@@ -58,12 +58,17 @@ else
 VFLAGS = $(OPT)
 endif
 
-# Where frs-sample finds the default matrix: the source tree, then the
-# installed copy.
-PATHS = -DFRS_SRCDATA='"$(CURDIR)/data"' -DFRS_SHAREDIR='"$(PREFIX)/share/frs"'
+# Where the programs and the library find the shipped data (the default
+# matrices, sunset.exr; src/lib/datadir.c): $FRS_DATA, else share/frs
+# beside libfrs.so and beside the program, wherever they were installed,
+# then SRCDATA (the source tree, for uninstalled builds; SRCDATA= for
+# binaries that name no build directory) and $(PREFIX)/share/frs.  They
+# are written to $(B)/gen/paths.h, which changes only when they do: make
+# install PREFIX=... recompiles the one object that reads it.
+SRCDATA ?= $(CURDIR)/data
 # src/lib/frs.h is the public header (libfrs(3)); frscore.h the internal one.
-ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
-	$(PATHS) $(CFLAGS) -MMD -MP
+ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib -I$(B)/gen $(PKG_CFLAGS) \
+	$(CFLAGS) -MMD -MP
 ALL_LDFLAGS = $(VFLAGS) $(LDFLAGS)
 LIBS = $(PKG_LIBS) -lm -lpthread
 
@@ -75,7 +80,7 @@ TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%) $(HARDSRC:test/hard/%.c=$(B)/test/%)
 REFBIN = $(REFSRC:test/%.c=$(B)/test/%)
 
 .PHONY: all progs libs tests check demo bench install uninstall clean deps \
-	lint-man experiments
+	lint-man experiments FORCE
 .DELETE_ON_ERROR:
 .SECONDARY:
 
@@ -97,6 +102,13 @@ $(B)/libfrs.a: $(LIBOBJ)
 $(B)/lib/%.o: src/lib/%.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(B)/gen/paths.h: FORCE
+	@mkdir -p $(@D)
+	@printf '#define FRS_SRCDATA "%s"\n#define FRS_SHAREDIR "%s"\n' \
+	    '$(SRCDATA)' '$(PREFIX)/share/frs' >$@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
+$(B)/lib/datadir.o $(B)/pic/lib/datadir.o: $(B)/gen/paths.h
 
 # The OpenCL kernels, embedded so that installed programs need no source
 # tree.
@@ -123,7 +135,7 @@ $(B)/lib/%.o: src/lib/%.cc
 # the internal symbols they use.
 SOMAJOR = 1
 SONAME = libfrs.so.$(SOMAJOR)
-SOMINOR = 1
+SOMINOR = 2
 SOFILE = libfrs.so.$(SOMAJOR).$(SOMINOR).0
 PICOBJ = $(LIBOBJ:$(B)/%=$(B)/pic/%)
 SOMAP = src/lib/libfrs.map
@@ -305,7 +317,7 @@ build/fuzz/fuzz_opts: $(PROGS:%=build/fuzz/prog/%.o)
 build/fuzz/prog/%.o: src/%.c build/fuzz/libfrs.a
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib \
-	    $(PKG_CFLAGS) $(PATHS) $(CFLAGS) -Dmain=main_$(subst -,_,$*) \
+	    $(PKG_CFLAGS) $(CFLAGS) -Dmain=main_$(subst -,_,$*) \
 	    -c $< -o $@
 
 fuzz: $(FUZZ_TARGETS:%=fuzz-%)

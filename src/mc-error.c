@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "datadir.h"
 #include "err.h"
 #include "imap.h"
 #include "outfile.h"
@@ -268,17 +269,15 @@ static void table(FILE *fp, unsigned mask, enum pt_group grp,
 	free(done);
 }
 
-/* The default map: the source tree's, then the installed one. */
+/* The default map: the shipped sunset.exr (datadir.h). */
 static const char *default_env(void)
 {
-	static const char *const where[] = { FRS_SRCDATA "/sunset.exr",
-	    FRS_SHAREDIR "/sunset.exr" };
+	static char path[DATA_PATH_MAX];
 
-	for (size_t i = 0; i < sizeof where / sizeof where[0]; i++)
-		if (access(where[i], R_OK) == 0)
-			return where[i];
-	cli_die("env: no default environment map (looked for %s and %s); "
-	    "give --env MAP", where[0], where[1]);
+	if (data_find("sunset.exr", path, sizeof path) < 0)
+		cli_die("env: no default environment map (%s); give --env MAP",
+		    frs_errmsg());
+	return path;
 }
 
 /* Load env's map when env is requested or --env given. */
