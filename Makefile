@@ -7,8 +7,9 @@
 #                   pictures in results/
 #   make bench      benchmarks, built with -O3 -march=native
 #   make install    PREFIX=/usr/local DESTDIR= (also BINDIR LIBDIR INCDIR
-#                   MANDIR PKGCONFIGDIR): programs, frs.h,
-#                   libfrs.a, libfrs.so, frs.pc, man pages; make uninstall
+#                   MANDIR PKGCONFIGDIR): programs, frs.h, libfrs.a,
+#                   libfrs.so, frs.pc, frs-static.pc, the shipped data,
+#                   man pages; make uninstall
 
 PREFIX ?= /usr/local
 BINDIR ?= $(PREFIX)/bin
@@ -218,7 +219,8 @@ experiments: deps
 lint-man:
 	mandoc -Tlint -Wwarning man/man*/*.[0-9]
 
-# frs.pc: src/lib/frs.pc.in with the install paths, libdir and includedir
+# frs.pc and frs-static.pc (libfrs.a): src/lib/*.pc.in with the install
+# paths, libdir and includedir
 # written relative to ${prefix} where they lie under it (so that
 # pkg-config --define-prefix can move them).
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
@@ -244,6 +246,8 @@ install: progs libs
 	ln -sf $(SOFILE) $(INSTLIB)/$(SONAME)
 	ln -sf $(SOFILE) $(INSTLIB)/libfrs.so
 	sed $(PCSUBST) src/lib/frs.pc.in >$(DESTDIR)$(PKGCONFIGDIR)/frs.pc
+	sed $(PCSUBST) src/lib/frs-static.pc.in \
+	    >$(DESTDIR)$(PKGCONFIGDIR)/frs-static.pc
 	for s in 1 3 5 7; do mkdir -p $(DESTDIR)$(MANDIR)/man$$s && \
 	    for f in man/man$$s/*.$$s; do [ ! -f "$$f" ] || \
 	    install -m 644 "$$f" $(DESTDIR)$(MANDIR)/man$$s/ || exit 1; \
@@ -256,7 +260,8 @@ uninstall:
 	    $(DESTDIR)$(PREFIX)/share/frs/sunset.exr
 	rm -f $(DESTDIR)$(INCDIR)/frs.h $(INSTLIB)/libfrs.a \
 	    $(INSTLIB)/$(SOFILE) $(INSTLIB)/$(SONAME) $(INSTLIB)/libfrs.so \
-	    $(DESTDIR)$(PKGCONFIGDIR)/frs.pc
+	    $(DESTDIR)$(PKGCONFIGDIR)/frs.pc \
+	    $(DESTDIR)$(PKGCONFIGDIR)/frs-static.pc
 	for s in 1 3 5 7; do for f in man/man$$s/*.$$s; do \
 	    rm -f $(DESTDIR)$(MANDIR)/man$$s/$${f##*/}; done; done
 
