@@ -26,7 +26,7 @@ static const char usage[] =
     "                    disc, step, env (default all but env; env too\n"
     "                    with --env)\n"
     "      --env MAP     env's environment map, equirectangular: PNG,\n"
-    "                    OpenEXR or a spec (default data/sunset.exr)\n"
+    "                    OpenEXR or a spec (default the shipped sunset.exr)\n"
     "      --sets N      split every file into sets of N points\n"
     "      --group G     a row per point count (n, default), per input\n"
     "                    file (file) or for all sets (all)\n"

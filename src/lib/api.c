@@ -277,6 +277,8 @@ int frs_default_matrix(frs_mask **mask, unsigned dims, char *path,
 		return arg_err(err, "frs_default_matrix: dims is not 2 or 3");
 	if (path != NULL && cap == 0)
 		return arg_err(err, "frs_default_matrix: cap is 0");
+	if (path != NULL)
+		path[0] = '\0';
 	if (api_default_matrix(dims, found, sizeof found) < 0) {
 		char msg[sizeof err->message];
 

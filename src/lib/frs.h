@@ -81,7 +81,8 @@ void frs_mask_free(frs_mask *mask);
  * when set and not empty, else in PREFIX/share/frs beside libfrs.so,
  * beside the program, in the source tree the library was built in and
  * in the PREFIX it was built for.  When path is not NULL its path goes
- * there (cap bytes, FRS_E_BUFFER when longer); when mask is not NULL
+ * there (cap bytes, FRS_E_BUFFER when longer; "" when none is found,
+ * the path also when loading fails); when mask is not NULL
  * it is loaded as by frs_mask_load.  Nothing found: FRS_E_IO, with every
  * place looked at in the message.  Thread-safe.
  */
