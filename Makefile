@@ -7,8 +7,9 @@
 #                   pictures in results/
 #   make bench      benchmarks, built with -O3 -march=native
 #   make install    PREFIX=/usr/local DESTDIR= (also BINDIR LIBDIR INCDIR
-#                   MANDIR PKGCONFIGDIR): programs, frs.h,
-#                   libfrs.a, libfrs.so, frs.pc, man pages; make uninstall
+#                   MANDIR PKGCONFIGDIR): programs, frs.h, libfrs.a,
+#                   libfrs.so, frs.pc, frs-static.pc, the shipped data,
+#                   man pages; make uninstall
 
 PREFIX ?= /usr/local
 BINDIR ?= $(PREFIX)/bin
@@ -60,12 +61,17 @@ else
 VFLAGS = $(OPT)
 endif
 
-# Where frs-sample finds the default matrix: the source tree, then the
-# installed copy.
-PATHS = -DFRS_SRCDATA='"$(CURDIR)/data"' -DFRS_SHAREDIR='"$(PREFIX)/share/frs"'
+# Where the programs and the library find the shipped data (the default
+# matrices, sunset.exr; src/lib/datadir.c): $FRS_DATA, else share/frs
+# beside libfrs.so and beside the program, wherever they were installed,
+# then SRCDATA (the source tree, for uninstalled builds; SRCDATA= for
+# binaries that name no build directory) and $(PREFIX)/share/frs.  They
+# are written to $(B)/gen/paths.h, which changes only when they do: make
+# install PREFIX=... recompiles the one object that reads it.
+SRCDATA ?= $(CURDIR)/data
 # src/lib/frs.h is the public header (libfrs(3)); frscore.h the internal one.
-ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib $(PKG_CFLAGS) \
-	$(PATHS) $(CFLAGS) -MMD -MP
+ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib -I$(B)/gen $(PKG_CFLAGS) \
+	$(CFLAGS) -MMD -MP
 ALL_LDFLAGS = $(VFLAGS) $(LDFLAGS)
 LIBS = $(PKG_LIBS) -lm -lpthread
 
@@ -78,7 +84,7 @@ REFBIN = $(REFSRC:test/%.c=$(B)/test/%)
 USERBIN = $(USERSRC:test/%.c=$(B)/test/%)
 
 .PHONY: all progs libs tests check demo bench install uninstall clean deps \
-	lint-man experiments
+	lint-man experiments FORCE
 .DELETE_ON_ERROR:
 .SECONDARY:
 
@@ -100,6 +106,13 @@ $(B)/libfrs.a: $(LIBOBJ)
 $(B)/lib/%.o: src/lib/%.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+$(B)/gen/paths.h: FORCE
+	@mkdir -p $(@D)
+	@printf '#define FRS_SRCDATA "%s"\n#define FRS_SHAREDIR "%s"\n' \
+	    '$(SRCDATA)' '$(PREFIX)/share/frs' >$@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
+$(B)/lib/datadir.o $(B)/pic/lib/datadir.o: $(B)/gen/paths.h
 
 # The OpenCL kernels, embedded so that installed programs need no source
 # tree.
@@ -213,7 +226,8 @@ experiments: deps
 lint-man:
 	mandoc -Tlint -Wwarning man/man*/*.[0-9]
 
-# frs.pc: src/lib/frs.pc.in with the install paths, libdir and includedir
+# frs.pc and frs-static.pc (libfrs.a): src/lib/*.pc.in with the install
+# paths, libdir and includedir
 # written relative to ${prefix} where they lie under it (so that
 # pkg-config --define-prefix can move them).
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
@@ -239,6 +253,8 @@ install: progs libs
 	ln -sf $(SOFILE) $(INSTLIB)/$(SONAME)
 	ln -sf $(SOFILE) $(INSTLIB)/libfrs.so
 	sed $(PCSUBST) src/lib/frs.pc.in >$(DESTDIR)$(PKGCONFIGDIR)/frs.pc
+	sed $(PCSUBST) src/lib/frs-static.pc.in \
+	    >$(DESTDIR)$(PKGCONFIGDIR)/frs-static.pc
 	for s in 1 3 5 7; do mkdir -p $(DESTDIR)$(MANDIR)/man$$s && \
 	    for f in man/man$$s/*.$$s; do [ ! -f "$$f" ] || \
 	    install -m 644 "$$f" $(DESTDIR)$(MANDIR)/man$$s/ || exit 1; \
@@ -251,7 +267,8 @@ uninstall:
 	    $(DESTDIR)$(PREFIX)/share/frs/sunset.exr
 	rm -f $(DESTDIR)$(INCDIR)/frs.h $(INSTLIB)/libfrs.a \
 	    $(INSTLIB)/$(SOFILE) $(INSTLIB)/$(SONAME) $(INSTLIB)/libfrs.so \
-	    $(DESTDIR)$(PKGCONFIGDIR)/frs.pc
+	    $(DESTDIR)$(PKGCONFIGDIR)/frs.pc \
+	    $(DESTDIR)$(PKGCONFIGDIR)/frs-static.pc
 	for s in 1 3 5 7; do for f in man/man$$s/*.$$s; do \
 	    rm -f $(DESTDIR)$(MANDIR)/man$$s/$${f##*/}; done; done
 
@@ -312,7 +329,7 @@ build/fuzz/fuzz_opts: $(PROGS:%=build/fuzz/prog/%.o)
 build/fuzz/prog/%.o: src/%.c build/fuzz/libfrs.a
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib \
-	    $(PKG_CFLAGS) $(PATHS) $(CFLAGS) -Dmain=main_$(subst -,_,$*) \
+	    $(PKG_CFLAGS) $(CFLAGS) -Dmain=main_$(subst -,_,$*) \
 	    -c $< -o $@
 
 fuzz: $(FUZZ_TARGETS:%=fuzz-%)

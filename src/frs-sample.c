@@ -10,6 +10,7 @@
 
 #include "api.h"
 #include "cli.h"
+#include "datadir.h"
 #include "frdio.h"
 #include "frscore.h"
 #include "frscl.h"
@@ -29,15 +30,15 @@ static const char usage[] =
     "                  [--sets M]\n"
     "                  [-s SIZE] [-S SEED] [-j N]\n"
     "                  [--device cpu|cl|cl:N] [-T] [-v] [-o FILE]\n"
-    "       frs-sample --list-devices\n"
+    "       frs-sample --list-devices | --data-dir\n"
     "\n"
     "  -n, --count N        samples to make (about; see frs-sample(1))\n"
     "  -i, --importance M   map: PNG, OpenEXR or a spec such as blob\n"
     "                       (default const: uniform sampling); with a\n"
     "                       3-D matrix a volume: .frv or blob3, ramp3...\n"
     "  -m, --matrix FILE    threshold matrix .frd (default: the shipped\n"
-    "                       2048x2048 data/default.frd; for a volume the\n"
-    "                       64x64x64 data/default3.frd)\n"
+    "                       2048x2048 default.frd; for a volume the\n"
+    "                       64x64x64 default3.frd; see --data-dir)\n"
     "  -a, --algo A         naive, stack, level1, level2, sorted (default)\n"
     "                       or flat1 (OpenCL only)\n"
     "      --sigma S        sparsity: one of S^2 window elements passes at\n"
@@ -65,6 +66,8 @@ static const char usage[] =
     "      --device D       cpu (default), cl (the first OpenCL device) or\n"
     "                       cl:N; the output is the same bytes on all\n"
     "      --list-devices   list the OpenCL devices as cl:N and exit\n"
+    "      --data-dir       print the directory of the shipped data (the\n"
+    "                       default matrices, sunset.exr) and exit\n"
     "  -S, --seed N         seed (default 1)\n"
     "  -j, --threads N      threads (default all); same points for any N\n"
     "  -T, --text           text output\n"
@@ -76,7 +79,7 @@ static const char usage[] =
 enum {
 	OPT_SIGMA = OPT_FIRST_PRIVATE, OPT_JITTER, OPT_PDF, OPT_PROG,
 	OPT_THRESHOLD, OPT_COUNT_ONLY, OPT_EQUIRECT, OPT_STRICT, OPT_SETS,
-	OPT_DEVICE, OPT_LIST_DEVICES, OPT_TILES
+	OPT_DEVICE, OPT_LIST_DEVICES, OPT_TILES, OPT_DATA_DIR
 };
 
 /* Most samples asked for in all the sets of one file (M * n): far inside
@@ -100,6 +103,7 @@ static const struct option longopts[] = {
 	{ "sets", required_argument, NULL, OPT_SETS },
 	{ "device", required_argument, NULL, OPT_DEVICE },
 	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
+	{ "data-dir", no_argument, NULL, OPT_DATA_DIR },
 	{ "tiles", required_argument, NULL, OPT_TILES },
 	{ "verbose", no_argument, NULL, 'v' },
 	CLI_COMMON_LONGOPTS,
@@ -143,6 +147,21 @@ static void parse_steps(struct opts *o, const char *s)
 	}
 	if (o->nsteps == 0)
 		cli_usage_error("--progressive: no counts");
+}
+
+/* --data-dir: the directory the shipped default matrix is taken from
+ * (the other shipped files lie beside it), and exit. */
+static noreturn void print_data_dir(void)
+{
+	char path[DATA_PATH_MAX];
+
+	cli_options_done();	/* the fuzz target stops here */
+	if (data_find("default.frd", path, sizeof path) < 0)
+		cli_die("--data-dir: no shipped data (%s)", frs_errmsg());
+	*strrchr(path, '/') = '\0';
+	if (printf("%s\n", path) < 0 || fflush(stdout) == EOF)
+		cli_die("<stdout>: write error");
+	exit(0);
 }
 
 static void parse_opts(int argc, char **argv, struct opts *o)
@@ -196,6 +215,8 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 			break;
 		case OPT_LIST_DEVICES:
 			cli_list_devices();
+		case OPT_DATA_DIR:
+			print_data_dir();
 		case 'v': o->verbose = 1; break;
 		default:
 			if (!cli_common_opt(c, optarg))
@@ -229,22 +250,16 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		    (unsigned long long)cli.seed);
 }
 
-/* The default matrix: $FRS_MATRIX (or $FRS_MATRIX3 for a volume), the
- * source tree, the installed one. */
+/* The default matrix: $FRS_MATRIX (or $FRS_MATRIX3 for a volume), else
+ * the shipped one (datadir.h), as frs_default_matrix finds it. */
 static const char *default_matrix(int volume)
 {
-	static const char *const where[2][2] = {
-		{ FRS_SRCDATA "/default.frd", FRS_SHAREDIR "/default.frd" },
-		{ FRS_SRCDATA "/default3.frd", FRS_SHAREDIR "/default3.frd" } };
-	const char *env = getenv(volume ? "FRS_MATRIX3" : "FRS_MATRIX");
+	static char path[DATA_PATH_MAX];
 
-	if (env != NULL && *env)
-		return env;
-	for (size_t i = 0; i < 2; i++)
-		if (access(where[volume][i], R_OK) == 0)
-			return where[volume][i];
-	cli_die("no default %smatrix (looked for %s and %s); give -m MATRIX",
-	    volume ? "3-D " : "", where[volume][0], where[volume][1]);
+	if (api_default_matrix(volume ? 3 : 2, path, sizeof path) < 0)
+		cli_die("no default %smatrix (%s); give -m MATRIX",
+		    volume ? "3-D " : "", frs_errmsg());
+	return path;
 }
 
 static void print_setup(const struct frs_setup *s, const char *mname)

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "datadir.h"
 #include "err.h"
 #include "imap.h"
 #include "outfile.h"
@@ -25,7 +26,7 @@ static const char usage[] =
     "                    disc, step, env (default all but env; env too\n"
     "                    with --env)\n"
     "      --env MAP     env's environment map, equirectangular: PNG,\n"
-    "                    OpenEXR or a spec (default data/sunset.exr)\n"
+    "                    OpenEXR or a spec (default the shipped sunset.exr)\n"
     "      --sets N      split every file into sets of N points\n"
     "      --group G     a row per point count (n, default), per input\n"
     "                    file (file) or for all sets (all)\n"
@@ -268,17 +269,15 @@ static void table(FILE *fp, unsigned mask, enum pt_group grp,
 	free(done);
 }
 
-/* The default map: the source tree's, then the installed one. */
+/* The default map: the shipped sunset.exr (datadir.h). */
 static const char *default_env(void)
 {
-	static const char *const where[] = { FRS_SRCDATA "/sunset.exr",
-	    FRS_SHAREDIR "/sunset.exr" };
+	static char path[DATA_PATH_MAX];
 
-	for (size_t i = 0; i < sizeof where / sizeof where[0]; i++)
-		if (access(where[i], R_OK) == 0)
-			return where[i];
-	cli_die("env: no default environment map (looked for %s and %s); "
-	    "give --env MAP", where[0], where[1]);
+	if (data_find("sunset.exr", path, sizeof path) < 0)
+		cli_die("env: no default environment map (%s); give --env MAP",
+		    frs_errmsg());
+	return path;
 }
 
 /* Load env's map when env is requested or --env given. */

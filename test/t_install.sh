@@ -3,7 +3,13 @@
 # library as a user has it: test/api_example.c built with pkg-config,
 # against libfrs.so and against libfrs.a, prints frs-sample's points;
 # the .so exports the API of src/lib/frs.h and nothing else; make
-# uninstall takes everything away again.
+# uninstall takes everything away again.  Then make install into a
+# prefix of its own: the example linked with frs.pc (and its rpath) and
+# with frs-static.pc runs with LD_LIBRARY_PATH unset and finds the
+# shipped matrix; the installed programs find their data after the
+# prefix is moved, FRS_DATA overrides, and a failed search names every
+# place looked at.  The build has SRCDATA empty: nothing installed can
+# fall back on the source tree.
 . "$(dirname "$0")/lib.sh"
 TOP=$(cd "$(dirname "$0")/.." && pwd)
 # A rel build of its own beside the tested one (BUILD-inst for BUILD),
@@ -15,7 +21,7 @@ U=$D/usr
 unset MAKEFLAGS MFLAGS MAKELEVEL
 mk() {
 	make -C "$TOP" --no-print-directory -j"$(nproc)" VARIANT=rel B="$IB" \
-	    PREFIX=/usr DESTDIR="$D" "$@"
+	    SRCDATA= PREFIX=/usr DESTDIR="$D" "$@"
 }
 
 if mk install >"$T/make.log" 2>&1; then
@@ -36,7 +42,8 @@ for p in $progs; do
 	[ -x "$U/bin/$p" ] || missing="$missing bin/$p"
 done
 for f in include/frs.h lib/libfrs.a lib/libfrs.so.1.2.0 \
-    lib/pkgconfig/frs.pc share/frs/default.frd share/frs/default3.frd \
+    lib/pkgconfig/frs.pc lib/pkgconfig/frs-static.pc share/frs/default.frd \
+    share/frs/default3.frd \
     share/frs/sunset.exr; do
 	[ -f "$U/$f" ] || missing="$missing $f"
 done
@@ -109,12 +116,29 @@ check "frs.h: C++" c++ -Wall -Wextra -Werror -c "$T/h.cc" -o "$T/hcc.o" \
 "$U/bin/imap" gen -q -s 96x64 -o "$T/map.exr" blob
 M=$U/share/frs/default.frd
 # frs-sample writes the shortest round-trip form, the example %.17g:
-# awk reads the values back exactly and prints them as the example does.
-"$U/bin/frs-sample" -q -m "$M" -i "$T/map.exr" -n 5000 -S 7 -T |
-    awk '!/^#/ { printf "%.17g %.17g\n", $1, $2 }' >"$T/ref.txt"
-[ "$(wc -l <"$T/ref.txt")" -gt 4000 ] && ok "frs-sample: $(wc -l <"$T/ref.txt") points" ||
+# awk reads the values back exactly and prints them as the example does
+# (4096 samples, seed 1).
+refpts() {
+	"${FS:-$U/bin/frs-sample}" -q -m "$1" -i "$T/map.exr" -n 4096 -S 1 -T |
+	    awk '!/^#/ { printf "%.17g %.17g\n", $1, $2 }'
+}
+refpts "$M" >"$T/ref.txt"
+[ "$(wc -l <"$T/ref.txt")" -gt 3000 ] && ok "frs-sample: $(wc -l <"$T/ref.txt") points" ||
     nok "frs-sample: $(wc -l <"$T/ref.txt") points"
 WARN="-std=c11 -Wall -Wextra -Wconversion -Werror"
+
+# The example is the one in libfrs(3) and frs_draw(3), character for
+# character once the roff escapes are undone.
+for page in libfrs.3 frs_draw.3; do
+	awk '/example:begin/ { on = 1; next } on && /^\.Bd/ { next }
+	    on && /^\.Ed/ { exit } on' "$TOP/man/man3/$page" |
+	    sed -e 's/\\e/\\/g' -e 's/^\\&//' >"$T/page.c"
+	cmp -s "$T/page.c" "$TOP/test/api_example.c" &&
+	    ok "$page: its example is test/api_example.c" || {
+		nok "$page: its example is test/api_example.c"
+		diff "$T/page.c" "$TOP/test/api_example.c" | head -n 10 | sed 's/^/# /'
+	}
+done
 
 # Dynamic: libfrs.so.1 from the staging directory.
 if cc $WARN -o "$T/ex_dyn" "$TOP/test/api_example.c" $CFLAGS_FRS $LIBS_FRS \
@@ -122,12 +146,20 @@ if cc $WARN -o "$T/ex_dyn" "$TOP/test/api_example.c" $CFLAGS_FRS $LIBS_FRS \
 	ok "api_example.c built against libfrs.so"
 	readelf -d "$T/ex_dyn" | grep -q 'NEEDED.*\[libfrs\.so\.1\]' &&
 	    ok "it needs libfrs.so.1" || nok "it needs libfrs.so.1"
-	LD_LIBRARY_PATH="$U/lib" "$T/ex_dyn" "$T/map.exr" "$M" 5000 7 \
+	LD_LIBRARY_PATH="$U/lib" "$T/ex_dyn" "$T/map.exr" "$M" \
 	    >"$T/dyn.txt" 2>"$T/err"
 	cmp -s "$T/dyn.txt" "$T/ref.txt" && ok "dynamic: frs-sample's points" || {
 		nok "dynamic: frs-sample's points"
 		sed 's/^/# /' "$T/err" | head -n 5
 		diff "$T/dyn.txt" "$T/ref.txt" | head -n 5 | sed 's/^/# /'
+	}
+	# The staged tree is not where it was built for (/usr): the
+	# default matrix found beside libfrs.so.
+	LD_LIBRARY_PATH="$U/lib" "$T/ex_dyn" "$T/map.exr" >"$T/dyn.txt" 2>"$T/err"
+	cmp -s "$T/dyn.txt" "$T/ref.txt" &&
+	    ok "dynamic: frs_default_matrix beside libfrs.so" || {
+		nok "dynamic: frs_default_matrix beside libfrs.so"
+		sed 's/^/# /' "$T/err" | head -n 5
 	}
 else
 	nok "api_example.c built against libfrs.so"
@@ -142,16 +174,22 @@ if cc $WARN -o "$T/ex_st" "$TOP/test/api_example.c" $CFLAGS_FRS $ST \
 	ok "api_example.c built against libfrs.a: $ST"
 	readelf -d "$T/ex_st" | grep -q 'libfrs' && nok "it does not need libfrs.so" ||
 	    ok "it does not need libfrs.so"
-	"$T/ex_st" "$T/map.exr" "$M" 5000 7 >"$T/st.txt" 2>"$T/err"
+	"$T/ex_st" "$T/map.exr" "$M" >"$T/st.txt" 2>"$T/err"
 	cmp -s "$T/st.txt" "$T/ref.txt" && ok "static: frs-sample's points" || {
 		nok "static: frs-sample's points"
+		sed 's/^/# /' "$T/err" | head -n 5
+	}
+	FRS_DATA=$U/share/frs "$T/ex_st" "$T/map.exr" >"$T/st.txt" 2>"$T/err"
+	cmp -s "$T/st.txt" "$T/ref.txt" &&
+	    ok "static: frs_default_matrix in FRS_DATA" || {
+		nok "static: frs_default_matrix in FRS_DATA"
 		sed 's/^/# /' "$T/err" | head -n 5
 	}
 else
 	nok "api_example.c built against libfrs.a: $ST"
 	sed 's/^/# /' "$T/err" | head -n 10
 fi
-"$T/ex_st" "$T/nonexistent.exr" "$M" 10 1 >/dev/null 2>"$T/err"
+"$T/ex_st" "$T/nonexistent.exr" "$M" >/dev/null 2>"$T/err"
 [ $? -eq 1 ] && grep -q 'FRS_E_IO' "$T/err" && ok "example: a missing map is FRS_E_IO" ||
     nok "example: a missing map is FRS_E_IO"
 
@@ -165,3 +203,123 @@ else
 	nok "make uninstall"
 	tail -n 10 "$T/make.log" | sed 's/^/# /'
 fi
+
+# ---- a prefix of one's own, then moved --------------------------------
+
+# Paths as the programs see them (realpath of /proc/self/exe).
+R=$(cd "$T" && pwd -P)
+P=$R/prefix
+if make -C "$TOP" --no-print-directory -j"$(nproc)" VARIANT=rel B="$IB" \
+    SRCDATA= PREFIX="$P" install >"$T/make.log" 2>&1; then
+	ok "make install PREFIX=$P"
+else
+	nok "make install PREFIX=$P"
+	tail -n 20 "$T/make.log" | sed 's/^/# /'
+	exit 1
+fi
+pcp() { PKG_CONFIG_PATH="$P/lib/pkgconfig" pkg-config "$@"; }
+unset LD_LIBRARY_PATH FRS_DATA FRS_MATRIX FRS_MATRIX3
+[ "$("$P/bin/frs-sample" --data-dir 2>&1)" = "$P/share/frs" ] &&
+    ok "frs-sample --data-dir: $P/share/frs" ||
+    nok "frs-sample --data-dir: $("$P/bin/frs-sample" --data-dir 2>&1)"
+
+# frs.pc with its rpath: libfrs.so of the prefix, found without
+# LD_LIBRARY_PATH, and the shipped matrix beside it.
+if cc $WARN -o "$T/p_dyn" "$TOP/test/api_example.c" $(pcp --cflags frs) \
+    $(pcp --libs frs) $(pcp --variable=rpath frs) 2>"$T/err"; then
+	ok "linked with pkg-config frs and its rpath"
+	ldd "$T/p_dyn" | grep -q "libfrs\.so\.1 => $P/lib/" &&
+	    ok "it loads $P/lib/libfrs.so.1" || nok "it loads $P/lib/libfrs.so.1"
+	"$T/p_dyn" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
+	cmp -s "$T/p.txt" "$T/ref.txt" &&
+	    ok "frs.pc: frs-sample's points with the default matrix" || {
+		nok "frs.pc: frs-sample's points with the default matrix"
+		sed 's/^/# /' "$T/err" | head -n 5
+	}
+else
+	nok "linked with pkg-config frs and its rpath"
+	sed 's/^/# /' "$T/err" | head -n 10
+fi
+# frs-static.pc: libfrs.a by its path, no libfrs.so needed.
+pcp --libs frs-static | grep -q -- "$P/lib/libfrs\.a" &&
+    ok "pkg-config --libs frs-static names $P/lib/libfrs.a" ||
+    nok "pkg-config --libs frs-static names libfrs.a: $(pcp --libs frs-static)"
+if cc $WARN -o "$T/p_st" "$TOP/test/api_example.c" $(pcp --cflags frs-static) \
+    $(pcp --libs frs-static) 2>"$T/err"; then
+	ok "linked with pkg-config frs-static"
+	readelf -d "$T/p_st" | grep -q 'NEEDED.*libfrs' &&
+	    nok "frs-static: it needs libfrs.so" || ok "frs-static: it does not need libfrs.so"
+	"$T/p_st" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
+	cmp -s "$T/p.txt" "$T/ref.txt" &&
+	    ok "frs-static.pc: frs-sample's points with the default matrix" || {
+		nok "frs-static.pc: frs-sample's points with the default matrix"
+		sed 's/^/# /' "$T/err" | head -n 5
+	}
+else
+	nok "linked with pkg-config frs-static"
+	sed 's/^/# /' "$T/err" | head -n 10
+fi
+
+# The prefix moved: its programs find their data where they are now.
+Q=$R/moved
+mv "$P" "$Q"
+[ "$("$Q/bin/frs-sample" --data-dir 2>&1)" = "$Q/share/frs" ] &&
+    ok "moved: frs-sample --data-dir: $Q/share/frs" ||
+    nok "moved: frs-sample --data-dir: $("$Q/bin/frs-sample" --data-dir 2>&1)"
+"$Q/bin/frs-sample" -q -i "$T/map.exr" -n 4096 -S 1 -T 2>"$T/err" |
+    awk '!/^#/ { printf "%.17g %.17g\n", $1, $2 }' >"$T/q.txt"
+cmp -s "$T/q.txt" "$T/ref.txt" && ok "moved: frs-sample without -m" || {
+	nok "moved: frs-sample without -m"
+	sed 's/^/# /' "$T/err" | head -n 5
+}
+"$Q/bin/imap" convert -q -s 32x16 "$("$Q/bin/frs-sample" --data-dir)/sunset.exr" \
+    "$T/env.exr" 2>"$T/err" && ok "moved: --data-dir names sunset.exr" ||
+    nok "moved: --data-dir names sunset.exr"
+LD_LIBRARY_PATH="$Q/lib" "$T/p_dyn" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
+cmp -s "$T/p.txt" "$T/ref.txt" && ok "moved: frs_default_matrix beside libfrs.so" || {
+	nok "moved: frs_default_matrix beside libfrs.so"
+	sed 's/^/# /' "$T/err" | head -n 5
+}
+
+# FRS_DATA: another directory, the only one looked in.
+mkdir "$T/alt"
+"$Q/bin/frd-gen" -q -s 64 -S 3 -o "$T/alt/default.frd"
+FS=$Q/bin/frs-sample refpts "$T/alt/default.frd" >"$T/alt.txt"
+[ "$(wc -l <"$T/alt.txt")" -gt 3000 ] && ! cmp -s "$T/alt.txt" "$T/ref.txt" &&
+    ok "FRS_DATA: another matrix, other points" ||
+    nok "FRS_DATA: another matrix, other points"
+[ "$(FRS_DATA=$T/alt "$Q/bin/frs-sample" --data-dir 2>&1)" = "$T/alt" ] &&
+    ok "FRS_DATA: frs-sample --data-dir" || nok "FRS_DATA: frs-sample --data-dir"
+FRS_DATA=$T/alt "$Q/bin/frs-sample" -q -i "$T/map.exr" -n 4096 -S 1 -T 2>"$T/err" |
+    awk '!/^#/ { printf "%.17g %.17g\n", $1, $2 }' >"$T/q.txt"
+cmp -s "$T/q.txt" "$T/alt.txt" && ok "FRS_DATA: frs-sample's default matrix" ||
+    nok "FRS_DATA: frs-sample's default matrix"
+FRS_DATA=$T/alt LD_LIBRARY_PATH="$Q/lib" "$T/p_dyn" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
+cmp -s "$T/p.txt" "$T/alt.txt" && ok "FRS_DATA: frs_default_matrix (libfrs.so)" ||
+    nok "FRS_DATA: frs_default_matrix (libfrs.so)"
+FRS_DATA=$T/alt "$T/p_st" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
+cmp -s "$T/p.txt" "$T/alt.txt" && ok "FRS_DATA: frs_default_matrix (libfrs.a)" ||
+    nok "FRS_DATA: frs_default_matrix (libfrs.a)"
+expect_fail "FRS_DATA without the matrix: named" 1 \
+    "no default matrix (looked for $T/default.frd; FRS_DATA is set)" "$T/o.pts" \
+    env FRS_DATA="$T" "$Q/bin/frs-sample" -n 10 -o "$T/o.pts"
+
+# Nothing anywhere: every place looked at is named.
+"$Q/bin/ref-sample" -q -k random -n 16 -o "$T/r.pts"
+mv "$Q/share/frs" "$T/frs-gone"
+expect_fail "no data: frs-sample names every place" 1 \
+    "no default matrix (looked for $Q/share/frs/default.frd and $P/share/frs/default.frd); give -m MATRIX" \
+    "$T/o.pts" "$Q/bin/frs-sample" -n 10 -o "$T/o.pts"
+expect_fail "no data: frs-sample --data-dir" 1 \
+    "--data-dir: no shipped data (looked for $Q/share/frs/default.frd and $P/share/frs/default.frd)" \
+    - "$Q/bin/frs-sample" --data-dir
+expect_fail "no data: mc-error -f env names every place" 1 \
+    "env: no default environment map (looked for $Q/share/frs/sunset.exr and $P/share/frs/sunset.exr)" \
+    - "$Q/bin/mc-error" -f env "$T/r.pts"
+"$T/p_st" "$T/map.exr" >/dev/null 2>"$T/err"
+[ $? -eq 1 ] && grep -qF "FRS_E_IO" "$T/err" &&
+    grep -qF "no default matrix (looked for $(dirname "$R")/share/frs/default.frd and $P/share/frs/default.frd)" "$T/err" &&
+    ok "no data: frs_default_matrix is FRS_E_IO, naming the places" || {
+	nok "no data: frs_default_matrix is FRS_E_IO, naming the places"
+	sed 's/^/# /' "$T/err" | head -n 5
+}

@@ -949,6 +949,73 @@ static void test_mask_errors(void **state)
 	frs_mask_size(NULL, NULL, NULL);
 }
 
+/* frs_default_matrix: FRS_MATRIX, then FRS_DATA alone, else the
+ * directories of datadir.h (the source tree among them here). */
+static void test_default_matrix(void **state)
+{
+	char path[4096], want[4200];
+	frs_mask *mk = NULL;
+	uint32_t w, h, d;
+	frs_error e;
+
+	(void)state;
+	unsetenv("FRS_MATRIX");
+	unsetenv("FRS_MATRIX3");
+	setenv("FRS_DATA", "data", 1);
+	assert_int_equal(frs_default_matrix(&mk, 2, path, sizeof path, &e),
+	    FRS_OK);
+	assert_string_equal(path, "data/default.frd");
+	assert_string_equal(e.message, "");
+	frs_mask_size(mk, &w, &h);
+	assert_int_equal(w, 2048);
+	assert_int_equal(h, 2048);
+	assert_int_equal(frs_mask_dims(mk), 2);
+	frs_mask_free(mk);
+	assert_int_equal(frs_default_matrix(&mk, 3, NULL, 0, &e), FRS_OK);
+	frs_mask_size3(mk, &w, &h, &d);
+	assert_int_equal(frs_mask_dims(mk), 3);
+	assert_int_equal(d, 64);
+	frs_mask_free(mk);
+	/* Only the path. */
+	EXPECT(FRS_OK, frs_default_matrix(NULL, 3, path, sizeof path, E));
+	assert_string_equal(path, "data/default3.frd");
+	/* The path does not fit: nothing loaded. */
+	mk = (frs_mask *)1;
+	EXPECT(FRS_E_BUFFER, frs_default_matrix(&mk, 2, path, 16, E));
+	assert_null(mk);
+	EXPECT(FRS_OK, frs_default_matrix(NULL, 2, path, 17, E));
+	EXPECT(FRS_E_ARG, frs_default_matrix(&mk, 1, NULL, 0, E));
+	EXPECT(FRS_E_ARG, frs_default_matrix(&mk, 4, NULL, 0, E));
+	EXPECT(FRS_E_ARG, frs_default_matrix(&mk, 2, path, 0, E));
+	/* FRS_DATA is the only place looked at. */
+	setenv("FRS_DATA", tu_dir(), 1);
+	EXPECT(FRS_E_IO, frs_default_matrix(&mk, 2, NULL, 0, E));
+	assert_int_equal(frs_default_matrix(&mk, 2, path, sizeof path, &e),
+	    FRS_E_IO);
+	assert_null(mk);
+	snprintf(want, sizeof want, "no default matrix (looked for "
+	    "%s/default.frd; FRS_DATA is set)", tu_dir());
+	assert_string_equal(e.message, want);
+	assert_string_equal(path, "");
+	/* FRS_MATRIX wins, as it is: its path, then the load's error. */
+	setenv("FRS_MATRIX", tu_path("missing.frd"), 1);
+	EXPECT(FRS_E_IO, frs_default_matrix(&mk, 2, path, sizeof path, E));
+	assert_string_equal(path, tu_path("missing.frd"));
+	EXPECT(FRS_OK, frs_default_matrix(NULL, 2, path, sizeof path, E));
+	setenv("FRS_MATRIX3", "data/default3.frd", 1);
+	assert_int_equal(frs_default_matrix(&mk, 3, NULL, 0, &e), FRS_OK);
+	assert_int_equal(frs_mask_dims(mk), 3);
+	frs_mask_free(mk);
+	unsetenv("FRS_MATRIX");
+	unsetenv("FRS_MATRIX3");
+	/* An empty FRS_DATA is unset: found without it (the source tree). */
+	setenv("FRS_DATA", "", 1);
+	EXPECT(FRS_OK, frs_default_matrix(NULL, 2, path, sizeof path, E));
+	assert_true(strlen(path) > 12 &&
+	    strcmp(path + strlen(path) - 12, "/default.frd") == 0);
+	unsetenv("FRS_DATA");
+}
+
 static void test_map_errors(void **state)
 {
 	const char *junk = tu_path("junk.png");
@@ -1980,6 +2047,7 @@ int main(void)
 		cmocka_unit_test(test_wrap),
 		cmocka_unit_test(test_prepared),
 		cmocka_unit_test(test_mask_errors),
+		cmocka_unit_test(test_default_matrix),
 		cmocka_unit_test(test_map_errors),
 		cmocka_unit_test(test_bad_maps),
 		cmocka_unit_test(test_sampler_errors),

@@ -14,6 +14,7 @@
 
 #include "api.h"
 #include "cli.h"
+#include "datadir.h"
 #include "err.h"
 #include "frscore.h"
 #include "hsw.h"
@@ -246,6 +247,57 @@ int frs_mask_load(frs_mask **mask, const char *path, frs_error *err)
 		mk->lev[0] = mk->m.v;
 	}
 	*mask = mk;
+	return ok(err);
+}
+
+int api_default_matrix(unsigned dims, char *path, size_t cap)
+{
+	const char *env = getenv(dims == 3 ? "FRS_MATRIX3" : "FRS_MATRIX");
+	int len;
+
+	if (env == NULL || *env == '\0')
+		return data_find(dims == 3 ? "default3.frd" : "default.frd",
+		    path, cap);
+	len = snprintf(path, cap, "%s", env);
+	if (len < 0 || (size_t)len >= cap)
+		return frs_fail("%s: %s: path too long for %zu bytes",
+		    dims == 3 ? "FRS_MATRIX3" : "FRS_MATRIX", env, cap);
+	return 0;
+}
+
+int frs_default_matrix(frs_mask **mask, unsigned dims, char *path,
+    size_t cap, frs_error *err)
+{
+	char found[DATA_PATH_MAX];
+	size_t len;
+
+	if (mask != NULL)
+		*mask = NULL;
+	if (dims != 2 && dims != 3)
+		return arg_err(err, "frs_default_matrix: dims is not 2 or 3");
+	if (path != NULL && cap == 0)
+		return arg_err(err, "frs_default_matrix: cap is 0");
+	if (path != NULL)
+		path[0] = '\0';
+	if (api_default_matrix(dims, found, sizeof found) < 0) {
+		char msg[sizeof err->message];
+
+		snprintf(msg, sizeof msg, "no default %smatrix (%s)",
+		    dims == 3 ? "3-D " : "", frs_errmsg());
+		return set_err(err, FRS_E_IO, msg);
+	}
+	if (path != NULL) {
+		if ((len = strlen(found)) >= cap) {
+			char msg[sizeof err->message];
+
+			snprintf(msg, sizeof msg, "%.400s: needs %zu bytes, "
+			    "cap is %zu", found, len + 1, cap);
+			return set_err(err, FRS_E_BUFFER, msg);
+		}
+		memcpy(path, found, len + 1);
+	}
+	if (mask != NULL)
+		return frs_mask_load(mask, found, err);
 	return ok(err);
 }
 

@@ -91,6 +91,11 @@ int api_result_each(const struct frs_setup *su, const struct frs_imap *map,
     frs_point_fn fn, void *ctx);
 double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
     const struct frs_elem *e);
+/* The default matrix of dims 2 or 3 (frs_default_matrix): $FRS_MATRIX
+ * or $FRS_MATRIX3 when set and not empty, as it is; else default.frd or
+ * default3.frd where datadir.h finds it.  Its path into path (cap
+ * bytes): 0; -1 after frs_fail ("looked for ..." or "... too long"). */
+int api_default_matrix(unsigned dims, char *path, size_t cap);
 /* The densities of n warped points. */
 void api_hsw_pdf(const struct hsw_tree *t, const struct frs_imap *map,
     const double *xy, double *pdf, size_t n);

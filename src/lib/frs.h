@@ -89,6 +89,21 @@ void frs_mask_size3(const frs_mask *mask, uint32_t *width,
 const char *frs_mask_note(const frs_mask *mask);
 /* Not while a sampler made from it lives. */
 void frs_mask_free(frs_mask *mask);
+/*
+ * Since 1.2: the default matrix, the one frs-sample uses without -m:
+ * dims 2 (default.frd, 2048 x 2048) or 3 (default3.frd, 64^3).  It is
+ * the file named by $FRS_MATRIX (dims 3: $FRS_MATRIX3) when set and not
+ * empty; else the shipped one, looked for in $FRS_DATA (a directory)
+ * when set and not empty, else in PREFIX/share/frs beside libfrs.so,
+ * beside the program, in the source tree the library was built in and
+ * in the PREFIX it was built for.  When path is not NULL its path goes
+ * there (cap bytes, FRS_E_BUFFER when longer; "" when none is found,
+ * the path also when loading fails); when mask is not NULL
+ * it is loaded as by frs_mask_load.  Nothing found: FRS_E_IO, with every
+ * place looked at in the message.  Thread-safe.
+ */
+int frs_default_matrix(frs_mask **mask, unsigned dims, char *path,
+    size_t cap, frs_error *err);
 
 /* ---- importance maps ------------------------------------------------- */
 
