@@ -624,14 +624,22 @@ static void group_run(const struct opts *o, const struct frs_imap *map,
 	gr->rho = sr / (double)gr->nset;
 	spectrum_of(o, gr->set, gr->nset, map, &im);
 	radial_of(o, &im, &gr->rad);
+	/* The peak off the centre within the radius of the radial means;
+	 * values within 1e-9 of each other are equal, the nearer wins (a
+	 * lattice's first frequency, not a rounding of its multiples). */
 	gr->peak = -1;
+	gr->peak_r = 0;
 	for (uint32_t r = 0; r < side; r++)
 		for (uint32_t c = 0; c < side; c++) {
 			double v = im.v[(size_t)r * side + c];
-			if ((r != o->size || c != o->size) && v > gr->peak) {
+			double d = hypot((double)c - o->size,
+			    (double)r - o->size);
+			if ((r == o->size && c == o->size) || d > o->size)
+				continue;
+			if (v > gr->peak * (1 + 1e-9) || (v >= gr->peak *
+			    (1 - 1e-9) && d < gr->peak_r / im.scale)) {
 				gr->peak = v;
-				gr->peak_r = im.scale * hypot((double)c -
-				    o->size, (double)r - o->size);
+				gr->peak_r = im.scale * d;
 			}
 		}
 	gr->g = rdf_of(o, gr->set, gr->nset, map);
