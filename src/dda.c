@@ -24,11 +24,10 @@
 
 static const char usage[] =
     "usage: dda [--fourier | --dda | --density | --rdf] [--summary]\n"
-    "           [-i IMPORTANCE]\n"
-    "           [-s WxH] [--size K] [--approx] [--eps E] [--sigma S]\n"
-    "           [--bin W] [--torus] [--rmax R] [--bins B] [--png FILE]\n"
-    "           [--radial FILE] [--db LO:HI] [--sets N] [-j N] [-q]\n"
-    "           [-o FILE] FILE...\n"
+    "           [-i IMPORTANCE] [-s WxH] [--size K] [--approx] [--eps E]\n"
+    "           [--sigma S] [--bin W] [--torus] [--rmax R] [--bins B]\n"
+    "           [--png FILE] [--radial FILE] [--db LO:HI] [--sets N] [-j N]\n"
+    "           [-q] [-o FILE] FILE...\n"
     "\n"
     "  --fourier         power spectrum on integer frequencies (default)\n"
     "  --dda             differential domain analysis (Wei and Wang 2011)\n"
@@ -518,7 +517,10 @@ static void page_title(struct page *pg, int x0, const struct group *gr)
 	size_t room = (PG_ML + pg->pw) / ((PLOT_GLYPH_W + 1) * PG_SCALE);
 	const char *name = gr->set[0].file;
 	size_t len = strlen(name);
-	char line[64];
+	char line[256];
+
+	if (room > sizeof line - 1)
+		room = sizeof line - 1;
 
 	if (len > room && room > 2) {
 		snprintf(line, sizeof line, "..%s", name + len - (room - 2));
