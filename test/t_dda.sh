@@ -76,7 +76,7 @@ done
 block() {
 	awk -v b="# $1" '$0 == b { on = 1; next } on && $0 == "" { exit } on' "$2"
 }
-check "--summary" dda --summary --sets 256 --bins 40 --png "$T/page.png" \
+check "--summary" dda --summary --sets 256 --bins 40 -j 2 --png "$T/page.png" \
     -o "$T/sum" "$T/rand.pts" "$T/dart.pts"
 [ "$(grep '^# ' "$T/sum" | tr '\n' '|')" = \
     "# summary|# density|# radial $T/rand.pts|# radial $T/dart.pts|# rdf $T/rand.pts|# rdf $T/dart.pts|" ] &&
@@ -102,6 +102,10 @@ dda --density --sets 256 -o "$T/sd2" "$T/rand.pts"
     "$(awk -F '\t' '$1 == "mean" { print $2, $3, $4 }' "$T/sd2")" ] &&
     ok "--summary: a file's row has the mean of --density" ||
     nok "--summary mean density: $(block summary "$T/sum" | sed -n 2p)"
+dda --summary --sets 256 --bins 40 -j 1 --png "$T/pj1.png" -o "$T/sj1" \
+    "$T/rand.pts" "$T/dart.pts"
+cmp -s "$T/sj1" "$T/sum" && cmp -s "$T/pj1.png" "$T/page.png" &&
+    ok "--summary: -j 1 = -j 2, table and page" || nok "--summary: -j"
 # --dda with a map, and --torus for the RDF.
 check "--summary --dda -i" dda --summary --dda -i const --torus --bins 40 \
     -o "$T/sum2" "$T/dart.pts"
