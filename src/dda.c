@@ -16,22 +16,27 @@
 #include "density.h"
 #include "imap.h"
 #include "outfile.h"
+#include "plot.h"
 #include "progress.h"
 #include "ptsets.h"
+#include "raster.h"
 #include "spectrum.h"
 
 static const char usage[] =
-    "usage: dda [--fourier | --dda | --density | --rdf] [-i IMPORTANCE]\n"
-    "           [-s WxH] [--size K] [--approx] [--eps E] [--sigma S]\n"
-    "           [--bin W] [--torus] [--rmax R] [--bins B] [--png FILE]\n"
-    "           [--radial FILE] [--db LO:HI] [--sets N] [-j N] [-q]\n"
-    "           [-o FILE] FILE...\n"
+    "usage: dda [--fourier | --dda | --density | --rdf] [--summary]\n"
+    "           [-i IMPORTANCE] [-s WxH] [--size K] [--approx] [--eps E]\n"
+    "           [--sigma S] [--bin W] [--torus] [--rmax R] [--bins B]\n"
+    "           [--png FILE] [--radial FILE] [--db LO:HI] [--sets N] [-j N]\n"
+    "           [-q] [-o FILE] FILE...\n"
     "\n"
     "  --fourier         power spectrum on integer frequencies (default)\n"
     "  --dda             differential domain analysis (Wei and Wang 2011)\n"
     "  --density         minimum distance and density rho (Eq. 6.21);\n"
     "                    the only analysis of 3-D sets (uniform, no -i)\n"
     "  --rdf             radial distribution function\n"
+    "  --summary         all of them per file, one table (and one PNG page\n"
+    "                    with --png): --fourier (or --dda), its radial\n"
+    "                    mean and anisotropy, --density and --rdf\n"
     "  -i, --importance M  map of adaptive sets (PNG, OpenEXR or a spec):\n"
     "                    --dda, --density and --rdf measure distances in\n"
     "                    local sample spacings\n"
@@ -47,7 +52,8 @@ static const char usage[] =
     "  --torus           --density, --rdf: distances modulo 1\n"
     "  --rmax R          --rdf: up to R mean spacings (4)\n"
     "  --bins B          --rdf: bins (200)\n"
-    "  --png FILE        --fourier, --dda: the image as an 8-bit PNG\n"
+    "  --png FILE        --fourier, --dda: the image as an 8-bit PNG;\n"
+    "                    --summary: the page of pictures and curves\n"
     "  --radial FILE     --fourier, --dda: radial mean and anisotropy\n"
     "  --db LO:HI        PNG grey scale in dB (-10:10)\n"
     "  --sets N          split every file into sets of N points\n"
@@ -61,7 +67,8 @@ enum mode { FOURIER, DDA, DENSITY, RDF };
 enum {
 	OPT_FOURIER = OPT_FIRST_PRIVATE, OPT_DDA, OPT_DENSITY, OPT_RDF,
 	OPT_SIZE, OPT_APPROX, OPT_EPS, OPT_SIGMA, OPT_BIN, OPT_TORUS,
-	OPT_RMAX, OPT_BINS, OPT_PNG, OPT_RADIAL, OPT_DB, OPT_SETS
+	OPT_RMAX, OPT_BINS, OPT_PNG, OPT_RADIAL, OPT_DB, OPT_SETS,
+	OPT_SUMMARY
 };
 
 static const struct option longopts[] = {
@@ -83,13 +90,14 @@ static const struct option longopts[] = {
 	{ "radial", required_argument, NULL, OPT_RADIAL },
 	{ "db", required_argument, NULL, OPT_DB },
 	{ "sets", required_argument, NULL, OPT_SETS },
+	{ "summary", no_argument, NULL, OPT_SUMMARY },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
 
 struct opts {
 	enum mode mode;
-	int nmodes, approx, torus, have_size, have_bin;
+	int nmodes, approx, torus, have_size, have_bin, summary;
 	const char *imp, *png, *radial;
 	uint32_t mw, mh, size;
 	double eps, sigma, bin, rmax, lo_db, hi_db;
@@ -126,6 +134,7 @@ static void parse(int argc, char **argv, struct opts *o)
 		case OPT_DDA: set_mode(o, DDA); break;
 		case OPT_DENSITY: set_mode(o, DENSITY); break;
 		case OPT_RDF: set_mode(o, RDF); break;
+		case OPT_SUMMARY: o->summary = 1; break;
 		case 'i': o->imp = optarg; break;
 		case 's':
 			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->mw, &o->mh);
@@ -168,6 +177,12 @@ static void parse(int argc, char **argv, struct opts *o)
 		cli_usage_error("no point files");
 	if (o->nmodes > 1)
 		cli_usage_error("one of --fourier, --dda, --density, --rdf");
+	if (o->summary && (o->mode == DENSITY || o->mode == RDF))
+		cli_usage_error("--summary holds --density and --rdf; it goes "
+		    "with --fourier or --dda alone");
+	if (o->summary && o->radial)
+		cli_usage_error("--radial: --summary writes the radial means "
+		    "in its table");
 	if ((o->png || o->radial) && (o->mode == DENSITY || o->mode == RDF))
 		cli_usage_error("--png and --radial go with --fourier or --dda");
 	if (o->imp && o->mode == FOURIER)
@@ -175,8 +190,10 @@ static void parse(int argc, char **argv, struct opts *o)
 		    "use --dda for adaptive ones");
 	if (o->approx && o->mode != FOURIER)
 		cli_usage_error("--approx goes with --fourier");
-	if (o->torus && (o->mode == FOURIER || o->mode == DDA))
-		cli_usage_error("--torus goes with --density or --rdf");
+	if (o->torus && (o->mode == FOURIER || o->mode == DDA) &&
+	    !o->summary)
+		cli_usage_error("--torus goes with --density, --rdf or "
+		    "--summary");
 	if (!o->have_size)
 		o->size = 128;
 }
@@ -199,23 +216,41 @@ static double *scales(const struct opts *o, const struct frs_imap *map,
 	return f;
 }
 
+static void radial_of(const struct opts *o, const struct spec_img *im,
+    struct spec_radial *r)
+{
+	double bin = o->have_bin ? o->bin : 2 * im->scale;
+
+	if (spec_radial(im, bin, r) < 0)
+		cli_die_lib();
+}
+
+/* The radial table; file: a last column naming the set's file, or NULL. */
+static void print_radial(const struct opts *o, FILE *fp,
+    const struct spec_radial *r, const char *file)
+{
+	fprintf(fp, "%s\tpower\taniso_db\tcount%s\n",
+	    o->mode == FOURIER ? "freq" : "dist", file ? "\tfile" : "");
+	for (size_t i = 0; i < r->nbins; i++) {
+		if (r->count[i] <= 1)
+			continue;
+		fprintf(fp, "%.9g\t%.9g\t%.6g\t%llu", r->lo[i], r->mean[i],
+		    r->aniso[i], (unsigned long long)r->count[i]);
+		if (file)
+			fprintf(fp, "\t%s", file);
+		fputc('\n', fp);
+	}
+}
+
 static void write_radial(const struct opts *o, const struct spec_img *im)
 {
 	struct spec_radial r;
 	struct outfile of;
-	double bin = o->have_bin ? o->bin : 2 * im->scale;
 
-	if (spec_radial(im, bin, &r) < 0)
-		cli_die_lib();
+	radial_of(o, im, &r);
 	if (outfile_open(&of, o->radial, 0) < 0)
 		cli_die_lib();
-	fprintf(of.fp, "%s\tpower\taniso_db\tcount\n",
-	    o->mode == FOURIER ? "freq" : "dist");
-	for (size_t i = 0; i < r.nbins; i++)
-		if (r.count[i] > 1)
-			fprintf(of.fp, "%.9g\t%.9g\t%.6g\t%llu\n", r.lo[i],
-			    r.mean[i], r.aniso[i],
-			    (unsigned long long)r.count[i]);
+	print_radial(o, of.fp, &r, NULL);
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
 	spec_radial_free(&r);
@@ -251,28 +286,28 @@ static void write_image(const struct opts *o, FILE *fp,
 			    im->v[(size_t)r * side + c]);
 }
 
-static void spectrum(const struct opts *o, const struct pt_sets *ps,
-    const struct frs_imap *map, FILE *out)
+/* The mean spectrum (or DDA) of the nset sets at set into im. */
+static void spectrum_of(const struct opts *o, const struct pt_set *set,
+    size_t nset, const struct frs_imap *map, struct spec_img *im)
 {
-	struct spec_img im;
 	struct progress pr;
 	double scale = o->mode == FOURIER ? 1.0 : o->eps / o->size;
 	size_t npx;
 
-	if (spec_img_alloc(&im, o->size, scale) < 0)
+	if (spec_img_alloc(im, o->size, scale) < 0)
 		cli_die_lib();
 	npx = (size_t)(2 * o->size + 1) * (2 * o->size + 1);
-	progress_begin(&pr, o->mode == FOURIER ? "fourier" : "dda", ps->n);
-	for (size_t i = 0; i < ps->n; i++) {
-		const struct pt_set *s = &ps->set[i];
+	progress_begin(&pr, o->mode == FOURIER ? "fourier" : "dda", nset);
+	for (size_t i = 0; i < nset; i++) {
+		const struct pt_set *s = &set[i];
 		int rc;
 		if (o->mode == FOURIER)
 			rc = o->approx ? spec_fourier_approx(s->xy, s->n, 1,
-			    &im) : spec_fourier_exact(s->xy, s->n, 1, &im);
+			    im) : spec_fourier_exact(s->xy, s->n, 1, im);
 		else {
 			double *f = scales(o, map, s);
 			rc = dda_add(s->xy, s->n, f, o->eps, o->size,
-			    o->sigma, 1, im.v);
+			    o->sigma, 1, im->v);
 			free(f);
 		}
 		if (rc < 0) {
@@ -283,7 +318,15 @@ static void spectrum(const struct opts *o, const struct pt_sets *ps,
 	}
 	progress_end(&pr);
 	for (size_t k = 0; k < npx; k++)
-		im.v[k] /= (double)ps->n;
+		im->v[k] /= (double)nset;
+}
+
+static void spectrum(const struct opts *o, const struct pt_sets *ps,
+    const struct frs_imap *map, FILE *out)
+{
+	struct spec_img im;
+
+	spectrum_of(o, ps->set, ps->n, map, &im);
 	if (o->png)
 		write_png(o, &im);
 	if (o->radial)
@@ -301,9 +344,10 @@ static void check_3d(const struct opts *o, const struct pt_sets *ps)
 
 	if (ps->dims != 3)
 		return;
-	if (o->mode != DENSITY)
+	if (o->mode != DENSITY || o->summary)
 		cli_die("%s: 3-dimensional points: %s is 2-D only; 3-D sets "
-		    "take --density", file, name[o->mode]);
+		    "take --density", file,
+		    o->summary ? "--summary" : name[o->mode]);
 	if (o->imp != NULL)
 		cli_die("%s: 3-dimensional points: -i is 2-D only; the 3-D "
 		    "density is for uniform sets", file);
@@ -346,17 +390,29 @@ static void density(const struct opts *o, const struct pt_sets *ps,
 	    sd / (double)ps->n, sr / (double)ps->n);
 }
 
-static void rdf(const struct opts *o, const struct pt_sets *ps,
-    const struct frs_imap *map, FILE *out)
+static size_t rdf_bins(const struct opts *o)
 {
-	size_t bins = o->bins ? o->bins : 200;
-	double rmax = o->rmax > 0 ? o->rmax : 4.0;
+	return o->bins ? o->bins : 200;
+}
+
+static double rdf_rmax(const struct opts *o)
+{
+	return o->rmax > 0 ? o->rmax : 4.0;
+}
+
+/* The RDF of the nset sets at set, the mean over them: rdf_bins(o)
+ * values, to be freed. */
+static double *rdf_of(const struct opts *o, const struct pt_set *set,
+    size_t nset, const struct frs_imap *map)
+{
+	size_t bins = rdf_bins(o);
+	double rmax = rdf_rmax(o);
 	double *acc = calloc(bins, sizeof *acc);
 
 	if (acc == NULL)
 		cli_die("no memory for %zu bins", bins);
-	for (size_t i = 0; i < ps->n; i++) {
-		const struct pt_set *s = &ps->set[i];
+	for (size_t i = 0; i < nset; i++) {
+		const struct pt_set *s = &set[i];
 		double *f = scales(o, map, s);
 		if (s->n < 2)
 			cli_die("%s: the distribution needs 2 points or more",
@@ -368,11 +424,299 @@ static void rdf(const struct opts *o, const struct pt_sets *ps,
 		}
 		free(f);
 	}
-	fprintf(out, "r\tg\n");
 	for (size_t b = 0; b < bins; b++)
-		fprintf(out, "%.9g\t%.9g\n", ((double)b + 0.5) * rmax /
-		    (double)bins, acc[b] / (double)ps->n);
-	free(acc);
+		acc[b] /= (double)nset;
+	return acc;
+}
+
+/* The centre of RDF bin b, in mean spacings. */
+static double rdf_r(const struct opts *o, size_t b)
+{
+	return ((double)b + 0.5) * rdf_rmax(o) / (double)rdf_bins(o);
+}
+
+static void print_rdf(const struct opts *o, FILE *fp, const double *g,
+    const char *file)
+{
+	fprintf(fp, "r\tg%s\n", file ? "\tfile" : "");
+	for (size_t b = 0; b < rdf_bins(o); b++) {
+		fprintf(fp, "%.9g\t%.9g", rdf_r(o, b), g[b]);
+		if (file)
+			fprintf(fp, "\t%s", file);
+		fputc('\n', fp);
+	}
+}
+
+static void rdf(const struct opts *o, const struct pt_sets *ps,
+    const struct frs_imap *map, FILE *out)
+{
+	double *g = rdf_of(o, ps->set, ps->n, map);
+
+	print_rdf(o, out, g, NULL);
+	free(g);
+}
+
+/* ---- --summary ---------------------------------------------------------
+ * Per file (a group of consecutive sets): the mean spectrum (or DDA), its
+ * radial mean and anisotropy, the density of every set and the mean RDF,
+ * as one table of blocks, and with --png one page, a column per file. */
+
+struct group {
+	const struct pt_set *set;
+	size_t nset;
+	struct spec_radial rad;
+	double *g;			/* rdf_bins values */
+	double nmean, dmin, rho;	/* means over the sets */
+	double peak, peak_r;		/* largest value off the centre */
+	double gmax, gmax_r;		/* largest g and its r */
+};
+
+/* The page: layout in pixels (dda(1) states the size). */
+#define PG_SCALE 2		/* text scale: 8 pixels a character */
+#define PG_ML 44		/* left margin of a column (tick labels) */
+#define PG_MR 16
+#define PG_TOP 40		/* the image's top: two lines of title above */
+#define PG_GAP 20		/* between the image and the first plot */
+#define PG_PLOT_EXTRA 46	/* per plot: title 16 above, labels 30 below */
+
+struct page {
+	struct frs_raster r;
+	uint32_t side, pw, ph, colw;
+};
+
+static uint32_t page_plot_w(uint32_t side)
+{
+	return side > 256 ? side : 256;
+}
+
+static void page_alloc(const struct opts *o, size_t ngroups,
+    struct page *pg)
+{
+	uint64_t w, h;
+
+	pg->side = 2 * o->size + 1;
+	pg->pw = page_plot_w(pg->side);
+	pg->ph = pg->pw / 2;
+	pg->colw = PG_ML + pg->pw + PG_MR;
+	w = (uint64_t)ngroups * pg->colw;
+	h = PG_TOP + pg->side + PG_GAP + 3 * ((uint64_t)pg->ph + PG_PLOT_EXTRA);
+	if (w > UINT32_MAX || raster_alloc(&pg->r, (uint32_t)w, (uint32_t)h,
+	    3) < 0) {
+		frs_fail("%s: a page of %llu x %llu pixels for %zu files is "
+		    "too large (fewer files or a smaller --size)", o->png,
+		    (unsigned long long)w, (unsigned long long)h, ngroups);
+		cli_die_lib();
+	}
+}
+
+/* The title: the file's name (its end, when it is too long) and the
+ * figures. */
+static void page_title(struct page *pg, int x0, const struct group *gr)
+{
+	static const uint8_t ink[3] = { 0, 0, 0 };
+	size_t room = (PG_ML + pg->pw) / ((PLOT_GLYPH_W + 1) * PG_SCALE);
+	const char *name = gr->set[0].file;
+	size_t len = strlen(name);
+	char line[256];
+
+	if (room > sizeof line - 1)
+		room = sizeof line - 1;
+
+	if (len > room && room > 2) {
+		snprintf(line, sizeof line, "..%s", name + len - (room - 2));
+		name = line;
+	}
+	plot_text(&pg->r, x0 + 4, 8, PG_SCALE, name, ink);
+	snprintf(line, sizeof line, "%zu SET%s  N %.6g  RHO %.3f", gr->nset,
+	    gr->nset == 1 ? "" : "S", gr->nmean, gr->rho);
+	plot_text(&pg->r, x0 + 4, 22, PG_SCALE, line, ink);
+}
+
+/* One plot of the column at x0: the n-th, title above. */
+static void page_plot(struct page *pg, int x0, int k, const char *title,
+    double xmax, double y0, double y1, const double *yt, size_t nyt,
+    double ref, const double *x, const double *y, size_t n,
+    const uint8_t *color)
+{
+	static const uint8_t ink[3] = { 0, 0, 0 };
+	static const uint8_t grey[3] = { 140, 140, 140 };
+	double xt[3] = { 0, xmax / 2, xmax };
+	int top = PG_TOP + (int)pg->side + PG_GAP +
+	    k * ((int)pg->ph + PG_PLOT_EXTRA);
+	struct plot_box b = { x0 + PG_ML, top + 16, (int)pg->pw, (int)pg->ph,
+	    0, xmax, y0, y1 };
+
+	plot_text(&pg->r, b.px, top, PG_SCALE, title, ink);
+	plot_axes(&pg->r, &b, xt, 3, yt, nyt, PG_SCALE);
+	plot_hline(&pg->r, &b, ref, grey);
+	plot_curve(&pg->r, &b, x, y, n, color);
+}
+
+static void page_column(const struct opts *o, struct page *pg, size_t col,
+    const struct spec_img *im, const struct group *gr)
+{
+	static const uint8_t blue[3] = { 0, 0, 200 }, red[3] = { 200, 0, 0 },
+	    green[3] = { 0, 130, 0 };
+	static const double yt[] = { 0, 1, 2, 3, 4 };
+	static const double at[] = { -20, -10, 0, 10 };
+	int x0 = (int)(col * pg->colw);
+	int ix = x0 + PG_ML + (int)(pg->pw - pg->side) / 2;
+	size_t nb = gr->rad.nbins, ng = rdf_bins(o), m = 0;
+	double *x = malloc((nb + ng + 1) * sizeof *x);
+	double *y = malloc((nb + ng + 1) * sizeof *y);
+	double bin = nb > 1 ? gr->rad.lo[1] - gr->rad.lo[0] : 0;
+	double xmax = (double)o->size * im->scale;
+	const char *unit = o->mode == FOURIER ? "FREQUENCY" : "SPACINGS";
+	char title[64];
+
+	if (x == NULL || y == NULL)
+		cli_die("no memory for the page");
+	page_title(pg, x0, gr);
+	for (uint32_t r = 0; r < pg->side; r++)
+		for (uint32_t c = 0; c < pg->side; c++) {
+			uint8_t v = spec_grey(im->v[(size_t)r * pg->side + c],
+			    o->lo_db, o->hi_db);
+			memset(pg->r.px + ((size_t)(PG_TOP + r) * pg->r.w +
+			    (size_t)ix + c) * 3, v, 3);
+		}
+	/* Annulus 0 holds DC (or d = 0): the table has it, the plots not. */
+	for (size_t i = 1; i < nb; i++)
+		if (gr->rad.count[i] > 1) {
+			x[m] = gr->rad.lo[i] + bin / 2;
+			y[m++] = gr->rad.mean[i];
+		}
+	snprintf(title, sizeof title, "RADIAL MEAN VS %s", unit);
+	page_plot(pg, x0, 0, title, xmax, 0, 4, yt, 5, 1.0, x, y, m, blue);
+	for (size_t i = 1, j = 0; i < nb; i++)
+		if (gr->rad.count[i] > 1)
+			y[j++] = gr->rad.aniso[i];
+	page_plot(pg, x0, 1, "ANISOTROPY DB", xmax, -20, 10, at, 4,
+	    10 * log10(1.0 / (double)gr->nset), x, y, m, red);
+	for (size_t b = 0; b < ng; b++) {
+		x[b] = rdf_r(o, b);
+		y[b] = gr->g[b];
+	}
+	page_plot(pg, x0, 2, "RDF G(R) VS SPACINGS", rdf_rmax(o), 0, 4, yt, 5,
+	    1.0, x, y, ng, green);
+	free(x);
+	free(y);
+}
+
+/* Everything of one group but the table; its column of the page. */
+static void group_run(const struct opts *o, const struct frs_imap *map,
+    struct group *gr, double *dmin, double *rho, struct page *pg,
+    size_t col)
+{
+	struct spec_img im;
+	uint32_t side = 2 * o->size + 1;
+	double sd = 0, sr = 0, sn = 0;
+
+	for (size_t i = 0; i < gr->nset; i++) {
+		const struct pt_set *s = &gr->set[i];
+		double *f = scales(o, map, s);
+		if (s->n < 2)
+			cli_die("%s: the density needs 2 points or more",
+			    s->file);
+		min_distance(o, s, f, &dmin[i], &rho[i]);
+		free(f);
+		sd += dmin[i], sr += rho[i], sn += (double)s->n;
+	}
+	gr->nmean = sn / (double)gr->nset;
+	gr->dmin = sd / (double)gr->nset;
+	gr->rho = sr / (double)gr->nset;
+	spectrum_of(o, gr->set, gr->nset, map, &im);
+	radial_of(o, &im, &gr->rad);
+	/* The peak off the centre within the radius of the radial means;
+	 * values within 1e-9 of each other are equal, the nearer wins (a
+	 * lattice's first frequency, not a rounding of its multiples). */
+	gr->peak = -1;
+	gr->peak_r = 0;
+	for (uint32_t r = 0; r < side; r++)
+		for (uint32_t c = 0; c < side; c++) {
+			double v = im.v[(size_t)r * side + c];
+			double d = hypot((double)c - o->size,
+			    (double)r - o->size);
+			if ((r == o->size && c == o->size) || d > o->size)
+				continue;
+			if (v > gr->peak * (1 + 1e-9) || (v >= gr->peak *
+			    (1 - 1e-9) && d < gr->peak_r / im.scale)) {
+				gr->peak = v;
+				gr->peak_r = im.scale * d;
+			}
+		}
+	gr->g = rdf_of(o, gr->set, gr->nset, map);
+	gr->gmax = gr->g[0];
+	gr->gmax_r = rdf_r(o, 0);
+	for (size_t b = 1; b < rdf_bins(o); b++)
+		if (gr->g[b] > gr->gmax) {
+			gr->gmax = gr->g[b];
+			gr->gmax_r = rdf_r(o, b);
+		}
+	if (pg != NULL)
+		page_column(o, pg, col, &im, gr);
+	spec_img_free(&im);
+}
+
+static void summary(const struct opts *o, const struct pt_sets *ps,
+    const size_t *first, size_t ngroups, const struct frs_imap *map,
+    FILE *out)
+{
+	struct group *gr = calloc(ngroups, sizeof *gr);
+	double *dmin = malloc(ps->n * sizeof *dmin);
+	double *rho = malloc(ps->n * sizeof *rho);
+	const char *x = o->mode == FOURIER ? "freq" : "dist";
+	struct page pg, *ppg = NULL;
+	struct outfile of;
+
+	if (gr == NULL || dmin == NULL || rho == NULL)
+		cli_die("no memory for %zu sets", ps->n);
+	if (o->png) {
+		page_alloc(o, ngroups, &pg);
+		ppg = &pg;
+	}
+	for (size_t k = 0; k < ngroups; k++) {
+		gr[k].set = &ps->set[first[k]];
+		gr[k].nset = first[k + 1] - first[k];
+		group_run(o, map, &gr[k], dmin + first[k], rho + first[k],
+		    ppg, k);
+	}
+	fprintf(out, "# summary\nsets\tn\tdmin\trho\tpeak\tpeak_%s\tg_max\t"
+	    "g_max_r\tfile\n", x);
+	for (size_t k = 0; k < ngroups; k++)
+		fprintf(out, "%zu\t%.10g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t%.9g\t"
+		    "%s\n", gr[k].nset, gr[k].nmean, gr[k].dmin, gr[k].rho,
+		    gr[k].peak, gr[k].peak_r, gr[k].gmax, gr[k].gmax_r,
+		    gr[k].set[0].file);
+	fprintf(out, "\n\n# density\nset\tn\tdmin\trho\tfile\n");
+	for (size_t i = 0; i < ps->n; i++)
+		fprintf(out, "%zu\t%zu\t%.9g\t%.9g\t%s\n", i, ps->set[i].n,
+		    dmin[i], rho[i], ps->set[i].file);
+	for (size_t k = 0; k < ngroups; k++) {
+		fprintf(out, "\n\n# radial %s\n", gr[k].set[0].file);
+		print_radial(o, out, &gr[k].rad, gr[k].set[0].file);
+	}
+	for (size_t k = 0; k < ngroups; k++) {
+		fprintf(out, "\n\n# rdf %s\n", gr[k].set[0].file);
+		print_rdf(o, out, gr[k].g, gr[k].set[0].file);
+	}
+	if (ppg != NULL) {
+		if (outfile_open(&of, o->png, 1) < 0)
+			cli_die_lib();
+		if (raster_write_png(of.fp, of.name, &pg.r) < 0) {
+			outfile_abort(&of);
+			cli_die_lib();
+		}
+		if (outfile_commit(&of) < 0)
+			cli_die_lib();
+		raster_free(&pg.r);
+	}
+	for (size_t k = 0; k < ngroups; k++) {
+		spec_radial_free(&gr[k].rad);
+		free(gr[k].g);
+	}
+	free(gr);
+	free(dmin);
+	free(rho);
 }
 
 int main(int argc, char **argv)
@@ -382,20 +726,28 @@ int main(int argc, char **argv)
 	struct pt_sets ps = { 0 };
 	struct frs_imap map = { 0 };
 	struct outfile of;
+	size_t *first;
 
 	cli_init("dda", usage);
 	parse(argc, argv, &o);
 	cli_options_done();
 	ps.max_dims = 3;
-	for (int i = optind; i < argc; i++)
+	if ((first = calloc((size_t)(argc - optind) + 1, sizeof *first)) ==
+	    NULL)
+		cli_die("no memory");
+	for (int i = optind; i < argc; i++) {
 		if (pt_sets_add(&ps, argv[i], o.per) < 0)
 			cli_die_lib();
+		first[i - optind + 1] = ps.n;
+	}
 	check_3d(&o, &ps);
 	if (o.imp && imap_load(o.imp, o.mw, o.mh, 0, &map) < 0)
 		cli_die_lib();
 	if (outfile_open(&of, cli.out, 0) < 0)
 		cli_die_lib();
-	switch (o.mode) {
+	if (o.summary)
+		summary(&o, &ps, first, (size_t)(argc - optind), &map, of.fp);
+	else switch (o.mode) {
 	case FOURIER:
 	case DDA: spectrum(&o, &ps, &map, of.fp); break;
 	case DENSITY: density(&o, &ps, &map, of.fp); break;
@@ -406,5 +758,6 @@ int main(int argc, char **argv)
 	if (o.imp)
 		imap_free(&map);
 	pt_sets_free(&ps);
+	free(first);
 	return 0;
 }

@@ -70,6 +70,82 @@ for t in "" --torus; do
 	    "$T/g" && ok "--rdf $t: random sets about 1" || nok "--rdf $t: $(sed -n 10p "$T/g")"
 done
 
+# ---- --summary: every analysis per file, one table, one page -----------
+
+# block NAME FILE: the rows of a --summary block, its header first.
+block() {
+	awk -v b="# $1" '$0 == b { on = 1; next } on && $0 == "" { exit } on' "$2"
+}
+check "--summary" dda --summary --sets 256 --bins 40 -j 2 --png "$T/page.png" \
+    -o "$T/sum" "$T/rand.pts" "$T/dart.pts"
+[ "$(grep '^# ' "$T/sum" | tr '\n' '|')" = \
+    "# summary|# density|# radial $T/rand.pts|# radial $T/dart.pts|# rdf $T/rand.pts|# rdf $T/dart.pts|" ] &&
+    [ "$(block summary "$T/sum" | head -n 1)" = \
+    "$(printf 'sets\tn\tdmin\trho\tpeak\tpeak_freq\tg_max\tg_max_r\tfile')" ] &&
+    [ "$(block summary "$T/sum" | wc -l)" -eq 3 ] &&
+    ok "--summary: its blocks, in order, and a row per file" ||
+    nok "--summary layout: $(grep '^# ' "$T/sum" | tr '\n' '|')"
+# The same numbers as the analyses run one by one.
+dda --fourier --sets 256 --radial "$T/sr" -o /dev/null "$T/rand.pts"
+block "radial $T/rand.pts" "$T/sum" | cut -f 1-4 | cmp -s - "$T/sr" &&
+    ok "--summary: radial mean and anisotropy of --fourier --radial" ||
+    nok "--summary radial differs"
+dda --rdf --sets 256 --bins 40 -o "$T/sg" "$T/dart.pts"
+block "rdf $T/dart.pts" "$T/sum" | cut -f 1-2 | cmp -s - "$T/sg" &&
+    ok "--summary: RDF of --rdf" || nok "--summary rdf differs"
+dda --density --sets 256 -o "$T/sd" "$T/rand.pts" "$T/dart.pts"
+sed '$d' "$T/sd" >"$T/sd1"
+block density "$T/sum" | cmp -s - "$T/sd1" &&
+    ok "--summary: the sets' densities of --density" || nok "--summary density differs"
+dda --density --sets 256 -o "$T/sd2" "$T/rand.pts"
+[ "$(block summary "$T/sum" | awk -F '\t' 'NR == 2 { print $2, $3, $4 }')" = \
+    "$(awk -F '\t' '$1 == "mean" { print $2, $3, $4 }' "$T/sd2")" ] &&
+    ok "--summary: a file's row has the mean of --density" ||
+    nok "--summary mean density: $(block summary "$T/sum" | sed -n 2p)"
+dda --summary --sets 256 --bins 40 -j 1 --png "$T/pj1.png" -o "$T/sj1" \
+    "$T/rand.pts" "$T/dart.pts"
+cmp -s "$T/sj1" "$T/sum" && cmp -s "$T/pj1.png" "$T/page.png" &&
+    ok "--summary: -j 1 = -j 2, table and page" || nok "--summary: -j"
+# --dda with a map, and --torus for the RDF.
+check "--summary --dda -i" dda --summary --dda -i const --torus --bins 40 \
+    -o "$T/sum2" "$T/dart.pts"
+dda --dda -i const --radial "$T/sr2" -o /dev/null "$T/dart.pts"
+dda --rdf -i const --torus --bins 40 -o "$T/sg2" "$T/dart.pts"
+block "radial $T/dart.pts" "$T/sum2" | cut -f 1-4 | cmp -s - "$T/sr2" &&
+    block "rdf $T/dart.pts" "$T/sum2" | cut -f 1-2 | cmp -s - "$T/sg2" &&
+    ok "--summary --dda --torus: as --dda --radial and --rdf --torus" ||
+    nok "--summary --dda differs"
+# A 16 x 16 grid: spectrum peak n at |k| = 16, RDF peak in the bin of the
+# lattice spacing, 1/16 = 0.9306 mean spacings (bin centre 0.95).
+dda --summary --bins 40 -o "$T/sum3" "$T/grid.pts"
+[ "$(block summary "$T/sum3" | awk -F '\t' 'NR == 2 { printf "%.6g %g %g", $5, $6, $8 }')" = \
+    "256 16 0.95" ] && ok "--summary of a grid: peaks at the lattice" ||
+    nok "--summary grid: $(block summary "$T/sum3" | sed -n 2p)"
+# The page: 2 columns of 44 + 257 + 16 pixels, 257 + 3 * 128 + 198 high;
+# with --size 32, plots 256 wide: 316 a column, 65 + 3 * 128 + 198.
+pngsize() {
+	od -A n -t u1 -j 16 -N 8 "$1" | awk '{ w = (($1 * 256 + $2) * 256 + $3) * 256 + $4
+	    h = (($5 * 256 + $6) * 256 + $7) * 256 + $8; print w "x" h }'
+}
+[ "$(head -c 8 "$T/page.png" | od -A n -t x1 | tr -d ' ')" = 89504e470d0a1a0a ] &&
+    [ "$(pngsize "$T/page.png")" = 634x839 ] && ok "--summary --png: the page, 634x839" ||
+    nok "--summary page: $(pngsize "$T/page.png")"
+dda --summary --size 32 --png "$T/page2.png" -o /dev/null "$T/grid.pts"
+[ "$(pngsize "$T/page2.png")" = 316x647 ] && ok "--summary --size 32: 316x647" ||
+    nok "--summary --size 32 page: $(pngsize "$T/page2.png")"
+expect_fail "--summary --density" 2 "--summary holds" - \
+    dda --summary --density "$T/grid.pts"
+expect_fail "--summary --rdf" 2 "--summary holds" - dda --summary --rdf "$T/grid.pts"
+expect_fail "--summary --radial" 2 "--radial: --summary" - \
+    dda --summary --radial "$T/x" "$T/grid.pts"
+expect_fail "--summary -i without --dda" 2 "-i:" - dda --summary -i blob "$T/grid.pts"
+dda --summary --dda -i blob:sigma=0.01 --png "$T/o5" -o "$T/o6" "$T/grid.pts" \
+    2>"$T/err"
+[ $? -eq 1 ] && grep -q 'grid.pts' "$T/err" && [ ! -e "$T/o5" ] && [ ! -e "$T/o6" ] &&
+    ! ls "$T" | grep -q '\.tmp\.' &&
+    ok "--summary, a point on zero importance: exit 1, no table, no page" ||
+    nok "--summary zero importance: $(cat "$T/err")"
+
 # Bad input.
 printf '0.1 0.2\n0.3 1.5\n' >"$T/out.txt"
 expect_fail "two modes" 2 "one of --fourier" - dda --fourier --dda "$T/grid.pts"
@@ -141,7 +217,7 @@ dda --density --sets 1000 -j 2 -o "$T/j32" "$T/r3.txt" 2>>"$T/err"
 cmp -s "$T/j31" "$T/j32" && ok "3-D --density: -j 1 = -j 2" || nok "3-D --density: -j"
 
 # 3-D errors: exit 1, the file named, no output.
-for m in --fourier --dda --rdf; do
+for m in --fourier --dda --rdf --summary; do
 	expect_fail "3-D $m" 1 "g3.txt: 3-dimensional points: $m is 2-D only" \
 	    "$T/o3" dda $m -o "$T/o3" "$T/g3.txt"
 done

@@ -204,6 +204,9 @@ dda --size 10 --radial /dev/full -o $T/full/out $T/s.pts
 dda --density -o /dev/full $T/s.pts
 dda --rdf $T/s.pts
 dda --size 10 $T/s.pts
+dda --summary --size 10 -o /dev/full $T/s.pts
+dda --summary --size 10 --png /dev/full -o $T/full/out $T/s.pts
+dda --summary --size 10 $T/s.pts
 '
 for p in imap frd-gen frd-prep frs-sample pts-render ref-sample hsw-sample \
     discrepancy dda mc-error; do

@@ -642,6 +642,17 @@ out:
 
 /* ---- picture -------------------------------------------------------- */
 
+uint8_t spec_grey(double v, double lo_db, double hi_db)
+{
+	double t = 0.0;
+
+	if (v > 0.0) {
+		t = (10.0 * log10(v) - lo_db) / (hi_db - lo_db);
+		t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+	}
+	return (uint8_t)lround(255.0 * t);
+}
+
 int spec_write_png(FILE *fp, const char *name, const struct spec_img *im,
     double lo_db, double hi_db)
 {
@@ -657,14 +668,8 @@ int spec_write_png(FILE *fp, const char *name, const struct spec_img *im,
 	side = 2 * (size_t)im->half + 1;
 	if (raster_alloc(&r, (uint32_t)side, (uint32_t)side, 1) < 0)
 		return frs_fail_context(name);
-	for (size_t i = 0; i < side * side; i++) {
-		double v = im->v[i], t = 0.0;
-		if (v > 0.0) {
-			t = (10.0 * log10(v) - lo_db) / (hi_db - lo_db);
-			t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-		}
-		r.px[i] = (uint8_t)lround(255.0 * t);
-	}
+	for (size_t i = 0; i < side * side; i++)
+		r.px[i] = spec_grey(im->v[i], lo_db, hi_db);
 	rc = raster_write_png(fp, name, &r);
 	raster_free(&r);
 	return rc;

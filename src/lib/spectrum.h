@@ -160,5 +160,8 @@ void spec_radial_free(struct spec_radial *r);
  */
 int spec_write_png(FILE *fp, const char *name, const struct spec_img *im,
     double lo_db, double hi_db);
+/* The grey level of one value v in that scale (what spec_write_png
+ * writes for it). */
+uint8_t spec_grey(double v, double lo_db, double hi_db);
 
 #endif

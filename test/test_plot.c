@@ -1,0 +1,151 @@
+/* Plots for dda --summary's page: text has the stated width and its
+ * glyphs' cells, boxes map their range's ends to their edge pixels,
+ * curves are connected and clamped to the box, NaN breaks them. */
+#include "testutil.h"
+#include "plot.h"
+
+static const uint8_t ink[3] = { 10, 20, 30 };
+
+static int is_ink(const struct frs_raster *r, int x, int y)
+{
+	const uint8_t *p = r->px + ((size_t)y * r->w + (size_t)x) * 3;
+	return p[0] == ink[0] && p[1] == ink[1] && p[2] == ink[2];
+}
+
+static size_t count_ink(const struct frs_raster *r)
+{
+	size_t n = 0;
+	for (uint32_t y = 0; y < r->h; y++)
+		for (uint32_t x = 0; x < r->w; x++)
+			n += (size_t)is_ink(r, (int)x, (int)y);
+	return n;
+}
+
+static void text_width(void **state)
+{
+	(void)state;
+	assert_int_equal(plot_text_width("", 2), 0);
+	assert_int_equal(plot_text_width("A", 1), 3);
+	assert_int_equal(plot_text_width("128", 2), 3 * 8 - 2);
+}
+
+/* "1" at scale 1: .#. ##. .#. .#. ###, 8 cells; at scale 3 nine times
+ * as many pixels; small letters are capitals; unknown characters '?'. */
+static void text_glyphs(void **state)
+{
+	struct frs_raster r, q;
+	(void)state;
+	assert_int_equal(raster_alloc(&r, 40, 20, 3), 0);
+	plot_text(&r, 1, 1, 1, "1", ink);
+	assert_int_equal(count_ink(&r), 8);
+	assert_true(is_ink(&r, 2, 1) && is_ink(&r, 1, 2) && is_ink(&r, 2, 2));
+	assert_false(is_ink(&r, 1, 1) || is_ink(&r, 3, 2));
+	assert_true(is_ink(&r, 1, 5) && is_ink(&r, 2, 5) && is_ink(&r, 3, 5));
+	raster_free(&r);
+	assert_int_equal(raster_alloc(&r, 40, 20, 3), 0);
+	plot_text(&r, 0, 0, 3, "1", ink);
+	assert_int_equal(count_ink(&r), 72);
+	raster_free(&r);
+	assert_int_equal(raster_alloc(&r, 40, 20, 3), 0);
+	assert_int_equal(raster_alloc(&q, 40, 20, 3), 0);
+	plot_text(&r, 0, 0, 1, "dx ~", ink);
+	plot_text(&q, 0, 0, 1, "DX ?", ink);
+	assert_memory_equal(r.px, q.px, 40 * 20 * 3);
+	raster_free(&r);
+	raster_free(&q);
+	/* Clipped at the raster's edges, no write outside. */
+	assert_int_equal(raster_alloc(&r, 4, 4, 3), 0);
+	plot_text(&r, -2, -3, 2, "88", ink);
+	plot_text(&r, 3, 3, 2, "88", ink);
+	assert_true(count_ink(&r) > 0);
+	raster_free(&r);
+}
+
+/* A curve from (x0, y0) to (x1, y1) of the box lights the bottom left
+ * and top right pixels and is 8-connected; values beyond are clamped. */
+static void curve_box(void **state)
+{
+	struct frs_raster r;
+	struct plot_box b = { 5, 4, 21, 11, 0.0, 2.0, -1.0, 1.0 };
+	double x[] = { 0.0, 2.0 }, y[] = { -1.0, 1.0 };
+	double xc[] = { -5.0, 7.0 }, yc[] = { -9.0, 9.0 };
+	(void)state;
+	assert_int_equal(raster_alloc(&r, 40, 30, 3), 0);
+	plot_curve(&r, &b, x, y, 2, ink);
+	assert_true(is_ink(&r, 5, 14) && is_ink(&r, 25, 4));
+	for (int px = 5; px <= 25; px++) {
+		int col = 0;
+		for (int py = 4; py <= 14; py++)
+			col += is_ink(&r, px, py);
+		assert_true(col >= 1);
+	}
+	for (int py = 4; py <= 14; py++) {
+		int row = 0;
+		for (int px = 5; px <= 25; px++)
+			row += is_ink(&r, px, py);
+		assert_true(row >= 1);
+	}
+	/* Nothing outside the box. */
+	for (uint32_t py = 0; py < r.h; py++)
+		for (uint32_t px = 0; px < r.w; px++)
+			if (px < 5 || px > 25 || py < 4 || py > 14)
+				assert_false(is_ink(&r, (int)px, (int)py));
+	/* Clamped: the same line. */
+	{
+		struct frs_raster q;
+		assert_int_equal(raster_alloc(&q, 40, 30, 3), 0);
+		plot_curve(&q, &b, xc, yc, 2, ink);
+		assert_memory_equal(r.px, q.px, 40 * 30 * 3);
+		raster_free(&q);
+	}
+	raster_free(&r);
+}
+
+/* NaN breaks a curve: two points apart with a NaN between are two dots. */
+static void curve_nan(void **state)
+{
+	struct frs_raster r;
+	struct plot_box b = { 0, 0, 11, 11, 0.0, 10.0, 0.0, 10.0 };
+	double x[] = { 0.0, NAN, 10.0 }, y[] = { 0.0, 5.0, 10.0 };
+	(void)state;
+	assert_int_equal(raster_alloc(&r, 11, 11, 3), 0);
+	plot_curve(&r, &b, x, y, 3, ink);
+	assert_int_equal(count_ink(&r), 2);
+	assert_true(is_ink(&r, 0, 10) && is_ink(&r, 10, 0));
+	raster_free(&r);
+}
+
+/* plot_axes: a black frame on the box's edge pixels and grey grid lines
+ * at the ticks inside the range only. */
+static void axes(void **state)
+{
+	struct frs_raster r;
+	struct plot_box b = { 20, 2, 41, 21, 0.0, 4.0, 0.0, 2.0 };
+	double xt[] = { 0.0, 2.0, 9.0 }, yt[] = { 1.0, -3.0 };
+	const uint8_t *p;
+	(void)state;
+	assert_int_equal(raster_alloc(&r, 80, 40, 3), 0);
+	plot_axes(&r, &b, xt, 3, yt, 2, 1);
+	p = r.px + ((size_t)2 * r.w + 20) * 3;
+	assert_int_equal(p[0], 0);
+	p = r.px + ((size_t)22 * r.w + 60) * 3;
+	assert_int_equal(p[0], 0);
+	/* x = 2 at column 40, y = 1 at row 12: grid. */
+	p = r.px + ((size_t)7 * r.w + 40) * 3;
+	assert_int_equal(p[0], 225);
+	p = r.px + ((size_t)12 * r.w + 30) * 3;
+	assert_int_equal(p[0], 225);
+	raster_free(&r);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(text_width),
+		cmocka_unit_test(text_glyphs),
+		cmocka_unit_test(curve_box),
+		cmocka_unit_test(curve_nan),
+		cmocka_unit_test(axes),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
