@@ -216,8 +216,8 @@ int main(int argc, char **argv)
 	struct outfile o;
 
 	cli_init("frd-prep", usage);
-	while ((c = getopt_long(argc, argv, "a:i:s:v" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "a:i:s:v" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 'a': algo = optarg; break;
 		case 's': cli_size("-s", optarg, 1u << 16, &w, &h); break;

@@ -150,8 +150,8 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 	int c, have_n = 0;
 	uint64_t n = 0;
 
-	while ((c = getopt_long(argc, argv, "n:i:m:a:s:v" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "n:i:m:a:s:v" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 'n':
 			n = cli_u64("-n", optarg, 1, (uint64_t)1 << 40);
