@@ -127,8 +127,8 @@ static void parse(int argc, char **argv, struct opts *o)
 {
 	int c;
 
-	while ((c = getopt_long(argc, argv, "i:s:" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "i:s:" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case OPT_FOURIER: set_mode(o, FOURIER); break;
 		case OPT_DDA: set_mode(o, DDA); break;
@@ -161,8 +161,8 @@ static void parse(int argc, char **argv, struct opts *o)
 		case OPT_BINS:
 			o->bins = (size_t)cli_u64("--bins", optarg, 1, 1000000);
 			break;
-		case OPT_PNG: o->png = optarg; break;
-		case OPT_RADIAL: o->radial = optarg; break;
+		case OPT_PNG: o->png = cli_outname("--png", optarg); break;
+		case OPT_RADIAL: o->radial = cli_outname("--radial", optarg); break;
 		case OPT_DB: parse_db(o, optarg); break;
 		case OPT_SETS:
 			o->per = (size_t)cli_u64("--sets", optarg, 1,

@@ -226,8 +226,8 @@ int main(int argc, char **argv)
 	char meth[64];
 
 	cli_init("discrepancy", usage);
-	while ((c = getopt_long(argc, argv, "c:" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "c:" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 'c':
 			if (disc_parse_class(optarg, &o.cls) < 0)

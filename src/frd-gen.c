@@ -364,8 +364,8 @@ int main(int argc, char **argv)
 
 	cli_init("frd-gen", usage);
 	frdgen_defaults(&pr);
-	while ((c = getopt_long(argc, argv, "s:k:p:v" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "s:k:p:v" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 's':
 			size = optarg;
@@ -426,7 +426,7 @@ int main(int argc, char **argv)
 			q_set = 1;
 			break;
 		case OPT_CKPT:
-			pr.checkpoint = optarg;
+			pr.checkpoint = cli_outname("--checkpoint", optarg);
 			mo.frd_only = "--checkpoint";
 			break;
 		case OPT_CKPT_EVERY:

@@ -3,6 +3,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
+#include <stdnoreturn.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -11,6 +12,7 @@
 #include "frdio.h"
 #include "frscore.h"
 #include "imap.h"
+#include "io.h"
 #include "outfile.h"
 #include "parse.h"
 
@@ -140,9 +142,71 @@ static unsigned blocks_for(const struct frs_matrix *m, const char *imp,
 	return nb;
 }
 
+/*
+ * --check of a .frp (fp, its first npre bytes in pre): all of it read and
+ * checked (frp_check_fp), and one line saying what it holds written to
+ * the output.  Anything else asked of a .frp needs its .frd.
+ */
+static noreturn void check_frp(FILE *fp, const char *name,
+    const unsigned char *pre, size_t npre, int check, int prep, int verbose)
+{
+	struct frp_summary s;
+	struct outfile o;
+
+	if (prep)
+		cli_die("%s: a prepared matrix (.frp): -a, --blocks and --for "
+		    "need the .frd it was made from", name);
+	if (!check)
+		cli_die("%s: a prepared matrix (.frp): frd-prep --check checks "
+		    "it; frd-prep reads a .frd otherwise", name);
+	if (frp_check_fp(fp, name, pre, npre, &s) < 0)
+		cli_die_lib();
+	io_close_in(fp);
+	if (outfile_open(&o, cli.out, 0) < 0)
+		cli_die_lib();
+	fprintf(o.fp, "%s: a valid prepared matrix: %ux%u, checksum %016llx, "
+	    "%s, ", name, s.w, s.h, (unsigned long long)s.sum,
+	    s.minmap ? "a minmap" : "no minmap");
+	if (s.nblocks == 0)
+		fprintf(o.fp, "no sorted lists\n");
+	for (unsigned i = 0; i < s.nblocks; i++)
+		fprintf(o.fp, "%s%u%s", i ? "," : "sorted lists of blocks ",
+		    s.blocks[i], i + 1 == s.nblocks ? "\n" : "");
+	if (outfile_commit(&o) < 0)
+		cli_die_lib();
+	if (verbose)
+		fprintf(stderr, "frd-prep: %ux%u matrix, checksum %016llx\n", s.w,
+		    s.h, (unsigned long long)s.sum);
+	exit(0);
+}
+
+/* A .frd from path, or for a .frp check_frp. */
+static int read_frd(const char *path, struct frs_matrix *m, int check,
+    int prep, int verbose)
+{
+	const char *name;
+	unsigned char pre[8];
+	size_t npre;
+	FILE *fp = io_open_in(path, &name);
+	int rc;
+
+	if (fp == NULL)
+		return -1;
+	npre = fread(pre, 1, sizeof pre, fp);
+	if (ferror(fp)) {
+		io_close_in(fp);
+		return frs_fail_errno("%s: read error", name);
+	}
+	if (npre == sizeof pre && memcmp(pre, FRP_MAGIC, 8) == 0)
+		check_frp(fp, name, pre, npre, check, prep, verbose);
+	rc = frd_read_pre(fp, name, pre, npre, m);
+	io_close_in(fp);
+	return rc;
+}
+
 int main(int argc, char **argv)
 {
-	const char *fmt = "frd", *algo = "none", *in, *imp = "const";
+	const char *fmt = "frd", *algo = "none", *in, *src, *imp = "const";
 	uint32_t w = 0, h = 0, blocks[32];
 	uint64_t counts[32];
 	unsigned nblocks = 0, ncounts = 0;
@@ -152,8 +216,8 @@ int main(int argc, char **argv)
 	struct outfile o;
 
 	cli_init("frd-prep", usage);
-	while ((c = getopt_long(argc, argv, "a:i:s:v" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "a:i:s:v" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 'a': algo = optarg; break;
 		case 's': cli_size("-s", optarg, 1u << 16, &w, &h); break;
@@ -174,6 +238,7 @@ int main(int argc, char **argv)
 	if (argc - optind > 1)
 		cli_usage_error("one input at most");
 	in = optind < argc ? argv[optind] : "-";
+	src = strcmp(in, "-") ? in : "<stdin>";
 	cli_options_done();
 	minmap = strcmp(algo, "all") == 0 || strcmp(algo, "stack") == 0 ||
 	    strcmp(algo, "level1") == 0 || strcmp(algo, "level2") == 0;
@@ -182,7 +247,8 @@ int main(int argc, char **argv)
 		cli_usage_error("-a: '%s' is not none, stack, level1, level2, "
 		    "sorted or all", algo);
 	if (strcmp(fmt, "frd") == 0)
-		rc = frd_read(in, &m);
+		rc = read_frd(in, &m, check, minmap || sorted || nblocks > 0 ||
+		    ncounts > 0, verbose);
 	else if (strcmp(fmt, "raw32") == 0)
 		rc = frd_import_raw32(in, w, h, rank, &m);
 	else if (strcmp(fmt, "text") == 0)
@@ -195,7 +261,7 @@ int main(int argc, char **argv)
 	if (rc < 0)
 		cli_die_lib();
 	if ((check || strcmp(fmt, "frd") != 0) &&
-	    frd_check_permutation(&m, strcmp(in, "-") ? in : "<stdin>") < 0)
+	    frd_check_permutation(&m, src) < 0)
 		cli_die_lib();
 	if (nblocks > 0 && !sorted)
 		cli_usage_error("--blocks needs -a sorted or -a all");
@@ -222,7 +288,7 @@ int main(int argc, char **argv)
 			    m.w, m.h);
 	if (outfile_open(&o, cli.out, 1) < 0)
 		cli_die_lib();
-	rc = minmap || sorted ? frp_write(o.fp, o.name, &m, minmap,
+	rc = minmap || sorted ? frp_write(o.fp, o.name, src, &m, minmap,
 	    sorted ? blocks : NULL, sorted ? nblocks : 0) :
 	    frd_write(o.fp, o.name, &m);
 	if (rc < 0) {

@@ -169,8 +169,8 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 	int c, have_n = 0;
 	uint64_t n = 0;
 
-	while ((c = getopt_long(argc, argv, "n:i:m:a:s:v" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "n:i:m:a:s:v" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 'n':
 			n = cli_u64("-n", optarg, 1, (uint64_t)1 << 40);
@@ -307,7 +307,7 @@ static void sample_cl(struct ocl *ocl, const struct opts *o,
 	if (api_mask_prep(smp->mask, needs_minmap(o->algo),
 	    o->algo == FRS_SORTED ? api_sorted_block(s) : 0,
 	    api_lists_below(s, o->steps, o->nsteps), &view) < 0)
-		cli_die("%s: %s", o->matrix, frs_errmsg());
+		cli_die_lib();	/* the message names the matrix */
 	if (frs_sample_cl(ocl, s, &smp->map, &view, o->algo, o->steps,
 	    o->nsteps, o->count_only, r) < 0)
 		cli_die("%s", frs_errmsg());
@@ -502,7 +502,7 @@ static void first_setup(const struct opts *o, const frs_sampler *smp,
 	    (o->algo == FRS_SORTED && api_sorted_minmap(s0)),
 	    o->algo == FRS_SORTED ? api_sorted_block(s0) : 0,
 	    api_lists_below(s0, o->steps, o->nsteps), &view) < 0)
-		cli_die("%s: %s", o->matrix, frs_errmsg());
+		cli_die_lib();	/* the message names the matrix */
 	if ((double)s0->n > frs_unique(s0))
 		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.0f without repetition, thesis "

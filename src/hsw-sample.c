@@ -81,8 +81,8 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 {
 	int c;
 
-	while ((c = getopt_long(argc, argv, "n:i:s:v" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "n:i:s:v" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 'n':
 			o->n = cli_u64("-n", optarg, 1, (uint64_t)1 << 36);
@@ -160,7 +160,7 @@ static double *make_input(struct opts *o)
 				pts_free(&p);
 				free(pts);
 				cli_die("%s: point %llu is outside [0,1)^2", o->file,
-				    (unsigned long long)i + 1);
+				    (unsigned long long)i);
 			}
 			pts[2 * i] = r[0];
 			pts[2 * i + 1] = r[1];

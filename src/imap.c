@@ -129,8 +129,8 @@ static int parse_opts(int argc, char **argv)
 {
 	int c;
 
-	while ((c = getopt_long(argc, argv, "s:" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "s:" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 's': {
 			uint32_t sz[3];

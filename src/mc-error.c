@@ -196,13 +196,14 @@ static int add_file(struct pt_sets *s, const char *path, size_t per,
 		return -1;
 	if (mode == PDF_REQUIRE && s->set[first].w == NULL)
 		return frs_fail("%s: --weights: no pdf column", path);
-	for (size_t j = first; mode != PDF_IGNORE && j < s->n; j++)
+	/* Points counted from 0 over the file, as its reader counts them. */
+	for (size_t j = first, k = 0; mode != PDF_IGNORE && j < s->n;
+	    k += s->set[j].n, j++)
 		for (size_t i = 0; s->set[j].w != NULL && i < s->set[j].n; i++) {
 			double d = s->set[j].w[i];
 			if (!(d > 0) || !isfinite(d))
 				return frs_fail("%s: point %zu: pdf %g is not "
-				    "positive and finite", path,
-				    (j - first) * s->set[j].n + i + 1, d);
+				    "positive and finite", path, k + i, d);
 		}
 	return 0;
 }
@@ -312,8 +313,8 @@ int main(int argc, char **argv)
 	struct outfile of;
 
 	cli_init("mc-error", usage);
-	while ((c = getopt_long(argc, argv, "f:" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "f:" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 'f': parse_functions(optarg, &mask); break;
 		case OPT_SETS:

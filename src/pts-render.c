@@ -121,8 +121,8 @@ int main(int argc, char **argv)
 	int rc;
 
 	cli_init("pts-render", usage);
-	while ((c = getopt_long(argc, argv, "s:r:i:" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "s:r:i:" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 's':
 			cli_size("-s", optarg, IMAP_MAX_SIDE, &w, &h);

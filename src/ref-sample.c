@@ -145,8 +145,8 @@ int main(int argc, char **argv)
 	struct progress pr;
 
 	cli_init("ref-sample", usage);
-	while ((c = getopt_long(argc, argv, "n:d:k:i:s:" CLI_COMMON_SHORTOPTS,
-	    longopts, NULL)) != -1) {
+	while ((c = cli_getopt(argc, argv, "n:d:k:i:s:" CLI_COMMON_SHORTOPTS,
+	    longopts)) != -1) {
 		switch (c) {
 		case 'n':
 			n = cli_u64("-n", optarg, 1, REFSAMP_MAX_N);

@@ -148,6 +148,23 @@ expect_fail "truncated binary" 1 "trunc.pts" "$T/o7" sh -c \
     "head -c 100 '$T/h.pts' >'$T/trunc.pts' && discrepancy -o '$T/o7' '$T/trunc.pts'"
 expect_fail "-o in a missing directory" 1 "$T/no/dir" - \
     discrepancy -o "$T/no/dir/x" "$T/h.pts"
+# A header count whose bytes overflow 64 bits: said so, not 2^64-1.
+cp "$T/h.pts" "$T/huge.pts"
+printf '\0\0\0\0\0\0\0\100' | dd of="$T/huge.pts" bs=1 seek=24 conv=notrunc 2>/dev/null
+expect_fail "a count of 2^62" 1 "header says 4611686018427387904 points but the file holds 4096 bytes of records (more than 2^64 needed)" \
+    "$T/o8" discrepancy -o "$T/o8" "$T/huge.pts"
+# Control bytes of a file quoted in a message are escaped, never raw.
+printf 'ab\007\033[31mred\001 0.5\n' >"$T/ctl.txt"
+expect_fail "control bytes in a text file" 1 "ctl.txt:1: 'ab\\x07\\x1b[31mred\\x01' is not a number" \
+    "$T/o9" discrepancy -o "$T/o9" "$T/ctl.txt"
+{ for i in 1 2 3 4; do printf 'x\001\377\033[2J\007\233\r\016'; done
+  tail -c 100 "$T/h.pts"; } >"$T/bin.dat"
+discrepancy "$T/bin.dat" 2>"$T/bin.err"
+if LC_ALL=C grep -q '[^ -~]' "$T/bin.err" || [ "$(wc -l <"$T/bin.err")" -ne 1 ]; then
+	nok "a binary file's message carries no raw control bytes: $(od -c "$T/bin.err" | head -n 3)"
+else
+	ok "a binary file's message carries no raw control bytes"
+fi
 # Usage errors: exit 2.
 expect_fail "--exact quad" 2 "no closed form for class quad" - \
     discrepancy -c quad --exact "$T/h.pts"

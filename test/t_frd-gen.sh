@@ -201,6 +201,10 @@ frd-gen -s 48x20 -p 0.1 -S 3 -o "$T/cpur.frd" &&
 cl_run frd-gen --list-devices >"$T/dev" 2>"$T/err" && grep -q '^cl:0' "$T/dev" &&
     ok "--list-devices prints cl:0" || nok "--list-devices prints cl:0"
 expect_fail "--device cl:63" 1 "cl:63" "$T/o.frd" cl_run frd-gen -s 16 --device cl:63 -o "$T/o.frd"
+for d in cl:64 cl:99; do
+	expect_fail "--device $d: no such device" 1 "OpenCL: no" "$T/o.frd" \
+	    cl_run frd-gen -s 16 --device $d -o "$T/o.frd"
+done
 expect_fail "--device gpu" 2 "gpu" "$T/o.frd" frd-gen -s 16 --device gpu -o "$T/o.frd"
 expect_fail "--device cl with --checkpoint" 2 "--checkpoint" "$T/o.frd" \
     frd-gen -s 16 --device cl --checkpoint "$T/ck" -o "$T/o.frd"

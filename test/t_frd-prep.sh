@@ -64,6 +64,46 @@ size=$(wc -c <"$T/bad2.frp")
 printf '\377\377\377\177' | dd of="$T/bad2.frp" bs=1 seek=$((size - 8)) conv=notrunc 2>/dev/null
 expect_fail "damaged sorted list" 1 "damaged sorted list" "$T/o.pts" \
     frs-sample -m "$T/bad2.frp" -i blob -n 500 -o "$T/o.pts"
+[ "$(grep -o 'bad2.frp' "$T/err" | wc -l)" -eq 1 ] &&
+    ok "the damaged list's message names the file once" ||
+    nok "the damaged list's message names the file once: $(cat "$T/err")"
+expect_fail "--check reads every set of a .frp" 1 "damaged sorted list" - \
+    frd-prep --check "$T/bad2.frp"
+
+# A .frp must hold all that its header announces, though its sorted
+# lists are read only when needed; --check checks a .frp.
+size=$(wc -c <"$T/g.frp")
+for cut in 1 100 5000; do
+	head -c $((size - cut)) "$T/g.frp" >"$T/cut.frp"
+	expect_fail ".frp cut by $cut bytes" 1 "cut.frp: truncated: the file has $((size - cut)) bytes" \
+	    "$T/o.pts" frs-sample -m "$T/cut.frp" -n 100 -o "$T/o.pts"
+	expect_fail "--check of a .frp cut by $cut bytes" 1 "cut.frp: truncated" - \
+	    frd-prep --check "$T/cut.frp"
+	expect_fail "--check of a .frp cut by $cut bytes, in a pipe" 1 "<stdin>: truncated sorted" - \
+	    sh -c "head -c $((size - cut)) '$T/g.frp' | frd-prep --check"
+done
+grep -q 'set 7 of 7' "$T/err" && ok "the pipe's message names the set" ||
+    nok "the pipe's message names the set: $(cat "$T/err")"
+head -c 30000 "$T/g.frp" >"$T/cut.frp"
+expect_fail ".frp cut in its first set" 1 "sets 1 to 7 of 7 are missing" "$T/o.pts" \
+    frs-sample -m "$T/cut.frp" -n 100 -o "$T/o.pts"
+{ cat "$T/g.frp"; printf 'xy'; } >"$T/long.frp"
+expect_fail ".frp with trailing data" 1 "long.frp: 2 bytes of trailing data" "$T/o.pts" \
+    frs-sample -m "$T/long.frp" -n 100 -o "$T/o.pts"
+frd-prep --check "$T/g.frp" >"$T/chk.txt" &&
+    grep -q "g.frp: a valid prepared matrix: 64x64, checksum [0-9a-f]*, a minmap, sorted lists of blocks 1,2,4,8,16,32,64$" "$T/chk.txt" &&
+    ok "--check of a valid .frp says so" || nok "--check of a valid .frp: $(cat "$T/chk.txt")"
+frd-prep --check <"$T/g.frp" >"$T/chk.txt" && grep -q 'valid prepared matrix' "$T/chk.txt" &&
+    ok "--check of a valid .frp on standard input" || nok "--check of a valid .frp on standard input"
+expect_fail "-a all of a .frp" 1 "g.frp: a prepared matrix (.frp)" "$T/o.frp" \
+    frd-prep -a all "$T/g.frp" -o "$T/o.frp"
+# Matrices that cannot be prepared: the message names the input.
+frd-gen -q -s 48x32 -o "$T/r.frd"
+expect_fail "-a all of a 48x32 matrix names the input" 1 "r.frd: the matrix is 48x32" "$T/o.frp" \
+    frd-prep -a all "$T/r.frd" -o "$T/o.frp"
+frd-gen -q -s 8 -k 3 -o "$T/v.frd"
+expect_fail "-a all of a 3-D matrix names the input" 1 "v.frd: only 2-D" "$T/o.frp" \
+    frd-prep -a all "$T/v.frd" -o "$T/o.frp"
 # A damaged .frp beside its matrix is skipped with a warning.
 cp "$T/g.frd" "$T/h.frd"
 cp "$T/g.frp" "$T/h.frp"

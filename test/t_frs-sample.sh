@@ -185,6 +185,17 @@ done
 cl_run frs-sample --list-devices >"$T/dev.txt" && head -n 1 "$T/dev.txt" | grep -q '^cl:0' &&
     ok "--list-devices starts with cl:0" || nok "--list-devices starts with cl:0"
 expect_fail "--device cl:63" 1 "cl:63" "$T/o.pts" cl_run frs-sample -m "$M" -n 10 --device cl:63 -o "$T/o.pts"
+# Any cl:N parses: a device that is not there is exit 1, whatever N.
+for d in cl:64 cl:99 cl:99999999999999999999; do
+	expect_fail "--device $d: no such device" 1 "OpenCL: no" "$T/o.pts" \
+	    cl_run frs-sample -m "$M" -n 10 --device $d -o "$T/o.pts"
+done
+grep -q 'device; see --list-devices\|devices; see --list-devices\|no platform' "$T/err" &&
+    ok "--device cl:N: how many devices there are" || nok "--device cl:N: $(cat "$T/err")"
+for d in cl: cl:-1 cl:1x; do
+	expect_fail "--device $d: a usage error" 2 "is not cpu, cl or cl:N" "$T/o.pts" \
+	    frs-sample -m "$M" -n 10 --device $d -o "$T/o.pts"
+done
 expect_fail "--device gpu" 2 "--device" "$T/o.pts" frs-sample -m "$M" -n 10 --device gpu -o "$T/o.pts"
 expect_fail "-a flat1 without OpenCL" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 -o "$T/o.pts"
 expect_fail "-a flat1 --device cpu" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 --device cpu -o "$T/o.pts"

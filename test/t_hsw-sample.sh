@@ -131,6 +131,10 @@ if cl_run hsw-sample --list-devices >"$T/dev" 2>"$T/err"; then
 	    nok "-v --device cl: device times"
 	expect_fail "--device cl:63" 1 "cl:63" "$T/d63.pts" \
 	    cl_run hsw-sample -i blob -n 10 --device cl:63 -o "$T/d63.pts"
+	for d in cl:64 cl:99; do
+		expect_fail "--device $d: no such device" 1 "no device $d" "$T/d63.pts" \
+		    cl_run hsw-sample -i blob -n 10 --device $d -o "$T/d63.pts"
+	done
 else
 	grep -q 'no platform' "$T/err" && ok "--list-devices without a platform" ||
 	    nok "--list-devices: $(head -n 1 "$T/err")"

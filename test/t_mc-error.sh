@@ -126,6 +126,12 @@ expect_fail "missing file" 1 "$T/none.pts" "$O" mc-error -o "$O" "$T/none.pts"
 expect_fail "3-D points" 1 "$T/d3.txt" "$O" mc-error -o "$O" "$T/d3.txt"
 expect_fail "point outside [0,1)" 1 "$T/big.txt" "$O" mc-error -o "$O" "$T/big.txt"
 expect_fail "pdf 0" 1 "$T/p0.txt" "$O" mc-error -o "$O" "$T/p0.txt"
+# Points counted from 0, as every reader counts them.
+printf '#pts dims=2 extra=1\n0.1 0.2 1\n0.3 0.4 0\n' >"$T/p1.txt"
+expect_fail "pdf 0 at point 1 (the second)" 1 "p1.txt: point 1: pdf 0 is not positive" "$O" \
+    mc-error -o "$O" "$T/p1.txt"
+expect_fail "pdf 0 at point 1 of the second set" 1 "p1.txt: point 1: pdf 0 is not positive" "$O" \
+    mc-error --sets 1 -o "$O" "$T/p1.txt"
 expect_fail "pdf < 0" 1 "$T/pneg.txt" "$O" mc-error -o "$O" "$T/pneg.txt"
 expect_fail "pdf inf" 1 "$T/pinf.txt" "$O" mc-error -o "$O" "$T/pinf.txt"
 expect_fail "pdf nan" 1 "$T/pnan.txt" "$O" mc-error -o "$O" "$T/pnan.txt"

@@ -117,6 +117,7 @@ static void mask_free_parts(frs_mask *mk)
 	if (!mk->wrapped)
 		frd_free(&mk->m);
 	free(mk->frp);
+	free(mk->name);
 }
 
 void frs_mask_free(frs_mask *mk)
@@ -234,6 +235,10 @@ int frs_mask_load(frs_mask **mask, const char *path, frs_error *err)
 		return err ? (int)err->code : FRS_E_IO;
 	if ((mk = mask_new()) == NULL)
 		return set_err(err, FRS_E_NOMEM, "out of memory");
+	if ((mk->name = strdup(path)) == NULL) {
+		frs_mask_free(mk);
+		return set_err(err, FRS_E_NOMEM, "out of memory");
+	}
 	rc = frp_is(path) == 1 ? load_frp(mk, path) : load_frd(mk, path);
 	if (rc == 0 && frd_check_permutation(&mk->m, path) < 0)
 		rc = -1;
@@ -380,7 +385,8 @@ static int keep_lists(frs_mask *mk, unsigned l, struct frs_prep *p)
  * the run needs half the values or more (reading complete lists costs
  * more than making the few a smaller run needs), made here otherwise.
  * Damaged lists are an error in a .frp loaded as such; in the twin they
- * are noted and the twin is dropped.  Called with the lock held. */
+ * are noted and the twin is dropped.  Called with the lock held.  0;
+ * -1 with a message, 1 with one that names the .frp already. */
 static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
 {
 	unsigned l = log2u(b);
@@ -398,7 +404,7 @@ static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
 			frs_prep_free(&p);
 			mk->made = b;
 		} else if (!mk->twin) {
-			return -1;
+			return 1;	/* the message names the .frp */
 		} else {
 			snprintf(mk->note, sizeof mk->note, "%s; ignored",
 			    frs_errmsg());
@@ -435,6 +441,11 @@ int api_mask_prep(const frs_mask *cmk, int minmap, uint32_t block,
 		rc = make_minmap(mk);
 	if (rc == 0 && block && (have->sval == NULL || have->below < below))
 		rc = make_lists(mk, block, below);
+	/* Every message names the matrix, once (a .frp's own do). */
+	if (rc < 0 && mk->name != NULL)
+		frs_fail_context(mk->name);
+	if (rc != 0)
+		rc = -1;
 	memset(view, 0, sizeof *view);
 	view->m = &mk->m;
 	view->nlev = minmap ? mk->nlev : 1;

@@ -25,6 +25,7 @@ struct old_lists {
 struct frs_mask {
 	struct frs_matrix m;
 	int wrapped;		/* m.v is the caller's */
+	char *name;		/* the path it was loaded from, for messages */
 	char *frp;		/* prepared file to take sorted lists from */
 	int twin;		/* frp lies beside the .frd loaded */
 	char note[1024];

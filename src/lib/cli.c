@@ -170,7 +170,7 @@ noreturn void cli_usage_error(const char *fmt, ...)
 
 	fprintf(stderr, "%s: ", cli_prog);
 	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
+	frs_vprint_escaped(stderr, fmt, ap);
 	va_end(ap);
 	fputc('\n', stderr);
 	cli_usage(2);
@@ -183,7 +183,11 @@ int cli_choice(const char *opt, const char *s, const char *const *words)
 	for (; words[n] != NULL; n++)
 		if (strcmp(s, words[n]) == 0)
 			return n;
-	fprintf(stderr, "%s: %s: '%s' is not ", cli_prog, opt, s);
+	{
+		char e[1024];
+		frs_escape(e, sizeof e, s);
+		fprintf(stderr, "%s: %s: '%s' is not ", cli_prog, opt, e);
+	}
 	for (int i = 0; i < n; i++)
 		fprintf(stderr, "%s%s", words[i], i + 2 < n ? ", " :
 		    i + 2 == n ? " or " : "\n");
@@ -196,7 +200,7 @@ noreturn void cli_die(const char *fmt, ...)
 
 	fprintf(stderr, "%s: ", cli_prog);
 	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
+	frs_vprint_escaped(stderr, fmt, ap);
 	va_end(ap);
 	fputc('\n', stderr);
 	outfile_cleanup_all();
@@ -217,9 +221,19 @@ void cli_note(const char *fmt, ...)
 		return;
 	fprintf(stderr, "%s: ", cli_prog);
 	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
+	frs_vprint_escaped(stderr, fmt, ap);
 	va_end(ap);
 	fputc('\n', stderr);
+}
+
+int cli_getopt(int argc, char **argv, const char *shortopts,
+    const struct option *longopts)
+{
+	/* getopt's own messages name argv[0]: the program's name instead of
+	 * the path it was run by (or a command's name, as imap's). */
+	if (argc > 0)
+		argv[0] = (char *)cli_prog;
+	return getopt_long(argc, argv, shortopts, longopts, NULL);
 }
 
 int cli_common_opt(int c, const char *arg)
@@ -231,7 +245,7 @@ int cli_common_opt(int c, const char *arg)
 		printf("%s (frs) %s\n", cli_prog, FRS_VERSION);
 		cli_exit(0);
 	case 'o':
-		cli.out = arg;
+		cli.out = cli_outname("-o", arg);
 		return 1;
 	case 'T':
 		cli.text = 1;
@@ -255,6 +269,14 @@ int cli_common_opt(int c, const char *arg)
 	default:
 		return 0;
 	}
+}
+
+const char *cli_outname(const char *opt, const char *s)
+{
+	if (*s == '\0')
+		cli_usage_error("%s: an empty file name (- is standard output)",
+		    opt);
+	return s;
 }
 
 long long cli_ll(const char *opt, const char *s, long long min, long long max)

@@ -50,6 +50,10 @@ extern const char *cli_prog;
 /* Set the program name and the usage text printed by -h and on usage
  * errors (its first line is the synopsis). */
 void cli_init(const char *prog, const char *usage);
+/* getopt_long, with getopt's messages naming the program as cli_init
+ * did (not argv[0], a path). */
+int cli_getopt(int argc, char **argv, const char *shortopts,
+    const struct option *longopts);
 /* Handle a common option; returns 1 if c was one. */
 int cli_common_opt(int c, const char *arg);
 
@@ -64,6 +68,8 @@ noreturn void cli_die(const char *fmt, ...) FRS_PRINTF(1, 2);
 noreturn void cli_die_lib(void);
 void cli_note(const char *fmt, ...) FRS_PRINTF(1, 2);	/* unless -q */
 
+/* The file name of an output option: an empty one is a usage error. */
+const char *cli_outname(const char *opt, const char *s);
 /* Option values; a bad value is a usage error naming the option. */
 long long cli_ll(const char *opt, const char *s, long long min, long long max);
 uint64_t cli_u64(const char *opt, const char *s, uint64_t min, uint64_t max);

@@ -18,6 +18,69 @@ static const char *warn_prefix;
 static int quiet;
 static atomic_ulong nwarn;
 
+/* The length of the valid UTF-8 sequence at s that is not a C1 control
+ * (U+0080 to U+009F), or 0. */
+static size_t utf8_len(const unsigned char *s)
+{
+	unsigned c = s[0], n, cp;
+
+	if (c >= 0xc2 && c <= 0xdf)
+		n = 2, cp = c & 0x1f;
+	else if (c >= 0xe0 && c <= 0xef)
+		n = 3, cp = c & 0x0f;
+	else if (c >= 0xf0 && c <= 0xf4)
+		n = 4, cp = c & 0x07;
+	else
+		return 0;
+	for (unsigned i = 1; i < n; i++) {
+		if ((s[i] & 0xc0) != 0x80)
+			return 0;
+		cp = cp << 6 | (s[i] & 0x3fu);
+	}
+	if (cp < 0xa0 || (n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000) ||
+	    (cp >= 0xd800 && cp <= 0xdfff) || cp > 0x10ffff)
+		return 0;
+	return n;
+}
+
+size_t frs_escape(char *dst, size_t cap, const char *src)
+{
+	const unsigned char *s = (const unsigned char *)src;
+	size_t len = 0;
+
+	if (cap == 0)
+		return 0;
+	while (*s != '\0') {
+		size_t n = *s >= 0x80 ? utf8_len(s) : 1;
+		int esc = n == 0 || (*s < 0x20 && *s != '\n' && *s != '\t') ||
+		    *s == 0x7f;
+		if (esc) {
+			if (len + 4 >= cap)
+				break;
+			snprintf(dst + len, 5, "\\x%02x", *s);
+			len += 4;
+			s++;
+			continue;
+		}
+		if (len + n >= cap)
+			break;
+		memcpy(dst + len, s, n);
+		len += n;
+		s += n;
+	}
+	dst[len] = '\0';
+	return len;
+}
+
+void frs_vprint_escaped(FILE *fp, const char *fmt, va_list ap)
+{
+	char raw[4096], out[4096];
+
+	vsnprintf(raw, sizeof raw, fmt, ap);
+	frs_escape(out, sizeof out, raw);
+	fputs(out, fp);
+}
+
 static int vfail(const char *fmt, va_list ap, int with_errno, int saved)
 {
 	char tmp[sizeof errbuf];
@@ -28,7 +91,8 @@ static int vfail(const char *fmt, va_list ap, int with_errno, int saved)
 		size_t len = strlen(tmp);
 		snprintf(tmp + len, sizeof tmp - len, ": %s", strerror(saved));
 	}
-	memcpy(errbuf, tmp, sizeof errbuf);
+	/* Messages quote file content and names: never raw control bytes. */
+	frs_escape(errbuf, sizeof errbuf, tmp);
 	errkind = FRS_ERRKIND_OTHER;
 	return -1;
 }
@@ -52,9 +116,11 @@ int frs_fail_errno(const char *fmt, ...)
 	return -1;
 }
 
-int frs_fail_context(const char *context)
+int frs_fail_context(const char *ctx)
 {
-	size_t clen = strlen(context), mlen = strlen(errbuf);
+	char context[sizeof errbuf];
+	size_t clen = frs_escape(context, sizeof context, ctx),
+	    mlen = strlen(errbuf);
 
 	if (clen + 2 >= sizeof errbuf)
 		clen = sizeof errbuf - 3;
@@ -112,7 +178,7 @@ void frs_warn(const char *fmt, ...)
 		return;
 	fprintf(stderr, "%s: warning: ", warn_prefix);
 	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
+	frs_vprint_escaped(stderr, fmt, ap);
 	va_end(ap);
 	fputc('\n', stderr);
 }

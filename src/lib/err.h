@@ -10,6 +10,8 @@
 #define FRS_ERR_H
 
 #include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
 
 #if defined(__GNUC__)
 #define FRS_PRINTF(a, b) __attribute__((format(printf, a, b)))
@@ -31,6 +33,14 @@ void frs_clearerr(void);
 enum { FRS_ERRKIND_OTHER, FRS_ERRKIND_MEM, FRS_ERRKIND_MAP };
 void frs_set_errkind(int kind);
 int frs_errkind(void);
+
+/* Copy src to dst (cap bytes with the NUL, cut short at a whole
+ * character) with every control byte but newline and tab, every byte of
+ * invalid UTF-8 and every C1 control written as \xNN: what messages
+ * quote (file content, names) never drives a terminal.  The length. */
+size_t frs_escape(char *dst, size_t cap, const char *src);
+/* vfprintf through frs_escape (up to 4095 bytes). */
+void frs_vprint_escaped(FILE *fp, const char *fmt, va_list ap);
 
 /* Warnings: printed as "prog: warning: ..." once frs_set_warn_prefix
  * has named the program, unless silenced; never before. */

@@ -107,6 +107,12 @@ static int check_values(const struct frs_matrix *m, const char *name)
 
 int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m)
 {
+	return frd_read_pre(fp, name, NULL, 0, m);
+}
+
+int frd_read_pre(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frs_matrix *m)
+{
 	unsigned char h[FRD_HEADER];
 	unsigned dims = 0;
 	uint32_t sz[3] = { 0, 0, 0 }, plen = 0;
@@ -115,8 +121,19 @@ int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m)
 	int c;
 
 	memset(m, 0, sizeof *m);
-	if (io_read_exact(fp, name, h, sizeof h, "header") < 0 ||
-	    parse_header(h, name, &dims, sz, &plen) < 0)
+	if (npre > 0) {
+		size_t got;
+		memcpy(h, pre, npre);
+		got = fread(h + npre, 1, sizeof h - npre, fp);
+		if (ferror(fp))
+			return frs_fail_errno("%s: read error", name);
+		if (npre + got < sizeof h)
+			return frs_fail("%s: truncated header (%zu of %zu bytes)",
+			    name, npre + got, sizeof h);
+	} else if (io_read_exact(fp, name, h, sizeof h, "header") < 0) {
+		return -1;
+	}
+	if (parse_header(h, name, &dims, sz, &plen) < 0)
 		return -1;
 	if (fsize >= 0) {
 		unsigned long long want = FRD_HEADER + (unsigned long long)plen +

@@ -44,6 +44,10 @@ void frd_free(struct frs_matrix *m);
  * that every value is below n.  path "-" is standard input. */
 int frd_read(const char *path, struct frs_matrix *m);
 int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m);
+/* The same for a stream of which the first npre bytes (pre) were read
+ * already. */
+int frd_read_pre(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frs_matrix *m);
 /* The dimension count in a .frd file's header; 0 when it cannot tell
  * (standard input, unreadable, not a .frd): the reader will say why. */
 int frd_peek_dims(const char *path);

@@ -26,17 +26,18 @@ static int put_u32s(FILE *fp, const uint32_t *v, size_t n)
 #endif
 }
 
-int frp_write(FILE *fp, const char *name, const struct frs_matrix *m,
-    int minmap, const uint32_t *blocks, unsigned nblocks)
+int frp_write(FILE *fp, const char *name, const char *src,
+    const struct frs_matrix *m, int minmap, const uint32_t *blocks,
+    unsigned nblocks)
 {
 	unsigned char h[FRP_HEADER] = { 0 };
 	struct frs_prep p;
 	int rc = 0;
 
 	if (m->dims != 2)
-		return frs_fail("%s: only 2-D matrices can be prepared", name);
+		return frs_fail("%s: only 2-D matrices can be prepared", src);
 	if (frs_prepare(&p, m, minmap, 0) < 0)
-		return frs_fail_context(name);
+		return frs_fail_context(src);
 	memcpy(h, FRP_MAGIC, 8);
 	io_put_u32(h + 8, FRP_VERSION);
 	io_put_u32(h + 12, m->w);
@@ -53,7 +54,7 @@ int frp_write(FILE *fp, const char *name, const struct frs_matrix *m,
 		struct frs_prep q;
 		unsigned char bh[8] = { 0 };
 		if (frs_prepare(&q, m, 0, blocks[b]) < 0)
-			return frs_fail_context(name);
+			return frs_fail_context(src);
 		io_put_u32(bh, blocks[b]);
 		rc = fwrite(bh, 1, 8, fp) == 8 && put_u32s(fp, q.sval, m->n) == 0 &&
 		    put_u32s(fp, q.sidx, m->n) == 0 ? 0 : -1;
@@ -79,13 +80,25 @@ static int read_u32s(FILE *fp, const char *name, uint32_t **out, size_t n,
 	return 0;
 }
 
-static int read_header(FILE *fp, const char *name, uint32_t *w, uint32_t *h,
-    uint32_t *flags, uint64_t *sum, uint32_t *nblocks)
+/* The header, of which the first npre bytes were read already (pre). */
+static int read_header(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, uint32_t *w, uint32_t *h, uint32_t *flags, uint64_t *sum,
+    uint32_t *nblocks)
 {
 	unsigned char hd[FRP_HEADER];
 
-	if (io_read_exact(fp, name, hd, sizeof hd, "header") < 0)
+	if (npre > 0) {
+		size_t got;
+		memcpy(hd, pre, npre);
+		got = fread(hd + npre, 1, sizeof hd - npre, fp);
+		if (ferror(fp))
+			return frs_fail_errno("%s: read error", name);
+		if (npre + got < sizeof hd)
+			return frs_fail("%s: truncated header (%zu of %zu bytes)",
+			    name, npre + got, sizeof hd);
+	} else if (io_read_exact(fp, name, hd, sizeof hd, "header") < 0) {
 		return -1;
+	}
 	if (memcmp(hd, FRP_MAGIC, 8) != 0)
 		return frs_fail("%s: not a prepared matrix (wrong magic)", name);
 	if (io_get_u32(hd + 8) != FRP_VERSION)
@@ -111,7 +124,7 @@ int frp_info(const char *path, uint32_t *w, uint32_t *h, uint64_t *sum)
 
 	if (fp == NULL)
 		return -1;
-	rc = read_header(fp, name, w, h, &flags, sum, &nb);
+	rc = read_header(fp, name, NULL, 0, w, h, &flags, sum, &nb);
 	io_close_in(fp);
 	return rc;
 }
@@ -129,15 +142,29 @@ int frp_is(const char *path)
 	return got == 8 && memcmp(b, FRP_MAGIC, 8) == 0;
 }
 
+/* The number of minmap levels above the matrix of a w x h matrix. */
+static unsigned minmap_levels(uint32_t w, uint32_t h)
+{
+	unsigned l = 1;
+
+	while ((w >> l) > 0 && (h >> l) > 0 && l < 32)
+		l++;
+	return l - 1;
+}
+
 static int read_levels(FILE *fp, const char *name, const struct frs_matrix *m,
     struct frs_prep *p)
 {
+	unsigned top = minmap_levels(m->w, m->h);
+
 	p->lev[0] = m->v;
 	p->nlev = 1;
-	while ((m->w >> p->nlev) > 0 && (m->h >> p->nlev) > 0 && p->nlev < 32) {
+	while (p->nlev <= top) {
 		unsigned l = p->nlev;
+		char what[64];
+		snprintf(what, sizeof what, "minmap level %u of %u", l, top);
 		if (read_u32s(fp, name, &p->lev[l], (size_t)(m->w >> l) *
-		    (m->h >> l), "minmap") < 0)
+		    (m->h >> l), what) < 0)
 			return -1;
 		p->nlev++;
 	}
@@ -186,66 +213,161 @@ static int check_levels(const char *name, const struct frs_matrix *m,
 	return 0;
 }
 
+/* Pass over n bytes: a seek in a regular file, reading them in a pipe
+ * (so that a short one is caught). */
+static int skip(FILE *fp, const char *name, int regular, uint64_t n,
+    const char *what)
+{
+	unsigned char buf[1 << 14];
+
+	if (regular)
+		return fseeko(fp, (off_t)n, SEEK_CUR) == 0 ? 0 :
+		    frs_fail_errno("%s: seek", name);
+	while (n > 0) {
+		size_t k = n < sizeof buf ? (size_t)n : sizeof buf;
+		if (io_read_exact(fp, name, buf, k, what) < 0)
+			return -1;
+		n -= k;
+	}
+	return 0;
+}
+
+/*
+ * The sets of sorted lists: those of block size want into p (checked),
+ * or with all != NULL every set, each checked, its block size noted
+ * there.  A regular file (its length checked before) is left after the
+ * set wanted; a pipe is read to its end, so that every set is there.
+ */
 static int read_sorted(FILE *fp, const char *name, const struct frs_matrix *m,
-    struct frs_prep *p, uint32_t nblocks, uint32_t want)
+    struct frs_prep *p, uint32_t nblocks, uint32_t want, int regular,
+    struct frp_summary *all)
 {
 	for (uint32_t b = 0; b < nblocks; b++) {
 		unsigned char bh[8];
 		uint32_t size;
-		if (io_read_exact(fp, name, bh, 8, "sorted lists") < 0)
+		char what[3][64];
+		snprintf(what[0], sizeof what[0], "sorted lists (set %u of %u)",
+		    b + 1, nblocks);
+		snprintf(what[1], sizeof what[1], "sorted values (set %u of %u)",
+		    b + 1, nblocks);
+		snprintf(what[2], sizeof what[2], "sorted indices (set %u of %u)",
+		    b + 1, nblocks);
+		if (io_read_exact(fp, name, bh, 8, what[0]) < 0)
 			return -1;
 		size = io_get_u32(bh);
 		if (size == 0 || size > m->w || size > m->h || (size & (size - 1)))
 			return frs_fail("%s: impossible block size %u", name, size);
-		if (size != want) {
-			if (fseek(fp, (long)(8 * m->n), SEEK_CUR) != 0)
-				return frs_fail_errno("%s: seek", name);
+		if (all != NULL)
+			all->blocks[all->nblocks++] = size;
+		if (all == NULL && (size != want || p->block != 0)) {
+			if (skip(fp, name, regular, 8 * (uint64_t)m->n, what[1]) < 0)
+				return -1;
 			continue;
 		}
 		p->block = size;
 		p->below = FRS_ALL_VALUES;
-		if (read_u32s(fp, name, &p->sval, m->n, "sorted values") < 0 ||
-		    read_u32s(fp, name, &p->sidx, m->n, "sorted indices") < 0 ||
+		if (read_u32s(fp, name, &p->sval, m->n, what[1]) < 0 ||
+		    read_u32s(fp, name, &p->sidx, m->n, what[2]) < 0 ||
 		    (p->soff = mem_calloc("sorted lists", m->n / ((uint64_t)size *
 		    size) + 1, sizeof *p->soff)) == NULL)
 			return -1;
 		for (uint64_t k = 0; k <= m->n / ((uint64_t)size * size); k++)
 			p->soff[k] = (uint32_t)(k * size * size);
-		return check_sorted(name, m, p);
+		if (check_sorted(name, m, p) < 0)
+			return -1;
+		if (all != NULL) {
+			free(p->sval);
+			free(p->sidx);
+			free(p->soff);
+			p->sval = p->sidx = p->soff = NULL;
+			p->block = 0;
+		} else if (regular) {
+			return 0;
+		}
 	}
 	return 0;
 }
 
-/* A regular file must hold at least the matrix its header announces:
- * checked before allocating, so that a damaged header cannot ask for
- * gigabytes. */
-static int fits_file(FILE *fp, const char *name, uint32_t w, uint32_t h)
+/*
+ * A regular file must hold exactly what its header announces: checked
+ * before allocating, so that a damaged header cannot ask for gigabytes,
+ * and so that sets of sorted lists read only when needed are known to be
+ * there.  The message says which part the file lacks.
+ */
+static int check_length(long long fsize, const char *name, uint32_t w,
+    uint32_t h, int minmap, uint32_t nsets)
 {
-	struct stat st;
-	uint64_t need = 40 + 4 * (uint64_t)w * h;
+	uint64_t n = (uint64_t)w * h, end[3], need;
+	unsigned top = minmap ? minmap_levels(w, h) : 0;
+	char what[128];
 
-	if (fstat(fileno(fp), &st) == 0 && S_ISREG(st.st_mode) &&
-	    (uint64_t)st.st_size < need)
-		return frs_fail("%s: truncated: a %ux%u matrix needs %llu bytes, "
-		    "the file has %lld", name, w, h, (unsigned long long)need,
-		    (long long)st.st_size);
-	return 0;
+	end[0] = FRP_HEADER + 4 * n;
+	end[1] = end[0];
+	for (unsigned l = 1; l <= top; l++)
+		end[1] += 4 * (uint64_t)(w >> l) * (h >> l);
+	end[2] = end[1] + nsets * (8 + 8 * n);
+	need = end[2];
+	if ((uint64_t)fsize == need)
+		return 0;
+	if (nsets == 0)
+		snprintf(what, sizeof what, "a %ux%u matrix%s", w, h,
+		    minmap ? " and its minmap" : "");
+	else
+		snprintf(what, sizeof what, "a %ux%u matrix%s and %u set%s of "
+		    "sorted lists", w, h, minmap ? ", its minmap" : "", nsets,
+		    nsets == 1 ? "" : "s");
+	if ((uint64_t)fsize > need)
+		return frs_fail("%s: %llu bytes of trailing data (the header "
+		    "announces %llu bytes: %s)", name,
+		    (unsigned long long)((uint64_t)fsize - need),
+		    (unsigned long long)need, what);
+	if ((uint64_t)fsize < end[0])
+		return frs_fail("%s: truncated: the file has %lld bytes, the "
+		    "header announces %llu (%s); the matrix is cut short",
+		    name, fsize, (unsigned long long)need, what);
+	if ((uint64_t)fsize < end[1]) {
+		uint64_t e = end[0];
+		unsigned l = 1;
+		for (; l < top; l++) {
+			e += 4 * (uint64_t)(w >> l) * (h >> l);
+			if ((uint64_t)fsize < e)
+				break;
+		}
+		return frs_fail("%s: truncated: the file has %lld bytes, the "
+		    "header announces %llu (%s); minmap level %u of %u is cut "
+		    "short", name, fsize, (unsigned long long)need, what, l,
+		    top);
+	}
+	{
+		uint32_t k = (uint32_t)(((uint64_t)fsize - end[1]) / (8 + 8 * n));
+		char sets[64];
+		if (k + 1 == nsets)
+			snprintf(sets, sizeof sets, "set %u of %u is cut short",
+			    k + 1, nsets);
+		else
+			snprintf(sets, sizeof sets, "sets %u to %u of %u are "
+			    "missing or cut short", k + 1, nsets, nsets);
+		return frs_fail("%s: truncated: the file has %lld bytes, the "
+		    "header announces %llu (%s); sorted lists: %s", name,
+		    fsize, (unsigned long long)need, what, sets);
+	}
 }
 
-int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
-    uint32_t block)
+static int frp_load(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frs_matrix *m, struct frs_prep *p, uint32_t block,
+    struct frp_summary *all)
 {
-	const char *name;
-	FILE *fp = io_open_in(path, &name);
-	uint32_t w = 0, h = 0, flags = 0, nb = 0;
+	uint32_t w = 0, h = 0, flags = 0, nb = 0, nsets;
 	uint64_t sum = 0;
+	long long fsize = io_file_size(fp);
+	int regular = fsize >= 0;
 
 	memset(m, 0, sizeof *m);
 	memset(p, 0, sizeof *p);
-	if (fp == NULL)
+	if (read_header(fp, name, pre, npre, &w, &h, &flags, &sum, &nb) < 0)
 		return -1;
-	if (read_header(fp, name, &w, &h, &flags, &sum, &nb) < 0 ||
-	    fits_file(fp, name, w, h) < 0 ||
+	nsets = flags & 2 ? nb : 0;
+	if ((regular && check_length(fsize, name, w, h, flags & 1, nsets) < 0) ||
 	    frd_alloc(m, 2, w, h, 1, "prepared") < 0 ||
 	    io_read_exact(fp, name, m->v, m->n * 4, "matrix") < 0)
 		goto fail;
@@ -263,13 +385,53 @@ int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
 	if ((flags & 1) && (read_levels(fp, name, m, p) < 0 ||
 	    check_levels(name, m, p) < 0))
 		goto fail;
-	if ((flags & 2) && read_sorted(fp, name, m, p, nb, block) < 0)
+	if (nsets > 0 && read_sorted(fp, name, m, p, nsets, block, regular,
+	    all) < 0)
 		goto fail;
-	io_close_in(fp);
+	if (!regular && getc(fp) != EOF) {
+		frs_fail("%s: trailing data after the last set of sorted lists",
+		    name);
+		goto fail;
+	}
+	if (all != NULL) {
+		all->w = w;
+		all->h = h;
+		all->sum = sum;
+		all->minmap = flags & 1;
+	}
 	return 0;
 fail:
-	io_close_in(fp);
 	frs_prep_free(p);
 	frd_free(m);
 	return -1;
+}
+
+int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
+    uint32_t block)
+{
+	const char *name;
+	FILE *fp = io_open_in(path, &name);
+	int rc;
+
+	memset(m, 0, sizeof *m);
+	memset(p, 0, sizeof *p);
+	if (fp == NULL)
+		return -1;
+	rc = frp_load(fp, name, NULL, 0, m, p, block, NULL);
+	io_close_in(fp);
+	return rc;
+}
+
+int frp_check_fp(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frp_summary *s)
+{
+	struct frs_matrix m;
+	struct frs_prep p;
+
+	memset(s, 0, sizeof *s);
+	if (frp_load(fp, name, pre, npre, &m, &p, 0, s) < 0)
+		return -1;
+	frs_prep_free(&p);
+	frd_free(&m);
+	return 0;
 }

@@ -3,6 +3,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -162,12 +163,13 @@ int ocl_parse_device(const char *s, int *index)
 		*index = -1;
 		return 1;
 	}
-	if (strncmp(s, "cl:", 3) == 0) {
+	/* Any number N parses: whether device N exists is ocl_open's to say
+	 * (one too large for an int is INT_MAX, which none has). */
+	if (strncmp(s, "cl:", 3) == 0 && s[3] >= '0' && s[3] <= '9') {
 		errno = 0;
 		v = strtol(s + 3, &end, 10);
-		if (end != s + 3 && *end == '\0' && errno == 0 && v >= 0 &&
-		    v < 64) {
-			*index = (int)v;
+		if (*end == '\0') {
+			*index = errno == ERANGE || v > INT_MAX ? INT_MAX : (int)v;
 			return 1;
 		}
 	}
@@ -186,6 +188,9 @@ int ocl_open(struct ocl *o, int index)
 	if (devices(ids, plat, 64, &n) < 0)
 		return -1;
 	k = index < 0 ? 0 : (unsigned)index;
+	if (k >= n && index == INT_MAX)
+		return frs_fail("OpenCL: no device of so large a number (%u "
+		    "device%s; see --list-devices)", n, n == 1 ? "" : "s");
 	if (k >= n)
 		return frs_fail("OpenCL: no device cl:%u (%u device%s; see "
 		    "--list-devices)", k, n, n == 1 ? "" : "s");

@@ -214,6 +214,8 @@ int outfile_open(struct outfile *o, const char *path, int binary)
 	install_handlers();
 	if (path == NULL || strcmp(path, "-") == 0)
 		return open_stdout(o, binary);
+	if (*path == '\0')
+		return frs_fail("an empty output file name");
 	o->path = strdup(path);
 	if (o->path == NULL)
 		return frs_fail("%s: out of memory", path);

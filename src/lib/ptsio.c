@@ -172,12 +172,14 @@ static int binary_open(struct pts_reader *r)
 			return frs_fail("%s: truncated record at the end (%llu "
 			    "bytes after the header are not a multiple of %llu)",
 			    r->name, body, rec);
-		if (r->count != 0 && (r->count > body / rec ||
-		    body != r->count * rec))
+		if (r->count != 0 && r->count > UINT64_MAX / rec)
+			return frs_fail("%s: header says %llu points but the file "
+			    "holds %llu bytes of records (more than 2^64 needed)",
+			    r->name, (unsigned long long)r->count, body);
+		if (r->count != 0 && body != r->count * rec)
 			return frs_fail("%s: header says %llu points but the file "
 			    "holds %llu bytes of records (%llu needed)", r->name,
 			    (unsigned long long)r->count, body,
-			    r->count > UINT64_MAX / rec ? UINT64_MAX :
 			    (unsigned long long)(r->count * rec));
 	}
 	return 0;

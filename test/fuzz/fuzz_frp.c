@@ -1,4 +1,5 @@
-/* libFuzzer target: .frp prepared matrices (frp_read, frp_info). */
+/* libFuzzer target: .frp prepared matrices (frp_read, frp_info,
+ * frp_check_fp). */
 #define _POSIX_C_SOURCE 200809L
 #include "fuzz.h"
 #include "frdio.h"
@@ -20,6 +21,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		if (frp_read(path, &m, &p, block) == 0) {
 			frs_prep_free(&p);
 			frd_free(&m);
+		}
+		frs_clearerr();
+	}
+	/* All of it, as frd-prep --check reads it. */
+	{
+		FILE *fp = fopen(path, "rb");
+		struct frp_summary s;
+		if (fp != NULL) {
+			(void)frp_check_fp(fp, path, NULL, 0, &s);
+			fclose(fp);
 		}
 		frs_clearerr();
 	}

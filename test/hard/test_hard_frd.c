@@ -218,7 +218,7 @@ static void tiny_frp(void **state)
 	tu_perm_matrix(&m, 2, 2, 48);
 	fp = fopen(path, "wb");
 	assert_non_null(fp);
-	assert_int_equal(frp_write(fp, path, &m, 1, blocks, 2), 0);
+	assert_int_equal(frp_write(fp, path, path, &m, 1, blocks, 2), 0);
 	assert_int_equal(fclose(fp), 0);
 	assert_int_equal(frp_is(path), 1);
 	assert_int_equal(frp_info(path, &w, &h, &sum), 0);
