@@ -137,8 +137,112 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 
 double frs_tau(const struct frs_setup *s, uint64_t n)
 {
-	return (double)n * (double)s->mw * (double)s->mh /
-	    ((double)s->sw * (double)s->sh * s->imean);
+	return frs_xtau_get(&s->exact, n, (double)n * (double)s->mw *
+	    (double)s->mh / ((double)s->sw * (double)s->sh * s->imean));
+}
+
+double frs_xtau_get(const struct frs_xtau *x, uint64_t n, double dflt)
+{
+	for (unsigned k = 0; k < x->n; k++)
+		if (x->steps[k] == n)
+			return x->tau[k];
+	return dflt;
+}
+
+/* The most count passes one step's search may take: each either halves
+ * the bracket of tau or shrinks it by the secant, so that a search of a
+ * double needs far fewer. */
+#define EXACT_PASSES 200
+
+/*
+ * The tau of exactly n from lo (whose count clo < n; 0 at tau 0) and the
+ * guess t > lo.  Secant steps through the bracket [lo, hi] aim at the
+ * middle of the count n; a step that fails to halve the bracket's count
+ * span is followed by a bisection of tau, so that the search ends: at the
+ * latest when lo and hi are neighbouring doubles, which only two keys in
+ * one ulp of tau can cause.  Unbracketed (every count below n), tau grows
+ * by the linear guess with a margin that doubles each time.
+ */
+static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
+    frs_count_fn count, void *ctx, double *tau, unsigned *passes)
+{
+	double hi = INFINITY, grow = 1.0;
+	uint64_t chi = 0, c, span;
+
+	for (unsigned it = 0;; it++) {
+		if (it == EXACT_PASSES)
+			return frs_fail("--exact-count: no threshold for exactly "
+			    "%llu samples after %u count passes",
+			    (unsigned long long)n, it);
+		if (count(ctx, t, &c) < 0)
+			return -1;
+		(*passes)++;
+		if (c == n) {
+			*tau = t;
+			return 0;
+		}
+		span = isfinite(hi) ? chi - clo : UINT64_MAX;
+		if (c < n) {
+			lo = t;
+			clo = c;
+		} else {
+			hi = t;
+			chi = c;
+		}
+		if (!isfinite(hi)) {
+			double f = clo > 0 ? (double)n / (double)clo : 2.0;
+			t = lo * (1.0 + (f - 1.0) * grow);
+			grow *= 2.0;
+			if (!(t > lo) || !isfinite(t))
+				return frs_fail("--exact-count: no threshold "
+				    "reaches %llu samples", (unsigned long long)n);
+			continue;
+		}
+		if (span == UINT64_MAX || 2 * (chi - clo) <= span)
+			t = lo + (hi - lo) * (((double)(n - clo) + 0.5) /
+			    (double)(chi - clo));
+		else
+			t = lo + (hi - lo) / 2;		/* a bisection */
+		if (!(t > lo && t < hi))
+			t = lo + (hi - lo) / 2;
+		if (!(t > lo && t < hi))
+			return frs_fail("--exact-count: %llu elements share the "
+			    "threshold %.17g of sample %llu: no set of exactly "
+			    "%llu", (unsigned long long)(chi - clo), hi,
+			    (unsigned long long)(clo + 1), (unsigned long long)n);
+	}
+}
+
+int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
+    const double *tau0, uint64_t most, frs_count_fn count, void *ctx,
+    struct frs_xtau *x, unsigned *passes)
+{
+	double lo = 0.0;
+	uint64_t clo = 0;
+
+	memset(x, 0, sizeof *x);
+	*passes = 0;
+	if (frs_steps_check(steps, nsteps) < 0)
+		return -1;
+	if (steps[nsteps - 1] > most)
+		return frs_fail("--exact-count: the window has %llu elements of "
+		    "non-zero importance, fewer than %llu",
+		    (unsigned long long)most,
+		    (unsigned long long)steps[nsteps - 1]);
+	for (unsigned k = 0; k < nsteps; k++) {
+		double t = tau0[k], tk;
+		if (!(t > lo))
+			t = clo > 0 ? lo * (double)steps[k] / (double)clo : 1.0;
+		if (exact_one(steps[k], lo, clo, t, count, ctx, &tk, passes) < 0)
+			return -1;
+		x->steps[k] = steps[k];
+		x->tau[k] = tk;
+		lo = tk;
+		clo = steps[k];
+	}
+	x->n = nsteps;
+	x->passes = *passes;
+	return 0;
 }
 
 double frs_unique(const struct frs_setup *s)
