@@ -7,6 +7,7 @@
 #include "tile.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -149,27 +150,37 @@ double frs_xtau_get(const struct frs_xtau *x, uint64_t n, double dflt)
 	return dflt;
 }
 
-/* The most count passes one step's search may take: each either halves
- * the bracket of tau or shrinks it by the secant, so that a search of a
- * double needs far fewer. */
+/* The most count passes one step's search may take (it takes a few:
+ * see frs-sample(1)); and the same-side landings after which it only
+ * bisects. */
 #define EXACT_PASSES 200
+#define EXACT_STREAK 12
+/* A bracket of this many counts or fewer is bisected: its counts are
+ * steps, no longer a line. */
+#define EXACT_BISECT 4
 
 /*
- * The tau of exactly n from lo (whose count clo < n; 0 at tau 0) and the
- * guess t > lo.  Secant steps through the bracket [lo, hi] aim at the
- * middle of the count n; a step that fails to halve the bracket's count
- * span is followed by a bisection of tau, so that the search ends: at the
- * latest when lo and hi are neighbouring doubles, which only two keys in
- * one ulp of tau can cause.  Unbracketed (every count below n), tau grows
- * by the linear guess with a margin that doubles each time.
+ * The tau of exactly n from the guess t > lo, lo's count clo < n (tau 0,
+ * count 0 for the first step).  The counts grow about in proportion to
+ * tau, with a noise of about the square root of the keys crossed, so
+ * each pass aims, on the line through the bracket's ends [lo, hi] (hi
+ * unknown: the line through the origin and lo), at the middle of the
+ * count n; after two passes on the same side of n it aims past n by the
+ * square root of the miss, doubled at each further pass on that side, so
+ * that the bracket closes from both sides.  Past EXACT_STREAK such passes
+ * it bisects, and the search ends at the latest when lo and hi are
+ * neighbouring doubles, which only two keys in one ulp of tau can cause.
  */
 static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
     frs_count_fn count, void *ctx, double *tau, unsigned *passes)
 {
-	double hi = INFINITY, grow = 1.0;
-	uint64_t chi = 0, c, span;
+	double hi = INFINITY;
+	uint64_t chi = 0, c;
+	int side = 0, streak = 0;
 
 	for (unsigned it = 0;; it++) {
+		double target, margin, mid;
+		int sd;
 		if (it == EXACT_PASSES)
 			return frs_fail("--exact-count: no threshold for exactly "
 			    "%llu samples after %u count passes",
@@ -181,7 +192,9 @@ static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
 			*tau = t;
 			return 0;
 		}
-		span = isfinite(hi) ? chi - clo : UINT64_MAX;
+		sd = c < n ? -1 : 1;
+		streak = sd == side ? streak + 1 : 1;
+		side = sd;
 		if (c < n) {
 			lo = t;
 			clo = c;
@@ -189,22 +202,22 @@ static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
 			hi = t;
 			chi = c;
 		}
+		margin = streak < 2 ? 0.0 : sqrt((double)(c < n ? n - c : c - n)) *
+		    ldexp(1.0, streak - 2);
+		target = (double)n + 0.5 - (double)side * margin;
 		if (!isfinite(hi)) {
-			double f = clo > 0 ? (double)n / (double)clo : 2.0;
-			t = lo * (1.0 + (f - 1.0) * grow);
-			grow *= 2.0;
+			t = clo > 0 ? lo * (target / (double)clo) : 2.0 * lo;
 			if (!(t > lo) || !isfinite(t))
 				return frs_fail("--exact-count: no threshold "
 				    "reaches %llu samples", (unsigned long long)n);
 			continue;
 		}
-		if (span == UINT64_MAX || 2 * (chi - clo) <= span)
-			t = lo + (hi - lo) * (((double)(n - clo) + 0.5) /
-			    (double)(chi - clo));
-		else
-			t = lo + (hi - lo) / 2;		/* a bisection */
-		if (!(t > lo && t < hi))
-			t = lo + (hi - lo) / 2;
+		mid = lo + (hi - lo) / 2;
+		t = lo + (hi - lo) * ((target - (double)clo) /
+		    (double)(chi - clo));
+		if (streak > EXACT_STREAK || chi - clo <= EXACT_BISECT ||
+		    !(t > lo && t < hi))
+			t = mid;
 		if (!(t > lo && t < hi))
 			return frs_fail("--exact-count: %llu elements share the "
 			    "threshold %.17g of sample %llu: no set of exactly "
@@ -230,7 +243,7 @@ int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
 		    (unsigned long long)most,
 		    (unsigned long long)steps[nsteps - 1]);
 	for (unsigned k = 0; k < nsteps; k++) {
-		double t = tau0[k], tk;
+		double t = tau0[k], tk = 0.0;
 		if (!(t > lo))
 			t = clo > 0 ? lo * (double)steps[k] / (double)clo : 1.0;
 		if (exact_one(steps[k], lo, clo, t, count, ctx, &tk, passes) < 0)
