@@ -27,12 +27,13 @@ static const char usage[] =
     "                  [--sigma S] [--jitter none|halton|random] [--pdf]\n"
     "                  [--progressive N1,N2,...] [--threshold unbiased|thesis]\n"
     "                  [--tiles auto|shuffled|plain] [--count-only]\n"
-    "                  [--sets M]\n"
+    "                  [--exact-count] [--sets M]\n"
     "                  [-s SIZE] [-S SEED] [-j N]\n"
     "                  [--device cpu|cl|cl:N] [-T] [-v] [-o FILE]\n"
     "       frs-sample --list-devices | --data-dir\n"
     "\n"
-    "  -n, --count N        samples to make (about; see frs-sample(1))\n"
+    "  -n, --count N        samples to make (about; see frs-sample(1);\n"
+    "                       exactly with --exact-count)\n"
     "  -i, --importance M   map: PNG, OpenEXR or a spec such as blob\n"
     "                       (default const: uniform sampling); with a\n"
     "                       3-D matrix a volume: .frv or blob3, ramp3...\n"
@@ -55,6 +56,9 @@ static const char usage[] =
     "                       is, thesis Sec. 4.5) or auto (shuffled when\n"
     "                       n fits the matrix without repetition)\n"
     "      --count-only     print the count, make no points\n"
+    "      --exact-count    exactly N samples (each step of --progressive):\n"
+    "                       the N of smallest (M + u) / I, a subset or\n"
+    "                       superset of the default set (unbiased rule)\n"
     "      --sets M         write M sets one after another, set i made\n"
     "                       with seed S+i (default 1; not with\n"
     "                       --progressive)\n"
@@ -79,7 +83,7 @@ static const char usage[] =
 enum {
 	OPT_SIGMA = OPT_FIRST_PRIVATE, OPT_JITTER, OPT_PDF, OPT_PROG,
 	OPT_THRESHOLD, OPT_COUNT_ONLY, OPT_EQUIRECT, OPT_STRICT, OPT_SETS,
-	OPT_DEVICE, OPT_LIST_DEVICES, OPT_TILES, OPT_DATA_DIR
+	OPT_DEVICE, OPT_LIST_DEVICES, OPT_TILES, OPT_DATA_DIR, OPT_EXACT
 };
 
 /* Most samples asked for in all the sets of one file (M * n): far inside
@@ -98,6 +102,7 @@ static const struct option longopts[] = {
 	{ "progressive", required_argument, NULL, OPT_PROG },
 	{ "threshold", required_argument, NULL, OPT_THRESHOLD },
 	{ "count-only", no_argument, NULL, OPT_COUNT_ONLY },
+	{ "exact-count", no_argument, NULL, OPT_EXACT },
 	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
 	{ "strict", no_argument, NULL, OPT_STRICT },
 	{ "sets", required_argument, NULL, OPT_SETS },
@@ -120,6 +125,7 @@ struct opts {
 	enum frs_rule rule;
 	int tiles;		/* enum frs_tiling_mode */
 	int pdf, count_only, verbose, flags;
+	int exact;		/* --exact-count */
 	uint32_t w, h;
 	uint32_t vsz[3];	/* -s for volumes, 0 if not given */
 	int nsz;		/* sizes -s gave: 0, 1 (N), 2 or 3 */
@@ -205,6 +211,7 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 			    "auto", "shuffled", "plain", NULL });
 			break;
 		case OPT_COUNT_ONLY: o->count_only = 1; break;
+		case OPT_EXACT: o->exact = 1; break;
 		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
 		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
 		case OPT_SETS:
@@ -227,6 +234,10 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		cli_usage_error("unexpected argument '%s'", argv[optind]);
 	if (o->algo == FRSCL_FLAT1 && !o->cl)
 		cli_usage_error("-a flat1 runs on OpenCL only (--device cl)");
+	if (o->exact && o->rule == FRS_THESIS)
+		cli_usage_error("--exact-count needs --threshold unbiased: under "
+		    "the thesis rule elements of equal importance share "
+		    "thresholds, and counts jump past n");
 	if (o->nsteps == 0) {
 		if (!have_n)
 			cli_usage_error("-n COUNT is required");
@@ -302,7 +313,7 @@ static void sample_cl(struct ocl *ocl, const struct opts *o,
 {
 	struct frs_prep view;
 
-	if (api_setup(smp, o->steps[o->nsteps - 1], seed, s) < 0)
+	if (api_setup_steps(smp, o->steps, o->nsteps, seed, s) < 0)
 		cli_die("%s", frs_errmsg());
 	if (api_mask_prep(smp->mask, needs_minmap(o->algo),
 	    o->algo == FRS_SORTED ? api_sorted_block(s) : 0,
@@ -478,7 +489,7 @@ static frs_sampler *make_sampler(const struct opts *o, const frs_mask *mk,
 	opt.jitter = o->jitter == FRS_JITTER_HALTON ? FRS_JIT_HALTON :
 	    o->jitter == FRS_JITTER_RANDOM ? FRS_JIT_RANDOM : FRS_JIT_NONE;
 	opt.rule = o->rule == FRS_THESIS ? FRS_RULE_THESIS :
-	    FRS_RULE_UNBIASED;
+	    o->exact ? FRS_RULE_EXACT : FRS_RULE_UNBIASED;
 	opt.threads = cli.threads;
 	opt.tiling = (enum frs_tiling_mode)o->tiles;
 	if (frs_sampler_new_f64(&smp, mk, map->v, map->w, map->h, 0, &opt,
@@ -490,15 +501,20 @@ static frs_sampler *make_sampler(const struct opts *o, const frs_mask *mk,
 /* The setup of set 0, checked before any work; the repetition warning.
  * The matrix's minmap or sorted lists, which the library prepares on
  * first use, are prepared here, so that -v counts them in the setup and
- * not in the thresholding. */
+ * not in the thresholding.  --exact-count: the exact taus of set 0 only
+ * with -v, which reports them (each set's run finds its own, making the
+ * lists it needs: their time then counts in the thresholding). */
 static void first_setup(const struct opts *o, const frs_sampler *smp,
     struct frs_setup *s0)
 {
 	struct frs_prep view;
 
-	if (api_setup(smp, o->steps[o->nsteps - 1], cli.seed, s0) < 0)
+	if ((o->exact && o->verbose ? api_setup_steps(smp, o->steps, o->nsteps,
+	    cli.seed, s0) : api_setup(smp, o->steps[o->nsteps - 1], cli.seed,
+	    s0)) < 0)
 		cli_die("%s", frs_errmsg());
-	if (api_mask_prep(smp->mask, needs_minmap(o->algo) ||
+	if ((!o->exact || o->verbose) && api_mask_prep(smp->mask,
+	    needs_minmap(o->algo) ||
 	    (o->algo == FRS_SORTED && api_sorted_minmap(s0)),
 	    o->algo == FRS_SORTED ? api_sorted_block(s0) : 0,
 	    api_lists_below(s0, o->steps, o->nsteps), &view) < 0)
@@ -573,6 +589,13 @@ static void report(const struct opts *o, const struct frs_setup *s0,
 	uint64_t tx, ty, nt = frs_tiles(s0, &tx, &ty);
 
 	print_setup(s0, o->matrix);
+	if (o->exact) {
+		struct frs_setup d = *s0;
+		d.exact.n = 0;
+		fprintf(stderr, "frs-sample: --exact-count: tau %.9g instead of "
+		    "%.9g after %u count passes\n", s0->tau, frs_tau(&d, d.n),
+		    s0->exact.passes);
+	}
 	if (u->mask != NULL && u->mask->made != 0)
 		fprintf(stderr, "frs-sample: %s has no sorted lists of blocks of "
 		    "%u: made them here (frd-prep -a sorted --for N makes a .frp "
@@ -709,6 +732,8 @@ static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
 		int rc = 0;
 		double t0 = progress_now();
 		setup3(o, v, m, cli.seed + set, &s);
+		if (o->exact && frs3_exact(&s, v, p, o->steps, o->nsteps) < 0)
+			cli_die("%s", frs_errmsg());
 		if (frs3_sample(&s, v, p, (enum frs_algo)o->algo, o->steps,
 		    o->nsteps, o->count_only, &r) < 0)
 			cli_die("%s", frs_errmsg());
@@ -764,6 +789,9 @@ static int main3(const struct opts *o)
 		    s0.mh, s0.md);
 	if (frs3_prepare(&p, &m, o->algo == FRS_SORTED ? frs3_block(&s0) : 0) < 0)
 		cli_die("%s: %s", o->matrix, frs_errmsg());
+	if (o->exact && o->verbose &&
+	    frs3_exact(&s0, &v, &p, o->steps, o->nsteps) < 0)
+		cli_die("%s", frs_errmsg());
 	tsetup = progress_now() - t0;
 	if (outfile_open(&of, cli.out, !o->count_only && !cli.text) < 0)
 		cli_die_lib();
@@ -778,6 +806,13 @@ static int main3(const struct opts *o)
 	t[1] += progress_now() - t0;
 	if (o->verbose) {
 		print_setup3(&s0, o->matrix);
+		if (o->exact) {
+			struct frs3_setup d = s0;
+			d.exact.n = 0;
+			fprintf(stderr, "frs-sample: --exact-count: tau %.9g "
+			    "instead of %.9g after %u count passes\n", s0.tau,
+			    frs3_tau(&d, d.n), s0.exact.passes);
+		}
 		fprintf(stderr, "frs-sample: %llu samples (%s); setup %.6f s, "
 		    "thresholding %.6f s, output %.6f s\n",
 		    (unsigned long long)total, frscl_algo_name(o->algo), tsetup,

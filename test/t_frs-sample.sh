@@ -133,6 +133,78 @@ expect_fail "--strict refuses negative importance" 1 "is negative" "$T/strict.pt
     frs-sample -m "$M" --strict -i "$SHARED/data/env/interior.exr" -n 100 -o "$T/strict.pts"
 check "1x4096 map" frs-sample -m "$M" -i ramp -s 1x4096 -n 500 -o "$T/thin.pts"
 
+# --exact-count: exactly n samples (each step too), nested with the
+# default set, the same set on every algorithm, thread count, device.
+allexact=1
+for map in blob ramp sky const; do
+	for s in 1 2 3; do
+		c=$(frs-sample -m "$M" -i $map -n 1024 -S $s --exact-count -q -o "$T/x.pts" &&
+		    cnt "$T/x.pts")
+		c2=$(frs-sample -m "$M" -i $map -n 1024 -S $s --exact-count --count-only -q)
+		[ "$c" = 1024 ] && [ "$c2" = 1024 ] || { allexact=0; echo "# $map -S $s: $c, $c2"; }
+	done
+done
+[ $allexact = 1 ] && ok "--exact-count: 1024 for blob, ramp, sky, const, seeds 1-3" ||
+    nok "--exact-count: 1024 for blob, ramp, sky, const, seeds 1-3"
+frs-sample -m "$M" -i blob -n 1024 --sets 10 --exact-count -q -o "$T/x10.pts"
+[ "$(cnt "$T/x10.pts")" = 10240 ] && ok "--exact-count --sets 10: 10 x 1024" ||
+    nok "--exact-count --sets 10: 10 x 1024 ($(cnt "$T/x10.pts"))"
+nest=1
+for s in 1 2 3 4 5 6; do
+	frs-sample -m "$M" -i sky -n 700 -S $s -T -q | grep -v '^#' | sort >"$T/d.s"
+	frs-sample -m "$M" -i sky -n 700 -S $s -T -q --exact-count | grep -v '^#' | sort >"$T/e.s"
+	nd=$(wc -l <"$T/d.s") both=$(comm -12 "$T/d.s" "$T/e.s" | wc -l)
+	[ "$(wc -l <"$T/e.s")" -eq 700 ] || nest=0
+	if [ "$nd" -ge 700 ]; then [ "$both" -eq 700 ] || nest=0
+	else [ "$both" -eq "$nd" ] || nest=0; fi
+done
+[ $nest = 1 ] && ok "--exact-count nests with the default set" ||
+    nok "--exact-count nests with the default set"
+frs-sample -m "$M" -i blob -n 3000 -S 4 --exact-count -q -j 1 -T -o "$T/xj1.txt"
+frs-sample -m "$M" -i blob -n 3000 -S 4 --exact-count -q -j 2 -T -o "$T/xj2.txt"
+grep -v '^#' "$T/xj1.txt" | sort >"$T/xs.s"
+same=1
+cmp -s "$T/xj1.txt" "$T/xj2.txt" || same=0
+for a in naive stack level1 level2; do
+	frs-sample -m "$M" -i blob -n 3000 -S 4 --exact-count -q -a $a -T |
+	    grep -v '^#' | sort | cmp -s - "$T/xs.s" || same=0
+done
+[ $same = 1 ] && ok "--exact-count: the same points for -j 1, 2 and every algorithm" ||
+    nok "--exact-count: the same points for -j 1, 2 and every algorithm"
+frs-sample -m "$M" -i ramp --progressive 100,400,1500 --exact-count -q -T -o "$T/xp.txt"
+awk '!/^#/ { c[$3]++ } END { exit !(c[1] == 100 && c[2] == 300 && c[3] == 1100) }' \
+    "$T/xp.txt" && ok "--exact-count --progressive: each step exact" ||
+    nok "--exact-count --progressive: each step exact"
+frs-sample -m "$M" -i ramp -n 1500 --exact-count -q -T | grep -v '^#' | sort >"$T/x1.s"
+awk '!/^#/ { print $1, $2 }' "$T/xp.txt" | sort | cmp -s - "$T/x1.s" &&
+    ok "--exact-count --progressive: the union is the exact one-shot set" ||
+    nok "--exact-count --progressive: the union is the exact one-shot set"
+for opts in "-i blob -n 3000 -S 4" "-i sky -n 2000 -a naive --pdf" \
+    "-i ramp --progressive 100,400,1500 -a level2"; do
+	# shellcheck disable=SC2086
+	frs-sample -m "$M" $opts --exact-count -q -o "$T/cpu.out" &&
+	    cl_run frs-sample -m "$M" $opts --exact-count -q --device cl -o "$T/cl.out" &&
+	    cmp -s "$T/cpu.out" "$T/cl.out" && ok "--device cl --exact-count $opts: the same bytes" ||
+	    nok "--device cl --exact-count $opts: the same bytes"
+done
+frs-sample -m "$M" -i blob -n 3000 -S 4 --exact-count -q -a stack -T -o "$T/xstack.txt"
+cl_run frs-sample -m "$M" -i blob -n 3000 -S 4 --exact-count -q -a flat1 --device cl -T \
+    -o "$T/xflat1.txt"
+cmp -s "$T/xstack.txt" "$T/xflat1.txt" && ok "--exact-count -a flat1 gives Stack's bytes" ||
+    nok "--exact-count -a flat1 gives Stack's bytes"
+M3=$T/m3.frd
+frd-gen -k 3 -s 32 --tol 1e-2 -o "$M3"
+frs-sample -m "$M3" -i blob3 -s 16 -n 900 --exact-count -q -T | grep -v '^#' | sort >"$T/x3s.s"
+frs-sample -m "$M3" -i blob3 -s 16 -n 900 --exact-count -q -T -a naive -j 2 | grep -v '^#' |
+    sort | cmp -s - "$T/x3s.s" && [ "$(wc -l <"$T/x3s.s")" -eq 900 ] &&
+    ok "--exact-count on a volume: 900, Naive's set is Sorted's" ||
+    nok "--exact-count on a volume: 900, Naive's set is Sorted's"
+frs-sample -m "$M" -i blob -n 1000 --exact-count -v -o /dev/null 2>"$T/v.txt"
+grep -q 'exact-count: tau .* count passes' "$T/v.txt" && ok "--exact-count -v: tau and passes" ||
+    nok "--exact-count -v: tau and passes"
+expect_fail "--exact-count with the thesis rule" 2 "needs --threshold unbiased" "$T/o.pts" \
+    frs-sample -m "$M" -n 100 --exact-count --threshold thesis -o "$T/o.pts"
+
 # Bad input.
 expect_fail "all-zero map" 1 "zero everywhere" "$T/z.pts" frs-sample -m "$M" -i const:0 -n 10 -o "$T/z.pts"
 expect_fail "no count" 2 "-n COUNT is required" "$T/o.pts" frs-sample -m "$M" -o "$T/o.pts"

@@ -18,6 +18,7 @@
 #include "frdio.h"
 #include "imap.h"
 #include "ptsio.h"
+#include "rng.h"
 #include "vol.h"
 
 #define MATRIX "data/default.frd"
@@ -1154,7 +1155,7 @@ static void test_sampler_errors(void **state)
 	o.jitter = (enum frs_jitter_mode)3;
 	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
 	frs_options_init(&o);
-	o.rule = (enum frs_rule_mode)2;
+	o.rule = (enum frs_rule_mode)3;
 	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
 	frs_options_init(&o);
 	o.threads = -1;
@@ -2029,6 +2030,325 @@ static void test_progress(void **state)
 	assert_int_equal(l.calls, 0);
 }
 
+/* ---- exact counts (FRS_RULE_EXACT, frs-sample --exact-count) ---------- */
+
+static frs_sampler *exact_sampler(const struct frs_imap *m,
+    enum frs_algorithm a, int threads, enum frs_rule_mode rule)
+{
+	struct frs_options o;
+
+	frs_options_init(&o);
+	o.algorithm = a;
+	o.threads = threads;
+	o.rule = rule;
+	return sampler_f64(mask, m, &o);
+}
+
+static int pair_cmp(const void *a, const void *b)
+{
+	const double *p = a, *q = b;
+
+	return p[0] < q[0] ? -1 : p[0] > q[0] ? 1 : p[1] < q[1] ? -1 :
+	    p[1] > q[1];
+}
+
+/* The points of d, sorted (jitter none: one point per element). */
+static double *sorted_xy(const struct drawn *d)
+{
+	double *xy = malloc((2 * d->n + 1) * sizeof *xy);
+
+	assert_non_null(xy);
+	memcpy(xy, d->xy, 2 * d->n * sizeof *xy);
+	qsort(xy, d->n, 2 * sizeof *xy, pair_cmp);
+	return xy;
+}
+
+/* frs_draw of n, also when it makes no samples (about n: n 1 may). */
+static struct drawn draw_any(const frs_sampler *s, uint64_t n, uint64_t seed)
+{
+	struct drawn d = { 0, NULL, NULL, NULL };
+	uint64_t c = 0;
+	size_t cnt = 0;
+	frs_error e;
+
+	assert_int_equal(frs_count(s, n, seed, &c, &e), FRS_OK);
+	d.xy = malloc((2 * c + 1) * sizeof *d.xy);
+	assert_non_null(d.xy);
+	assert_int_equal(frs_draw(s, n, seed, d.xy, NULL, (size_t)c, &cnt, &e),
+	    FRS_OK);
+	assert_int_equal(cnt, c);
+	d.n = cnt;
+	return d;
+}
+
+/* Whether every point of the sorted set a (na) is in the sorted b. */
+static int subset(const double *a, size_t na, const double *b, size_t nb)
+{
+	size_t j = 0;
+
+	for (size_t i = 0; i < na; i++) {
+		while (j < nb && pair_cmp(&b[2 * j], &a[2 * i]) < 0)
+			j++;
+		if (j == nb || pair_cmp(&b[2 * j], &a[2 * i]) != 0)
+			return 0;
+	}
+	return 1;
+}
+
+/* Exactly n for several maps, seeds and counts, in frs_count and
+ * frs_draw; the exact set nests with the default one (a subset of it
+ * when the default has more, else a superset). */
+static void test_exact_counts(void **state)
+{
+	static const char *const maps[] = { "blob", "ramp", "sky", "const" };
+	static const uint64_t ns[] = { 1, 37, 1024, 4099 };
+
+	(void)state;
+	for (size_t mi = 0; mi < 4; mi++) {
+		struct frs_imap m;
+		frs_sampler *ex, *def;
+		assert_int_equal(imap_load(maps[mi], 0, 0, 0, &m), 0);
+		ex = exact_sampler(&m, FRS_ALG_SORTED, 1, FRS_RULE_EXACT);
+		def = exact_sampler(&m, FRS_ALG_SORTED, 1, FRS_RULE_UNBIASED);
+		for (size_t ni = 0; ni < 4; ni++)
+			for (uint64_t seed = 1; seed <= 3; seed++) {
+				uint64_t n = ns[ni], c = 0;
+				struct drawn de, dd;
+				double *a, *b;
+				frs_error e;
+				assert_int_equal(frs_count(ex, n, seed, &c, &e),
+				    FRS_OK);
+				if (c != n)
+					print_error("%s n %llu seed %llu: %llu\n",
+					    maps[mi], (unsigned long long)n,
+					    (unsigned long long)seed,
+					    (unsigned long long)c);
+				assert_int_equal(c, n);
+				de = draw(ex, &n, 1, seed, 0);
+				dd = draw_any(def, n, seed);
+				assert_int_equal(de.n, n);
+				a = sorted_xy(&de);
+				b = sorted_xy(&dd);
+				if (dd.n >= n)
+					assert_true(subset(a, de.n, b, dd.n));
+				else
+					assert_true(subset(b, dd.n, a, de.n));
+				free(a);
+				free(b);
+				drawn_free(&de);
+				drawn_free(&dd);
+			}
+		frs_sampler_free(ex);
+		frs_sampler_free(def);
+		imap_free(&m);
+	}
+}
+
+/* The same samples for every algorithm (as sets; in order for every
+ * thread count) and as frs-sample --exact-count, also progressive, each
+ * step exact and nested. */
+static void test_exact_same(void **state)
+{
+	static const enum frs_algorithm algs[] = { FRS_ALG_SORTED,
+	    FRS_ALG_NAIVE, FRS_ALG_STACK, FRS_ALG_LEVEL1, FRS_ALG_LEVEL2 };
+	static const uint64_t steps[] = { 100, 1000, 3000 };
+	uint64_t n = 3000;
+	struct drawn d0, d;
+	double *a, *b;
+	frs_sampler *s;
+
+	(void)state;
+	s = exact_sampler(&blob, FRS_ALG_SORTED, 1, FRS_RULE_EXACT);
+	compare(s, &n, 1, 5, 1, "-i blob --exact-count");
+	compare(s, steps, 3, 6, 0, "-i blob --exact-count -j 2");
+	d0 = draw(s, &n, 1, 5, 0);
+	assert_int_equal(d0.n, n);
+	a = sorted_xy(&d0);
+	/* Progressive: each step exactly, the last the set of n. */
+	d = draw(s, steps, 3, 5, 0);
+	assert_int_equal(d.n, 3000);
+	for (size_t i = 0; i < d.n; i++)
+		assert_true(d.step[i] == (i < 100 ? 0u : i < 1000 ? 1u : 2u));
+	b = sorted_xy(&d);
+	assert_memory_equal(a, b, 2 * n * sizeof *a);
+	free(b);
+	drawn_free(&d);
+	frs_sampler_free(s);
+	for (size_t ai = 0; ai < 5; ai++) {
+		struct drawn d1;
+		s = exact_sampler(&blob, algs[ai], 1, FRS_RULE_EXACT);
+		d1 = draw(s, &n, 1, 5, 0);
+		frs_sampler_free(s);
+		s = exact_sampler(&blob, algs[ai], 3, FRS_RULE_EXACT);
+		d = draw(s, &n, 1, 5, 0);
+		frs_sampler_free(s);
+		assert_int_equal(d.n, n);
+		assert_int_equal(d1.n, n);
+		assert_memory_equal(d.xy, d1.xy, 2 * n * sizeof *d.xy);
+		b = sorted_xy(&d);
+		assert_memory_equal(a, b, 2 * n * sizeof *a);
+		free(b);
+		drawn_free(&d);
+		drawn_free(&d1);
+	}
+	free(a);
+	drawn_free(&d0);
+}
+
+/* A brute-force oracle: on a small matrix and map, every window
+ * element's key (v + u) / I, sorted; the n smallest are the exact set. */
+struct keyed {
+	double key;
+	uint64_t x, y;
+};
+
+static int key_cmp(const void *a, const void *b)
+{
+	const struct keyed *p = a, *q = b;
+
+	return p->key < q->key ? -1 : p->key > q->key;
+}
+
+static int elem_cmp(const void *a, const void *b)
+{
+	const uint64_t *p = a, *q = b;
+
+	return p[1] != q[1] ? (p[1] < q[1] ? -1 : 1) :
+	    p[0] < q[0] ? -1 : p[0] > q[0];
+}
+
+static void test_exact_oracle(void **state)
+{
+	static const uint64_t ns[] = { 1, 10, 50, 200, 1000 };
+	uint32_t *v = malloc(64 * 64 * sizeof *v);
+	struct frs_imap m;
+	struct frs_rng r;
+	frs_mask *mk;
+	frs_error e;
+
+	(void)state;
+	assert_non_null(v);
+	for (uint32_t i = 0; i < 64 * 64; i++)
+		v[i] = i;
+	frs_rng_init(&r, 77, 0);
+	for (uint32_t i = 64 * 64 - 1; i > 0; i--) {
+		uint32_t j = (uint32_t)(frs_rng_next64(&r) % (i + 1)), t = v[i];
+		v[i] = v[j];
+		v[j] = t;
+	}
+	assert_int_equal(frs_mask_wrap(&mk, v, 64, 64, &e), FRS_OK);
+	assert_int_equal(imap_alloc(&m, 8, 6), 0);
+	for (uint32_t i = 0; i < 8 * 6; i++)	/* some zeros, one bright */
+		m.v[i] = i % 7 == 3 ? 0.0 : i == 20 ? 9.0 :
+		    0.05 + frs_rng_next01(&r);
+	for (size_t ni = 0; ni < 5; ni++)
+		for (uint64_t seed = 1; seed <= 3; seed++) {
+			struct frs_options o;
+			struct frs_setup su;
+			struct drawn d;
+			struct keyed *k;
+			uint64_t n = ns[ni], nk = 0, *got, *want;
+			frs_sampler *s;
+			frs_options_init(&o);
+			o.rule = FRS_RULE_EXACT;
+			assert_int_equal(frs_sampler_new_f64(&s, mk, m.v, 8, 6, 0,
+			    &o, &e), FRS_OK);
+			assert_int_equal(api_setup(s, n, seed, &su), 0);
+			k = malloc(su.sw * su.sh * sizeof *k);
+			assert_non_null(k);
+			for (uint64_t y = 0; y < su.sh; y++)
+				for (uint64_t x = 0; x < su.sw; x++) {
+					double imp = m.v[(y / su.ns) * 8 + x / su.ns];
+					double u = frs_rand01(seed, FRS_STREAM_COIN,
+					    y * su.sw + x);
+					if (imp > 0.0)
+						k[nk++] = (struct keyed){ ((double)v[
+						    frs_matrix_index(&su, x, y)] + u) /
+						    (imp * su.iscale), x, y };
+				}
+			qsort(k, nk, sizeof *k, key_cmp);
+			assert_true(nk > n);
+			want = malloc(2 * n * sizeof *want);
+			got = malloc(2 * n * sizeof *got);
+			assert_true(want && got);
+			for (uint64_t i = 0; i < n; i++) {
+				want[2 * i] = k[i].x;
+				want[2 * i + 1] = k[i].y;
+			}
+			d = draw(s, &n, 1, seed, 0);
+			assert_int_equal(d.n, n);
+			for (uint64_t i = 0; i < n; i++) {
+				got[2 * i] = (uint64_t)(d.xy[2 * i] * (double)su.sw);
+				got[2 * i + 1] = (uint64_t)(d.xy[2 * i + 1] *
+				    (double)su.sh);
+			}
+			qsort(want, n, 2 * sizeof *want, elem_cmp);
+			qsort(got, n, 2 * sizeof *got, elem_cmp);
+			assert_memory_equal(want, got, 2 * n * sizeof *got);
+			drawn_free(&d);
+			free(want);
+			free(got);
+			free(k);
+			frs_sampler_free(s);
+		}
+	imap_free(&m);
+	frs_mask_free(mk);
+	free(v);
+}
+
+static int triple_cmp(const void *a, const void *b)
+{
+	const double *p = a, *q = b;
+	int c = pair_cmp(a, b);
+
+	return c != 0 ? c : p[2] < q[2] ? -1 : p[2] > q[2];
+}
+
+/* 3-D: exactly n, Naive's set is Sorted's, frs-sample's bytes. */
+static void test_exact3(void **state)
+{
+	static const uint64_t steps[] = { 300, 1200, 4000 };
+	struct frs_vol v;
+	struct frs_options o;
+	frs_mask *m3;
+	frs_sampler3 *s, *sn;
+	frs_error e;
+	uint64_t n = 3000, c = 0;
+	size_t k1, k2;
+	double *r1, *r2;
+
+	(void)state;
+	assert_int_equal(frs_mask_load(&m3, MATRIX3, &e), FRS_OK);
+	assert_int_equal(vol_load("blob3:sigma=0.2", 16, 16, 16, 0, &v), 0);
+	frs_options_init(&o);
+	o.rule = FRS_RULE_EXACT;
+	assert_int_equal(frs_sampler3_new_f64(&s, m3, v.v, 16, 16, 16, &o, &e),
+	    FRS_OK);
+	for (uint64_t seed = 1; seed <= 3; seed++) {
+		assert_int_equal(frs_count3(s, n, seed, &c, &e), FRS_OK);
+		assert_int_equal(c, n);
+	}
+	compare3(s, &n, 1, 5, 1, "-i blob3:sigma=0.2 -s 16 --exact-count");
+	compare3(s, steps, 3, 2, 0, "-i blob3:sigma=0.2 -s 16 --exact-count");
+	o.algorithm = FRS_ALG_NAIVE;
+	o.threads = 2;
+	assert_int_equal(frs_sampler3_new_f64(&sn, m3, v.v, 16, 16, 16, &o,
+	    &e), FRS_OK);
+	r1 = draw3(s, &n, 1, 4, 0, &k1);
+	r2 = draw3(sn, &n, 1, 4, 0, &k2);
+	assert_int_equal(k1, n);
+	assert_int_equal(k2, n);
+	qsort(r1, n, 3 * sizeof *r1, triple_cmp);
+	qsort(r2, n, 3 * sizeof *r2, triple_cmp);
+	assert_memory_equal(r1, r2, 3 * n * sizeof *r1);
+	free(r1);
+	free(r2);
+	frs_sampler3_free(s);
+	frs_sampler3_free(sn);
+	vol_free(&v);
+	frs_mask_free(m3);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -2065,6 +2385,10 @@ int main(void)
 		cmocka_unit_test(test_sampler3),
 		cmocka_unit_test(test_sampler3_errors),
 		cmocka_unit_test(test_progress),
+		cmocka_unit_test(test_exact_counts),
+		cmocka_unit_test(test_exact_same),
+		cmocka_unit_test(test_exact_oracle),
+		cmocka_unit_test(test_exact3),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -551,7 +551,7 @@ static int check_options(const struct frs_options *o, frs_error *err)
 		return arg_err(err, "options: unknown algorithm");
 	if ((unsigned)o->jitter > FRS_JIT_RANDOM)
 		return arg_err(err, "options: unknown jitter");
-	if ((unsigned)o->rule > FRS_RULE_THESIS)
+	if ((unsigned)o->rule > FRS_RULE_EXACT)
 		return arg_err(err, "options: unknown rule");
 	if ((unsigned)o->tiling > FRS_TILING_PLAIN)
 		return arg_err(err, "options: unknown tiling");
@@ -618,6 +618,7 @@ static const enum frs_algo algos[] = {
 	FRS_SORTED, FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2
 };
 
+/* FRS_RULE_EXACT is the unbiased rule with its taus moved. */
 static enum frs_rule rule_of(const struct frs_options *o)
 {
 	return o->rule == FRS_RULE_THESIS ? FRS_THESIS : FRS_UNBIASED;
@@ -639,6 +640,80 @@ int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
 	su->tiles = s->opt.tiling == FRS_TILING_PLAIN ? FRS_TILES_PLAIN :
 	    s->opt.tiling == FRS_TILING_SHUFFLED ? FRS_TILES_SHUFFLE :
 	    frs_tiles_auto(su);
+	return 0;
+}
+
+/* Elements in units of one window element side^dims each, saturated. */
+static uint64_t elements(uint64_t units, uint32_t side, unsigned dims)
+{
+	uint64_t e = units;
+
+	for (unsigned d = 0; d < dims; d++)
+		e = side != 0 && e > UINT64_MAX / side ? UINT64_MAX : e * side;
+	return e;
+}
+
+/* The exact counts' passes: Sorted's count of the window at any tau,
+ * with lists for a little more than the largest tau asked so far (the
+ * passes around one tau need one list making). */
+struct xcount {
+	const frs_sampler *s;
+	struct frs_setup su;
+	int minmap, have;
+	uint32_t block;
+	struct frs_prep view;
+};
+
+static int xcount_fn(void *ctx, double tau, uint64_t *count)
+{
+	struct xcount *x = ctx;
+	struct frs_result r;
+
+	if (!x->have || x->view.below < frs_lim_most(&x->su, tau)) {
+		if (api_mask_prep(x->s->mask, x->minmap, x->block,
+		    frs_lim_most(&x->su, tau * 1.0625), &x->view) < 0)
+			return -1;
+		x->have = 1;
+	}
+	x->su.exact = (struct frs_xtau){ .n = 1, .steps = { x->su.n },
+	    .tau = { tau } };
+	if (frs_sample(&x->su, &x->s->map, &x->view, FRS_SORTED, &x->su.n, 1,
+	    1, &r) < 0)
+		return -1;
+	*count = r.count;
+	frs_result_free(&r);
+	return 0;
+}
+
+int api_exact(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
+    struct frs_setup *su)
+{
+	struct xcount x = { s, *su, api_sorted_minmap(su), 0,
+	    api_sorted_block(su), { 0 } };
+	double tau0[16];
+	uint64_t nnz = 0;
+	unsigned passes;
+
+	if (frs_steps_check(steps, nsteps) < 0)
+		return -1;
+	for (unsigned k = 0; k < nsteps; k++)
+		tau0[k] = frs_tau(su, steps[k]);
+	for (uint64_t i = 0; i < (uint64_t)s->map.w * s->map.h; i++)
+		nnz += s->map.v[i] > 0.0;
+	if (frs_exact_taus(steps, nsteps, tau0, elements(nnz, su->ns, 2),
+	    xcount_fn, &x, &su->exact, &passes) < 0)
+		return -1;
+	su->tau = frs_tau(su, su->n);
+	return 0;
+}
+
+int api_setup_steps(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, struct frs_setup *su)
+{
+	if (api_setup(s, steps[nsteps - 1], seed, su) < 0)
+		return -1;
+	if (s->opt.rule == FRS_RULE_EXACT)
+		return api_exact(s, steps, nsteps, su);
 	return 0;
 }
 
@@ -676,7 +751,8 @@ static int begin_run(const frs_sampler *s, const uint64_t *steps,
 	minmap = a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2;
 	if ((rc = check_steps(steps, nsteps, err)) != FRS_OK)
 		return rc;
-	if (api_setup(s, steps[nsteps - 1], seed, su) < 0)
+	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
+	if (api_setup_steps(s, steps, nsteps, seed, su) < 0)
 		return lib_err(err, FRS_E_LIMIT);
 	if (a == FRS_SORTED && api_sorted_minmap(su))
 		minmap = 1;
@@ -685,7 +761,6 @@ static int begin_run(const frs_sampler *s, const uint64_t *steps,
 	if (api_mask_prep(s->mask, minmap, block, a == FRS_SORTED ?
 	    api_lists_below(su, steps, nsteps) : 0, view) < 0)
 		return lib_err(err, FRS_E_FORMAT);
-	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
 	return FRS_OK;
 }
 
@@ -1148,7 +1223,8 @@ int frs_sampler_info(const frs_sampler *s, uint64_t n, uint64_t seed,
 		return arg_err(err, "frs_sampler_info: n must not be 0");
 	if (n > MAX_N)
 		return set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
-	if (api_setup(s, n, seed, &su) < 0)
+	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
+	if (api_setup_steps(s, &n, 1, seed, &su) < 0)
 		return lib_err(err, FRS_E_LIMIT);
 	*info = (struct frs_info){ su.ns, su.sw, su.sh, su.wx, su.wy, su.tau,
 	    su.mean, su.max, frs_unique(&su) };
@@ -1279,6 +1355,9 @@ static int run3(const frs_sampler3 *s, const uint64_t *steps,
 	if (mask_prep3(s->mask, a == FRS_SORTED ? frs3_block(su) : 0,
 	    &view) < 0)
 		return lib_err(err, FRS_E_FORMAT);
+	if (s->opt.rule == FRS_RULE_EXACT &&
+	    frs3_exact(su, &s->vol, &view, steps, nsteps) < 0)
+		return lib_err(err, FRS_E_LIMIT);
 	if (frs3_sample(su, &s->vol, &view, a, steps, nsteps, count_only, r) < 0)
 		return lib_err(err, FRS_E_LIMIT);
 	return FRS_OK;

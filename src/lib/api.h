@@ -65,6 +65,14 @@ extern uint64_t api_wave;
  * frs_fail. */
 int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
     struct frs_setup *su);
+/* api_setup for steps, and with FRS_RULE_EXACT the exact taus of the
+ * steps (api_exact): the setup every run of the sampler uses. */
+int api_setup_steps(const frs_sampler *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, struct frs_setup *su);
+/* su->exact for steps (the last su->n) by Sorted's count passes, whose
+ * lists it makes in the mask; su->tau the last step's. */
+int api_exact(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
+    struct frs_setup *su);
 /* A view of the mask prepared for an implementation: the minmap and the
  * sorted lists of block (0: none) holding at least the values below
  * below (FRS_ALL_VALUES: all), made on first use and kept. */

@@ -7,6 +7,7 @@
 #include "tile.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -137,8 +138,124 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 
 double frs_tau(const struct frs_setup *s, uint64_t n)
 {
-	return (double)n * (double)s->mw * (double)s->mh /
-	    ((double)s->sw * (double)s->sh * s->imean);
+	return frs_xtau_get(&s->exact, n, (double)n * (double)s->mw *
+	    (double)s->mh / ((double)s->sw * (double)s->sh * s->imean));
+}
+
+double frs_xtau_get(const struct frs_xtau *x, uint64_t n, double dflt)
+{
+	for (unsigned k = 0; k < x->n; k++)
+		if (x->steps[k] == n)
+			return x->tau[k];
+	return dflt;
+}
+
+/* The most count passes one step's search may take (it takes a few:
+ * see frs-sample(1)); and the same-side landings after which it only
+ * bisects. */
+#define EXACT_PASSES 200
+#define EXACT_STREAK 12
+/* A bracket of this many counts or fewer is bisected: its counts are
+ * steps, no longer a line. */
+#define EXACT_BISECT 4
+
+/*
+ * The tau of exactly n from the guess t > lo, lo's count clo < n (tau 0,
+ * count 0 for the first step).  The counts grow about in proportion to
+ * tau, with a noise of about the square root of the keys crossed, so
+ * each pass aims, on the line through the bracket's ends [lo, hi] (hi
+ * unknown: the line through the origin and lo), at the middle of the
+ * count n; after two passes on the same side of n it aims past n by the
+ * square root of the miss, doubled at each further pass on that side, so
+ * that the bracket closes from both sides.  Past EXACT_STREAK such passes
+ * it bisects, and the search ends at the latest when lo and hi are
+ * neighbouring doubles, which only two keys in one ulp of tau can cause.
+ */
+static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
+    frs_count_fn count, void *ctx, double *tau, unsigned *passes)
+{
+	double hi = INFINITY;
+	uint64_t chi = 0, c;
+	int side = 0, streak = 0;
+
+	for (unsigned it = 0;; it++) {
+		double target, margin, mid;
+		int sd;
+		if (it == EXACT_PASSES)
+			return frs_fail("--exact-count: no threshold for exactly "
+			    "%llu samples after %u count passes",
+			    (unsigned long long)n, it);
+		if (count(ctx, t, &c) < 0)
+			return -1;
+		(*passes)++;
+		if (c == n) {
+			*tau = t;
+			return 0;
+		}
+		sd = c < n ? -1 : 1;
+		streak = sd == side ? streak + 1 : 1;
+		side = sd;
+		if (c < n) {
+			lo = t;
+			clo = c;
+		} else {
+			hi = t;
+			chi = c;
+		}
+		margin = streak < 2 ? 0.0 : sqrt((double)(c < n ? n - c : c - n)) *
+		    ldexp(1.0, streak - 2);
+		target = (double)n + 0.5 - (double)side * margin;
+		if (!isfinite(hi)) {
+			t = clo > 0 ? lo * (target / (double)clo) : 2.0 * lo;
+			if (!(t > lo) || !isfinite(t))
+				return frs_fail("--exact-count: no threshold "
+				    "reaches %llu samples", (unsigned long long)n);
+			continue;
+		}
+		mid = lo + (hi - lo) / 2;
+		t = lo + (hi - lo) * ((target - (double)clo) /
+		    (double)(chi - clo));
+		if (streak > EXACT_STREAK || chi - clo <= EXACT_BISECT ||
+		    !(t > lo && t < hi))
+			t = mid;
+		if (!(t > lo && t < hi))
+			return frs_fail("--exact-count: %llu elements share the "
+			    "threshold %.17g of sample %llu: no set of exactly "
+			    "%llu", (unsigned long long)(chi - clo), hi,
+			    (unsigned long long)(clo + 1), (unsigned long long)n);
+	}
+}
+
+int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
+    const double *tau0, uint64_t most, frs_count_fn count, void *ctx,
+    struct frs_xtau *x, unsigned *passes)
+{
+	double lo = 0.0;
+	uint64_t clo = 0;
+
+	memset(x, 0, sizeof *x);
+	*passes = 0;
+	if (frs_steps_check(steps, nsteps) < 0)
+		return -1;
+	if (steps[nsteps - 1] > most)
+		return frs_fail("--exact-count: the window has %llu elements of "
+		    "non-zero importance, fewer than %llu",
+		    (unsigned long long)most,
+		    (unsigned long long)steps[nsteps - 1]);
+	for (unsigned k = 0; k < nsteps; k++) {
+		double t = tau0[k], tk = 0.0;
+		if (!(t > lo))
+			t = clo > 0 ? lo * (double)steps[k] / (double)clo : 1.0;
+		if (exact_one(steps[k], lo, clo, t, count, ctx, &tk, passes) < 0)
+			return -1;
+		x->steps[k] = steps[k];
+		x->tau[k] = tk;
+		lo = tk;
+		clo = steps[k];
+	}
+	x->n = nsteps;
+	x->passes = *passes;
+	return 0;
 }
 
 double frs_unique(const struct frs_setup *s)

@@ -129,7 +129,10 @@ enum frs_jitter_mode {
 };
 enum frs_rule_mode {
 	FRS_RULE_UNBIASED = 0,	/* n I / sum I samples per pixel */
-	FRS_RULE_THESIS		/* v < T, thesis Eq. 4.14 */
+	FRS_RULE_THESIS,	/* v < T, thesis Eq. 4.14 */
+	FRS_RULE_EXACT		/* since 1.2: the unbiased rule with tau
+				   moved so that exactly n samples pass
+				   (each step of progressive sampling) */
 };
 /* Since 1.1 (0.4.0): how a window larger than the mask tiles it. */
 enum frs_tiling_mode {

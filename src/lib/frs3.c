@@ -116,8 +116,9 @@ int frs3_setup(struct frs3_setup *s, const struct frs_vol *vol,
 
 double frs3_tau(const struct frs3_setup *s, uint64_t n)
 {
-	return (double)n * ((double)s->mw * s->mh * s->md) /
-	    ((double)s->sw * (double)s->sh * (double)s->sd * s->imean);
+	return frs_xtau_get(&s->exact, n, (double)n * ((double)s->mw * s->mh *
+	    s->md) / ((double)s->sw * (double)s->sh * (double)s->sd *
+	    s->imean));
 }
 
 double frs3_unique(const struct frs3_setup *s)
@@ -602,4 +603,53 @@ double frs3_pdf(const struct frs3_setup *s, const struct frs_vol *vol,
 {
 	uint64_t x = e->x / s->ns, y = e->y / s->ns, z = e->z / s->ns;
 	return vol->v[(z * vol->h + y) * vol->w + x] / s->mean;
+}
+
+/* ---- exact counts ------------------------------------------------- */
+
+struct xcount3 {
+	struct frs3_setup s;
+	const struct frs_vol *vol;
+	const struct frs3_prep *p;
+};
+
+static int xcount3_fn(void *ctx, double tau, uint64_t *count)
+{
+	struct xcount3 *x = ctx;
+	struct frs3_result r;
+
+	x->s.exact = (struct frs_xtau){ .n = 1, .steps = { x->s.n },
+	    .tau = { tau } };
+	if (frs3_sample(&x->s, x->vol, x->p, x->p->block ? FRS_SORTED :
+	    FRS_NAIVE, &x->s.n, 1, 1, &r) < 0)
+		return -1;
+	*count = r.count;
+	frs3_result_free(&r);
+	return 0;
+}
+
+int frs3_exact(struct frs3_setup *s, const struct frs_vol *vol,
+    const struct frs3_prep *p, const uint64_t *steps, unsigned nsteps)
+{
+	struct xcount3 x = { *s, vol, p };
+	double tau0[16];
+	uint64_t nnz = 0, most;
+	unsigned passes;
+
+	if (s->rule != FRS_UNBIASED)
+		return frs_fail("--exact-count needs the unbiased threshold rule");
+	if (frs_steps_check(steps, nsteps) < 0)
+		return -1;
+	for (unsigned k = 0; k < nsteps; k++)
+		tau0[k] = frs3_tau(s, steps[k]);
+	for (uint64_t i = 0; i < (uint64_t)vol->w * vol->h * vol->d; i++)
+		nnz += vol->v[i] > 0.0;
+	most = nnz;
+	for (int d = 0; d < 3; d++)
+		most = most > UINT64_MAX / s->ns ? UINT64_MAX : most * s->ns;
+	if (frs_exact_taus(steps, nsteps, tau0, most, xcount3_fn, &x,
+	    &s->exact, &passes) < 0)
+		return -1;
+	s->tau = frs3_tau(s, s->n);
+	return 0;
 }

@@ -45,6 +45,7 @@ struct frs3_setup {
 	enum frs_jitter jitter;
 	enum frs_tiling tiles;	/* shuffled: 48 symmetries of a cube */
 	double iscale, imean;	/* as in struct frs_setup */
+	struct frs_xtau exact;	/* as in struct frs_setup */
 };
 
 /* The volume must be validated (finite, >= 0, not all zero). */
@@ -70,6 +71,11 @@ struct frs3_prep {
  * sides, which must be powers of two); b = 0 prepares nothing. */
 int frs3_prepare(struct frs3_prep *p, const struct frs_matrix *m, uint32_t b);
 void frs3_prep_free(struct frs3_prep *p);
+/* s->exact for steps (the last s->n, the rule unbiased) by count passes
+ * over the window with p (Sorted when p has lists, else Naive); s->tau
+ * the last step's.  See frs_exact_taus. */
+int frs3_exact(struct frs3_setup *s, const struct frs_vol *vol,
+    const struct frs3_prep *p, const uint64_t *steps, unsigned nsteps);
 
 struct frs3_elem {
 	uint32_t x, y, z;

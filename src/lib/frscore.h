@@ -42,6 +42,18 @@ enum frs_rule { FRS_UNBIASED, FRS_THESIS };
  * repetition. */
 enum frs_tiling { FRS_TILES_PLAIN, FRS_TILES_SHUFFLE };
 
+/* Exact counts (frs-sample --exact-count): the tau of each step moved so
+ * that exactly steps[k] elements of the window pass.  Under the unbiased
+ * rule an element of value v and coin u passes when v + u < tau I, its
+ * key (v + u) / I is continuous, and tau[k] is the steps[k]-th smallest
+ * key over the window (frs_exact_taus).  n 0: the taus of frs_tau. */
+struct frs_xtau {
+	unsigned n;
+	uint64_t steps[16];
+	double tau[16];
+	unsigned passes;	/* count passes the search made */
+};
+
 const char *frs_algo_name(enum frs_algo a);
 int frs_algo_parse(const char *s, enum frs_algo *a);
 
@@ -65,13 +77,32 @@ struct frs_setup {
 	 * (denormal maps) or the mean (a sum past DBL_MAX) would overflow;
 	 * imean is the mean of I * iscale, which tau uses. */
 	double iscale, imean;
+	struct frs_xtau exact;	/* exact counts; n 0 unless asked */
 };
 
 /* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
-/* tau for another count with the same window (progressive steps). */
+/* tau for another count with the same window (progressive steps); the
+ * exact tau of a step when s->exact has it. */
 double frs_tau(const struct frs_setup *s, uint64_t n);
+/* x's tau for the count n, or dflt when x has none. */
+double frs_xtau_get(const struct frs_xtau *x, uint64_t n, double dflt);
+/* The count of a run at threshold scale tau; -1 after frs_fail. */
+typedef int (*frs_count_fn)(void *ctx, double tau, uint64_t *count);
+/*
+ * The exact taus of steps (increasing, 1 to 16) into x: for each step the
+ * tau at which count(tau) is exactly steps[k], found by a safeguarded
+ * secant bisection over the count passes from the guess tau0[k]
+ * (frs_tau's).  The counts must not decrease with tau, and most is the
+ * count of a tau that passes everything (the window elements of non-zero
+ * importance): more fails.  Two keys in one double (an ulp of tau apart)
+ * would make the count jump past steps[k]; that fails too.  *passes gets
+ * the number of count passes made.
+ */
+int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
+    const double *tau0, uint64_t most, frs_count_fn count, void *ctx,
+    struct frs_xtau *x, unsigned *passes);
 /* Samples a matrix gives without repetition: S_M^2 / sigma^2 (Eq. 4.17). */
 double frs_unique(const struct frs_setup *s);
 /* --tiles auto: shuffled when n fits the matrix without repetition
