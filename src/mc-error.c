@@ -26,9 +26,11 @@ static const char usage[] =
     "                    with --env)\n"
     "      --env MAP     env's environment map, equirectangular: PNG,\n"
     "                    OpenEXR or a spec (default data/sunset.exr)\n"
-    "      --sets N      split every file into sets of N points\n"
-    "      --group G     a row per point count (n, default), per input\n"
-    "                    file (file) or for all sets (all)\n"
+    "      --sets N      split every file into sets of N points (a file\n"
+    "                    with a set column is split by it; N must agree)\n"
+    "      --group G     a row per point count and file (n, default), per\n"
+    "                    input file (file) or for all sets (all); rows\n"
+    "                    of several files have a file column\n"
     "      --weights     require a pdf column and divide by it\n"
     "      --no-pdf      ignore a pdf column: the plain mean\n"
     "  -o, --output F    output (default standard output)\n"
@@ -201,7 +203,7 @@ static int add_file(struct pt_sets *s, const char *path, size_t per,
 			if (!(d > 0) || !isfinite(d))
 				return frs_fail("%s: point %zu: pdf %g is not "
 				    "positive and finite", path,
-				    (j - first) * s->set[j].n + i + 1, d);
+				    s->set[j].first + i + 1, d);
 		}
 	return 0;
 }
@@ -220,9 +222,16 @@ static double estimate(const struct integrand *g, const struct pt_set *s,
 	return sum / (double)s->n;
 }
 
+/* File names in a table: tabs and newlines would break its columns. */
+static void put_name(FILE *fp, const char *name)
+{
+	for (; *name; name++)
+		fputc(*name == '\t' || *name == '\n' ? '?' : *name, fp);
+}
+
 /* One row per group of sets, in order of first appearance. */
 static void rows(FILE *fp, const struct integrand *g, enum pt_group grp,
-    const struct pt_sets *s, const double *est, char *done)
+    const struct pt_sets *s, const double *est, char *done, int files)
 {
 	double exact = g->exact();
 
@@ -241,28 +250,34 @@ static void rows(FILE *fp, const struct integrand *g, enum pt_group grp,
 			done[j] = 1;
 		}
 		rmse = sqrt(s2 / m);
-		fprintf(fp, "%s\t%.10g\t%.0f\t%.9g\t%.9g\t%.9g\t%.9g\n",
+		fprintf(fp, "%s\t%.10g\t%.0f\t%.9g\t%.9g\t%.9g\t%.9g",
 		    g->name, sn / m, m, se / m, sa / m, rmse,
 		    rmse / fabs(exact));
+		if (files) {
+			fputc('\t', fp);
+			put_name(fp, s->set[i].file);
+		}
+		fputc('\n', fp);
 	}
 }
 
 static void table(FILE *fp, unsigned mask, enum pt_group grp,
-    const struct pt_sets *s, enum pdfmode mode)
+    const struct pt_sets *s, enum pdfmode mode, size_t nfiles)
 {
+	int files = pt_group_files(grp, nfiles);
 	double *est = calloc(s->n, sizeof *est);
 	char *done = calloc(s->n, 1);
 
 	if (est == NULL || done == NULL)
 		cli_die("no memory for %zu sets", s->n);
 	fprintf(fp, "integrand\tn\tsets\testimate_mean\tabs_error\trmse\t"
-	    "rel_rmse\n");
+	    "rel_rmse%s\n", files ? "\tfile" : "");
 	for (size_t k = 0; k < NFUN; k++) {
 		if (!(mask & 1u << k))
 			continue;
 		for (size_t i = 0; i < s->n; i++)
 			est[i] = estimate(&fun[k], &s->set[i], mode);
-		rows(fp, &fun[k], grp, s, est, done);
+		rows(fp, &fun[k], grp, s, est, done, files);
 	}
 	free(est);
 	free(done);
@@ -345,7 +360,7 @@ int main(int argc, char **argv)
 			cli_die_lib();
 	if (outfile_open(&of, cli.out, 0) < 0)
 		cli_die_lib();
-	table(of.fp, mask, grp, &s, mode);
+	table(of.fp, mask, grp, &s, mode, (size_t)(argc - optind));
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
 	pt_sets_free(&s);

@@ -11,17 +11,23 @@
 #include "cli.h"
 #include "imap.h"
 #include "outfile.h"
+#include "ptsets.h"
 #include "ptsio.h"
 #include "raster.h"
 
 static const char usage[] =
     "usage: pts-render [-q] [-s SIZE] [-r R] [-i MAP] [--color] [-o FILE] [PTS]\n"
     "                  [--log] [--srgb] [--equirect] [--format png|pnm]\n"
-    "                  [--axes xy|xz|yz]\n"
+    "                  [--axes xy|xz|yz] [--set K [--sets N]]\n"
     "\n"
     "  PTS                 a point file, binary or text (default: standard\n"
     "                      input, also '-'); x, y are its first two\n"
     "                      coordinates, y growing downward\n"
+    "      --set K         draw set K only (from 0): the points whose set\n"
+    "                      column is K, or with --sets N the K-th run of\n"
+    "                      N points of a file without one\n"
+    "      --sets N        sets of N points, for --set (a set column must\n"
+    "                      agree)\n"
     "      --axes AB       the coordinates drawn across and down: xy\n"
     "                      (default), or xz or yz of a 3-D (or higher) set\n"
     "  -s, --size SIZE     image size, N (NxN) or WxH (default 512)\n"
@@ -48,7 +54,7 @@ static const char usage[] =
 
 enum {
 	OPT_LOG = OPT_FIRST_PRIVATE, OPT_COLOR, OPT_SRGB, OPT_EQUIRECT,
-	OPT_FORMAT, OPT_AXES
+	OPT_FORMAT, OPT_AXES, OPT_SET, OPT_SETS
 };
 
 static const struct option longopts[] = {
@@ -62,6 +68,8 @@ static const struct option longopts[] = {
 	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
 	{ "format", required_argument, NULL, OPT_FORMAT },
 	{ "axes", required_argument, NULL, OPT_AXES },
+	{ "set", required_argument, NULL, OPT_SET },
+	{ "sets", required_argument, NULL, OPT_SETS },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
@@ -100,6 +108,33 @@ static void parse_axes(const char *s, unsigned a[2])
 	cli_usage_error("--axes: '%s' is not xy, xz or yz", s);
 }
 
+/* --set K: the records of set K (pt_split). */
+static void pick_set(const struct frs_points *p, const char *name,
+    size_t per, uint64_t set, size_t *first, size_t *count)
+{
+	struct pt_range *rg;
+	size_t k;
+
+	if (pts_column(p, PTS_COL_SET) < 0 && per == 0)
+		cli_die("%s: --set %llu: the points have no set column; give "
+		    "--sets N for sets of N points", name,
+		    (unsigned long long)set);
+	if (pt_split(p, name, per, &rg, &k) < 0)
+		cli_die_lib();
+	for (size_t i = 0; i < k; i++)
+		if (rg[i].id == set) {
+			*first = rg[i].first, *count = rg[i].n;
+			free(rg);
+			return;
+		}
+	free(rg);
+	if (pts_column(p, PTS_COL_SET) >= 0)
+		cli_die("%s: --set %llu: no point has that set", name,
+		    (unsigned long long)set);
+	cli_die("%s: --set %llu: the file has %zu sets of %zu points", name,
+	    (unsigned long long)set, k, per);
+}
+
 int main(int argc, char **argv)
 {
 	const char *in = "-", *imp = NULL, *name;
@@ -113,7 +148,9 @@ int main(int argc, char **argv)
 	size_t ncol;
 	unsigned axis[2] = { 0, 1 };
 	const char *axes = "xy";
-	int rc;
+	int rc, have_set = 0;
+	uint64_t set = 0;
+	size_t per = 0, first = 0, count;
 
 	cli_init("pts-render", usage);
 	while ((c = getopt_long(argc, argv, "s:r:i:" CLI_COMMON_SHORTOPTS,
@@ -144,6 +181,14 @@ int main(int argc, char **argv)
 			parse_axes(optarg, axis);
 			axes = optarg;
 			break;
+		case OPT_SET:
+			set = cli_u64("--set", optarg, 0, (uint64_t)1 << 53);
+			have_set = 1;
+			break;
+		case OPT_SETS:
+			per = (size_t)cli_u64("--sets", optarg, 1,
+			    (uint64_t)1 << 40);
+			break;
 		case OPT_FORMAT:
 			if (strcmp(optarg, "png") == 0)
 				format = FMT_PNG;
@@ -160,6 +205,8 @@ int main(int argc, char **argv)
 	}
 	if (argc - optind > 1)
 		cli_usage_error("one point file at most");
+	if (per && !have_set)
+		cli_usage_error("--sets N: give --set K, the set to draw");
 	if (argc - optind == 1)
 		in = argv[optind];
 	if ((uint64_t)w * h > IMAP_MAX_PIXELS)
@@ -201,13 +248,16 @@ int main(int argc, char **argv)
 		imap_free(&m);
 	}
 
+	count = p.n;
+	if (have_set)
+		pick_set(&p, name, per, set, &first, &count);
 	ncol = (size_t)p.dims + p.extra;
-	for (size_t k = 0; k < p.n; k++) {
-		const double *x = p.x + k * ncol;
+	for (size_t k = 0; k < count; k++) {
+		const double *x = p.x + (first + k) * ncol;
 		uint8_t ink[3] = { 0, 0, 0 };
 
 		if (color)
-			raster_ramp(k, p.n, ink);
+			raster_ramp(k, count, ink);
 		raster_disc(&r, x[axis[0]] * w, x[axis[1]] * h, rad, ink);
 	}
 	pts_free(&p);

@@ -63,8 +63,12 @@ void pt_sets_free(struct pt_sets *s);
 enum pt_group { PT_GROUP_N, PT_GROUP_FILE, PT_GROUP_ALL };
 /* "n", "file" or "all"; -1 for anything else. */
 int pt_group_parse(const char *s);
-/* Sets a and b go in one row: the same count, file, or always. */
+/* Sets a and b go in one row: the same count in the same file, the same
+ * file, or always (sets of several files merge only so). */
 int pt_same_group(enum pt_group g, const struct pt_set *a,
     const struct pt_set *b);
+/* Whether the rows of g carry a file column: g is file, or n with sets
+ * from more than one file (nfiles). */
+int pt_group_files(enum pt_group g, size_t nfiles);
 
 #endif
