@@ -42,10 +42,11 @@ static const char usage[] =
     "      --sets N      split every file into sets of N points (a file\n"
     "                    with a set column is split by it; N must agree)\n"
     "      --per-set     a row per set instead of one per point count\n"
-    "      --group G     a row per point count and file (n, default), per\n"
+    "      --group G     a row per point count over all files (n), per\n"
     "                    input file (file) or for all sets (all); n is\n"
     "                    then the mean point count, e.g. of frs-sample\n"
-    "                    sets; rows of several files have a file column\n"
+    "                    sets; default a row per point count and file,\n"
+    "                    with a file column for several files\n"
     "  -S, --seed N      seed of the random shapes (default 1)\n"
     "  -j, --threads N   threads (default: all cores)\n"
     "  -o, --output F    output (default standard output)\n"
@@ -221,7 +222,7 @@ int main(int argc, char **argv)
 {
 	struct disc_opts o = { .cls = DISC_STAR };
 	int c, have_grid = 0, have_shapes = 0, per_set = 0;
-	enum pt_group group = PT_GROUP_N;
+	enum pt_group group = PT_GROUP_NFILE;
 	size_t per = 0, nsets;
 	struct pt_sets ps = { 0 };
 	const struct pt_set *sets;

@@ -28,9 +28,10 @@ static const char usage[] =
     "                    OpenEXR or a spec (default data/sunset.exr)\n"
     "      --sets N      split every file into sets of N points (a file\n"
     "                    with a set column is split by it; N must agree)\n"
-    "      --group G     a row per point count and file (n, default), per\n"
-    "                    input file (file) or for all sets (all); rows\n"
-    "                    of several files have a file column\n"
+    "      --group G     a row per point count over all files (n), per\n"
+    "                    input file (file) or for all sets (all);\n"
+    "                    default a row per point count and file, with a\n"
+    "                    file column for several files\n"
     "      --weights     require a pdf column and divide by it\n"
     "      --no-pdf      ignore a pdf column: the plain mean\n"
     "  -o, --output F    output (default standard output)\n"
@@ -319,7 +320,7 @@ static enum pt_group parse_group(const char *arg)
 int main(int argc, char **argv)
 {
 	unsigned mask = 0;
-	enum pt_group grp = PT_GROUP_N;
+	enum pt_group grp = PT_GROUP_NFILE;
 	enum pdfmode mode = PDF_AUTO;
 	int c, weights = 0, nopdf = 0;
 	const char *env = NULL;

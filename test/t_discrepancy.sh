@@ -39,6 +39,11 @@ discrepancy -c star --exact "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/g"
     [ "$(col file "$T/g" 1) $(col file "$T/g" 3)" = "$T/small.pts $T/h.pts" ] &&
     [ "$(head -n 1 "$T/g" | cut -f 10)" = file ] &&
     ok "several files: a row each, with a file column" || nok "rows per file: $(cat "$T/g")"
+# --group n asks for the rows per point count over all files.
+discrepancy -c star --exact --group n "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/gn"
+[ "$(col n "$T/gn" 1) $(col n "$T/gn" 2) $(col sets "$T/gn" 2) $(wc -l <"$T/gn")" = "64 256 2 3" ] &&
+    [ "$(head -n 1 "$T/gn" | cut -f 10)" = "" ] &&
+    ok "--group n: a row per point count over the files" || nok "--group n: $(cat "$T/gn")"
 # One file with a set column of sets of 64, 256 and 256 points: a row per
 # point count, and no file column.
 { echo '#pts dims=2 extra=1 count=0 version=2 names=set'

@@ -114,6 +114,10 @@ mc-error -f disc --sets 256 "$T/rand.pts" "$T/r3.pts" >"$T/gn"
 [ "$(wc -l <"$T/gn")" -eq 3 ] && [ "$(col sets "$T/gn") $(col sets "$T/gn" 2)" = "200 1" ] &&
     [ "$(col file "$T/gn") $(col file "$T/gn" 2)" = "$T/rand.pts $T/r3.pts" ] &&
     ok "--group n, two files: a row each, with the file" || nok "--group n: $(cat "$T/gn")"
+mc-error -f disc --sets 256 --group n "$T/rand.pts" "$T/r3.pts" >"$T/gn2"
+[ "$(wc -l <"$T/gn2")" -eq 2 ] && [ "$(col sets "$T/gn2")" = 201 ] &&
+    [ "$(head -n 1 "$T/gn2" | cut -f 8)" = "" ] &&
+    ok "--group n: sets of equal size together over the files" || nok "--group n: $(cat "$T/gn2")"
 [ "$(head -n 1 "$T/d" | cut -f 8)" = "" ] && ok "one file: no file column" ||
     nok "one file: $(head -n 1 "$T/d")"
 mc-error -f disc --group all "$T/grid.txt" "$T/r3.pts" >"$T/ga"

@@ -215,7 +215,8 @@ int pt_same_group(enum pt_group g, const struct pt_set *a,
     const struct pt_set *b)
 {
 	switch (g) {
-	case PT_GROUP_N: return a->n == b->n && a->file == b->file;
+	case PT_GROUP_N: return a->n == b->n;
+	case PT_GROUP_NFILE: return a->n == b->n && a->file == b->file;
 	case PT_GROUP_FILE: return a->file == b->file;
 	default: return 1;
 	}
@@ -223,5 +224,5 @@ int pt_same_group(enum pt_group g, const struct pt_set *a,
 
 int pt_group_files(enum pt_group g, size_t nfiles)
 {
-	return g == PT_GROUP_FILE || (g == PT_GROUP_N && nfiles > 1);
+	return g == PT_GROUP_FILE || (g == PT_GROUP_NFILE && nfiles > 1);
 }

@@ -59,16 +59,18 @@ struct pt_sets {
 int pt_sets_add(struct pt_sets *s, const char *path, size_t per);
 void pt_sets_free(struct pt_sets *s);
 
-/* --group (discrepancy, mc-error): which sets one table row sums up. */
-enum pt_group { PT_GROUP_N, PT_GROUP_FILE, PT_GROUP_ALL };
+/* --group (discrepancy, mc-error): which sets one table row sums up.
+ * The default, PT_GROUP_NFILE, has no name: the sets of one count in one
+ * file, so that several files are never merged unless asked. */
+enum pt_group { PT_GROUP_N, PT_GROUP_FILE, PT_GROUP_ALL, PT_GROUP_NFILE };
 /* "n", "file" or "all"; -1 for anything else. */
 int pt_group_parse(const char *s);
-/* Sets a and b go in one row: the same count in the same file, the same
- * file, or always (sets of several files merge only so). */
+/* Sets a and b go in one row: the same count (n), the same file, always
+ * (all), or the same count in the same file (the default). */
 int pt_same_group(enum pt_group g, const struct pt_set *a,
     const struct pt_set *b);
-/* Whether the rows of g carry a file column: g is file, or n with sets
- * from more than one file (nfiles). */
+/* Whether the rows of g carry a file column: g is file, or the default
+ * with sets from more than one file (nfiles). */
 int pt_group_files(enum pt_group g, size_t nfiles);
 
 #endif
