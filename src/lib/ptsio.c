@@ -102,9 +102,13 @@ static int add_name(char (*names)[PTS_NAMELEN], unsigned *nn,
 		    "a column name longer than 31 characters", "");
 	memcpy(buf, s, len);
 	buf[len] = '\0';
-	if (!pts_name_ok(buf))
-		return name_fail(name, line, "bad column name ", line ? buf :
+	if (!pts_name_ok(buf)) {
+		int shown = line != 0;	/* text, and printable */
+		for (size_t i = 0; i < len; i++)
+			shown &= isprint((unsigned char)buf[i]) != 0;
+		return name_fail(name, line, "bad column name ", shown ? buf :
 		    "(not of A-Z, a-z, 0-9 and _)");
+	}
 	for (unsigned j = 0; j < *nn; j++)
 		if (strcmp(names[j], buf) == 0)
 			return name_fail(name, line, "column name given twice: ",
