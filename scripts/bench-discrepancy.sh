@@ -55,7 +55,7 @@ timerep() {
 # The last row's column C of a discrepancy table.
 field() { tail -n 1 "$1" | cut -f "$2"; }
 # Points in one of M sets of FILE (regular and jittered round n).
-perset() { echo $(( ($(wc -c <"$1") - 32) / 16 / $2 )); }
+perset() { echo $(( $(od -A n -t u8 -j 24 -N 8 "$1" | tr -d ' ') / $2 )); }
 
 # ---------------------------------------------------------------- (0)
 # The exact L2 star D2 alone (issue 22): ours (--exact --d2-only) against
@@ -120,21 +120,22 @@ for dn in $(for e in $Z2; do echo 2:$e; done; for e in $Z3; do echo 3:$e; done);
 	fi
 	be=- bd=-
 	if [ -n "$BDISC" ]; then
+		pts_v1 "$f" "$T/zb.pts"	# the base reads version 1 only
 		if { [ $d = 2 ] && [ $n -le 65536 ]; } || { [ $d = 3 ] && [ $n -le 4096 ]; }; then
-			timerep "$T/b" "$BDISC" -q -j 1 --exact "$f"
+			timerep "$T/b" "$BDISC" -q -j 1 --exact "$T/zb.pts"
 			be=$SEC
 		fi
 		pred=$(awk -v r="$bprev" -v a="$bnprev" -v n=$n -v d=$d \
 		    'BEGIN { print r == "" || d == 2 ? 0 : r * (n / a) ^ 2 }')
 		if awk -v p="$pred" -v l=$BASELIM 'BEGIN { exit !(p <= l) }' &&
-		    "$BDISC" -q -j 1 --exact --grid 2 "$f" >"$T/b" 2>/dev/null; then
-			timerep "$T/b" "$BDISC" -q -j 1 --exact --grid 2 "$f"
+		    "$BDISC" -q -j 1 --exact --grid 2 "$T/zb.pts" >"$T/b" 2>/dev/null; then
+			timerep "$T/b" "$BDISC" -q -j 1 --exact --grid 2 "$T/zb.pts"
 			bd=$SEC
 			[ $d = 3 ] && bprev=$SEC bnprev=$n
 		else
 			# refused at once (its limit), or too slow to run
 			rc=0
-			timeout 5 "$BDISC" -q -j 1 --exact --grid 2 "$f" \
+			timeout 5 "$BDISC" -q -j 1 --exact --grid 2 "$T/zb.pts" \
 			    >/dev/null 2>&1 || rc=$?
 			if [ $rc = 1 ]; then bd=refused; else
 				bd="~$(awk -v p="$pred" 'BEGIN { printf "%.0f", p }')"

@@ -82,6 +82,14 @@ baseline_build() {
 	echo "$_bd/src/build/$_bv/bin"
 }
 
+# pts_v1 IN OUT: OUT a copy of the point file IN, of pts(5) version 2
+# without extra columns, as version 1 (the same bytes but the version),
+# for a baseline from before version 2.
+pts_v1() {
+	cp "$1" "$2" &&
+	    printf '\001' | dd of="$2" bs=1 seek=8 conv=notrunc 2>/dev/null
+}
+
 # bench_sizes: MAPS and NS (log2 of the counts) of the frs-sample and
 # hsw-sample tables; fewer with BENCH_QUICK.
 bench_sizes() {

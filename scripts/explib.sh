@@ -245,23 +245,45 @@ mean_points() {
 }
 
 # split_frs DIR ARGS...: the sets of "frs-sample ARGS" (with --sets) as
-# per-set text files DIR/s00001.txt, ... (each with its header line, so
-# extra columns keep their meaning), listed.  FRS sets vary in size with
-# the seed: a --count-only run of the same ARGS gives the sizes.
+# per-set text files DIR/s00001.txt, ... (set i in s<i+1>, each with its
+# header line, so extra columns keep their names), listed.  FRS sets vary
+# in size with the seed: the set column of the output (pts(5)) tells
+# them apart; it is left out of the files.
 split_frs() {
 	sdir=$1
 	shift
 	mkdir -p "$sdir"
-	frs-sample -q "$@" --count-only >"$sdir/counts"
 	frs-sample -q "$@" -T |
-	    awk -v dir="$sdir" 'NR == FNR { c[++k] = $1; next }
-		/^#pts / { h = $1 " " $2 " " $3; next }	# dims, extra
+	    awk -v dir="$sdir" '
+		/^#pts / {	# dims and names; the set column is sc (0: none)
+			for (i = 2; i <= NF; i++) {
+				split($i, kv, "=")
+				if (kv[1] == "dims") d = kv[2]
+				if (kv[1] == "names") nn = split(kv[2], nm, ",")
+			}
+			sc = 0
+			keep = ""
+			for (i = 1; i <= nn; i++)
+				if (nm[i] == "set") sc = d + i
+				else keep = keep (keep == "" ? "" : ",") nm[i]
+			h = "#pts dims=" d " extra=" (nn - (sc > 0)) " version=2"
+			if (keep != "") h = h " names=" keep
+			next }
 		/^#/ { next }
-		{ while (left == 0) { s++; left = c[s]
-		      f = sprintf("%s/s%05d.txt", dir, s)
-		      if (h != "") print h " count=" left > f }
-		  print > f; left--
-		  if (left == 0) close(f) }' "$sdir/counts" -
+		{ s = sc ? $sc + 1 : 1
+		  if (s != cur) {
+			if (f != "") close(f)
+			cur = s
+			f = sprintf("%s/s%05d.txt", dir, s)
+			print h > f
+		  }
+		  if (sc) {
+			l = ""
+			for (i = 1; i <= NF; i++)
+				if (i != sc) l = l (l == "" ? "" : " ") $i
+			print l > f
+		  } else
+			print > f }'
 	ls "$sdir"/s*.txt
 }
 

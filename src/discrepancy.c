@@ -39,11 +39,14 @@ static const char usage[] =
     "      --d2-only     D2 alone (with --exact: no exact Dinf);\n"
     "                    the Dinf columns read nan\n"
     "      --dinf-only   Dinf alone; the D2 columns read nan\n"
-    "      --sets N      split every file into sets of N points\n"
+    "      --sets N      split every file into sets of N points (a file\n"
+    "                    with a set column is split by it; N must agree)\n"
     "      --per-set     a row per set instead of one per point count\n"
-    "      --group G     a row per point count (n, default), per input\n"
-    "                    file (file) or for all sets (all); n is then\n"
-    "                    the mean point count, e.g. of frs-sample sets\n"
+    "      --group G     a row per point count over all files (n), per\n"
+    "                    input file (file) or for all sets (all); n is\n"
+    "                    then the mean point count, e.g. of frs-sample\n"
+    "                    sets; default a row per point count and file,\n"
+    "                    with a file column for several files\n"
     "  -S, --seed N      seed of the random shapes (default 1)\n"
     "  -j, --threads N   threads (default: all cores)\n"
     "  -o, --output F    output (default standard output)\n"
@@ -139,14 +142,14 @@ static void per_set_rows(FILE *fp, const struct disc_opts *o,
  * n is the mean point count of the group. */
 static void group_rows(FILE *fp, const struct disc_opts *o, enum pt_group g,
     const struct pt_set *sets, const struct disc_result *res, size_t nsets,
-    const char *meth, double tests)
+    const char *meth, double tests, int files)
 {
 	char *done = calloc(nsets, 1);
 
 	if (done == NULL)
 		cli_die("no memory");
 	fprintf(fp, "class\tn\tsets\tD2\tD2_se\tDinf\tDinf_mean\tshapes\t"
-	    "method\n");
+	    "method%s\n", files ? "\tfile" : "");
 	for (size_t i = 0; i < nsets; i++) {
 		double s1 = 0, c1 = 0, smax = 0, sinf = 0, m = 0, var = 0;
 		double sn = 0;
@@ -179,7 +182,12 @@ static void group_rows(FILE *fp, const struct disc_opts *o, enum pt_group g,
 		put_value(fp, smax, o->no_dinf);
 		fputc('\t', fp);
 		put_value(fp, sinf / m, o->no_dinf);
-		fprintf(fp, "\t%.17g\t%s\n", tests, meth);
+		fprintf(fp, "\t%.17g\t%s", tests, meth);
+		if (files) {
+			fputc('\t', fp);
+			put_name(fp, sets[i].file);
+		}
+		fputc('\n', fp);
 	}
 	free(done);
 }
@@ -214,7 +222,7 @@ int main(int argc, char **argv)
 {
 	struct disc_opts o = { .cls = DISC_STAR };
 	int c, have_grid = 0, have_shapes = 0, per_set = 0;
-	enum pt_group group = PT_GROUP_N;
+	enum pt_group group = PT_GROUP_NFILE;
 	size_t per = 0, nsets;
 	struct pt_sets ps = { 0 };
 	const struct pt_set *sets;
@@ -324,7 +332,8 @@ int main(int argc, char **argv)
 	if (per_set)
 		per_set_rows(of.fp, &o, sets, res, nsets, meth, tests);
 	else
-		group_rows(of.fp, &o, group, sets, res, nsets, meth, tests);
+		group_rows(of.fp, &o, group, sets, res, nsets, meth, tests,
+		    pt_group_files(group, (size_t)(argc - optind)));
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
 	pt_sets_free(&ps);

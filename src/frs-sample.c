@@ -60,8 +60,8 @@ static const char usage[] =
     "                       the N of smallest (M + u) / I, a subset or\n"
     "                       superset of the default set (unbiased rule)\n"
     "      --sets M         write M sets one after another, set i made\n"
-    "                       with seed S+i (default 1; not with\n"
-    "                       --progressive)\n"
+    "                       with seed S+i (default 1); M > 1 adds a\n"
+    "                       column, the set i\n"
     "  -s, --size WxH       size at which procedural maps are evaluated\n"
     "                       (default 128x128), or files resampled;\n"
     "                       N or WxHxD for volumes (default 32^3)\n"
@@ -246,9 +246,6 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 	} else if (have_n && n != o->steps[o->nsteps - 1]) {
 		cli_usage_error("-n %llu differs from the last progressive count",
 		    (unsigned long long)n);
-	} else if (o->sets > 1) {
-		cli_usage_error("--sets and --progressive cannot be combined "
-		    "(the step column would not tell the sets apart)");
 	}
 	n = o->steps[o->nsteps - 1];
 	if (o->sets > SETS_MAX_TOTAL / n)
@@ -326,12 +323,28 @@ static void sample_cl(struct ocl *ocl, const struct opts *o,
 
 /* ---- output ------------------------------------------------------ */
 
+/* The extra columns, in their order: pdf (--pdf), step (--progressive),
+ * set (--sets M, M > 1); their count. */
+static unsigned extra_names(const struct opts *o, const char *names[3])
+{
+	unsigned k = 0;
+
+	if (o->pdf)
+		names[k++] = PTS_COL_PDF;
+	if (o->nsteps > 1)
+		names[k++] = PTS_COL_STEP;
+	if (o->sets > 1)
+		names[k++] = PTS_COL_SET;
+	return k;
+}
+
 struct out {
 	const struct opts *o;
 	struct outfile of;
 	struct pts_writer w;
 	int open;
 	uint64_t n;		/* samples of the set being drawn */
+	uint64_t set;		/* and its index, from 0 */
 	int noted;		/* the mask's note was printed */
 	double t;		/* seconds spent writing */
 	double tnote;		/* and in note_point, apart from the phases */
@@ -387,6 +400,8 @@ static double reused_share(struct out *u)
 static int out_begin(struct out *u, uint64_t count)
 {
 	const struct opts *o = u->o;
+	const char *names[3];
+	unsigned extra = extra_names(o, names);
 
 	if (u->open)
 		return 0;
@@ -394,20 +409,21 @@ static int out_begin(struct out *u, uint64_t count)
 		cli_die_lib();
 	u->open = 1;
 	if (!o->count_only && pts_writer_begin(&u->w, u->of.fp, u->of.name, 2,
-	    (unsigned)o->pdf + (o->nsteps > 1), o->sets == 1 ? count : 0,
-	    cli.text) < 0)
+	    extra, names, o->sets == 1 ? count : 0, cli.text) < 0)
 		return -1;
 	return 0;
 }
 
-/* frs_draw_each's callback: records x, y [, pdf] [, step + 1]. */
+/* frs_draw_each's callback: records x, y [, pdf] [, step + 1] [, set]. */
 static int out_batch(void *ctx, const double *xy, const double *pdf,
     const uint32_t *step, size_t k, uint64_t total)
 {
 	struct out *u = ctx;
 	double t0 = progress_now();
 	int rc = out_begin(u, total);
-	unsigned ncol = 2u + (pdf != NULL ? 1u : 0u) + (step != NULL ? 1u : 0u);
+	int sets = u->o->sets > 1;
+	unsigned ncol = 2u + (pdf != NULL ? 1u : 0u) + (step != NULL ? 1u : 0u) +
+	    (sets ? 1u : 0u);
 
 	u->n = total;
 	if (u->collect) {
@@ -437,6 +453,8 @@ static int out_batch(void *ctx, const double *xy, const double *pdf,
 				rec[c++] = pdf[i];
 			if (step != NULL)
 				rec[c++] = (double)(step[i] + 1);
+			if (sets)
+				rec[c++] = (double)u->set;
 		}
 		rc = pts_writer_put_n(&u->w, u->rec, k);
 	}
@@ -657,18 +675,19 @@ static void load3(const struct opts *o, struct frs_matrix *m,
 		cli_die_lib();
 }
 
-/* The record of one element: x, y, z [, pdf] [, step + 1]. */
+/* The record of one element: x, y, z [, pdf] [, step + 1] [, set]. */
 struct put3 {
 	struct pts_writer *w;
 	const struct opts *o;
 	const struct frs3_setup *s;
 	const struct frs_vol *v;
+	uint64_t set;
 };
 
 static int put3_one(void *ctx, const struct frs3_elem *e)
 {
 	const struct put3 *p = ctx;
-	double rec[5];
+	double rec[6];
 	unsigned k = 3;
 
 	frs3_point(p->s, e, rec);
@@ -676,15 +695,17 @@ static int put3_one(void *ctx, const struct frs3_elem *e)
 		rec[k++] = frs3_pdf(p->s, p->v, e);
 	if (p->o->nsteps > 1)
 		rec[k++] = (double)(e->step + 1);
+	if (p->o->sets > 1)
+		rec[k++] = (double)p->set;
 	return pts_writer_put(p->w, rec) < 0 ? -1 : 0;
 }
 
 /* The records of one set, steps in turn. */
 static int put3(struct pts_writer *w, const struct opts *o,
     const struct frs3_setup *s, const struct frs_vol *v,
-    const struct frs3_result *r)
+    const struct frs3_result *r, uint64_t set)
 {
-	struct put3 p = { w, o, s, v };
+	struct put3 p = { w, o, s, v, set };
 
 	return frs3_each(r, o->nsteps, put3_one, &p);
 }
@@ -739,12 +760,14 @@ static uint64_t sets3(const struct opts *o, const struct frs_vol *v,
 			cli_die("%s", frs_errmsg());
 		t[0] += progress_now() - t0;
 		t0 = progress_now();
-		if (set == 0 && !o->count_only)
-			rc = pts_writer_begin(&w, of->fp, of->name, 3,
-			    (unsigned)o->pdf + (o->nsteps > 1),
-			    o->sets == 1 ? r.count : 0, cli.text);
+		if (set == 0 && !o->count_only) {
+			const char *names[3];
+			unsigned extra = extra_names(o, names);
+			rc = pts_writer_begin(&w, of->fp, of->name, 3, extra,
+			    names, o->sets == 1 ? r.count : 0, cli.text);
+		}
 		if (rc == 0 && !o->count_only)
-			rc = put3(&w, o, &s, v, &r);
+			rc = put3(&w, o, &s, v, &r, set);
 		/* --count-only: a line per set, as in 2-D. */
 		if (rc == 0 && o->count_only && fprintf(of->fp, "%llu\n",
 		    (unsigned long long)r.count) < 0)
@@ -870,6 +893,7 @@ int main(int argc, char **argv)
 	for (uint64_t set = 0; set < o.sets; set++) {
 		uint64_t c;
 		u.collect = o.verbose && set == 0 && !o.count_only;
+		u.set = set;
 		c = one_set(&ocl, &o, smp, cli.seed + set, &u);
 		u.have = u.collect;	/* every sample of set 0 noted */
 		u.collect = 0;

@@ -264,12 +264,13 @@ static void warp_and_write(const struct opts *o, const frs_hsw *hw,
 {
 	struct outfile of;
 	struct pts_writer w;
+	static const char *const names[] = { PTS_COL_PDF };
 	double t0;
 
 	if (outfile_open(&of, cli.out, !cli.text) < 0)
 		cli_die_lib();
-	if (pts_writer_begin(&w, of.fp, of.name, 2, (unsigned)o->pdf, o->n,
-	    cli.text) < 0 || write_rounds(o, hw, hc, pts, &w, tm) < 0)
+	if (pts_writer_begin(&w, of.fp, of.name, 2, (unsigned)o->pdf, names,
+	    o->n, cli.text) < 0 || write_rounds(o, hw, hc, pts, &w, tm) < 0)
 		goto fail;
 	t0 = progress_now();
 	if (pts_writer_end(&w) < 0)

@@ -27,9 +27,12 @@ static const char usage[] =
     "                    with --env)\n"
     "      --env MAP     env's environment map, equirectangular: PNG,\n"
     "                    OpenEXR or a spec (default the shipped sunset.exr)\n"
-    "      --sets N      split every file into sets of N points\n"
-    "      --group G     a row per point count (n, default), per input\n"
-    "                    file (file) or for all sets (all)\n"
+    "      --sets N      split every file into sets of N points (a file\n"
+    "                    with a set column is split by it; N must agree)\n"
+    "      --group G     a row per point count over all files (n), per\n"
+    "                    input file (file) or for all sets (all);\n"
+    "                    default a row per point count and file, with a\n"
+    "                    file column for several files\n"
     "      --weights     require a pdf column and divide by it\n"
     "      --no-pdf      ignore a pdf column: the plain mean\n"
     "  -o, --output F    output (default standard output)\n"
@@ -197,13 +200,13 @@ static int add_file(struct pt_sets *s, const char *path, size_t per,
 	if (mode == PDF_REQUIRE && s->set[first].w == NULL)
 		return frs_fail("%s: --weights: no pdf column", path);
 	/* Points counted from 0 over the file, as its reader counts them. */
-	for (size_t j = first, k = 0; mode != PDF_IGNORE && j < s->n;
-	    k += s->set[j].n, j++)
+	for (size_t j = first; mode != PDF_IGNORE && j < s->n; j++)
 		for (size_t i = 0; s->set[j].w != NULL && i < s->set[j].n; i++) {
 			double d = s->set[j].w[i];
 			if (!(d > 0) || !isfinite(d))
 				return frs_fail("%s: point %zu: pdf %g is not "
-				    "positive and finite", path, k + i, d);
+				    "positive and finite", path,
+				    s->set[j].first + i, d);
 		}
 	return 0;
 }
@@ -222,9 +225,16 @@ static double estimate(const struct integrand *g, const struct pt_set *s,
 	return sum / (double)s->n;
 }
 
+/* File names in a table: tabs and newlines would break its columns. */
+static void put_name(FILE *fp, const char *name)
+{
+	for (; *name; name++)
+		fputc(*name == '\t' || *name == '\n' ? '?' : *name, fp);
+}
+
 /* One row per group of sets, in order of first appearance. */
 static void rows(FILE *fp, const struct integrand *g, enum pt_group grp,
-    const struct pt_sets *s, const double *est, char *done)
+    const struct pt_sets *s, const double *est, char *done, int files)
 {
 	double exact = g->exact();
 
@@ -243,28 +253,34 @@ static void rows(FILE *fp, const struct integrand *g, enum pt_group grp,
 			done[j] = 1;
 		}
 		rmse = sqrt(s2 / m);
-		fprintf(fp, "%s\t%.10g\t%.0f\t%.9g\t%.9g\t%.9g\t%.9g\n",
+		fprintf(fp, "%s\t%.10g\t%.0f\t%.9g\t%.9g\t%.9g\t%.9g",
 		    g->name, sn / m, m, se / m, sa / m, rmse,
 		    rmse / fabs(exact));
+		if (files) {
+			fputc('\t', fp);
+			put_name(fp, s->set[i].file);
+		}
+		fputc('\n', fp);
 	}
 }
 
 static void table(FILE *fp, unsigned mask, enum pt_group grp,
-    const struct pt_sets *s, enum pdfmode mode)
+    const struct pt_sets *s, enum pdfmode mode, size_t nfiles)
 {
+	int files = pt_group_files(grp, nfiles);
 	double *est = calloc(s->n, sizeof *est);
 	char *done = calloc(s->n, 1);
 
 	if (est == NULL || done == NULL)
 		cli_die("no memory for %zu sets", s->n);
 	fprintf(fp, "integrand\tn\tsets\testimate_mean\tabs_error\trmse\t"
-	    "rel_rmse\n");
+	    "rel_rmse%s\n", files ? "\tfile" : "");
 	for (size_t k = 0; k < NFUN; k++) {
 		if (!(mask & 1u << k))
 			continue;
 		for (size_t i = 0; i < s->n; i++)
 			est[i] = estimate(&fun[k], &s->set[i], mode);
-		rows(fp, &fun[k], grp, s, est, done);
+		rows(fp, &fun[k], grp, s, est, done, files);
 	}
 	free(est);
 	free(done);
@@ -304,7 +320,7 @@ static enum pt_group parse_group(const char *arg)
 int main(int argc, char **argv)
 {
 	unsigned mask = 0;
-	enum pt_group grp = PT_GROUP_N;
+	enum pt_group grp = PT_GROUP_NFILE;
 	enum pdfmode mode = PDF_AUTO;
 	int c, weights = 0, nopdf = 0;
 	const char *env = NULL;
@@ -345,7 +361,7 @@ int main(int argc, char **argv)
 			cli_die_lib();
 	if (outfile_open(&of, cli.out, 0) < 0)
 		cli_die_lib();
-	table(of.fp, mask, grp, &s, mode);
+	table(of.fp, mask, grp, &s, mode, (size_t)(argc - optind));
 	if (outfile_commit(&of) < 0)
 		cli_die_lib();
 	pt_sets_free(&s);

@@ -11,17 +11,23 @@
 #include "cli.h"
 #include "imap.h"
 #include "outfile.h"
+#include "ptsets.h"
 #include "ptsio.h"
 #include "raster.h"
 
 static const char usage[] =
     "usage: pts-render [-q] [-s SIZE] [-r R] [-i MAP] [--color] [-o FILE] [PTS]\n"
     "                  [--log] [--srgb] [--equirect] [--format png|pnm]\n"
-    "                  [--axes xy|xz|yz] [--alpha A]\n"
+    "                  [--axes xy|xz|yz] [--alpha A] [--set K [--sets N]]\n"
     "\n"
     "  PTS                 a point file, binary or text (default: standard\n"
     "                      input, also '-'); x, y are its first two\n"
     "                      coordinates, y growing downward\n"
+    "      --set K         draw set K only (from 0): the points whose set\n"
+    "                      column is K, or with --sets N the K-th run of\n"
+    "                      N points of a file without one\n"
+    "      --sets N        sets of N points, for --set (a set column must\n"
+    "                      agree)\n"
     "      --axes AB       the coordinates drawn across and down: xy\n"
     "                      (default), or xz or yz of a 3-D (or higher) set\n"
     "  -s, --size SIZE     image size, N (NxN) or WxH (default 512)\n"
@@ -51,7 +57,7 @@ static const char usage[] =
 
 enum {
 	OPT_LOG = OPT_FIRST_PRIVATE, OPT_COLOR, OPT_SRGB, OPT_EQUIRECT,
-	OPT_FORMAT, OPT_AXES, OPT_ALPHA
+	OPT_FORMAT, OPT_AXES, OPT_ALPHA, OPT_SET, OPT_SETS
 };
 
 static const struct option longopts[] = {
@@ -66,6 +72,8 @@ static const struct option longopts[] = {
 	{ "format", required_argument, NULL, OPT_FORMAT },
 	{ "axes", required_argument, NULL, OPT_AXES },
 	{ "alpha", required_argument, NULL, OPT_ALPHA },
+	{ "set", required_argument, NULL, OPT_SET },
+	{ "sets", required_argument, NULL, OPT_SETS },
 	CLI_COMMON_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
@@ -104,6 +112,33 @@ static void parse_axes(const char *s, unsigned a[2])
 	cli_usage_error("--axes: '%s' is not xy, xz or yz", s);
 }
 
+/* --set K: the records of set K (pt_split). */
+static void pick_set(const struct frs_points *p, const char *name,
+    size_t per, uint64_t set, size_t *first, size_t *count)
+{
+	struct pt_range *rg;
+	size_t k;
+
+	if (pts_column(p, PTS_COL_SET) < 0 && per == 0)
+		cli_die("%s: --set %llu: the points have no set column; give "
+		    "--sets N for sets of N points", name,
+		    (unsigned long long)set);
+	if (pt_split(p, name, per, &rg, &k) < 0)
+		cli_die_lib();
+	for (size_t i = 0; i < k; i++)
+		if (rg[i].id == set) {
+			*first = rg[i].first, *count = rg[i].n;
+			free(rg);
+			return;
+		}
+	free(rg);
+	if (pts_column(p, PTS_COL_SET) >= 0)
+		cli_die("%s: --set %llu: no point has that set", name,
+		    (unsigned long long)set);
+	cli_die("%s: --set %llu: the file has %zu sets of %zu points", name,
+	    (unsigned long long)set, k, per);
+}
+
 int main(int argc, char **argv)
 {
 	const char *in = "-", *imp = NULL, *name;
@@ -118,7 +153,9 @@ int main(int argc, char **argv)
 	size_t ncol;
 	unsigned axis[2] = { 0, 1 };
 	const char *axes = "xy";
-	int rc;
+	int rc, have_set = 0;
+	uint64_t set = 0;
+	size_t per = 0, first = 0, count;
 
 	cli_init("pts-render", usage);
 	while ((c = cli_getopt(argc, argv, "s:r:i:" CLI_COMMON_SHORTOPTS,
@@ -152,6 +189,14 @@ int main(int argc, char **argv)
 			parse_axes(optarg, axis);
 			axes = optarg;
 			break;
+		case OPT_SET:
+			set = cli_u64("--set", optarg, 0, (uint64_t)1 << 53);
+			have_set = 1;
+			break;
+		case OPT_SETS:
+			per = (size_t)cli_u64("--sets", optarg, 1,
+			    (uint64_t)1 << 40);
+			break;
 		case OPT_FORMAT:
 			if (strcmp(optarg, "png") == 0)
 				format = FMT_PNG;
@@ -168,6 +213,8 @@ int main(int argc, char **argv)
 	}
 	if (argc - optind > 1)
 		cli_usage_error("one point file at most");
+	if (per && !have_set)
+		cli_usage_error("--sets N: give --set K, the set to draw");
 	if (argc - optind == 1)
 		in = argv[optind];
 	if ((uint64_t)w * h > IMAP_MAX_PIXELS)
@@ -207,18 +254,21 @@ int main(int argc, char **argv)
 		imap_free(&m);
 	}
 
+	count = p.n;
+	if (have_set)
+		pick_set(&p, name, per, set, &first, &count);
 	ncol = (size_t)p.dims + p.extra;
 	/* No -r: each dot's radius from the spacing around it. */
-	if (rad == 0.0 && raster_spacing_init(&sp, p.x, p.n, ncol, axis[0],
-	    axis[1], w, h) < 0)
+	if (rad == 0.0 && raster_spacing_init(&sp, p.x + first * ncol, count,
+	    ncol, axis[0], axis[1], w, h) < 0)
 		cli_die_lib();
-	for (size_t k = 0; k < p.n; k++) {
-		const double *x = p.x + k * ncol;
+	for (size_t k = 0; k < count; k++) {
+		const double *x = p.x + (first + k) * ncol;
 		double cx = x[axis[0]] * w, cy = x[axis[1]] * h;
 		uint8_t ink[3] = { 0, 0, 0 };
 
 		if (color)
-			raster_ramp(k, p.n, ink);
+			raster_ramp(k, count, ink);
 		raster_disc_alpha(&r, cx, cy, rad > 0.0 ? rad :
 		    raster_spacing_radius(&sp, cx, cy), ink, alpha);
 	}

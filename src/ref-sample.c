@@ -28,7 +28,8 @@ static const char usage[] =
     "  -d, --dims K         2 (default): points in [0,1)^2; 3: in [0,1)^3\n"
     "                       (every kind but relaxed-dart, no -i)\n"
     "      --sets M         write M sets one after another, set i made\n"
-    "                       with seed S+i (default 1)\n"
+    "                       with seed S+i (default 1); M > 1 adds a\n"
+    "                       column, the set i\n"
     "  -k, --kind K         random (default), regular, jittered, halton,\n"
     "                       hammersley, sobol, dart or relaxed-dart\n"
     "  -i, --importance M   relaxed-dart: map, PNG, OpenEXR or a spec such\n"
@@ -128,6 +129,20 @@ static void note_grid(enum refsamp_kind kind, unsigned dims, uint64_t n,
 		    s, s, (unsigned long long)n);
 }
 
+/* One set's n points of dims coordinates; with rec (--sets M, M > 1),
+ * each followed by the set column, set. */
+static int put_set(struct pts_writer *w, const double *xy, size_t n,
+    unsigned dims, double *rec, uint64_t set)
+{
+	if (rec == NULL)
+		return pts_writer_put_n(w, xy, n);
+	for (size_t i = 0; i < n; i++) {
+		memcpy(rec + i * (dims + 1), xy + i * dims, dims * sizeof *xy);
+		rec[i * (dims + 1) + dims] = (double)set;
+	}
+	return pts_writer_put_n(w, rec, n);
+}
+
 int main(int argc, char **argv)
 {
 	enum refsamp_kind kind = REFSAMP_RANDOM;
@@ -143,6 +158,8 @@ int main(int argc, char **argv)
 	struct outfile of;
 	struct pts_writer w;
 	struct progress pr;
+	static const char *const names[] = { PTS_COL_SET };
+	double *rec = NULL;	/* --sets: the records with the set column */
 
 	cli_init("ref-sample", usage);
 	while ((c = cli_getopt(argc, argv, "n:d:k:i:s:" CLI_COMMON_SHORTOPTS,
@@ -233,8 +250,11 @@ int main(int argc, char **argv)
 	}
 	if (outfile_open(&of, cli.out, !cli.text) < 0)
 		cli_die_lib();
-	if (pts_writer_begin(&w, of.fp, of.name, dims, 0,
-	    sets > 1 ? sets * count : placed, cli.text) < 0)
+	if (sets > 1 && (rec = mem_calloc(what, count, (dims + 1) *
+	    sizeof *rec)) == NULL)
+		goto fail;
+	if (pts_writer_begin(&w, of.fp, of.name, dims, sets > 1 ? 1 : 0,
+	    names, sets > 1 ? sets * count : placed, cli.text) < 0)
 		goto fail;
 	progress_begin(&pr, "sets", sets);
 	for (uint64_t set = 0; set < sets; set++) {
@@ -259,7 +279,7 @@ int main(int argc, char **argv)
 				    (unsigned long long)maxf);
 			}
 		}
-		if (pts_writer_put_n(&w, xy, (size_t)placed) < 0)
+		if (put_set(&w, xy, (size_t)placed, dims, rec, set) < 0)
 			goto fail;
 		progress_update(&pr, set + 1);
 	}
@@ -271,11 +291,13 @@ int main(int argc, char **argv)
 	if (have_map)
 		imap_free(&map);
 	free(xy);
+	free(rec);
 	return 0;
 fail:
 	outfile_abort(&of);
 	if (have_map)
 		imap_free(&map);
 	free(xy);
+	free(rec);
 	cli_die_lib();
 }

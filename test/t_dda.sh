@@ -233,3 +233,25 @@ expect_fail "4-D points" 1 "d4.txt: 4-dimensional points" "$T/o3" \
 printf '0.1 0.2 0.3\n' >"$T/one3.txt"
 expect_fail "3-D one point" 1 "one3.txt: the density needs 2 points" "$T/o3" \
     dda --density -o "$T/o3" "$T/one3.txt"
+
+# Sets through a pipe: frs-sample --sets 4 writes a set column, which dda
+# splits by with no --sets N: the same spectrum, density and RDF as the
+# four seeds' files.
+for s in 1 2 3 4; do frs-sample -q -i const -n 200 -S $s -o "$T/f$s.pts"; done
+for a in "--fourier --size 16" "--dda --size 16" "--density" "--rdf --bins 20"; do
+	# shellcheck disable=SC2086
+	frs-sample -q -i const -n 200 --sets 4 | dda -q $a -o "$T/sa" -
+	# shellcheck disable=SC2086
+	dda -q $a -o "$T/sb" "$T/f1.pts" "$T/f2.pts" "$T/f3.pts" "$T/f4.pts"
+	# (--density names the file of each set: - here)
+	[ "$(cut -f 1-4 "$T/sa")" = "$(cut -f 1-4 "$T/sb")" ] && [ -s "$T/sa" ] &&
+	    ok "frs-sample --sets 4 | dda $a: the four seeds'" ||
+	    nok "frs-sample --sets 4 | dda $a"
+done
+# --sets N beside the set column: the same when it agrees, else an error.
+dda --fourier --size 16 -o "$T/sc" "$T/rand.pts"
+dda --fourier --size 16 --sets 512 -o "$T/sd" "$T/rand.pts"
+cmp -s "$T/sc" "$T/sd" && ok "--sets 512 agreeing with the set column" || nok "--sets 512, set column"
+expect_fail "--sets 256 disagreeing with the set column" 1 \
+    "rand.pts: --sets 256: set 0 of the file's set column has 512 points" "$T/o3" \
+    dda --sets 256 -o "$T/o3" "$T/rand.pts"

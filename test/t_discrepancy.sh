@@ -14,7 +14,7 @@ col() {
 		print $k }' "$2"
 }
 
-check "star on two sets" discrepancy -c star --grid 300 -o "$T/t" \
+check "star on two sets" discrepancy -c star --grid 300 --group all -o "$T/t" \
     "$T/r1.pts" "$T/r2.pts"
 [ "$(head -n 1 "$T/t")" = "$(printf 'class\tn\tsets\tD2\tD2_se\tDinf\tDinf_mean\tshapes\tmethod')" ] &&
     ok "header" || nok "header: $(head -n 1 "$T/t")"
@@ -32,10 +32,32 @@ near "${m% *}" "$(col D2 "$T/t")" 1e-8 && near "${m#* }" "$(col Dinf "$T/t")" 1e
 awk -F '\t' 'NR > 1 && $4 > $5 { bad = 1 } END { exit bad }' "$T/p" &&
     ok "D2 <= Dinf" || nok "D2 <= Dinf"
 
-# Rows per point count, in order of first appearance.
+# Rows per point count and file, in order of first appearance: several
+# files are never merged into one row, and their rows name the file.
 discrepancy -c star --exact "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/g"
-[ "$(col n "$T/g" 1) $(col n "$T/g" 2) $(col sets "$T/g" 2)" = "64 256 2" ] &&
-    ok "a row per point count" || nok "rows per n: $(cat "$T/g")"
+[ "$(col n "$T/g" 1) $(col n "$T/g" 2) $(col n "$T/g" 3) $(col sets "$T/g" 2)" = "64 256 256 1" ] &&
+    [ "$(col file "$T/g" 1) $(col file "$T/g" 3)" = "$T/small.pts $T/h.pts" ] &&
+    [ "$(head -n 1 "$T/g" | cut -f 10)" = file ] &&
+    ok "several files: a row each, with a file column" || nok "rows per file: $(cat "$T/g")"
+# --group n asks for the rows per point count over all files.
+discrepancy -c star --exact --group n "$T/small.pts" "$T/r1.pts" "$T/h.pts" >"$T/gn"
+[ "$(col n "$T/gn" 1) $(col n "$T/gn" 2) $(col sets "$T/gn" 2) $(wc -l <"$T/gn")" = "64 256 2 3" ] &&
+    [ "$(head -n 1 "$T/gn" | cut -f 10)" = "" ] &&
+    ok "--group n: a row per point count over the files" || nok "--group n: $(cat "$T/gn")"
+# One file with a set column of sets of 64, 256 and 256 points: a row per
+# point count, and no file column.
+{ echo '#pts dims=2 extra=1 count=0 version=2 names=set'
+  ref-sample -k random -n 64 -q -T | sed '/^#/d; s/$/ 0/'
+  ref-sample -k random -n 256 -q -T | sed '/^#/d; s/$/ 1/'
+  ref-sample -k halton -n 256 -q -T | sed '/^#/d; s/$/ 2/'; } >"$T/set3.txt"
+discrepancy -c star --exact --per-set "$T/small.pts" "$T/r1.pts" "$T/h.pts" | cut -f 1-7 >"$T/g3a"
+discrepancy -c star --exact --per-set "$T/set3.txt" | cut -f 1-7 >"$T/g3b"
+cmp -s "$T/g3a" "$T/g3b" && ok "a set column: the sets of the three files" ||
+    nok "a set column: $(cat "$T/g3b")"
+discrepancy -c star --exact "$T/set3.txt" >"$T/g3s"
+[ "$(col n "$T/g3s" 1) $(col n "$T/g3s" 2) $(col sets "$T/g3s" 2) $(wc -l <"$T/g3s")" = "64 256 2 3" ] &&
+    [ "$(head -n 1 "$T/g3s" | cut -f 10)" = "" ] &&
+    ok "a row per point count within a file" || nok "rows per n: $(cat "$T/g3s")"
 [ "$(col method "$T/g")" = exact ] && [ "$(col shapes "$T/g")" = 0 ] &&
     ok "--exact: method exact, 0 shapes" || nok "--exact method"
 
@@ -48,7 +70,13 @@ m=$(awk -F '\t' 'NR > 1 { s += $4 } END { printf "%.9g", s / 3 }' "$T/gp")
 near "$m" "$(col D2 "$T/ga")" 1e-8 && ok "--group all: D2 the mean of the sets" ||
     nok "--group all: D2 $(col D2 "$T/ga"), mean $m"
 discrepancy -c star --exact --group file "$T/r1.pts" "$T/r2.pts" >"$T/gf"
-[ "$(wc -l <"$T/gf")" -eq 3 ] && ok "--group file: a row per file" || nok "--group file"
+[ "$(wc -l <"$T/gf")" -eq 3 ] && [ "$(col file "$T/gf" 2)" = "$T/r2.pts" ] &&
+    ok "--group file: a row per file, with the file" || nok "--group file: $(cat "$T/gf")"
+discrepancy -c star --exact --group file "$T/r1.pts" >"$T/gf1"
+[ "$(col file "$T/gf1")" = "$T/r1.pts" ] && ok "--group file, one file: the file column" ||
+    nok "--group file, one file: $(cat "$T/gf1")"
+[ "$(head -n 1 "$T/ga" | cut -f 10)" = "" ] && ok "--group all: no file column" ||
+    nok "--group all: $(head -n 1 "$T/ga")"
 
 # --sets N equals separate files, byte for byte.
 cat "$T/r1.pts" >"$T/both.pts"
@@ -59,7 +87,7 @@ printf '\000\002\000\000\000\000\000\000' | dd of="$T/both.pts" bs=1 seek=24 \
     conv=notrunc 2>/dev/null
 for c in "star --grid 300" "rect --grid 40" "half --grid 50" \
     "quad --shapes 2000" "circle --shapes 2000"; do
-	discrepancy -c $c "$T/r1.pts" "$T/r2.pts" >"$T/a" 2>"$T/err"
+	discrepancy -c $c --group all "$T/r1.pts" "$T/r2.pts" >"$T/a" 2>"$T/err"
 	discrepancy -c $c --sets 256 "$T/both.pts" >"$T/b" 2>>"$T/err"
 	cmp -s "$T/a" "$T/b" && ok "--sets 256 = two files ($c)" ||
 	    nok "--sets 256 = two files ($c)"
@@ -325,3 +353,51 @@ expect_fail "3-D --grid 1001" 1 "c64.txt: --grid 1001" "$T/o3d" \
 # a failure in a later set leaves no output either
 expect_fail "3-D bad set among good" 1 "c4097.txt" "$T/o3d" \
     discrepancy --exact -o "$T/o3d" "$T/c64.txt" "$T/c4097.txt"
+
+# Sets that flow through a pipe: frs-sample --sets 4 writes a set column
+# (pts(5) version 2; count 0 on a pipe), which discrepancy splits by with
+# no --sets N; the rows are those of the four seeds run one by one.
+frs-sample -q -i blob -n 200 --sets 4 | discrepancy -c star --grid 300 --per-set - >"$T/fs"
+for s in 1 2 3 4; do
+	frs-sample -q -i blob -n 200 -S $s | discrepancy -c star --grid 300 --per-set - | tail -n 1
+done >"$T/fs1"
+[ "$(tail -n +2 "$T/fs" | cut -f 1,2,4-7)" = "$(cut -f 1,2,4-7 "$T/fs1")" ] &&
+    [ "$(tail -n +2 "$T/fs" | cut -f 3 | tr '\n' ' ')" = "0 1 2 3 " ] &&
+    ok "frs-sample --sets 4 | discrepancy: the rows of the four seeds" ||
+    nok "frs-sample --sets 4 | discrepancy: $(cat "$T/fs")"
+[ "$(frs-sample -q -i blob -n 200 --sets 4 | od -A n -t u8 -j 24 -N 8 | tr -d ' ')" = 0 ] &&
+    ok "the stream's header counts 0 (unknown)" || nok "stream count"
+frs-sample -q -i blob -n 200 --sets 4 | discrepancy -c rect --grid 40 --group file - >"$T/ff"
+for s in 1 2 3 4; do frs-sample -q -i blob -n 200 -S $s -o "$T/f$s.pts"; done
+discrepancy -c rect --grid 40 --group all "$T/f1.pts" "$T/f2.pts" "$T/f3.pts" "$T/f4.pts" >"$T/ff1"
+[ "$(cut -f 1-9 "$T/ff")" = "$(cat "$T/ff1")" ] && [ "$(col file "$T/ff")" = - ] &&
+    ok "--group file of the stream = the four files together" ||
+    nok "--group file of the stream: $(cat "$T/ff") / $(cat "$T/ff1")"
+# --sets N beside a set column: the same when they agree, else an error.
+ref-sample -q -k random -n 64 --sets 4 -o "$T/rs.pts"
+discrepancy -c star --exact --per-set "$T/rs.pts" >"$T/rs1"
+discrepancy -c star --exact --per-set --sets 64 "$T/rs.pts" >"$T/rs2"
+cmp -s "$T/rs1" "$T/rs2" && [ "$(wc -l <"$T/rs1")" = 5 ] &&
+    ok "--sets 64 agreeing with the set column" || nok "--sets 64 with a set column"
+expect_fail "--sets 32 disagreeing with the set column" 1 \
+    "rs.pts: --sets 32: set 0 of the file's set column has 64 points" "$T/o9" \
+    discrepancy --sets 32 -o "$T/o9" "$T/rs.pts"
+# Old files (pts(5) version 1, no set column) still read: the same sets
+# cut by --sets 64 give the same rows; a binary file of version 1 too.
+ref-sample -q -k random -n 64 --sets 4 -T |
+    awk 'NR == 1 { print "#pts dims=2 extra=0 count=256"; next } { print $1, $2 }' >"$T/old.txt"
+discrepancy -c star --exact --per-set --sets 64 "$T/old.txt" >"$T/rs3"
+[ "$(cut -f 1-7 "$T/rs3")" = "$(cut -f 1-7 "$T/rs1")" ] &&
+    ok "version 1 text, --sets 64: the rows of the set column" || nok "version 1 text"
+cp "$T/r1.pts" "$T/old1.pts"
+printf '\001' | dd of="$T/old1.pts" bs=1 seek=8 conv=notrunc 2>/dev/null
+[ "$(od -A n -t u4 -j 8 -N 4 "$T/old1.pts" | tr -d ' ')" = 1 ] &&
+    discrepancy -c star --exact "$T/old1.pts" | cut -f 1-9 >"$T/o1a" &&
+    discrepancy -c star --exact "$T/r1.pts" | cut -f 1-9 >"$T/o1b" && cmp -s "$T/o1a" "$T/o1b" &&
+    ok "version 1 binary: the same row" || nok "version 1 binary"
+printf '#pts dims=2 extra=1 names=set\n0.1 0.2 1\n0.3 0.4 0\n' >"$T/dec.txt"
+expect_fail "set column decreasing" 1 "dec.txt: point 1: set 0 after set 1" "$T/o9" \
+    discrepancy -o "$T/o9" "$T/dec.txt"
+printf '#pts dims=2 extra=1 names=set\n0.1 0.2 0.5\n' >"$T/half.txt"
+expect_fail "set column not whole" 1 "half.txt: point 0: set 0.5 is not a whole number" "$T/o9" \
+    discrepancy -o "$T/o9" "$T/half.txt"

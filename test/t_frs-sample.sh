@@ -34,7 +34,7 @@ cmp -s "$T/j1.txt" "$T/s2.txt" && nok "another seed moves the window" ||
 frs-sample -m "$M" -i const -n 500 --pdf -T -o "$T/pdf.txt"
 awk '!/^#/ && ($3 < 0.999999 || $3 > 1.000001) { bad = 1 } END { exit bad }' "$T/pdf.txt" &&
     ok "--pdf of a constant map is 1" || nok "--pdf of a constant map is 1"
-head -n 1 "$T/pdf.txt" | grep -q 'dims=2 extra=1' && ok "--pdf header" || nok "--pdf header"
+head -n 1 "$T/pdf.txt" | grep -q 'dims=2 extra=1 .* names=pdf$' && ok "--pdf header" || nok "--pdf header"
 frs-sample -m "$M" -i blob -n 1000 --jitter random -T -o "$T/jr.txt" &&
     frs-sample -m "$M" -i blob -n 1000 --jitter halton -T -o "$T/jh.txt" &&
     frs-sample -m "$M" -i blob -n 1000 -T -o "$T/jn.txt" &&
@@ -72,37 +72,63 @@ frs-sample -m "$T/m2.frd" -i blob -n 100 -o /dev/null 2>"$T/warn"
 grep -q 'stale' "$T/warn" && ok "a stale .frp beside the matrix is refused" ||
     nok "a stale .frp beside the matrix is refused"
 
-# --sets M: set i is the set of -S S+i; one header counts them all.
+# --sets M: set i is the set of -S S+i, each record followed by its set
+# (the column named set, pts(5) version 2); one header counts them all.
 cnt() { od -A n -t u8 -j 24 -N 8 "$1" | tr -d ' '; }
+u32() { od -A n -t u4 -j "$2" -N 4 "$1" | tr -d ' '; }
+# recs FILE SKIP NCOL: the records after SKIP bytes, one per line in hex
+recs() { tail -c +$(($2 + 1)) "$1" | od -A n -t x8 -v -w$((8 * $3)); }
+sethex() { case $1 in 0) echo 0000000000000000 ;; 1) echo 3ff0000000000000 ;;
+	2) echo 4000000000000000 ;; esac; }
 for opts in "-i blob" "-i blob --pdf --jitter random -a level1" "-m $T/m.frp -i ramp"; do
+	case $opts in *--pdf*) nc=3 names="pdf set " ;; *) nc=2 names="set     " ;; esac
 	# shellcheck disable=SC2086
 	frs-sample -m "$M" $opts -n 800 -S 5 --sets 3 -q -o "$T/sets.pts"
-	: >"$T/cat.bin"
+	: >"$T/cat.hex"
 	tot=0
 	for s in 5 6 7; do
 		# shellcheck disable=SC2086
 		frs-sample -m "$M" $opts -n 800 -S $s -q -o "$T/one.pts"
-		tail -c +33 "$T/one.pts" >>"$T/cat.bin"
+		h=$(sethex $((s - 5)))
+		recs "$T/one.pts" $((32 + 8 * (nc - 2))) $nc |
+		    sed "s/\$/ $h/" >>"$T/cat.hex"
 		tot=$((tot + $(cnt "$T/one.pts")))
 	done
-	if tail -c +33 "$T/sets.pts" | cmp -s - "$T/cat.bin" &&
+	if recs "$T/sets.pts" 40 $((nc + 1)) | cmp -s - "$T/cat.hex" &&
 	    [ "$(cnt "$T/sets.pts")" = "$tot" ] &&
-	    [ "$(head -c 24 "$T/sets.pts" | od -A n -t x1)" = \
-	      "$(head -c 24 "$T/one.pts" | od -A n -t x1)" ]; then
-		ok "$opts --sets 3 -S 5: the sets of -S 5, 6, 7, count $tot"
+	    [ "$(u32 "$T/sets.pts" 8) $(u32 "$T/sets.pts" 16) $(u32 "$T/sets.pts" 20)" = "2 $((nc - 1)) 8" ] &&
+	    [ "$(head -c 40 "$T/sets.pts" | tail -c 8 | tr '\0' ' ')" = "$names" ]; then
+		ok "$opts --sets 3 -S 5: the sets of -S 5, 6, 7 and their set column, count $tot"
 	else
-		nok "$opts --sets 3 -S 5: the sets of -S 5, 6, 7, count $tot"
+		nok "$opts --sets 3 -S 5: the sets of -S 5, 6, 7 and their set column, count $tot"
 	fi
 done
 frs-sample -m "$M" -i blob -n 300 -S 2 --sets 2 -T -o "$T/sets.txt"
-{ frs-sample -m "$M" -i blob -n 300 -S 2 -T; frs-sample -m "$M" -i blob -n 300 -S 3 -T; } |
-    grep -v '^#' >"$T/cat.txt"
-grep -v '^#' "$T/sets.txt" | cmp -s - "$T/cat.txt" &&
-    ok "--sets 2 -T: the records of -S 2 and 3" || nok "--sets 2 -T: the records of -S 2 and 3"
-frs-sample -m "$M" -i blob -n 300 -S 2 --sets 2 | tail -c +33 >"$T/pipe.bin"
+{ frs-sample -m "$M" -i blob -n 300 -S 2 -T | sed '/^#/d; s/$/ 0/'
+  frs-sample -m "$M" -i blob -n 300 -S 3 -T | sed '/^#/d; s/$/ 1/'; } >"$T/cat.txt"
+head -n 1 "$T/sets.txt" | grep -qx '#pts dims=2 extra=1 count=0 version=2 names=set' &&
+    grep -v '^#' "$T/sets.txt" | cmp -s - "$T/cat.txt" &&
+    ok "--sets 2 -T: the records of -S 2 and 3, then their set" ||
+    nok "--sets 2 -T: the records of -S 2 and 3, then their set"
+frs-sample -m "$M" -i blob -n 300 -S 2 --sets 2 | tail -c +41 >"$T/pipe.bin"
 frs-sample -m "$M" -i blob -n 300 -S 2 --sets 2 -o "$T/sets2.pts"
-tail -c +33 "$T/sets2.pts" | cmp -s - "$T/pipe.bin" &&
+tail -c +41 "$T/sets2.pts" | cmp -s - "$T/pipe.bin" &&
     ok "--sets 2 to a pipe: the same records" || nok "--sets 2 to a pipe: the same records"
+# --sets with --progressive: the step, then the set column, each set's
+# steps in turn: set i is -S 1+i --progressive with the set appended.
+frs-sample -m "$M" -i blob --pdf --progressive 50,200 --sets 3 -T -o "$T/ps.txt"
+for s in 0 1 2; do
+	frs-sample -m "$M" -i blob --pdf --progressive 50,200 -S $((s + 1)) -T |
+	    sed "/^#/d; s/\$/ $s/"
+done >"$T/ps1.txt"
+head -n 1 "$T/ps.txt" | grep -qx '#pts dims=2 extra=3 count=0 version=2 names=pdf,step,set' &&
+    grep -v '^#' "$T/ps.txt" | cmp -s - "$T/ps1.txt" &&
+    [ "$(awk '!/^#/ { print $4, $5 }' "$T/ps.txt" | uniq | tr '\n' ' ')" = "1 0 2 0 1 1 2 1 1 2 2 2 " ] &&
+    ok "--sets 3 --progressive: step and set columns, each set's steps in turn" ||
+    nok "--sets 3 --progressive: step and set columns"
+frs-sample -m "$M" -i blob --progressive 50,200 --sets 2 -o "$T/ps.pts" &&
+    [ "$(head -c 48 "$T/ps.pts" | tail -c 16 | tr '\0' ' ')" = "step set        " ] &&
+    ok "--sets --progressive: binary names step, set" || nok "--sets --progressive: binary names"
 frs-sample -m "$M" -i blob -n 800 -S 5 --sets 3 --count-only -o "$T/counts.txt"
 for s in 5 6 7; do frs-sample -m "$M" -i blob -n 800 -S $s --count-only; done >"$T/counts1.txt"
 cmp -s "$T/counts.txt" "$T/counts1.txt" && ok "--sets 3 --count-only: a line per set" ||
@@ -117,8 +143,6 @@ for a in "-i blob" "-i blob --pdf -T" "--progressive 100,400 -i blob" "-i const 
 done
 expect_fail "--sets 0" 2 "--sets" "$T/o.pts" frs-sample -m "$M" -n 10 --sets 0 -o "$T/o.pts"
 expect_fail "junk --sets" 2 "--sets" "$T/o.pts" frs-sample -m "$M" -n 10 --sets ten -o "$T/o.pts"
-expect_fail "--sets with --progressive" 2 "cannot be combined" "$T/o.pts" \
-    frs-sample -m "$M" --progressive 10,20 --sets 2 -o "$T/o.pts"
 expect_fail "--sets past 2^56 samples in all (64-bit product)" 2 "2^56" "$T/o.pts" \
     frs-sample -m "$M" -n 1099511627776 --sets 65537 -o "$T/o.pts"
 expect_fail "--sets past seed 2^64-1" 2 "2^64-1" "$T/o.pts" \

@@ -59,8 +59,18 @@ frs-sample -m "$M" -i blob3 -n 1000 --jitter random -q -T -o "$T/jr.txt" &&
     nok "jitter moves points, keeps the count"
 frs-sample -m "$M" -i blob3 -n 700 --sets 3 -q -T -o "$T/sets.txt" &&
     frs-sample -m "$M" -i blob3 -n 700 -S 2 -q -T -o "$T/s2.txt" &&
-    grep -v '^#' "$T/s2.txt" >"$T/s2.s" && grep -v '^#' "$T/sets.txt" | grep -qxFf "$T/s2.s" &&
-    ok "--sets: set 2 is seed 2" || nok "--sets: set 2 is seed 2"
+    sed '/^#/d; s/$/ 1/' "$T/s2.txt" >"$T/s2.s" &&
+    head -n 1 "$T/sets.txt" | grep -qx '#pts dims=3 extra=1 count=0 version=2 names=set' &&
+    awk '$4 == 1' "$T/sets.txt" | cmp -s - "$T/s2.s" &&
+    ok "--sets: set 1 (the set column) is seed 2" || nok "--sets: set 1 is seed 2"
+frs-sample -m "$M" -i blob3 --pdf --progressive 100,300 --sets 2 -q -T -o "$T/ps.txt" &&
+    { frs-sample -m "$M" -i blob3 --pdf --progressive 100,300 -S 1 -q -T | sed '/^#/d; s/$/ 0/'
+      frs-sample -m "$M" -i blob3 --pdf --progressive 100,300 -S 2 -q -T | sed '/^#/d; s/$/ 1/'
+    } >"$T/ps1.txt" &&
+    head -n 1 "$T/ps.txt" | grep -qx '#pts dims=3 extra=3 count=0 version=2 names=pdf,step,set' &&
+    grep -v '^#' "$T/ps.txt" | cmp -s - "$T/ps1.txt" &&
+    ok "--sets 2 --progressive: pdf, step and set columns" ||
+    nok "--sets 2 --progressive: pdf, step and set columns"
 
 # Count only past 2^32 window elements (n = 2^30 on a 2^3 volume).
 n=$(frs-sample -m "$M" -i const -s 2 -n 1073741824 --count-only -q)

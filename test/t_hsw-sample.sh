@@ -22,7 +22,12 @@ head -n 1 "$T/t.txt" | grep -q '^#pts dims=2 extra=0 count=500' &&
     ok "-T: 500 text lines in [0,1)" || nok "-T: 500 text lines in [0,1)"
 
 hsw-sample -i const -n 500 --pdf -T -o "$T/pdf.txt"
-head -n 1 "$T/pdf.txt" | grep -q 'dims=2 extra=1' && ok "--pdf header" || nok "--pdf header"
+head -n 1 "$T/pdf.txt" | grep -qx '#pts dims=2 extra=1 count=500 version=2 names=pdf' &&
+    ok "--pdf header: the column named pdf" || nok "--pdf header: $(head -n 1 "$T/pdf.txt")"
+hsw-sample -i const -n 500 --pdf -o "$T/pdf.pts"
+[ "$(head -c 36 "$T/pdf.pts" | tail -c 4 | tr '\0' ' ')" = "pdf " ] &&
+    [ "$(od -A n -t u4 -j 20 -N 4 "$T/pdf.pts" | tr -d ' ')" = 8 ] &&
+    ok "--pdf binary: names block pdf" || nok "--pdf binary: names block"
 awk '!/^#/ && ($3 < 0.999999 || $3 > 1.000001) { bad = 1 } END { exit bad }' "$T/pdf.txt" &&
     ok "--pdf of a constant map is 1" || nok "--pdf of a constant map is 1"
 hsw-sample -i blob -n 500 --pdf -T | awk '!/^#/ { s += $3 } END { exit !(s > 500) }' &&

@@ -56,8 +56,13 @@ r=$(awk -v a="$(col rmse "$T/d")" -v p="$DISC" 'BEGIN { printf "%.9g", a / p }')
 near "$(col rel_rmse "$T/d")" "$r" 1e-8 && ok "rel_rmse = rmse / exact" ||
     nok "rel_rmse $(col rel_rmse "$T/d"), expected $r"
 # The mean over the sets of the per-set estimates: one set of 51200
-# points has the same mean (equal set sizes).
-mc-error -f disc "$T/rand.pts" >"$T/d1"
+# points has the same mean (equal set sizes).  rand.pts has a set column
+# (ref-sample --sets), which mc-error splits by: the file without it is
+# the one set.
+ref-sample -k random --sets 200 -n 256 -q -T | awk '!/^#/ { print $1, $2 }' >"$T/rand1.txt"
+mc-error -f disc "$T/rand.pts" >"$T/d0"
+cmp -s "$T/d0" "$T/d" && ok "the set column splits as --sets 256 does" || nok "set column: $(cat "$T/d0")"
+mc-error -f disc "$T/rand1.txt" >"$T/d1"
 near "$(col estimate_mean "$T/d1")" "$(col estimate_mean "$T/d")" 1e-9 &&
     [ "$(col sets "$T/d1")" = 1 ] && ok "one set: same mean" || nok "one set"
 
@@ -94,15 +99,30 @@ near "$(col estimate_mean "$T/g2")" "$(awk -v m="$mid" 'BEGIN { printf "%.17g", 
     ok "pdf 2: half the plain mean" || nok "pdf 2: $(col estimate_mean "$T/g2")"
 
 # --group, several files, determinism, text and standard input.
-mc-error --group file "$T/rand.pts" "$T/r3.pts" >"$T/gf"
+mc-error --group file "$T/rand1.txt" "$T/r3.pts" >"$T/gf"
 [ "$(wc -l <"$T/gf")" -eq 7 ] && [ "$(col n "$T/gf" 2)" = 256 ] &&
-    [ "$(col n "$T/gf" 1)" = 51200 ] && ok "--group file: a row per file and integrand" ||
+    [ "$(col n "$T/gf" 1)" = 51200 ] && [ "$(col file "$T/gf" 1)" = "$T/rand1.txt" ] &&
+    [ "$(col file "$T/gf" 2)" = "$T/r3.pts" ] &&
+    ok "--group file: a row per file and integrand, with the file" ||
     nok "--group file: $(cat "$T/gf")"
+mc-error -f disc --group file "$T/r3.pts" >"$T/gf1"
+[ "$(col file "$T/gf1")" = "$T/r3.pts" ] && ok "--group file, one file: the file column" ||
+    nok "--group file, one file: $(cat "$T/gf1")"
+# Several files are never merged into one row: --group n is per count
+# and file, and the rows name their file.
 mc-error -f disc --sets 256 "$T/rand.pts" "$T/r3.pts" >"$T/gn"
-[ "$(wc -l <"$T/gn")" -eq 2 ] && [ "$(col sets "$T/gn")" = 201 ] &&
-    ok "--group n: sets of equal size together" || nok "--group n: $(cat "$T/gn")"
+[ "$(wc -l <"$T/gn")" -eq 3 ] && [ "$(col sets "$T/gn") $(col sets "$T/gn" 2)" = "200 1" ] &&
+    [ "$(col file "$T/gn") $(col file "$T/gn" 2)" = "$T/rand.pts $T/r3.pts" ] &&
+    ok "--group n, two files: a row each, with the file" || nok "--group n: $(cat "$T/gn")"
+mc-error -f disc --sets 256 --group n "$T/rand.pts" "$T/r3.pts" >"$T/gn2"
+[ "$(wc -l <"$T/gn2")" -eq 2 ] && [ "$(col sets "$T/gn2")" = 201 ] &&
+    [ "$(head -n 1 "$T/gn2" | cut -f 8)" = "" ] &&
+    ok "--group n: sets of equal size together over the files" || nok "--group n: $(cat "$T/gn2")"
+[ "$(head -n 1 "$T/d" | cut -f 8)" = "" ] && ok "one file: no file column" ||
+    nok "one file: $(head -n 1 "$T/d")"
 mc-error -f disc --group all "$T/grid.txt" "$T/r3.pts" >"$T/ga"
 [ "$(wc -l <"$T/ga")" -eq 2 ] && [ "$(col n "$T/ga")" = 2176 ] &&
+    [ "$(head -n 1 "$T/ga" | cut -f 8)" = "" ] &&
     [ "$(col sets "$T/ga")" = 2 ] && ok "--group all: one row, n the mean" ||
     nok "--group all: $(cat "$T/ga")"
 mc-error -f gauss -f disc,step --sets 256 "$T/rand.pts" >"$T/x1"
@@ -111,6 +131,30 @@ cmp -s "$T/x1" "$T/x2" && ok "-f repeated and comma lists; deterministic" ||
     nok "-f lists"
 mc-error - <"$T/grid.txt" >"$T/x3"
 cmp -s "$T/x3" "$T/all" && ok "standard input" || nok "standard input"
+
+# Sets through a pipe: frs-sample --sets 4 --pdf's set column splits the
+# stream as the four seeds' files do, and its pdf column (named) weights.
+frs-sample -q -i blob -n 200 --sets 4 --pdf | mc-error --group all - >"$T/ps"
+for s in 1 2 3 4; do frs-sample -q -i blob -n 200 -S $s --pdf -o "$T/p$s.pts"; done
+mc-error --group all "$T/p1.pts" "$T/p2.pts" "$T/p3.pts" "$T/p4.pts" >"$T/ps1"
+cmp -s "$T/ps" "$T/ps1" && [ "$(col sets "$T/ps")" = 4 ] &&
+    ok "frs-sample --sets 4 --pdf | mc-error: the four seeds' rows" ||
+    nok "frs-sample --sets 4 | mc-error: $(cat "$T/ps") / $(cat "$T/ps1")"
+frs-sample -q -i blob -n 200 --sets 4 --pdf | mc-error --group file - >"$T/psf"
+[ "$(cut -f 1-7 "$T/psf")" = "$(cat "$T/ps1")" ] && [ "$(col file "$T/psf")" = - ] &&
+    ok "--group file of the stream: the same rows, file -" || nok "--group file of the stream"
+# Named columns: the step and set columns of --progressive --sets are no
+# pdf (in version 1 an unnamed first extra column was taken for one).
+frs-sample -q -i blob --progressive 50,200 --sets 2 | mc-error -f step - >"$T/st"
+frs-sample -q -i blob --progressive 50,200 --sets 2 | mc-error -f step --no-pdf - >"$T/st1"
+cmp -s "$T/st" "$T/st1" && [ "$(wc -l <"$T/st")" = 3 ] &&
+    ok "step and set columns are not a pdf" || nok "step column taken for a pdf"
+frs-sample -q -i blob --progressive 50,200 | mc-error -f step - >"$T/st2"
+frs-sample -q -i blob --progressive 50,200 | mc-error -f step --no-pdf - >"$T/st3"
+cmp -s "$T/st2" "$T/st3" && [ "$(wc -l <"$T/st2")" = 2 ] &&
+    ok "--progressive alone: the step column is not a pdf" || nok "step column taken for a pdf"
+expect_fail "--weights without a pdf column" 1 "no pdf column" "$T/o9" \
+    sh -c "frs-sample -q -i blob --progressive 50,200 --sets 2 | mc-error --weights -o '$T/o9' -"
 
 # (4) Bad input: exit 1 naming the file, no output left.
 O=$T/o/out.tsv
@@ -137,7 +181,7 @@ expect_fail "pdf inf" 1 "$T/pinf.txt" "$O" mc-error -o "$O" "$T/pinf.txt"
 expect_fail "pdf nan" 1 "$T/pnan.txt" "$O" mc-error -o "$O" "$T/pnan.txt"
 expect_fail "empty file" 1 "$T/empty.txt" "$O" mc-error -o "$O" "$T/empty.txt"
 expect_fail "--sets not dividing" 1 "$T/r3.pts" "$O" \
-    mc-error --sets 100 -o "$O" "$T/rand.pts" "$T/r3.pts"
+    mc-error --sets 100 -o "$O" "$T/rand1.txt" "$T/r3.pts"
 expect_fail "--weights without a pdf" 1 "$T/r3.pts" "$O" \
     mc-error --weights -o "$O" "$T/r3.pts"
 expect_fail "bad file after good" 1 "$T/d3.txt" "$O" \

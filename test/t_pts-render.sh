@@ -303,3 +303,27 @@ if command -v script >/dev/null 2>&1; then
 	grep -q "refusing to write binary data to a terminal" "$T/tty" &&
 	    ok "no PNG on a terminal" || nok "no PNG on a terminal"
 fi
+
+# --set K: one set of a stream with a set column (frs-sample --sets 4),
+# the image of the seed that made it; or the K-th run of --sets N points
+# of an old file without one.
+frs-sample -q -i blob -n 300 --sets 4 | pts-render --set 2 -o "$T/set2.png" &&
+    frs-sample -q -i blob -n 300 -S 3 | pts-render -o "$T/seed3.png" &&
+    cmp -s "$T/set2.png" "$T/seed3.png" && ok "--set 2 of a --sets 4 stream = -S 3" ||
+    nok "--set 2 of a --sets 4 stream"
+frs-sample -q -i blob -n 300 --sets 4 | pts-render --color --set 0 -o "$T/set0.png" &&
+    frs-sample -q -i blob -n 300 | pts-render --color -o "$T/seed1.png" &&
+    cmp -s "$T/set0.png" "$T/seed1.png" && ok "--set 0 --color: the ramp over the set" ||
+    nok "--set 0 --color"
+ref-sample -q -k halton -n 64 --sets 3 -T | awk '!/^#/ { print $1, $2 }' >"$T/old.txt"
+ref-sample -q -k halton -n 64 -S 2 | pts-render -o "$T/h2.png"
+pts-render --sets 64 --set 1 -o "$T/old1.png" "$T/old.txt" && cmp -s "$T/old1.png" "$T/h2.png" &&
+    ok "--sets 64 --set 1 of a file without a set column" || nok "--sets 64 --set 1"
+expect_fail "--set without a set column" 1 "old.txt: --set 1: the points have no set column" \
+    "$T/o.png" pts-render --set 1 -o "$T/o.png" "$T/old.txt"
+expect_fail "--set past the sets" 1 "old.txt: --set 3: the file has 3 sets of 64 points" \
+    "$T/o.png" pts-render --sets 64 --set 3 -o "$T/o.png" "$T/old.txt"
+expect_fail "--set of no point" 1 "--set 9: no point has that set" "$T/o.png" \
+    sh -c "frs-sample -q -n 100 --sets 4 | pts-render --set 9 -o '$T/o.png'"
+expect_fail "--sets without --set" 2 "--set K" "$T/o.png" \
+    pts-render --sets 64 -o "$T/o.png" "$T/old.txt"

@@ -1594,7 +1594,7 @@ static void test_hsw_warp(void **state)
 	double *pdf = malloc(n * sizeof *pdf), *pdf2 = malloc(n * sizeof *pdf);
 	const char *pin = tu_path("in.pts"), *exr = write_exr("hblob.exr",
 	    &blob);
-	struct frs_points p = { 2, 0, n, in };
+	struct frs_points p = { 2, 0, n, in, { "" }, 0 };
 	frs_hsw *hw;
 	float *map;
 	uint32_t w, h;

@@ -66,11 +66,64 @@ static int blank_or_comment(const char *s)
 	return *s == '\0' || *s == '#';
 }
 
-/* "#pts dims=K extra=E count=N" */
+int pts_name_ok(const char *s)
+{
+	size_t n = 0;
+
+	if (*s >= '0' && *s <= '9')
+		return 0;
+	for (; s[n] != '\0'; n++)
+		if (!isalnum((unsigned char)s[n]) && s[n] != '_')
+			return 0;
+	return n >= 1 && n < PTS_NAMELEN;
+}
+
+/* A header problem: "file:line: what" in text, "file: what" in binary
+ * (line 0). */
+static int name_fail(const char *name, unsigned long line, const char *what,
+    const char *arg)
+{
+	if (line != 0)
+		return frs_fail("%s:%lu: %s%s", name, line, what, arg);
+	return frs_fail("%s: %s%s", name, what, arg);
+}
+
+/* Names of the extra columns, nn of them so far: one more, valid and not
+ * a repeat; -1 with a message naming the file (and line). */
+static int add_name(char (*names)[PTS_NAMELEN], unsigned *nn,
+    const char *s, size_t len, const char *name, unsigned long line)
+{
+	char buf[PTS_NAMELEN];
+
+	if (*nn == PTS_MAXCOLS)
+		return name_fail(name, line, "more than 16 column names", "");
+	if (len == 0 || len >= sizeof buf)
+		return name_fail(name, line, len == 0 ? "an empty column name" :
+		    "a column name longer than 31 characters", "");
+	memcpy(buf, s, len);
+	buf[len] = '\0';
+	if (!pts_name_ok(buf)) {
+		int shown = line != 0;	/* text, and printable */
+		for (size_t i = 0; i < len; i++)
+			shown &= isprint((unsigned char)buf[i]) != 0;
+		return name_fail(name, line, "bad column name ", shown ? buf :
+		    "(not of A-Z, a-z, 0-9 and _)");
+	}
+	for (unsigned j = 0; j < *nn; j++)
+		if (strcmp(names[j], buf) == 0)
+			return name_fail(name, line, "column name given twice: ",
+			    buf);
+	memcpy(names[(*nn)++], buf, len + 1);
+	return 0;
+}
+
+/* "#pts dims=K extra=E count=N [version=2] [names=A,B,...]" */
 static int text_header(struct pts_reader *r)
 {
 	char *tok, *save = NULL;
 	char *s = r->buf + 4;
+	unsigned nn = 0;
+	int have_names = 0;
 
 	for (tok = strtok_r(s, " \t", &save); tok; tok = strtok_r(NULL, " \t",
 	    &save)) {
@@ -82,6 +135,24 @@ static int text_header(struct pts_reader *r)
 			continue;
 		memcpy(key, tok, (size_t)(eq - tok));
 		key[eq - tok] = '\0';
+		if (strcmp(key, "names") == 0) {
+			const char *a = eq + 1, *c;
+			have_names = 1;
+			nn = 0;
+			while (*a != '\0') {
+				c = strchr(a, ',');
+				if (add_name(r->names, &nn, a, c ? (size_t)(c - a) :
+				    strlen(a), r->name, r->line) < 0)
+					return -1;
+				if (c == NULL)
+					break;
+				a = c + 1;
+				if (*a == '\0')
+					return frs_fail("%s:%lu: an empty column "
+					    "name", r->name, r->line);
+			}
+			continue;
+		}
 		errno = 0;
 		v = strtoull(eq + 1, &end, 10);
 		if (*end != '\0' || errno != 0)
@@ -93,11 +164,22 @@ static int text_header(struct pts_reader *r)
 			r->extra = (unsigned)(v > 99 ? 99 : v);
 		else if (strcmp(key, "count") == 0)
 			r->count = v;
+		else if (strcmp(key, "version") == 0) {
+			if (v < 1 || v > PTS_VERSION)
+				return frs_fail("%s:%lu: unsupported format "
+				    "version %llu (this program reads versions "
+				    "1 to %d)", r->name, r->line, v, PTS_VERSION);
+			r->version = (unsigned)v;
+		}
 	}
 	if (r->dims < 1 || r->dims + r->extra > PTS_MAXCOLS)
 		return frs_fail("%s:%lu: header gives %u coordinates and %u "
 		    "extra values (1 to %d columns allowed)", r->name, r->line,
 		    r->dims, r->extra, PTS_MAXCOLS);
+	if ((have_names || r->version >= 2) && nn != r->extra)
+		return frs_fail("%s:%lu: header names %u column%s for %u extra "
+		    "value%s", r->name, r->line, nn, nn == 1 ? "" : "s",
+		    r->extra, r->extra == 1 ? "" : "s");
 	return 0;
 }
 
@@ -122,6 +204,7 @@ static int text_open(struct pts_reader *r)
 	int rc;
 
 	r->text = 1;
+	r->version = 1;
 	while ((rc = rd_line(r)) == 1) {
 		if (strncmp(r->buf, "#pts", 4) == 0 && r->dims == 0) {
 			if (text_header(r) < 0)
@@ -147,16 +230,53 @@ static int text_open(struct pts_reader *r)
 	return 0;
 }
 
+/* Version 2's names block, L bytes after the header: the extra columns'
+ * names, each ended by a NUL, then NULs. */
+static int binary_names(struct pts_reader *r, uint32_t len)
+{
+	char blk[PTS_MAXNAMES];
+	size_t got, at = 0;
+	unsigned nn = 0;
+
+	if (len % 8 != 0 || len > sizeof blk || (len == 0) != (r->extra == 0))
+		return frs_fail("%s: header gives %u bytes of column names for "
+		    "%u extra values (%s)", r->name, len, r->extra, r->extra ==
+		    0 ? "0 needed" : "a multiple of 8 up to 512 needed");
+	got = fread(blk, 1, len, r->fp);
+	if (got != len) {
+		if (ferror(r->fp))
+			return frs_fail_errno("%s: read error", r->name);
+		return frs_fail("%s: truncated header (%zu of %u bytes of "
+		    "column names)", r->name, got, len);
+	}
+	while (nn < r->extra) {
+		const char *e = memchr(blk + at, '\0', len - at);
+		if (e == NULL)
+			return frs_fail("%s: %u of %u column names in the "
+			    "header", r->name, nn, r->extra);
+		if (add_name(r->names, &nn, blk + at, (size_t)(e - (blk + at)),
+		    r->name, 0) < 0)
+			return -1;
+		at = (size_t)(e - blk) + 1;
+	}
+	for (; at < len; at++)
+		if (blk[at] != '\0')
+			return frs_fail("%s: more than %u column names in the "
+			    "header", r->name, r->extra);
+	return 0;
+}
+
 static int binary_open(struct pts_reader *r)
 {
 	const unsigned char *h = r->pre;
-	uint32_t version = io_get_u32(h + 8);
+	uint32_t version = io_get_u32(h + 8), namelen = 0;
 	long long fsize = io_file_size(r->fp);
 
 	r->npre = r->ppre = 0;
-	if (version != PTS_VERSION)
+	if (version < 1 || version > PTS_VERSION)
 		return frs_fail("%s: unsupported format version %u (this program "
-		    "reads version %d)", r->name, version, PTS_VERSION);
+		    "reads versions 1 to %d)", r->name, version, PTS_VERSION);
+	r->version = version;
 	r->dims = io_get_u32(h + 12);
 	r->extra = io_get_u32(h + 16);
 	r->count = io_get_u64(h + 24);
@@ -165,9 +285,15 @@ static int binary_open(struct pts_reader *r)
 		return frs_fail("%s: header gives %u coordinates and %u extra "
 		    "values (1 to %d columns allowed)", r->name, r->dims,
 		    r->extra, PTS_MAXCOLS);
+	if (version >= 2) {
+		namelen = io_get_u32(h + 20);
+		if (binary_names(r, namelen) < 0)
+			return -1;
+	}
 	if (fsize >= 0) {
 		unsigned long long rec = 8ull * (r->dims + r->extra);
-		unsigned long long body = (unsigned long long)fsize - PTS_HEADER;
+		unsigned long long body = (unsigned long long)fsize - PTS_HEADER -
+		    namelen;
 		if (r->count == 0 && body % rec != 0)
 			return frs_fail("%s: truncated record at the end (%llu "
 			    "bytes after the header are not a multiple of %llu)",
@@ -370,6 +496,8 @@ int pts_read(const char *path, struct frs_points *p)
 		return -1;
 	p->dims = r.dims;
 	p->extra = r.extra;
+	p->version = r.version;
+	memcpy(p->names, r.names, sizeof p->names);
 	ncol = r.dims + r.extra;
 	/* The header's count only sizes the first buffer, and at most 2^16
 	 * records of it: a damaged count must not allocate without bound;
@@ -397,22 +525,34 @@ int pts_read(const char *path, struct frs_points *p)
 	return rc < 0 ? -1 : 0;
 }
 
+int pts_column(const struct frs_points *p, const char *name)
+{
+	for (unsigned j = 0; j < p->extra; j++)
+		if (strcmp(p->names[j], name) == 0)
+			return (int)(p->dims + j);
+	return -1;
+}
+
 /* ---- writing ---------------------------------------------------------- */
 
 static void header_bytes(unsigned char *h, unsigned dims, unsigned extra,
-    uint64_t count)
+    uint32_t namelen, uint64_t count)
 {
 	memcpy(h, PTS_MAGIC, 8);
 	io_put_u32(h + 8, PTS_VERSION);
 	io_put_u32(h + 12, dims);
 	io_put_u32(h + 16, extra);
-	io_put_u32(h + 20, 0);
+	io_put_u32(h + 20, namelen);
 	io_put_u64(h + 24, count);
 }
 
 int pts_writer_begin(struct pts_writer *w, FILE *fp, const char *name,
-    unsigned dims, unsigned extra, uint64_t count, int text)
+    unsigned dims, unsigned extra, const char *const *names, uint64_t count,
+    int text)
 {
+	char blk[PTS_MAXNAMES];
+	size_t len = 0;
+
 	memset(w, 0, sizeof *w);
 	w->fp = fp;
 	w->name = name;
@@ -423,16 +563,36 @@ int pts_writer_begin(struct pts_writer *w, FILE *fp, const char *name,
 	if (dims < 1 || dims + extra > PTS_MAXCOLS)
 		return frs_fail("%s: %u coordinates and %u extra values per "
 		    "point are not supported", name, dims, extra);
+	memset(blk, 0, sizeof blk);
+	for (unsigned j = 0; j < extra; j++) {
+		const char *nm = names != NULL ? names[j] : NULL;
+		if (nm == NULL || !pts_name_ok(nm))
+			return frs_fail("%s: internal error: extra column %u has "
+			    "no valid name", name, j + 1);
+		for (unsigned i = 0; i < j; i++)
+			if (strcmp(names[i], nm) == 0)
+				return frs_fail("%s: internal error: two extra "
+				    "columns named %s", name, nm);
+		memcpy(blk + len, nm, strlen(nm));
+		len += strlen(nm) + 1;
+	}
+	w->namelen = (uint32_t)((len + 7) / 8 * 8);
 	if (text) {
-		if (fprintf(fp, "#pts dims=%u extra=%u count=%llu\n", dims, extra,
-		    (unsigned long long)count) < 0)
+		if (fprintf(fp, "#pts dims=%u extra=%u count=%llu version=%d",
+		    dims, extra, (unsigned long long)count, PTS_VERSION) < 0)
+			return frs_fail_errno("%s: write error", name);
+		for (unsigned j = 0; j < extra; j++)
+			if (fprintf(fp, "%s%s", j ? "," : " names=", names[j]) < 0)
+				return frs_fail_errno("%s: write error", name);
+		if (putc('\n', fp) == EOF)
 			return frs_fail_errno("%s: write error", name);
 		return 0;
 	}
 	{
 		unsigned char h[PTS_HEADER];
-		header_bytes(h, dims, extra, count);
-		if (fwrite(h, 1, sizeof h, fp) != sizeof h)
+		header_bytes(h, dims, extra, w->namelen, count);
+		if (fwrite(h, 1, sizeof h, fp) != sizeof h ||
+		    fwrite(blk, 1, w->namelen, fp) != w->namelen)
 			return frs_fail_errno("%s: write error", name);
 	}
 	return 0;
@@ -555,7 +715,7 @@ int pts_writer_end(struct pts_writer *w)
 		/* Patch the true count in when the stream can seek. */
 		long pos = ftell(w->fp);
 		unsigned char h[PTS_HEADER];
-		header_bytes(h, w->dims, w->extra, w->written);
+		header_bytes(h, w->dims, w->extra, w->namelen, w->written);
 		if (pos >= 0 && fseek(w->fp, 0, SEEK_SET) == 0) {
 			if (fwrite(h, 1, sizeof h, w->fp) != sizeof h ||
 			    fseek(w->fp, pos, SEEK_SET) != 0)
@@ -571,8 +731,12 @@ int pts_write(FILE *fp, const char *name, const struct frs_points *p,
     int text)
 {
 	struct pts_writer w;
+	const char *names[PTS_MAXCOLS];
 
-	if (pts_writer_begin(&w, fp, name, p->dims, p->extra, p->n, text) < 0)
+	for (unsigned j = 0; j < p->extra && j < PTS_MAXCOLS; j++)
+		names[j] = p->names[j];
+	if (pts_writer_begin(&w, fp, name, p->dims, p->extra, names, p->n,
+	    text) < 0)
 		return -1;
 	if (pts_writer_put_n(&w, p->x, p->n) < 0)
 		return -1;
