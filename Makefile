@@ -198,7 +198,7 @@ $(B)/test/user_%: $(B)/test/user_%.o $(B)/libfrs.a
 
 -include $(LIBOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d) $(REFBIN:=.d) \
 	$(USERBIN:=.d) \
-	$(PICOBJ:.o=.d)
+	$(PICOBJ:.o=.d) $(wildcard $(B)/fuzz/*.d $(B)/fuzz/prog/*.d)
 
 deps:
 	@sh scripts/deps.sh

@@ -76,7 +76,7 @@ done
 block() {
 	awk -v b="# $1" '$0 == b { on = 1; next } on && $0 == "" { exit } on' "$2"
 }
-check "--summary" dda --summary --sets 256 --bins 40 -j 2 --png "$T/page.png" \
+check "--summary" dda --summary --bins 40 -j 2 --png "$T/page.png" \
     -o "$T/sum" "$T/rand.pts" "$T/dart.pts"
 [ "$(grep '^# ' "$T/sum" | tr '\n' '|')" = \
     "# summary|# density|# radial $T/rand.pts|# radial $T/dart.pts|# rdf $T/rand.pts|# rdf $T/dart.pts|" ] &&
@@ -86,23 +86,23 @@ check "--summary" dda --summary --sets 256 --bins 40 -j 2 --png "$T/page.png" \
     ok "--summary: its blocks, in order, and a row per file" ||
     nok "--summary layout: $(grep '^# ' "$T/sum" | tr '\n' '|')"
 # The same numbers as the analyses run one by one.
-dda --fourier --sets 256 --radial "$T/sr" -o /dev/null "$T/rand.pts"
+dda --fourier --radial "$T/sr" -o /dev/null "$T/rand.pts"
 block "radial $T/rand.pts" "$T/sum" | cut -f 1-4 | cmp -s - "$T/sr" &&
     ok "--summary: radial mean and anisotropy of --fourier --radial" ||
     nok "--summary radial differs"
-dda --rdf --sets 256 --bins 40 -o "$T/sg" "$T/dart.pts"
+dda --rdf --bins 40 -o "$T/sg" "$T/dart.pts"
 block "rdf $T/dart.pts" "$T/sum" | cut -f 1-2 | cmp -s - "$T/sg" &&
     ok "--summary: RDF of --rdf" || nok "--summary rdf differs"
-dda --density --sets 256 -o "$T/sd" "$T/rand.pts" "$T/dart.pts"
+dda --density -o "$T/sd" "$T/rand.pts" "$T/dart.pts"
 sed '$d' "$T/sd" >"$T/sd1"
 block density "$T/sum" | cmp -s - "$T/sd1" &&
     ok "--summary: the sets' densities of --density" || nok "--summary density differs"
-dda --density --sets 256 -o "$T/sd2" "$T/rand.pts"
+dda --density -o "$T/sd2" "$T/rand.pts"
 [ "$(block summary "$T/sum" | awk -F '\t' 'NR == 2 { print $2, $3, $4 }')" = \
     "$(awk -F '\t' '$1 == "mean" { print $2, $3, $4 }' "$T/sd2")" ] &&
     ok "--summary: a file's row has the mean of --density" ||
     nok "--summary mean density: $(block summary "$T/sum" | sed -n 2p)"
-dda --summary --sets 256 --bins 40 -j 1 --png "$T/pj1.png" -o "$T/sj1" \
+dda --summary --bins 40 -j 1 --png "$T/pj1.png" -o "$T/sj1" \
     "$T/rand.pts" "$T/dart.pts"
 cmp -s "$T/sj1" "$T/sum" && cmp -s "$T/pj1.png" "$T/page.png" &&
     ok "--summary: -j 1 = -j 2, table and page" || nok "--summary: -j"
