@@ -73,6 +73,13 @@ for e in 20 24; do
 		row "process 2^$e, -j $j, to /dev/null" "$o" "$b" "$tgt"
 	done
 done
+for e in 20 24; do
+	n=$((1 << e))
+	o=$(med "$OURS/frs-sample" -q -m "$MAT" -i blob -n $n -j 1 --exact-count -o /dev/null)
+	d=$(med "$OURS/frs-sample" -q -m "$MAT" -i blob -n $n -j 1 -o /dev/null)
+	printf '%-40s %10.4f s (%.2fx the run of about n)\n' \
+	    "process 2^$e --exact-count, -j 1" "$o" "$(ratio "$o" "$d")"
+done
 
 echo
 echo "Phases (-v) at 2^24; the thresholding includes the conversion to points"

@@ -28,6 +28,53 @@ pass=0
 fail=0
 failed=""
 
+# Two tests at a time (FRS_TEST_JOBS; 1: one after another): each runs as
+# this script on its own name, its lines kept in LOGS/NAME.res and shown
+# when it ends; the sums come from their last lines.
+jobs=${FRS_TEST_JOBS:-2}
+if [ -z "${FRS_TEST_CHILD:-}" ] && [ "$jobs" -gt 1 ]; then
+	names=""
+	for t in "$build"/test/test_* "$build"/fuzz/replay_*; do
+		case $t in *.o|*.d) continue ;; esac
+		[ -x "$t" ] && names="$names $(basename "$t")"
+	done
+	for t in test/t_*.sh test/hard/t_*.sh; do
+		[ -f "$t" ] && names="$names $(basename "$t" .sh)"
+	done
+	names="$names lint-man"
+	if [ $# -gt 0 ]; then
+		keep=""
+		for n in $names; do
+			for w in "$@"; do [ "$w" = "$n" ] && keep="$keep $n"; done
+		done
+		names=$keep
+	fi
+	export FRS_TEST_CHILD=1
+	# The slow ones first, so that they do not end the run alone.
+	for n in t_experiments t_frs-sample test_api t_faults; do
+		case " $names " in *" $n "*)
+			names="$n $(echo " $names " | sed "s/ $n / /")" ;;
+		esac
+	done
+	echo $names | tr ' ' '\n' | xargs -P "$jobs" -I{} sh -c \
+	    'sh test/run.sh "$0" "$1" >"$2/$1.res" 2>&1; sed "\$d" "$2/$1.res"' \
+	    "$build" {} "$logs"
+	for n in $names; do
+		last=$(tail -n 1 "$logs/$n.res")
+		p=${last%% passed*}
+		f=${last#*passed, }
+		f=${f%% failed*}
+		case $p$f in *[!0-9]*|"") p=0 f=1 ;; esac
+		pass=$((pass + p))
+		fail=$((fail + f))
+		[ "$f" -ne 0 ] && failed="$failed $n"
+	done
+	[ -n "$failed" ] && echo "failed:$failed"
+	echo "$pass passed, $fail failed"
+	[ "$fail" -eq 0 ]
+	exit
+fi
+
 want() {
 	[ -z "$sel" ] && return 0
 	for w in $sel; do [ "$w" = "$1" ] && return 0; done

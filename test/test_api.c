@@ -144,7 +144,7 @@ static struct drawn draw(const frs_sampler *s, const uint64_t *steps,
 	if (frs_draw_progressive(s, steps, nsteps, seed, d.xy, d.pdf, d.step,
 	    d.n, &cnt, &e) != FRS_OK) {
 		print_error("frs_draw_progressive: %s %s\n",
-		    frs_code_name(e.code), e.message);
+		    frs_code_name((int)e.code), e.message);
 		fail();
 	}
 	assert_int_equal(e.code, FRS_OK);
@@ -776,7 +776,7 @@ static void compare_mask(const char *path, const char *algo,
 
 	if (frs_mask_load(&mk, path, &e) != FRS_OK) {
 		print_error("frs_mask_load %s: %s %s\n", path,
-		    frs_code_name(e.code), e.message);
+		    frs_code_name((int)e.code), e.message);
 		fail();
 	}
 	frs_options_init(&o);
@@ -878,7 +878,7 @@ static void expect_code(const char *file, int line, const char *what,
 	}
 	if (e != NULL && (int)e->code != code) {
 		print_error("%s: err->code %s, returned %s\n", what,
-		    frs_code_name(e->code), frs_code_name(rc));
+		    frs_code_name((int)e->code), frs_code_name(rc));
 		_fail(file, line);
 	}
 	if (e != NULL && code != FRS_OK && e->message[0] == '\0') {

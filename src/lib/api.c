@@ -1206,9 +1206,9 @@ int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
 	rc = api_result_each(&su, &s->map, &r, nsteps, want_pdf, fn, ctx);
 	frs_result_free(&r);
 	if (rc == FRS_E_NOMEM)
-		return set_err(err, rc, "out of memory");
+		return set_err(err, (enum frs_code)rc, "out of memory");
 	if (rc == FRS_E_CALLBACK)
-		return set_err(err, rc, "stopped by the callback");
+		return set_err(err, (enum frs_code)rc, "stopped by the callback");
 	return ok(err);
 }
 
