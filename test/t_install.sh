@@ -223,42 +223,38 @@ unset LD_LIBRARY_PATH FRS_DATA FRS_MATRIX FRS_MATRIX3
     ok "frs-sample --data-dir: $P/share/frs" ||
     nok "frs-sample --data-dir: $("$P/bin/frs-sample" --data-dir 2>&1)"
 
-# frs.pc with its rpath: libfrs.so of the prefix, found without
-# LD_LIBRARY_PATH, and the shipped matrix beside it.
-if cc $WARN -o "$T/p_dyn" "$TOP/test/api_example.c" $(pcp --cflags frs) \
-    $(pcp --libs frs) $(pcp --variable=rpath frs) 2>"$T/err"; then
-	ok "linked with pkg-config frs and its rpath"
-	ldd "$T/p_dyn" | grep -q "libfrs\.so\.1 => $P/lib/" &&
-	    ok "it loads $P/lib/libfrs.so.1" || nok "it loads $P/lib/libfrs.so.1"
-	"$T/p_dyn" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
+# link_run PC EXE [FLAGS...]: the example linked with pkg-config PC (and
+# FLAGS) into EXE, which prints frs-sample's points with the default
+# matrix; 0 if it linked.
+link_run() {
+	_pc=$1 _exe=$2
+	shift 2
+	if ! cc $WARN -o "$_exe" "$TOP/test/api_example.c" $(pcp --cflags "$_pc") \
+	    $(pcp --libs "$_pc") "$@" 2>"$T/err"; then
+		nok "linked with pkg-config $_pc"
+		sed 's/^/# /' "$T/err" | head -n 10
+		return 1
+	fi
+	ok "linked with pkg-config $_pc"
+	"$_exe" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
 	cmp -s "$T/p.txt" "$T/ref.txt" &&
-	    ok "frs.pc: frs-sample's points with the default matrix" || {
-		nok "frs.pc: frs-sample's points with the default matrix"
+	    ok "$_pc.pc: frs-sample's points with the default matrix" || {
+		nok "$_pc.pc: frs-sample's points with the default matrix"
 		sed 's/^/# /' "$T/err" | head -n 5
 	}
-else
-	nok "linked with pkg-config frs and its rpath"
-	sed 's/^/# /' "$T/err" | head -n 10
-fi
+}
+# frs.pc with its rpath: libfrs.so of the prefix, found without
+# LD_LIBRARY_PATH, and the shipped matrix beside it.
+link_run frs "$T/p_dyn" $(pcp --variable=rpath frs) &&
+    { ldd "$T/p_dyn" | grep -q "libfrs\.so\.1 => $P/lib/" &&
+    ok "it loads $P/lib/libfrs.so.1" || nok "it loads $P/lib/libfrs.so.1"; }
 # frs-static.pc: libfrs.a by its path, no libfrs.so needed.
 pcp --libs frs-static | grep -q -- "$P/lib/libfrs\.a" &&
     ok "pkg-config --libs frs-static names $P/lib/libfrs.a" ||
     nok "pkg-config --libs frs-static names libfrs.a: $(pcp --libs frs-static)"
-if cc $WARN -o "$T/p_st" "$TOP/test/api_example.c" $(pcp --cflags frs-static) \
-    $(pcp --libs frs-static) 2>"$T/err"; then
-	ok "linked with pkg-config frs-static"
-	readelf -d "$T/p_st" | grep -q 'NEEDED.*libfrs' &&
-	    nok "frs-static: it needs libfrs.so" || ok "frs-static: it does not need libfrs.so"
-	"$T/p_st" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
-	cmp -s "$T/p.txt" "$T/ref.txt" &&
-	    ok "frs-static.pc: frs-sample's points with the default matrix" || {
-		nok "frs-static.pc: frs-sample's points with the default matrix"
-		sed 's/^/# /' "$T/err" | head -n 5
-	}
-else
-	nok "linked with pkg-config frs-static"
-	sed 's/^/# /' "$T/err" | head -n 10
-fi
+link_run frs-static "$T/p_st" &&
+    { readelf -d "$T/p_st" | grep -q 'NEEDED.*libfrs' &&
+    nok "frs-static: it needs libfrs.so" || ok "frs-static: it does not need libfrs.so"; }
 
 # The prefix moved: its programs find their data where they are now.
 Q=$R/moved

@@ -121,18 +121,8 @@ int frd_read_pre(FILE *fp, const char *name, const unsigned char *pre,
 	int c;
 
 	memset(m, 0, sizeof *m);
-	if (npre > 0) {
-		size_t got;
-		memcpy(h, pre, npre);
-		got = fread(h + npre, 1, sizeof h - npre, fp);
-		if (ferror(fp))
-			return frs_fail_errno("%s: read error", name);
-		if (npre + got < sizeof h)
-			return frs_fail("%s: truncated header (%zu of %zu bytes)",
-			    name, npre + got, sizeof h);
-	} else if (io_read_exact(fp, name, h, sizeof h, "header") < 0) {
+	if (io_read_header(fp, name, pre, npre, h, sizeof h) < 0)
 		return -1;
-	}
 	if (parse_header(h, name, &dims, sz, &plen) < 0)
 		return -1;
 	if (fsize >= 0) {

@@ -87,18 +87,8 @@ static int read_header(FILE *fp, const char *name, const unsigned char *pre,
 {
 	unsigned char hd[FRP_HEADER];
 
-	if (npre > 0) {
-		size_t got;
-		memcpy(hd, pre, npre);
-		got = fread(hd + npre, 1, sizeof hd - npre, fp);
-		if (ferror(fp))
-			return frs_fail_errno("%s: read error", name);
-		if (npre + got < sizeof hd)
-			return frs_fail("%s: truncated header (%zu of %zu bytes)",
-			    name, npre + got, sizeof hd);
-	} else if (io_read_exact(fp, name, hd, sizeof hd, "header") < 0) {
+	if (io_read_header(fp, name, pre, npre, hd, sizeof hd) < 0)
 		return -1;
-	}
 	if (memcmp(hd, FRP_MAGIC, 8) != 0)
 		return frs_fail("%s: not a prepared matrix (wrong magic)", name);
 	if (io_get_u32(hd + 8) != FRP_VERSION)

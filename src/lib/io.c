@@ -61,6 +61,23 @@ int io_read_exact(FILE *fp, const char *name, void *buf, size_t n,
 	    got, n);
 }
 
+int io_read_header(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, unsigned char *buf, size_t n)
+{
+	size_t got;
+
+	if (npre == 0)
+		return io_read_exact(fp, name, buf, n, "header");
+	memcpy(buf, pre, npre);
+	got = fread(buf + npre, 1, n - npre, fp);
+	if (ferror(fp))
+		return frs_fail_errno("%s: read error", name);
+	if (npre + got < n)
+		return frs_fail("%s: truncated header (%zu of %zu bytes)", name,
+		    npre + got, n);
+	return 0;
+}
+
 int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len)
 {
 	size_t cap = 1 << 16, n = 0;

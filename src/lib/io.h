@@ -18,6 +18,10 @@ long long io_file_size(FILE *fp);
 /* Read exactly n bytes; "truncated" error naming what otherwise. */
 int io_read_exact(FILE *fp, const char *name, void *buf, size_t n,
     const char *what);
+/* A header of n bytes whose first npre were already read (a peek at the
+ * magic, pre): the rest from fp, messages as io_read_exact's. */
+int io_read_header(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, unsigned char *buf, size_t n);
 /* Read everything (for formats that need random access, e.g. EXR). */
 int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len);
 /* Open path ("-": standard input), read it whole, close it. */
