@@ -57,13 +57,20 @@ expect_fail "unknown import" 2 "--import" "$T/o.frd" frd-prep --import jpeg "$T/
 expect_fail "unknown algorithm" 2 "-a" "$T/o.frp" frd-prep -a fast "$T/g.frd" -o "$T/o.frp"
 expect_fail "block too large" 1 "exceeds" "$T/o.frp" frd-prep -a sorted --blocks 128 "$T/g.frd" -o "$T/o.frp"
 
-# Damaged derived data (not covered by the checksum) are caught too.
-# (500 samples of blob at 128^2 need sorted blocks of 4)
+# Damaged derived data (not covered by the checksum) are caught too, when
+# read: 200000 samples of const at 64^2 with sigma 1 need the lists of
+# blocks of 4 and 3125 of the 4096 values, more than half, so that they
+# come from the .frp (frd-prep --for says so); 500 of blob need blocks of
+# 4 and 56 values, made without reading the .frp's lists.
+[ "$(frd-prep --for 200000 -i const --sigma 1 "$T/g.frd" | awk -F '\t' \
+    'NR == 2 { print $5, $8 }')" = "4 yes" ] &&
+    ok "--for: 200000 of const, sigma 1: blocks of 4 from the .frp" ||
+    nok "--for: $(frd-prep --for 200000 -i const --sigma 1 "$T/g.frd" | tr '\n' ' ')"
 frd-prep -a sorted --blocks 4 "$T/g.frd" -o "$T/bad2.frp"
 size=$(wc -c <"$T/bad2.frp")
 printf '\377\377\377\177' | dd of="$T/bad2.frp" bs=1 seek=$((size - 8)) conv=notrunc 2>/dev/null
 expect_fail "damaged sorted list" 1 "damaged sorted list" "$T/o.pts" \
-    frs-sample -m "$T/bad2.frp" -i blob -n 500 -o "$T/o.pts"
+    frs-sample -m "$T/bad2.frp" -i const --sigma 1 -n 200000 -o "$T/o.pts"
 [ "$(grep -o 'bad2.frp' "$T/err" | wc -l)" -eq 1 ] &&
     ok "the damaged list's message names the file once" ||
     nok "the damaged list's message names the file once: $(cat "$T/err")"
@@ -112,12 +119,14 @@ frs-sample -m "$T/h.frd" -i blob -n 500 -T -o "$T/h.txt" 2>"$T/warn" &&
     grep -q 'ignored' "$T/warn" && cmp -s "$T/h.txt" "$T/f1.txt" &&
     ok "a damaged .frp beside the matrix is skipped" || nok "a damaged .frp beside the matrix is skipped"
 # Its damaged lists are not read by a run that reaches few values (it
-# makes those): the points of the matrix alone.
+# makes those): the points of the matrix alone, beside it or given.
 cp "$T/bad2.frp" "$T/h.frp"
 frs-sample -m "$T/h.frd" -i blob -n 500 -T -o "$T/h.txt" 2>"$T/warn" &&
     cmp -s "$T/h.txt" "$T/f1.txt" &&
-    ok "damaged lists beside the matrix, unread by a small run" ||
-    nok "damaged lists beside the matrix: $(cat "$T/warn")"
+    frs-sample -m "$T/bad2.frp" -i blob -n 500 -T -o "$T/h2.txt" 2>>"$T/warn" &&
+    cmp -s "$T/h2.txt" "$T/f1.txt" &&
+    ok "damaged lists unread by a small run" ||
+    nok "damaged lists unread by a small run: $(cat "$T/warn")"
 expect_fail "--blocks without sorted" 2 "--blocks needs" "$T/o.frd" frd-prep --blocks 8 "$T/g.frd" -o "$T/o.frd"
 
 # --for: the block sizes Sorted needs for the counts on a map; a .frp
@@ -128,15 +137,18 @@ frd-prep --for 100,20000 -i blob "$T/f.frd" >"$T/for.tsv" &&
     [ "$(awk -F '\t' 'NR > 1 { printf "%s:%s ", $1, $5 }' "$T/for.tsv")" = "100:2 20000:32 " ] &&
     ok "--for: blocks 2 and 32 for 100 and 20000 on blob" ||
     nok "--for: $(tr '\n' ' ' <"$T/for.tsv")"
-frd-prep -a sorted --for 20000 -i blob "$T/f.frd" -o "$T/for.frp"
+# (40000 of const with sigma 1 need blocks of 2 and 10000 values: from a
+# .frp.)
+frd-prep -a sorted --for 40000 -i const --sigma 1 "$T/f.frd" -o "$T/for.frp"
 frd-prep -a sorted --blocks 4 "$T/f.frd" -o "$T/b4.frp"
-frs-sample -q -m "$T/f.frd" -i blob -n 20000 -o "$T/f0.pts"
-frs-sample -q -m "$T/for.frp" -i blob -n 20000 -v -o "$T/f1.pts" 2>"$T/v1"
-frs-sample -q -m "$T/b4.frp" -i blob -n 20000 -v -o "$T/f2.pts" 2>"$T/v2"
+set -- -i const --sigma 1 -n 40000
+frs-sample -q -m "$T/f.frd" "$@" -o "$T/f0.pts"
+frs-sample -q -m "$T/for.frp" "$@" -v -o "$T/f1.pts" 2>"$T/v1"
+frs-sample -q -m "$T/b4.frp" "$@" -v -o "$T/f2.pts" 2>"$T/v2"
 cmp -s "$T/f0.pts" "$T/f1.pts" && ! grep -q 'no sorted lists' "$T/v1" &&
     ok "--for's .frp: its lists used" || nok "--for's .frp: $(cat "$T/v1")"
 cmp -s "$T/f0.pts" "$T/f2.pts" &&
-    grep -q 'b4.frp has no sorted lists of blocks of 32: made them here' "$T/v2" &&
+    grep -q 'b4.frp has no sorted lists of blocks of 2: made them here' "$T/v2" &&
     ok "a .frp without the block: the same points, the lists made, said under -v" ||
     nok "a .frp without the block: $(cat "$T/v2")"
 expect_fail "--for with --blocks" 2 "one or the other" "$T/x.frp" \

@@ -381,18 +381,18 @@ static int keep_lists(frs_mask *mk, unsigned l, struct frs_prep *p)
 }
 
 /* Sorted lists of block size b holding the values below `below`: from
- * a .frp loaded as such when it has them, from the twin of a .frd when
- * the run needs half the values or more (reading complete lists costs
- * more than making the few a smaller run needs), made here otherwise.
- * Damaged lists are an error in a .frp loaded as such; in the twin they
- * are noted and the twin is dropped.  Called with the lock held.  0;
- * -1 with a message, 1 with one that names the .frp already. */
+ * the .frp when it has them and the run needs half the values or more
+ * (reading and checking complete lists costs more than making the few a
+ * smaller run needs), made here otherwise.  Damaged lists are an error
+ * in a .frp loaded as such; in the twin of a .frd they are noted and the
+ * twin is dropped.  Called with the lock held.  0; -1 with a message, 1
+ * with one that names the .frp already. */
 static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
 {
 	unsigned l = log2u(b);
 	struct frs_prep p;
 
-	if (mk->frp != NULL && (!mk->twin || api_lists_from_frp(&mk->m, below))) {
+	if (mk->frp != NULL && api_lists_from_frp(&mk->m, below)) {
 		struct frs_matrix tm;
 		if (frp_read(mk->frp, &tm, &p, b) == 0) {
 			frd_free(&tm);

@@ -78,9 +78,8 @@ int api_exact(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
  * below (FRS_ALL_VALUES: all), made on first use and kept. */
 int api_mask_prep(const frs_mask *mk, int minmap, uint32_t block,
     uint64_t below, struct frs_prep *view);
-/* Whether lists of the values below `below` are read from the .frp
- * beside a .frd (frs_prepare_below makes fewer faster); a .frp loaded
- * as such always serves the lists it has. */
+/* Whether lists of the values below `below` are read from a .frp that
+ * has them (frs_prepare_below makes fewer faster). */
 int api_lists_from_frp(const struct frs_matrix *m, uint64_t below);
 /* The values Sorted's lists need for the last of steps: frs_lim_most. */
 uint64_t api_lists_below(const struct frs_setup *su, const uint64_t *steps,
