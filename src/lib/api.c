@@ -643,16 +643,6 @@ int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
 	return 0;
 }
 
-/* Elements in units of one window element side^dims each, saturated. */
-static uint64_t elements(uint64_t units, uint32_t side, unsigned dims)
-{
-	uint64_t e = units;
-
-	for (unsigned d = 0; d < dims; d++)
-		e = side != 0 && e > UINT64_MAX / side ? UINT64_MAX : e * side;
-	return e;
-}
-
 /* The exact counts' passes: Sorted's count of the window at any tau,
  * with lists for a little more than the largest tau asked so far (the
  * passes around one tau need one list making). */
@@ -691,17 +681,15 @@ int api_exact(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
 	struct xcount x = { s, *su, api_sorted_minmap(su), 0,
 	    api_sorted_block(su), { 0 } };
 	double tau0[16];
-	uint64_t nnz = 0;
 	unsigned passes;
 
 	if (frs_steps_check(steps, nsteps) < 0)
 		return -1;
 	for (unsigned k = 0; k < nsteps; k++)
 		tau0[k] = frs_tau(su, steps[k]);
-	for (uint64_t i = 0; i < (uint64_t)s->map.w * s->map.h; i++)
-		nnz += s->map.v[i] > 0.0;
-	if (frs_exact_taus(steps, nsteps, tau0, elements(nnz, su->ns, 2),
-	    xcount_fn, &x, &su->exact, &passes) < 0)
+	if (frs_exact_taus(steps, nsteps, tau0, frs_exact_most(s->map.v,
+	    (uint64_t)s->map.w * s->map.h, su->ns, 2), xcount_fn, &x,
+	    &su->exact, &passes) < 0)
 		return -1;
 	su->tau = frs_tau(su, su->n);
 	return 0;

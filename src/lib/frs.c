@@ -226,6 +226,18 @@ static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
 	}
 }
 
+uint64_t frs_exact_most(const double *v, uint64_t ncell, uint32_t ns,
+    unsigned dims)
+{
+	uint64_t e = 0;
+
+	for (uint64_t i = 0; i < ncell; i++)
+		e += v[i] > 0.0;
+	for (unsigned d = 0; d < dims; d++)
+		e = ns != 0 && e > UINT64_MAX / ns ? UINT64_MAX : e * ns;
+	return e;
+}
+
 int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
     const double *tau0, uint64_t most, frs_count_fn count, void *ctx,
     struct frs_xtau *x, unsigned *passes)

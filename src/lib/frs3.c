@@ -633,7 +633,6 @@ int frs3_exact(struct frs3_setup *s, const struct frs_vol *vol,
 {
 	struct xcount3 x = { *s, vol, p };
 	double tau0[16];
-	uint64_t nnz = 0, most;
 	unsigned passes;
 
 	if (s->rule != FRS_UNBIASED)
@@ -642,12 +641,8 @@ int frs3_exact(struct frs3_setup *s, const struct frs_vol *vol,
 		return -1;
 	for (unsigned k = 0; k < nsteps; k++)
 		tau0[k] = frs3_tau(s, steps[k]);
-	for (uint64_t i = 0; i < (uint64_t)vol->w * vol->h * vol->d; i++)
-		nnz += vol->v[i] > 0.0;
-	most = nnz;
-	for (int d = 0; d < 3; d++)
-		most = most > UINT64_MAX / s->ns ? UINT64_MAX : most * s->ns;
-	if (frs_exact_taus(steps, nsteps, tau0, most, xcount3_fn, &x,
+	if (frs_exact_taus(steps, nsteps, tau0, frs_exact_most(vol->v,
+	    (uint64_t)vol->w * vol->h * vol->d, s->ns, 3), xcount3_fn, &x,
 	    &s->exact, &passes) < 0)
 		return -1;
 	s->tau = frs3_tau(s, s->n);

@@ -103,6 +103,10 @@ typedef int (*frs_count_fn)(void *ctx, double tau, uint64_t *count);
 int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
     const double *tau0, uint64_t most, frs_count_fn count, void *ctx,
     struct frs_xtau *x, unsigned *passes);
+/* frs_exact_taus's most: the window elements of the ncell map pixels (or
+ * volume voxels) v of non-zero importance, ns^dims each, saturated. */
+uint64_t frs_exact_most(const double *v, uint64_t ncell, uint32_t ns,
+    unsigned dims);
 /* Samples a matrix gives without repetition: S_M^2 / sigma^2 (Eq. 4.17). */
 double frs_unique(const struct frs_setup *s);
 /* --tiles auto: shuffled when n fits the matrix without repetition
