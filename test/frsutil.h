@@ -77,4 +77,18 @@ static inline struct frs_elem *tu_elems(const struct frs_result *r,
 	return e;
 }
 
+/* a and b hold the same elements, in any order. */
+static inline void tu_same_set(const struct frs_result *a,
+    const struct frs_result *b)
+{
+	struct frs_elem *ea, *eb;
+
+	assert_true(a->count == b->count);
+	ea = tu_elems(a, 1);
+	eb = tu_elems(b, 1);
+	assert_memory_equal(ea, eb, a->count * sizeof *ea);
+	free(ea);
+	free(eb);
+}
+
 #endif
