@@ -114,13 +114,6 @@ static void put_value(FILE *fp, double v, int skipped)
 		fprintf(fp, "%.9g", v);
 }
 
-/* File names in a table: tabs and newlines would break its columns. */
-static void put_name(FILE *fp, const char *s)
-{
-	for (; *s; s++)
-		fputc(*s == '\t' || *s == '\n' ? '?' : *s, fp);
-}
-
 static void per_set_rows(FILE *fp, const struct disc_opts *o,
     const struct pt_set *sets, const struct disc_result *res, size_t nsets,
     const char *meth, double tests)
@@ -133,7 +126,7 @@ static void per_set_rows(FILE *fp, const struct disc_opts *o,
 		fputc('\t', fp);
 		put_value(fp, res[i].dinf, o->no_dinf);
 		fprintf(fp, "\t%.17g\t%s\t", tests, meth);
-		put_name(fp, sets[i].file);
+		pt_put_name(fp, sets[i].file);
 		fputc('\n', fp);
 	}
 }
@@ -185,7 +178,7 @@ static void group_rows(FILE *fp, const struct disc_opts *o, enum pt_group g,
 		fprintf(fp, "\t%.17g\t%s", tests, meth);
 		if (files) {
 			fputc('\t', fp);
-			put_name(fp, sets[i].file);
+			pt_put_name(fp, sets[i].file);
 		}
 		fputc('\n', fp);
 	}

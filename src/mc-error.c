@@ -225,13 +225,6 @@ static double estimate(const struct integrand *g, const struct pt_set *s,
 	return sum / (double)s->n;
 }
 
-/* File names in a table: tabs and newlines would break its columns. */
-static void put_name(FILE *fp, const char *name)
-{
-	for (; *name; name++)
-		fputc(*name == '\t' || *name == '\n' ? '?' : *name, fp);
-}
-
 /* One row per group of sets, in order of first appearance. */
 static void rows(FILE *fp, const struct integrand *g, enum pt_group grp,
     const struct pt_sets *s, const double *est, char *done, int files)
@@ -258,7 +251,7 @@ static void rows(FILE *fp, const struct integrand *g, enum pt_group grp,
 		    rmse / fabs(exact));
 		if (files) {
 			fputc('\t', fp);
-			put_name(fp, s->set[i].file);
+			pt_put_name(fp, s->set[i].file);
 		}
 		fputc('\n', fp);
 	}

@@ -226,3 +226,9 @@ int pt_group_files(enum pt_group g, size_t nfiles)
 {
 	return g == PT_GROUP_FILE || (g == PT_GROUP_NFILE && nfiles > 1);
 }
+
+void pt_put_name(FILE *fp, const char *name)
+{
+	for (; *name; name++)
+		fputc(*name == '\t' || *name == '\n' ? '?' : *name, fp);
+}

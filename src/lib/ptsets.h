@@ -7,6 +7,7 @@
 #define FRS_PTSETS_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include <stdint.h>
 
 struct frs_points;
@@ -72,5 +73,7 @@ int pt_same_group(enum pt_group g, const struct pt_set *a,
 /* Whether the rows of g carry a file column: g is file, or the default
  * with sets from more than one file (nfiles). */
 int pt_group_files(enum pt_group g, size_t nfiles);
+/* A file name as a table's last cell: tabs and newlines as '?'. */
+void pt_put_name(FILE *fp, const char *name);
 
 #endif
