@@ -8,6 +8,8 @@
 
 #include <fcntl.h>
 #include <pthread.h>
+#include <stdatomic.h>
+#include <time.h>
 
 struct ctx {
 	unsigned char *hit;
@@ -114,6 +116,110 @@ static void team_jobs(void **state)
 	free(c.hit);
 }
 
+/* Teams per thread: two threads run teams at once (two libfrs draws in
+ * parallel, each with its waves on a team), frs_parallel inside a team
+ * uses it, a nested start is served by the running team and only the
+ * outer stop ends it, and frs_team_run without a team still works. */
+static pthread_barrier_t both;
+
+/* Which threads ran chunks: a number a thread, never reused, so that
+ * threads started anew for a job count apart from a team's. */
+static atomic_int threads_seen;
+static _Thread_local int my_number;
+static unsigned char ran[1 << 16];
+
+static int who(void *p, uint64_t b, uint64_t e)
+{
+	struct timespec ts = { 0, 200000 };	/* long enough for threads
+						 * started late to join */
+	(void)p;
+	(void)b;
+	(void)e;
+	nanosleep(&ts, NULL);
+	if (my_number == 0)
+		my_number = atomic_fetch_add(&threads_seen, 1) + 1;
+	if (my_number < (int)sizeof ran)
+		ran[my_number] = 1;
+	return 0;
+}
+
+static int threads_that_ran(void)
+{
+	int k = 0;
+	for (size_t i = 0; i < sizeof ran; i++)
+		k += ran[i];
+	return k;
+}
+
+static void *team_thread(void *arg)
+{
+	const uint64_t n = 1009;
+	struct ctx c = { calloc(n, 1), UINT64_MAX };
+	int *bad = arg;
+
+	frs_set_threads(2);
+	*bad = frs_team_start() != 0;
+	pthread_barrier_wait(&both);	/* both teams run from here */
+	for (int job = 0; job < 2000 && !*bad; job++) {
+		uint64_t m = 1 + (uint64_t)job * 7 % n;
+		memset(c.hit, 0, n);
+		if ((job & 1 ? frs_parallel(m, 3, mark, &c, NULL) :
+		    frs_team_run(m, 5, mark, &c)) != 0)
+			*bad = 1;
+		for (uint64_t i = 0; i < n; i++)
+			if (c.hit[i] != (i < m))
+				*bad = 1;
+	}
+	pthread_barrier_wait(&both);
+	frs_team_stop();
+	free(c.hit);
+	return NULL;
+}
+
+static void team_per_thread(void **state)
+{
+	const uint64_t n = 300;
+	struct ctx c = { calloc(n, 1), UINT64_MAX };
+	pthread_t t[2];
+	int bad[2] = { 1, 1 };
+	(void)state;
+
+	pthread_barrier_init(&both, NULL, 2);
+	for (int i = 0; i < 2; i++)
+		assert_int_equal(pthread_create(&t[i], NULL, team_thread,
+		    &bad[i]), 0);
+	for (int i = 0; i < 2; i++)
+		pthread_join(t[i], NULL);
+	pthread_barrier_destroy(&both);
+	assert_int_equal(bad[0], 0);
+	assert_int_equal(bad[1], 0);
+
+	frs_set_threads(3);
+	assert_int_equal(frs_team_start(), 0);
+	assert_int_equal(frs_team_start(), 0);	/* nested */
+	frs_team_stop();			/* the team still serves: */
+	memset(ran, 0, sizeof ran);		/* its 3 threads, no new ones */
+	for (int job = 0; job < 20; job++)
+		assert_int_equal(frs_parallel(16, 1, who, NULL, NULL), 0);
+	assert_in_range(threads_that_ran(), 1, 3);
+	assert_int_equal(frs_parallel(n, 2, mark, &c, NULL), 0);
+	c.fail_at = 77;
+	assert_int_equal(frs_parallel(n, 2, mark, &c, NULL), -1);
+	assert_err_has("item 77 failed");
+	frs_team_stop();
+	c.fail_at = UINT64_MAX;
+	memset(c.hit, 0, n);
+	assert_int_equal(frs_team_run(n, 4, mark, &c), 0);	/* no team */
+	for (uint64_t i = 0; i < n; i++)
+		assert_int_equal(c.hit[i], 1);
+	frs_team_stop();			/* none: nothing */
+	memset(ran, 0, sizeof ran);		/* no team: threads anew */
+	for (int job = 0; job < 20; job++)
+		assert_int_equal(frs_parallel(16, 1, who, NULL, NULL), 0);
+	assert_true(threads_that_ran() > 3);
+	free(c.hit);
+}
+
 /* Draw into a file instead of the terminal and look at what came out:
  * the programs' bar, cli.c's callback, fed by the library's progress. */
 static void progress_draws(void **state)
@@ -165,6 +271,7 @@ int main(void)
 		cmocka_unit_test(failure_stops),
 		cmocka_unit_test(per_thread),
 		cmocka_unit_test(team_jobs),
+		cmocka_unit_test(team_per_thread),
 		cmocka_unit_test(progress_draws),
 	};
 	return cmocka_run_group_tests(tests, NULL, tu_teardown);

@@ -831,7 +831,7 @@ static int chunk_starts(const frs_sampler *s, const struct frs_setup *su,
 
 /* Samples per wave of the direct path: the chunks thresholded in
  * parallel, into one store that every wave reuses (api.h). */
-uint64_t api_wave = (uint64_t)1 << 18;
+uint64_t api_wave = (uint64_t)1 << 17;
 
 /* The chunks from c0 whose samples fit a wave (api_wave a thread: each
  * thread's share stays in its cache, and threads start once a wave), and
@@ -876,10 +876,16 @@ static int direct_waves(const frs_sampler *s, const struct frs_setup *su,
 	uint64_t nc = frs_nchunks(su), most = wave_most(at, nc);
 	struct frs_elem *store = malloc((size_t)(most + 1) * sizeof *store);
 	uint64_t *rel = malloc((size_t)(nc + 1) * sizeof *rel);
-	int rc = FRS_OK;
+	int rc = FRS_OK, team = 0;
 
 	if (store == NULL || rel == NULL)
 		rc = set_err(err, FRS_E_NOMEM, "out of memory");
+	/* One team of threads for all the waves: starting threads for each
+	 * wave took a third of the thresholding at 2^24 on two threads. */
+	else if (frs_team_start() < 0)
+		rc = lib_err(err, FRS_E_NOMEM);
+	else
+		team = 1;
 	for (uint64_t c0 = 0, c1, o; rc == FRS_OK && c0 < nc; c0 = c1) {
 		c1 = wave_end(at, c0, nc);
 		for (uint64_t c = c0; c <= c1; c++)
@@ -895,6 +901,8 @@ static int direct_waves(const frs_sampler *s, const struct frs_setup *su,
 		else if (out != NULL && out(octx, at[c0], at[c1] - at[c0]) != 0)
 			rc = set_err(err, FRS_E_CALLBACK, "stopped by the callback");
 	}
+	if (team)
+		frs_team_stop();
 	free(store);
 	free(rel);
 	return rc;

@@ -80,6 +80,13 @@ static int job_result(struct job *j)
 	return frs_fail("%s", j->msg);
 }
 
+/* The team the calling thread started, if any (frs_team_start): per
+ * thread, so that library calls in different threads each have their
+ * own; frs_parallel hands its jobs to it. */
+struct team;
+static _Thread_local struct team *mine;
+static int team_job(struct team *tm, struct job *j);
+
 static void *worker(void *arg)
 {
 	run(arg, 0);
@@ -99,6 +106,10 @@ int frs_parallel(uint64_t n, uint64_t chunk,
 		return 0;
 	if (chunk == 0)
 		chunk = 1;
+	if (mine != NULL) {
+		job_init(&j, n, chunk, fn, ctx, pr);
+		return team_job(mine, &j);
+	}
 	nchunks = (n + chunk - 1) / chunk;
 	nt = nchunks < (uint64_t)nthreads ? (int)nchunks : nthreads;
 	job_init(&j, n, chunk, fn, ctx, pr);
@@ -128,14 +139,15 @@ int frs_parallel(uint64_t n, uint64_t chunk,
 #define ST_CLOSED ((uint64_t)1 << 16)
 #define ST_COUNT 0xffffu
 
-static struct team {
+struct team {
 	int size;			/* threads besides the caller */
+	int depth;			/* starts not yet stopped */
 	pthread_t *tid;
 	atomic_uint_fast64_t state;
 	atomic_int quit;
 	struct job *job;		/* valid while the job is open or
 					 * joined */
-} team;
+};
 
 /* Spin, then yield, then sleep: an idle worker must not keep a core
  * from other processes for long. */
@@ -153,12 +165,12 @@ static void idle(unsigned *spins)
 
 static void *team_worker(void *arg)
 {
+	struct team *tm = arg;
 	uint64_t seen = 0;
 	unsigned spins = 0;
-	(void)arg;
 
-	while (!atomic_load(&team.quit)) {
-		uint_fast64_t st = atomic_load_explicit(&team.state,
+	while (!atomic_load(&tm->quit)) {
+		uint_fast64_t st = atomic_load_explicit(&tm->state,
 		    memory_order_acquire);
 		uint64_t g = st >> ST_GEN_SHIFT;
 		if (g == seen || (st & ST_CLOSED)) {
@@ -166,71 +178,94 @@ static void *team_worker(void *arg)
 			idle(&spins);
 			continue;
 		}
-		if (!atomic_compare_exchange_weak_explicit(&team.state, &st,
+		if (!atomic_compare_exchange_weak_explicit(&tm->state, &st,
 		    st + 1, memory_order_acq_rel, memory_order_relaxed))
 			continue;
 		seen = g;
 		spins = 0;
-		run(team.job, 0);
-		atomic_fetch_sub_explicit(&team.state, 1, memory_order_release);
+		run(tm->job, 0);
+		atomic_fetch_sub_explicit(&tm->state, 1, memory_order_release);
 	}
 	return NULL;
 }
 
 int frs_team_start(void)
 {
-	team.size = 0;
-	atomic_init(&team.state, 0);
-	atomic_init(&team.quit, 0);
+	struct team *tm;
+
+	if (mine != NULL) {
+		mine->depth++;	/* nested: the running team serves */
+		return 0;
+	}
+	if ((tm = calloc(1, sizeof *tm)) == NULL)
+		return frs_fail("out of memory for threads");
+	atomic_init(&tm->state, 0);
+	atomic_init(&tm->quit, 0);
+	tm->depth = 1;
+	mine = tm;
 	if (nthreads <= 1)
 		return 0;
-	team.tid = malloc((size_t)(nthreads - 1) * sizeof *team.tid);
-	if (team.tid == NULL)
+	tm->tid = malloc((size_t)(nthreads - 1) * sizeof *tm->tid);
+	if (tm->tid == NULL) {
+		frs_team_stop();
 		return frs_fail("out of memory for threads");
+	}
 	for (int t = 0; t < nthreads - 1 && t < (int)ST_COUNT; t++) {
-		if (pthread_create(&team.tid[t], NULL, team_worker, NULL) != 0)
+		if (pthread_create(&tm->tid[t], NULL, team_worker, tm) != 0)
 			break;
-		team.size++;
+		tm->size++;
 	}
 	return 0;
+}
+
+/* The job on the team: the caller works too, then closes the job and
+ * waits for the workers that joined it. */
+static int team_job(struct team *tm, struct job *j)
+{
+	uint_fast64_t st;
+	unsigned spins = 0;
+
+	if (tm->size == 0 || j->n <= j->chunk) {
+		run(j, 1);
+		return job_result(j);
+	}
+	/* The count is 0 here: the last job was closed and left. */
+	tm->job = j;
+	st = atomic_load_explicit(&tm->state, memory_order_relaxed);
+	atomic_store_explicit(&tm->state,
+	    ((st >> ST_GEN_SHIFT) + 1) << ST_GEN_SHIFT, memory_order_release);
+	run(j, 1);
+	st = atomic_fetch_or_explicit(&tm->state, ST_CLOSED,
+	    memory_order_acq_rel);
+	while ((st & ST_COUNT) != 0) {
+		if (++spins > 2000)
+			sched_yield();
+		st = atomic_load_explicit(&tm->state, memory_order_acquire);
+	}
+	return job_result(j);
 }
 
 int frs_team_run(uint64_t n, uint64_t chunk,
     int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx)
 {
 	struct job j;
-	uint_fast64_t st;
-	unsigned spins = 0;
 
-	if (chunk == 0)
-		chunk = 1;
-	job_init(&j, n, chunk, fn, ctx, NULL);
-	if (team.size == 0 || n <= chunk) {
-		run(&j, 1);
-		return job_result(&j);
-	}
-	/* The count is 0 here: the last job was closed and left. */
-	team.job = &j;
-	st = atomic_load_explicit(&team.state, memory_order_relaxed);
-	atomic_store_explicit(&team.state,
-	    ((st >> ST_GEN_SHIFT) + 1) << ST_GEN_SHIFT, memory_order_release);
-	run(&j, 1);
-	st = atomic_fetch_or_explicit(&team.state, ST_CLOSED,
-	    memory_order_acq_rel);
-	while ((st & ST_COUNT) != 0) {
-		if (++spins > 2000)
-			sched_yield();
-		st = atomic_load_explicit(&team.state, memory_order_acquire);
-	}
-	return job_result(&j);
+	if (mine == NULL)
+		return frs_parallel(n, chunk, fn, ctx, NULL);
+	job_init(&j, n, chunk == 0 ? 1 : chunk, fn, ctx, NULL);
+	return team_job(mine, &j);
 }
 
 void frs_team_stop(void)
 {
-	atomic_store(&team.quit, 1);
-	for (int t = 0; t < team.size; t++)
-		pthread_join(team.tid[t], NULL);
-	free(team.tid);
-	team.tid = NULL;
-	team.size = 0;
+	struct team *tm = mine;
+
+	if (tm == NULL || --tm->depth > 0)
+		return;
+	atomic_store(&tm->quit, 1);
+	for (int t = 0; t < tm->size; t++)
+		pthread_join(tm->tid[t], NULL);
+	free(tm->tid);
+	free(tm);
+	mine = NULL;
 }

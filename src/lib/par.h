@@ -23,15 +23,19 @@ int frs_parallel(uint64_t n, uint64_t chunk,
     int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx,
     struct progress *pr);
 
-#endif
-
 /*
  * A team of threads kept spinning between many tiny parallel steps (one
  * FRD insertion is ~10 microseconds: creating threads for each would cost
- * more than the work).  Chunks are handed out as by frs_parallel.  Only
- * one team at a time; frs_team_run from the thread that started it.
+ * more than the work), or between the waves of a draw.  Chunks are
+ * handed out as by frs_parallel.  A team belongs to the thread that
+ * started it; while it runs, that thread's frs_parallel and
+ * frs_team_run use it (frs_team_run without a team is frs_parallel).  A
+ * start inside a running team nests: the team serves until the matching
+ * frs_team_stop of the first start ends it.
  */
 int frs_team_start(void);
 int frs_team_run(uint64_t n, uint64_t chunk,
     int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx);
 void frs_team_stop(void);
+
+#endif
