@@ -31,15 +31,19 @@ CSTD = -std=c11
 PKG_CFLAGS = $(patsubst -I%,-isystem %,$(shell $(PKG_CONFIG) --cflags \
 	libpng OpenEXR OpenCL 2>/dev/null))
 # OpenEXR: the C core, plus the C++ library for the DWAA/DWAB codecs that
-# the 3.1 core lacks (src/lib/exrcxx.cc).
+# the 3.1 core lacks (src/lib/maps/exrcxx.cc).
 PKG_LIBS = $(shell $(PKG_CONFIG) --libs libpng OpenEXR OpenCL 2>/dev/null) \
 	-lstdc++
 CMOCKA_LIBS = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
 PROGS = imap frd-gen frd-prep frs-sample pts-render ref-sample hsw-sample \
 	discrepancy dda mc-error
-LIBSRC = $(wildcard src/lib/*.c)
-LIBCXXSRC = $(wildcard src/lib/*.cc)
+# The library by stage (README, Layout): base, maps, formats, frd, sample,
+# analysis, api; each includes only from its own folder and those before.
+LIBSRC = $(wildcard src/lib/*/*.c)
+LIBCXXSRC = $(wildcard src/lib/*/*.cc)
+# The programs' shared option handling and messages, not in libfrs.
+CLISRC = $(wildcard src/cli/*.c)
 TESTSRC = $(wildcard test/test_*.c)
 # test/hard/: the numerical hard cases gathered in one suite.
 HARDSRC = $(wildcard test/hard/test_*.c)
@@ -62,15 +66,16 @@ VFLAGS = $(OPT)
 endif
 
 # Where the programs and the library find the shipped data (the default
-# matrices, sunset.exr; src/lib/datadir.c): $FRS_DATA, else share/frs
+# matrices, sunset.exr; src/lib/base/datadir.c): $FRS_DATA, else share/frs
 # beside libfrs.so and beside the program, wherever they were installed,
 # then SRCDATA (the source tree, for uninstalled builds; SRCDATA= for
 # binaries that name no build directory) and $(PREFIX)/share/frs.  They
 # are written to $(B)/gen/paths.h, which changes only when they do: make
 # install PREFIX=... recompiles the one object that reads it.
 SRCDATA ?= $(CURDIR)/data
-# src/lib/frs.h is the public header (libfrs(3)); frscore.h the internal one.
-ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib -I$(B)/gen $(PKG_CFLAGS) \
+# src/lib/frs.h is the public header (libfrs(3)); the rest is included by
+# folder, "base/err.h", "cli/cli.h".
+ALL_CFLAGS = $(CSTD) $(WARN) $(VFLAGS) -Isrc/lib -Isrc -I$(B)/gen $(PKG_CFLAGS) \
 	$(CFLAGS) -MMD -MP
 ALL_LDFLAGS = $(VFLAGS) $(LDFLAGS)
 LIBS = $(PKG_LIBS) -lm -lpthread
@@ -103,6 +108,19 @@ $(B)/libfrs.a: $(LIBOBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && $(AR) rcs $@ $^
 
+CLIOBJ = $(CLISRC:src/cli/%.c=$(B)/cli/%.o)
+$(B)/libfrscli.a: $(CLIOBJ)
+	@mkdir -p $(@D)
+	rm -f $@ && $(AR) rcs $@ $^
+
+$(B)/cli/%.o: src/cli/%.c
+	@mkdir -p $(@D)
+	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+# What the programs, tests and fuzz drivers link (test/user_*.c: libfrs
+# alone).
+PROGLIBS = $(B)/libfrscli.a $(B)/libfrs.a
+
 $(B)/lib/%.o: src/lib/%.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
@@ -112,7 +130,7 @@ $(B)/gen/paths.h: FORCE
 	@printf '#define FRS_SRCDATA "%s"\n#define FRS_SHAREDIR "%s"\n' \
 	    '$(SRCDATA)' '$(PREFIX)/share/frs' >$@.tmp
 	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
-$(B)/lib/datadir.o $(B)/pic/lib/datadir.o: $(B)/gen/paths.h
+$(B)/lib/base/datadir.o $(B)/pic/lib/base/datadir.o: $(B)/gen/paths.h
 
 # The OpenCL kernels, embedded so that installed programs need no source
 # tree.
@@ -126,7 +144,7 @@ $(B)/gen/clsrc.o: $(B)/gen/clsrc.c
 # -ffp-contract=off: g++ fuses a * b + c by default (gcc in C11 mode does
 # not), so imap_luma inlined here gave other EXR maps under -march=native.
 ALL_CXXFLAGS = -std=c++14 -ffp-contract=off -Wall -Wextra $(VFLAGS) \
-	-Isrc/lib $(PKG_CFLAGS) $(CXXFLAGS) -MMD -MP
+	-Isrc/lib -Isrc $(PKG_CFLAGS) $(CXXFLAGS) -MMD -MP
 
 $(B)/lib/%.o: src/lib/%.cc
 	@mkdir -p $(@D)
@@ -170,9 +188,9 @@ $(B)/obj/%.o: src/%.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
-$(B)/bin/%: $(B)/obj/%.o $(B)/libfrs.a
+$(B)/bin/%: $(B)/obj/%.o $(PROGLIBS)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
+	$(CC) $(ALL_LDFLAGS) $< $(PROGLIBS) $(LIBS) -o $@
 
 $(B)/test/%.o: test/%.c
 	@mkdir -p $(@D)
@@ -182,21 +200,21 @@ $(B)/test/%.o: test/hard/%.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -Itest -Wno-conversion -c $< -o $@
 
-$(B)/test/test_%: $(B)/test/test_%.o $(B)/libfrs.a
-	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) $(CMOCKA_LIBS) -o $@
+$(B)/test/test_%: $(B)/test/test_%.o $(PROGLIBS)
+	$(CC) $(ALL_LDFLAGS) $< $(PROGLIBS) $(LIBS) $(CMOCKA_LIBS) -o $@
 
 # Reference implementations for the benchmarks (test/ref_*.c), and
 # drivers (test/bench_*.c).
-$(B)/test/ref_%: $(B)/test/ref_%.o $(B)/libfrs.a
-	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
+$(B)/test/ref_%: $(B)/test/ref_%.o $(PROGLIBS)
+	$(CC) $(ALL_LDFLAGS) $< $(PROGLIBS) $(LIBS) -o $@
 
-$(B)/test/bench_%: $(B)/test/bench_%.o $(B)/libfrs.a
-	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
+$(B)/test/bench_%: $(B)/test/bench_%.o $(PROGLIBS)
+	$(CC) $(ALL_LDFLAGS) $< $(PROGLIBS) $(LIBS) -o $@
 
 $(B)/test/user_%: $(B)/test/user_%.o $(B)/libfrs.a
 	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
 
--include $(LIBOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d) $(REFBIN:=.d) \
+-include $(LIBOBJ:.o=.d) $(CLIOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d) $(REFBIN:=.d) \
 	$(USERBIN:=.d) \
 	$(PICOBJ:.o=.d) $(wildcard $(B)/fuzz/*.d $(B)/fuzz/prog/*.d)
 
@@ -232,7 +250,7 @@ lint-man:
 # pkg-config --define-prefix can move them).
 PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
 VERSION := $(shell sed -n 's/^\#define FRS_VERSION "\(.*\)"$$/\1/p' \
-	src/lib/cli.h)
+	src/lib/api/version.h)
 PCSUBST = -e 's|@PREFIX@|$(PREFIX)|g' \
 	-e 's|@LIBDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))|g' \
 	-e 's|@INCDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(INCDIR))|g' \
@@ -301,8 +319,8 @@ $(B)/fuzz/%.o: test/fuzz/%.c test/fuzz/fuzz.h
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
-$(B)/fuzz/replay_%: $(B)/fuzz/fuzz_%.o $(B)/fuzz/replay.o $(B)/libfrs.a
-	$(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(B)/libfrs.a $(LIBS) -o $@
+$(B)/fuzz/replay_%: $(B)/fuzz/fuzz_%.o $(B)/fuzz/replay.o $(PROGLIBS)
+	$(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(PROGLIBS) $(LIBS) -o $@
 
 # fuzz_opts runs every program's main: the programs again, main renamed
 # main_NAME (dashes as underscores).
@@ -314,21 +332,22 @@ $(B)/fuzz/replay_opts: $(PROGS:%=$(B)/fuzz/prog/%.o)
 # The library again, built by clang with the fuzzer's instrumentation.
 fuzz-lib:
 	@$(MAKE) --no-print-directory VARIANT=fuzz CC=$(FUZZ_CC) \
-	    CXX=$(FUZZ_CXX) VFLAGS='$(FUZZ_VFLAGS)' build/fuzz/libfrs.a
+	    CXX=$(FUZZ_CXX) VFLAGS='$(FUZZ_VFLAGS)' build/fuzz/libfrs.a build/fuzz/libfrscli.a
 
 fuzz-build: fuzz-lib
 	@$(MAKE) --no-print-directory $(FUZZBIN)
 
 build/fuzz/fuzz_%: test/fuzz/fuzz_%.c test/fuzz/fuzz.h build/fuzz/libfrs.a
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib \
+	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib -Isrc \
 	    $(PKG_CFLAGS) $(CFLAGS) -c $< -o $@.o
 	$(FUZZ_CXX) -fsanitize=fuzzer $(FUZZ_SAN) $@.o \
-	    $(filter build/fuzz/prog/%.o,$^) build/fuzz/libfrs.a $(LIBS) -o $@
+	    $(filter build/fuzz/prog/%.o,$^) build/fuzz/libfrscli.a \
+	    build/fuzz/libfrs.a $(LIBS) -o $@
 build/fuzz/fuzz_opts: $(PROGS:%=build/fuzz/prog/%.o)
 build/fuzz/prog/%.o: src/%.c build/fuzz/libfrs.a
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib \
+	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib -Isrc \
 	    $(PKG_CFLAGS) $(CFLAGS) -Dmain=main_$(subst -,_,$*) \
 	    -c $< -o $@
 

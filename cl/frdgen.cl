@@ -1,8 +1,8 @@
 /*
- * Forced Random Dithering on the device (src/lib/frdgencl.c): the force
+ * Forced Random Dithering on the device (src/lib/frd/frdgencl.c): the force
  * update of one insertion and the minimum of every tile it touched.
  *
- * The field is stored tile by tile as in src/lib/frdgen.c (tiles of
+ * The field is stored tile by tile as in src/lib/frd/frdgen.c (tiles of
  * 2^LX x 2^LY x 2^LZ cells, row-major inside a tile, padding cells +inf).
  * One work-group per tile of the insertion's window, one work-item per
  * tile row.  Every cell gets at most one add per insertion, of an entry of

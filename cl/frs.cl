@@ -3,9 +3,9 @@
  * Sorted with one work-item per active map pixel, and Flat 1 (Sec. 5.4)
  * with one kernel launch per minmap level over a list of candidate blocks.
  *
- * The host (src/lib/frscl.c) does the setup and turns each pixel's
+ * The host (src/lib/sample/frscl.c) does the setup and turns each pixel's
  * thresholds into integers, so no floating point happens here and every
- * device agrees with src/lib/frs.c bit for bit.  Per active pixel p the
+ * device agrees with src/lib/sample/frs.c bit for bit.  Per active pixel p the
  * record thr[p * (2 + 2 nsteps)] holds
  *   [0] px | py << 32     the pixel
  *   [1] lim               values from lim never pass (last step)
@@ -19,7 +19,7 @@
  * Every per-pixel kernel runs twice: with write = 0 it stores the number
  * of elements of each pixel in cnt; with write = 1 it writes them as
  * (x, y, step) uint triples from out[3 off[p]], in the order in which
- * src/lib/frs.c emits them.  All window coordinates are 64-bit.
+ * src/lib/sample/frs.c emits them.  All window coordinates are 64-bit.
  */
 #define PAR_SW 0
 #define PAR_NS 1
@@ -33,7 +33,7 @@
 #define PAR_L 9
 #define PAR_TILES 10
 
-/* src/lib/frs.c tile_at(): the transform of the last tile met. */
+/* src/lib/sample/frs.c tile_at(): the transform of the last tile met. */
 struct tcache {
 	ulong tx, ty;
 	int valid;
@@ -65,7 +65,7 @@ static void tile_at(__global const ulong *par, struct tcache *c, ulong x,
 	}
 }
 
-/* src/lib/frs.c block_index(). */
+/* src/lib/sample/frs.c block_index(). */
 static ulong block_index(__global const ulong *par, const struct frs_tile *t,
     uint l, ulong lx, ulong ly)
 {
@@ -80,7 +80,7 @@ static ulong block_index(__global const ulong *par, const struct frs_tile *t,
 	return v[1] * (par[PAR_MW] >> l) + v[0];
 }
 
-/* src/lib/frs.c inblock(). */
+/* src/lib/sample/frs.c inblock(). */
 static void inblock(const struct frs_tile *t, ulong b, uint lb, uint k,
     ulong x, ulong y, ulong *ex, ulong *ey)
 {
@@ -109,7 +109,7 @@ static ulong wrapn(ulong v, ulong n)
 	return (n & (n - 1)) == 0 ? v & (n - 1) : v % n;
 }
 
-/* src/lib/frs.c passes() with integer thresholds. */
+/* src/lib/sample/frs.c passes() with integer thresholds. */
 static int passes_k(const struct pix *p, uint k, ulong v, ulong x, ulong y)
 {
 	ulong tf = p->th[2 + 2 * k], c = p->th[3 + 2 * k];
@@ -131,7 +131,7 @@ static void put(struct pix *p, ulong x, ulong y, uint step)
 	p->count++;
 }
 
-/* src/lib/frs.c emit(). */
+/* src/lib/sample/frs.c emit(). */
 static void emit(struct pix *p, ulong x, ulong y, uint v)
 {
 	uint k, last = p->nsteps - 1;
@@ -280,7 +280,7 @@ __kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
 }
 
 /* Listing 5.11: the sorted values of each block of b x b (par[PAR_L]),
- * as take_block / pix_sorted of src/lib/frs.c. */
+ * as take_block / pix_sorted of src/lib/sample/frs.c. */
 __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
     __global const uint *sval, __global const uint *sidx,
     __global const uint *soff, __global ulong *cnt, __global const ulong *off, __global uint *out,

@@ -1,6 +1,6 @@
 /*
  * Hierarchical Sample Warping on the device: one work-item per point,
- * the same descent as hsw_warp in src/lib/hsw.c, operation for
+ * the same descent as hsw_warp in src/lib/sample/hsw.c, operation for
  * operation, in double, so that the points are the CPU's bit for bit.
  * The quadtree (struct hsw_tree's sums, Morton order per level) is built
  * on the host and uploaded once; the points are warped in place.

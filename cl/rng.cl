@@ -1,5 +1,5 @@
 /*
- * Philox4x32-10 (Salmon et al. 2011), as src/lib/rng.c: the key is the
+ * Philox4x32-10 (Salmon et al. 2011), as src/lib/base/rng.c: the key is the
  * 64-bit seed, the counter (index low, index high, stream, sub).  Every
  * kernel source is built after this one.
  */

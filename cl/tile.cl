@@ -1,5 +1,5 @@
 /*
- * Tile transforms: one definition for the CPU (src/lib/tile.h includes
+ * Tile transforms: one definition for the CPU (src/lib/sample/tile.h includes
  * this file) and for OpenCL (built after rng.cl, before every kernel).
  *
  * A window larger than the matrix tiles it (thesis Sec. 4.5).  Plain

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write src/lib/dtoa_tab.h, the powers of ten of src/lib/dtoa.c.
+"""Write src/lib/base/dtoa_tab.h, the powers of ten of src/lib/base/dtoa.c.
 
 For each decimal exponent k in [K_MIN, K_MAX] the table holds g(k), a
 128-bit approximation of 10^-k normalised to [2^127, 2^128):
@@ -14,7 +14,7 @@ Also checks, for every binary exponent q of a double, the integer
 formulas dtoa.c uses for floor(q log10 2), floor(log10(3/4 2^q)) and
 floor(-k log2 10), with exact integer arithmetic.
 
-usage: scripts/gen-dtoa-table.py > src/lib/dtoa_tab.h
+usage: scripts/gen-dtoa-table.py > src/lib/base/dtoa_tab.h
 """
 import sys
 

@@ -11,16 +11,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
-#include "ddaspec.h"
-#include "density.h"
-#include "imap.h"
-#include "outfile.h"
-#include "plot.h"
-#include "progress.h"
-#include "ptsets.h"
-#include "raster.h"
-#include "spectrum.h"
+#include "cli/cli.h"
+#include "analysis/ddaspec.h"
+#include "analysis/density.h"
+#include "maps/imap.h"
+#include "base/outfile.h"
+#include "analysis/plot.h"
+#include "base/progress.h"
+#include "formats/ptsets.h"
+#include "analysis/raster.h"
+#include "analysis/spectrum.h"
 
 static const char usage[] =
     "usage: dda [--fourier | --dda | --density | --rdf] [--summary]\n"

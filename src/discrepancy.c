@@ -10,12 +10,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
-#include "disc.h"
-#include "outfile.h"
-#include "par.h"
-#include "progress.h"
-#include "ptsets.h"
+#include "cli/cli.h"
+#include "analysis/disc.h"
+#include "base/outfile.h"
+#include "base/par.h"
+#include "base/progress.h"
+#include "formats/ptsets.h"
 
 static const char usage[] =
     "usage: discrepancy [-c CLASS] [--grid S] [--shapes K] [--exact]\n"

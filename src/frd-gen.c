@@ -8,18 +8,18 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli.h"
-#include "frdgen.h"
-#include "frdgencl.h"
-#include "frdio.h"
-#include "frdq.h"
-#include "mem.h"
-#include "ocl.h"
-#include "outfile.h"
-#include "par.h"
-#include "parse.h"
-#include "progress.h"
-#include "vac.h"
+#include "cli/cli.h"
+#include "frd/frdgen.h"
+#include "frd/frdgencl.h"
+#include "formats/frdio.h"
+#include "frd/frdq.h"
+#include "base/mem.h"
+#include "base/ocl.h"
+#include "base/outfile.h"
+#include "base/par.h"
+#include "base/parse.h"
+#include "base/progress.h"
+#include "frd/vac.h"
 
 static const char usage[] =
     "usage: frd-gen -s SIZE [-k 2|3] [-p P] [--tol EPS | --exact] [-S SEED]\n"

@@ -7,14 +7,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api.h"
-#include "cli.h"
-#include "frdio.h"
-#include "frscore.h"
-#include "imap.h"
-#include "io.h"
-#include "outfile.h"
-#include "parse.h"
+#include "api/api.h"
+#include "cli/cli.h"
+#include "formats/frdio.h"
+#include "sample/frscore.h"
+#include "maps/imap.h"
+#include "base/io.h"
+#include "base/outfile.h"
+#include "base/parse.h"
 
 static const char usage[] =
     "usage: frd-prep [-a none|stack|level1|level2|sorted|all] [--check]\n"

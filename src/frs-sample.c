@@ -8,19 +8,19 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "api.h"
-#include "cli.h"
-#include "datadir.h"
-#include "frdio.h"
-#include "frscore.h"
-#include "frscl.h"
-#include "frs3.h"
-#include "imap.h"
-#include "mem.h"
-#include "outfile.h"
-#include "progress.h"
-#include "ptsio.h"
-#include "vol.h"
+#include "api/api.h"
+#include "cli/cli.h"
+#include "base/datadir.h"
+#include "formats/frdio.h"
+#include "sample/frscore.h"
+#include "sample/frscl.h"
+#include "sample/frs3.h"
+#include "maps/imap.h"
+#include "base/mem.h"
+#include "base/outfile.h"
+#include "base/progress.h"
+#include "formats/ptsio.h"
+#include "maps/vol.h"
 
 static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"

@@ -9,18 +9,18 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "api.h"
-#include "cli.h"
-#include "hsw.h"
-#include "hswcl.h"
-#include "imap.h"
-#include "mem.h"
-#include "ocl.h"
-#include "outfile.h"
-#include "par.h"
-#include "progress.h"
-#include "ptsio.h"
-#include "refsamp.h"
+#include "api/api.h"
+#include "cli/cli.h"
+#include "sample/hsw.h"
+#include "sample/hswcl.h"
+#include "maps/imap.h"
+#include "base/mem.h"
+#include "base/ocl.h"
+#include "base/outfile.h"
+#include "base/par.h"
+#include "base/progress.h"
+#include "formats/ptsio.h"
+#include "sample/refsamp.h"
 
 static const char usage[] =
     "usage: hsw-sample -i IMPORTANCE -n COUNT [--input SET|FILE] [--pdf]\n"

@@ -9,10 +9,10 @@
 #include <string.h>
 #include <strings.h>
 
-#include "cli.h"
-#include "imap.h"
-#include "outfile.h"
-#include "vol.h"
+#include "cli/cli.h"
+#include "maps/imap.h"
+#include "base/outfile.h"
+#include "maps/vol.h"
 
 static const char usage[] =
     "usage: imap gen [-q] [-s SIZE] [--equirect] [--log]\n"

@@ -10,12 +10,12 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli.h"
-#include "datadir.h"
-#include "err.h"
-#include "imap.h"
-#include "outfile.h"
-#include "ptsets.h"
+#include "cli/cli.h"
+#include "base/datadir.h"
+#include "base/err.h"
+#include "maps/imap.h"
+#include "base/outfile.h"
+#include "formats/ptsets.h"
 
 static const char usage[] =
     "usage: mc-error [-f NAME[,NAME...]] [--sets N] [--group n|file|all]\n"

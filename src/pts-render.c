@@ -8,12 +8,12 @@
 #include <string.h>
 #include <strings.h>
 
-#include "cli.h"
-#include "imap.h"
-#include "outfile.h"
-#include "ptsets.h"
-#include "ptsio.h"
-#include "raster.h"
+#include "cli/cli.h"
+#include "maps/imap.h"
+#include "base/outfile.h"
+#include "formats/ptsets.h"
+#include "formats/ptsio.h"
+#include "analysis/raster.h"
 
 static const char usage[] =
     "usage: pts-render [-q] [-s SIZE] [-r R] [-i MAP] [--color] [-o FILE] [PTS]\n"

@@ -9,13 +9,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
-#include "imap.h"
-#include "mem.h"
-#include "outfile.h"
-#include "progress.h"
-#include "ptsio.h"
-#include "refsamp.h"
+#include "cli/cli.h"
+#include "maps/imap.h"
+#include "base/mem.h"
+#include "base/outfile.h"
+#include "base/progress.h"
+#include "formats/ptsio.h"
+#include "sample/refsamp.h"
 
 static const char usage[] =
     "usage: ref-sample -n COUNT [-d DIMS] [-k KIND] [-i IMPORTANCE] [-s WxH]\n"

@@ -4,10 +4,10 @@
 #define FRS_TEST_FRSUTIL_H
 
 #include "testutil.h"
-#include "frdio.h"
-#include "frscore.h"
-#include "imap.h"
-#include "rng.h"
+#include "formats/frdio.h"
+#include "sample/frscore.h"
+#include "maps/imap.h"
+#include "base/rng.h"
 
 /* A random permutation matrix: the implementations must agree on any. */
 static inline void tu_perm_matrix(struct frs_matrix *m, uint32_t w,

@@ -8,7 +8,7 @@
 #ifndef FRS_MOMENTS_H
 #define FRS_MOMENTS_H
 
-#include "imap.h"
+#include "maps/imap.h"
 
 struct moments {
 	double n, sx, sy, sxx, syy;

@@ -17,8 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "ptsets.h"
-#include "err.h"
+#include "formats/ptsets.h"
+#include "base/err.h"
 
 static void die(const char *msg)
 {

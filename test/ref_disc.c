@@ -20,8 +20,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "err.h"
-#include "ptsio.h"
+#include "base/err.h"
+#include "formats/ptsio.h"
 
 static void die(const char *msg)
 {

@@ -6,7 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 
-#include "err.h"
+#include "base/err.h"
 #include "ref_frd.h"
 
 int main(int argc, char **argv)

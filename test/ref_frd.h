@@ -14,7 +14,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "frdgen.h"
+#include "frd/frdgen.h"
 
 static uint32_t tdist(uint32_t a, uint32_t b, uint32_t n)
 {

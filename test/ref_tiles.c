@@ -27,9 +27,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "err.h"
-#include "imap.h"
-#include "ptsio.h"
+#include "base/err.h"
+#include "maps/imap.h"
+#include "formats/ptsio.h"
 
 static void die(const char *msg)
 {

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The option handling every program shares (src/lib/cli.c): an empty
+# The option handling every program shares (src/cli/cli.c): an empty
 # output name, getopt's messages, the program's name in them.
 . "$(dirname "$0")/lib.sh"
 

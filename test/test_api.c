@@ -14,12 +14,12 @@
 #include <sys/wait.h>
 
 #include "frs.h"
-#include "api.h"
-#include "frdio.h"
-#include "imap.h"
-#include "ptsio.h"
-#include "rng.h"
-#include "vol.h"
+#include "api/api.h"
+#include "formats/frdio.h"
+#include "maps/imap.h"
+#include "formats/ptsio.h"
+#include "base/rng.h"
+#include "maps/vol.h"
 
 #define MATRIX "data/default.frd"
 

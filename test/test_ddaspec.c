@@ -6,9 +6,9 @@
  * scale invariance of compressed sets, symmetry, thread count and point
  * order, and bad arguments. */
 #include "testutil.h"
-#include "ddaspec.h"
-#include "par.h"
-#include "rng.h"
+#include "analysis/ddaspec.h"
+#include "base/par.h"
+#include "base/rng.h"
 
 /* Scales in [1/2, 2), log-uniform. */
 static double *rnd_scales(size_t n, uint64_t seed)

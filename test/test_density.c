@@ -6,11 +6,11 @@
 #include "testutil.h"
 #include <time.h>
 
-#include "density.h"
-#include "imap.h"
-#include "par.h"
-#include "refsamp.h"
-#include "rng.h"
+#include "analysis/density.h"
+#include "maps/imap.h"
+#include "base/par.h"
+#include "sample/refsamp.h"
+#include "base/rng.h"
 
 #define PI 3.14159265358979323846
 

@@ -4,12 +4,12 @@
  * expectation E[d(A)^2] = area(1 - area)/n of uniform random points. */
 #include "testutil.h"
 #include "discref.h"
-#include "disc.h"
-#include "discint.h"
-#include "discshape.h"
-#include "geom.h"
-#include "par.h"
-#include "rng.h"
+#include "analysis/disc.h"
+#include "analysis/discint.h"
+#include "analysis/discshape.h"
+#include "base/geom.h"
+#include "base/par.h"
+#include "base/rng.h"
 
 #define U52 0x1p-52
 

@@ -6,9 +6,9 @@
  * every grid box counted (discref.h). */
 #include "testutil.h"
 #include "discref.h"
-#include "disc.h"
-#include "par.h"
-#include "rng.h"
+#include "analysis/disc.h"
+#include "base/par.h"
+#include "base/rng.h"
 
 /* n uniform random points of k coordinates. */
 static double *rnd_k(size_t n, unsigned k, uint64_t seed)

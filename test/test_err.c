@@ -1,7 +1,7 @@
 /* Error messages: what they quote never carries raw control bytes or
  * invalid UTF-8 (frs_escape), while valid UTF-8, newlines and tabs stay. */
 #include "testutil.h"
-#include "err.h"
+#include "base/err.h"
 
 #include <string.h>
 

@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 /*
- * OpenEXR reading and writing (src/lib/exrio.c).
+ * OpenEXR reading and writing (src/lib/maps/exrio.c).
  *
  * The files read here are made in the test itself with the OpenEXR C API
  * (channel sets, pixel types, compressions, tiles, data windows that do
@@ -8,8 +8,8 @@
  * oracle.  The real DWAB light probes in the shared data directory
  * ($FRS_SHARED, default ../shared) are read as well.
  */
-#include "err.h"
-#include "imap.h"
+#include "base/err.h"
+#include "maps/imap.h"
 
 #include <stdarg.h>
 #include <stddef.h>

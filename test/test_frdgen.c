@@ -3,10 +3,10 @@
  * the quality properties of what it makes. */
 #include "testutil.h"
 #include "frsutil.h"
-#include "fft.h"
-#include "frdgen.h"
-#include "frdq.h"
-#include "rng.h"
+#include "base/fft.h"
+#include "frd/frdgen.h"
+#include "frd/frdq.h"
+#include "base/rng.h"
 
 static void params(struct frdgen_params *pr, uint32_t w, uint32_t h,
     uint32_t d, double p, double tol)

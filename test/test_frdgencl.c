@@ -4,8 +4,8 @@
  * and devices without fp64 refused with a message. */
 #include "testutil.h"
 #include "frsutil.h"
-#include "frdgen.h"
-#include "frdgencl.h"
+#include "frd/frdgen.h"
+#include "frd/frdgencl.h"
 
 static struct ocl o;
 

@@ -1,9 +1,9 @@
 /* The .frd reader and writer: round trip, and every malformed file is
  * refused with a message naming the file and the problem. */
 #include "testutil.h"
-#include "frdio.h"
-#include "io.h"
-#include "outfile.h"
+#include "formats/frdio.h"
+#include "base/io.h"
+#include "base/outfile.h"
 
 static void write_matrix(const char *path, const struct frs_matrix *m)
 {

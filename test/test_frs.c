@@ -2,11 +2,11 @@
  * implementation against Naive, and the statistics of what comes out. */
 #include "testutil.h"
 #include "frsutil.h"
-#include "frdio.h"
-#include "frscore.h"
-#include "imap.h"
-#include "par.h"
-#include "rng.h"
+#include "formats/frdio.h"
+#include "sample/frscore.h"
+#include "maps/imap.h"
+#include "base/par.h"
+#include "base/rng.h"
 
 /* Listing 5.1 by hand: constant 128^2 map, n = 1024, sigma 8:
  * w_min = 8 sqrt(1024) = 256, n_s = 2, tau = 1024 * 2048^2 / 256^2. */

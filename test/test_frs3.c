@@ -1,11 +1,11 @@
 /* 3-D Forced Random Sampling: setup against closed forms, sorted against
  * naive, and the statistics of what comes out against the volume. */
 #include "testutil.h"
-#include "frdio.h"
-#include "frs3.h"
-#include "par.h"
-#include "rng.h"
-#include "vol.h"
+#include "formats/frdio.h"
+#include "sample/frs3.h"
+#include "base/par.h"
+#include "base/rng.h"
+#include "maps/vol.h"
 
 #include <math.h>
 

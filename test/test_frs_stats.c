@@ -4,9 +4,9 @@
  * sampling are loose for it), unbiased counts in dark pixels, the hard
  * maps, and the density of uniform samples. */
 #include "testutil.h"
-#include "frdio.h"
-#include "frscore.h"
-#include "imap.h"
+#include "formats/frdio.h"
+#include "sample/frscore.h"
+#include "maps/imap.h"
 #include "moments.h"
 
 static struct frs_matrix M;

@@ -4,12 +4,12 @@
  * math past 32 bits. */
 #include "testutil.h"
 #include "frsutil.h"
-#include "frdio.h"
-#include "frscore.h"
-#include "frscl.h"
-#include "imap.h"
-#include "par.h"
-#include "rng.h"
+#include "formats/frdio.h"
+#include "sample/frscore.h"
+#include "sample/frscl.h"
+#include "maps/imap.h"
+#include "base/par.h"
+#include "base/rng.h"
 
 static struct ocl o;
 

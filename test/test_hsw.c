@@ -3,11 +3,11 @@
  * where the importance is positive, padding, exact counts, thread
  * independence. */
 #include "testutil.h"
-#include "hsw.h"
-#include "imap.h"
+#include "sample/hsw.h"
+#include "maps/imap.h"
 #include "moments.h"
-#include "par.h"
-#include "rng.h"
+#include "base/par.h"
+#include "base/rng.h"
 
 /* n halton points warped by map m into a new array. */
 static double *warp(const struct frs_imap *m, uint64_t n, enum hsw_input in)

@@ -4,10 +4,10 @@
  * a sparse map with zeros, halton, random and dart input, n = 1, 1000,
  * 100000, in place and in chunks; a device without fp64 is refused. */
 #include "testutil.h"
-#include "hsw.h"
-#include "hswcl.h"
-#include "imap.h"
-#include "refsamp.h"
+#include "sample/hsw.h"
+#include "sample/hswcl.h"
+#include "maps/imap.h"
+#include "sample/refsamp.h"
 
 static struct ocl o;
 

@@ -1,7 +1,7 @@
 /* Importance maps in memory: statistics, validation, area-weighted
  * resampling and the equirectangular weight, against closed forms. */
 #include "testutil.h"
-#include "imap.h"
+#include "maps/imap.h"
 
 #include <math.h>
 

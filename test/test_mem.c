@@ -1,11 +1,11 @@
-/* The memory ceiling (src/lib/mem.c): FRS_MAX_MEM parsed with its units,
+/* The memory ceiling (src/lib/base/mem.c): FRS_MAX_MEM parsed with its units,
  * requests above it refused with both figures, products that overflow
  * refused, and the readers refusing a header's size before allocating. */
 #include "testutil.h"
-#include "frdio.h"
-#include "imap.h"
-#include "io.h"
-#include "mem.h"
+#include "formats/frdio.h"
+#include "maps/imap.h"
+#include "base/io.h"
+#include "base/mem.h"
 
 #include <string.h>
 

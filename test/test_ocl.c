@@ -2,7 +2,7 @@
  * the kernels' Philox against rng.c, buffers filled before use, a build
  * failure with its log, a device that does not exist. */
 #include "testutil.h"
-#include "ocl.h"
+#include "base/ocl.h"
 
 static struct ocl o;
 

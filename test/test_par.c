@@ -2,9 +2,10 @@
  * stop the loop and reach the caller, counts and messages per thread, the
  * team's many small jobs, and the progress bar draws rate and ETA. */
 #include "testutil.h"
-#include "cli.h"
-#include "par.h"
-#include "progress.h"
+#include "cli/cli.h"
+#include "frs.h"
+#include "base/par.h"
+#include "base/progress.h"
 
 #include <fcntl.h>
 #include <pthread.h>

@@ -1,7 +1,7 @@
 /* Strict number parsing: junk, NaN, overflow and range are rejected with a
  * message naming the option. */
 #include "testutil.h"
-#include "parse.h"
+#include "base/parse.h"
 
 #include <float.h>
 #include <limits.h>

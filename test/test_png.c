@@ -2,7 +2,7 @@
  * read back to the values the test put in, by definition (v / maxval,
  * Rec. 709 luminance), and broken files are refused. */
 #include "testutil.h"
-#include "imap.h"
+#include "maps/imap.h"
 
 #include <png.h>
 

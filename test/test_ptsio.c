@@ -1,8 +1,8 @@
 /* Point files: exact round trips in both forms, streams of unknown
  * length, and every malformed input refused with file and problem. */
 #include "testutil.h"
-#include "io.h"
-#include "ptsio.h"
+#include "base/io.h"
+#include "formats/ptsio.h"
 
 #include <math.h>
 

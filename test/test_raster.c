@@ -4,8 +4,8 @@
  * importance background follows its formula; PNG and PNM files read back
  * to the same pixels. */
 #include "testutil.h"
-#include "imap.h"
-#include "raster.h"
+#include "maps/imap.h"
+#include "analysis/raster.h"
 
 static const uint8_t black[3] = { 0, 0, 0 };
 static const double PI = 3.14159265358979323846;

@@ -2,9 +2,9 @@
  * classical Halton/Hammersley/Sobol' values, the (0,2)-net property of
  * scrambled Sobol', strata, Poisson-disk distance and density. */
 #include "testutil.h"
-#include "imap.h"
-#include "refsamp.h"
-#include "rng.h"
+#include "maps/imap.h"
+#include "sample/refsamp.h"
+#include "base/rng.h"
 
 static double *gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
     uint64_t *placed)

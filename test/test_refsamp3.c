@@ -5,8 +5,8 @@
  * property of (scrambled) Sobol', the Poisson-disk distance by brute
  * force and the uniformity of random points. */
 #include "testutil.h"
-#include "refsamp.h"
-#include "rng.h"
+#include "sample/refsamp.h"
+#include "base/rng.h"
 
 static double *gen3(enum refsamp_kind k, uint64_t n, uint64_t seed,
     uint64_t maxf, uint64_t *placed)

@@ -1,7 +1,7 @@
 /* The counter-based generator: Random123 known answers, order
  * independence, and uniformity. */
 #include "testutil.h"
-#include "rng.h"
+#include "base/rng.h"
 
 /* Random123 tests/kat_vectors, "philox4x32 10": counter, key, result. */
 static void known_answers(void **state)

@@ -1,7 +1,7 @@
 /* Procedural maps against independent references: brute-force numeric
  * integration of the defining formulas, moments and symmetry. */
 #include "testutil.h"
-#include "imap.h"
+#include "maps/imap.h"
 
 #define PI 3.14159265358979323846
 

@@ -4,10 +4,10 @@
  * sets, hand-computed radial statistics, and the PNG scale. */
 #include "testutil.h"
 #include <complex.h>
-#include "imap.h"
-#include "par.h"
-#include "rng.h"
-#include "spectrum.h"
+#include "maps/imap.h"
+#include "base/par.h"
+#include "base/rng.h"
+#include "analysis/spectrum.h"
 
 #define PI 3.14159265358979323846
 

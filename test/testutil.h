@@ -14,8 +14,8 @@
 #include <unistd.h>
 #include <math.h>
 
-#include "err.h"
-#include "rng.h"
+#include "base/err.h"
+#include "base/rng.h"
 
 /* n uniform random points, x y packed, from (seed, FRS_STREAM_TEST). */
 static inline double *tu_rnd_points(size_t n, uint64_t seed)

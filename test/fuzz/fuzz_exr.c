@@ -2,7 +2,7 @@
  * (imap_load_raw on a file, which detects the format by its magic). */
 #define _POSIX_C_SOURCE 200809L
 #include "fuzz.h"
-#include "imap.h"
+#include "maps/imap.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

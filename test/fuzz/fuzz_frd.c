@@ -2,7 +2,7 @@
  * forms that frd-prep --import reads (text, raw32). */
 #define _POSIX_C_SOURCE 200809L
 #include "fuzz.h"
-#include "frdio.h"
+#include "formats/frdio.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

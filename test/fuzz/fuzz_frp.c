@@ -2,8 +2,8 @@
  * frp_check_fp). */
 #define _POSIX_C_SOURCE 200809L
 #include "fuzz.h"
-#include "frdio.h"
-#include "frscore.h"
+#include "formats/frdio.h"
+#include "sample/frscore.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -2,7 +2,7 @@
  * a sampler makes of their values (vol_validate). */
 #define _POSIX_C_SOURCE 200809L
 #include "fuzz.h"
-#include "vol.h"
+#include "maps/vol.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -2,14 +2,14 @@
  * picks the program; the rest, split at NUL bytes, is its argument list.
  * Each program's main runs until its options are parsed and checked
  * (cli_options_done) or until it exits with a usage error; cli_trap
- * turns both into a longjmp back here (src/lib/cli.h).  A program that
+ * turns both into a longjmp back here (src/cli/cli.h).  A program that
  * reaches its work without passing cli_options_done aborts the run. */
 #define _POSIX_C_SOURCE 200809L
 #include <getopt.h>
 #include <setjmp.h>
 #include <string.h>
 
-#include "cli.h"
+#include "cli/cli.h"
 #include "fuzz.h"
 
 /* The programs' main functions, renamed at compile time (Makefile). */

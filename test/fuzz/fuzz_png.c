@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "fuzz.h"
-#include "imap.h"
+#include "maps/imap.h"
 
 static uint32_t crc_table[256];
 

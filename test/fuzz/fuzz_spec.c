@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "fuzz.h"
-#include "imap.h"
-#include "vol.h"
+#include "maps/imap.h"
+#include "maps/vol.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -15,10 +15,10 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
-#include "frdio.h"
-#include "frscore.h"
-#include "imap.h"
-#include "par.h"
+#include "formats/frdio.h"
+#include "sample/frscore.h"
+#include "maps/imap.h"
+#include "base/par.h"
 
 /* A w x h map with every pixel v. */
 static inline void hd_map(struct frs_imap *m, uint32_t w, uint32_t h,

@@ -20,8 +20,8 @@
  */
 #include "testutil.h"
 #include "discref.h"
-#include "disc.h"
-#include "par.h"
+#include "analysis/disc.h"
+#include "base/par.h"
 
 #define ONE_ULP 0x1.fffffffffffffp-1	/* 1 - 2^-53 */
 

@@ -15,7 +15,7 @@
 #include "testutil.h"
 #include "frsutil.h"
 #include "hard.h"
-#include "frdgen.h"
+#include "frd/frdgen.h"
 
 /* ---- permutations and the least-force rule -------------------------- */
 

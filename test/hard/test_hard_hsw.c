@@ -15,7 +15,7 @@
  */
 #include "testutil.h"
 #include "hard.h"
-#include "hsw.h"
+#include "sample/hsw.h"
 
 #include <float.h>
 

@@ -1,0 +1,120 @@
+/*
+ * What every program shares: its name in messages, the common options
+ * (-h, --version, -o, -T, -S, -j, -q, --progress), err(3)-style exits and
+ * number options that reject junk.
+ *
+ * Exit status: 0 success, 1 error (bad input, failed output), 2 usage.
+ */
+#ifndef FRS_CLI_H
+#define FRS_CLI_H
+
+#include <getopt.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <stdnoreturn.h>
+
+#include "api/version.h"
+#include "base/err.h"
+
+enum {
+	OPT_VERSION = 0x1000,
+	OPT_PROGRESS,
+	OPT_FIRST_PRIVATE	/* programs number their own long options from here */
+};
+
+/* The long options every program has; put at the end of its table,
+ * before the terminating zero entry. */
+#define CLI_COMMON_LONGOPTS \
+	{ "help", no_argument, NULL, 'h' }, \
+	{ "version", no_argument, NULL, OPT_VERSION }, \
+	{ "output", required_argument, NULL, 'o' }, \
+	{ "text", no_argument, NULL, 'T' }, \
+	{ "seed", required_argument, NULL, 'S' }, \
+	{ "threads", required_argument, NULL, 'j' }, \
+	{ "quiet", no_argument, NULL, 'q' }, \
+	{ "progress", no_argument, NULL, OPT_PROGRESS }
+#define CLI_COMMON_SHORTOPTS "ho:TS:j:q"
+
+struct cli_common {
+	const char *out;	/* -o, NULL for standard output */
+	int text;		/* -T */
+	uint64_t seed;		/* -S, default 1 */
+	int threads;		/* -j, default: all cores */
+	int quiet;		/* -q */
+	int progress;		/* --progress */
+};
+extern struct cli_common cli;
+extern const char *cli_prog;
+
+/* Set the program name and the usage text printed by -h and on usage
+ * errors (its first line is the synopsis). */
+void cli_init(const char *prog, const char *usage);
+/* getopt_long, with getopt's messages naming the program as cli_init
+ * did (not argv[0], a path). */
+int cli_getopt(int argc, char **argv, const char *shortopts,
+    const struct option *longopts);
+/* Handle a common option; returns 1 if c was one. */
+int cli_common_opt(int c, const char *arg);
+
+noreturn void cli_usage(int status);
+noreturn void cli_usage_error(const char *fmt, ...) FRS_PRINTF(1, 2);
+/* Which of the words (NULL-terminated, at least two) option opt names:
+ * its index; any other is a usage error "opt: 's' is not a, b or c". */
+int cli_choice(const char *opt, const char *s, const char *const *words);
+/* "prog: message", exit 1, removing unfinished output files. */
+noreturn void cli_die(const char *fmt, ...) FRS_PRINTF(1, 2);
+/* "prog: <library message>", exit 1. */
+noreturn void cli_die_lib(void);
+void cli_note(const char *fmt, ...) FRS_PRINTF(1, 2);	/* unless -q */
+
+/* The file name of an output option: an empty one is a usage error. */
+const char *cli_outname(const char *opt, const char *s);
+/* Option values; a bad value is a usage error naming the option. */
+long long cli_ll(const char *opt, const char *s, long long min, long long max);
+uint64_t cli_u64(const char *opt, const char *s, uint64_t min, uint64_t max);
+double cli_double(const char *opt, const char *s, double min, double max);
+void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
+    uint32_t *h);
+/* "N", "WxH" or "WxHxD": the number of sizes given; "N" fills all three,
+ * "WxH" sets sz[2] = W. */
+int cli_size3(const char *opt, const char *s, uint32_t max, uint32_t sz[3]);
+
+/* --device VALUE: 0 for cpu, 1 for OpenCL with *index (-1: the first
+ * device); a bad value is a usage error. */
+int cli_device(const char *arg, int *index);
+/* --list-devices: print the OpenCL devices and exit 0, or exit 1 with
+ * the reason (no platform, no writable PoCL cache). */
+noreturn void cli_list_devices(void);
+
+/* Called by every program when its options are parsed and checked,
+ * before any file is opened or work begins.  Normally it does nothing.
+ * The option-parsing fuzz target (test/fuzz/fuzz_opts.c) sets cli_trap:
+ * then every exit above longjmps there with status + 1 instead, and
+ * cli_options_done (and --list-devices) with CLI_PARSED, so that a
+ * program's option parsing runs many times in one process. */
+extern jmp_buf *cli_trap;
+#define CLI_PARSED 1000
+void cli_options_done(void);
+
+/*
+ * The programs' progress bar: a callback for frs_set_progress(3), which
+ * cli_init installs for the calling thread with a bar of its own.  It
+ * draws "prog: what [###   ]  50.0% 1.23e+04/s ETA 00:42" on standard
+ * error, unless -q, when standard error is a terminal or --progress was
+ * given (decided as each task starts), only after the task has run for a
+ * second, at most 10 times a second, and a last time at 100 % with a
+ * newline when a task that ran a second or more ends.  One task at a time.
+ */
+struct cli_bar {
+	const char *label;
+	uint64_t total, done;
+	double start, last;	/* progress_now() seconds */
+	int active, on, drawn;
+};
+void cli_bar_progress(void *ctx, const char *what, uint64_t done,
+    uint64_t total);
+
+/* Number of online processors. */
+int cli_ncpu(void);
+
+#endif

@@ -1,0 +1,32 @@
+/* Internal to the discrepancy modules (disc*.c). */
+#ifndef FRS_DISCINT_H
+#define FRS_DISCINT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "base/par.h"
+
+/* Chunks of [0, n) in order, on the thread team when par is set. */
+int disc_run_chunks(uint64_t n, uint64_t chunk,
+    int (*fn)(void *, uint64_t, uint64_t), void *ctx, int par);
+/* Compensated sum of v[0..k-1], in order. */
+double disc_sum(const double *v, size_t k);
+/* ord[0..n-1]: the indices of v[i * stride], i < n, in ascending order
+ * of the values, equal values by index (a stable radix sort, O(n)). */
+int disc_order(const double *v, size_t n, size_t stride, uint32_t *ord);
+/* Grid bins: star, lines i/s (i = 1..s) at or below v; rect, the index
+ * of the interval [a/(s-1), (a+1)/(s-1)) holding v. */
+uint32_t disc_star_bin(double v, uint32_t s);
+uint32_t disc_rect_bin(double v, uint32_t s);
+
+/* Points grouped by a bin of one coordinate: the points of bin b are
+ * idx[start[b] .. start[b+1]-1]. */
+struct disc_rows {
+	uint32_t *start, *idx;
+};
+int disc_rows_make(struct disc_rows *r, const uint32_t *bin, size_t n,
+    uint32_t nbins);
+void disc_rows_free(struct disc_rows *r);
+
+#endif

@@ -1,0 +1,91 @@
+#define _POSIX_C_SOURCE 200809L
+#include "base/rng.h"
+
+#define PHILOX_M0 0xD2511F53u
+#define PHILOX_M1 0xCD9E8D57u
+#define PHILOX_W0 0x9E3779B9u
+#define PHILOX_W1 0xBB67AE85u
+
+static void mulhilo(uint32_t a, uint32_t b, uint32_t *hi, uint32_t *lo)
+{
+	uint64_t p = (uint64_t)a * b;
+	*hi = (uint32_t)(p >> 32);
+	*lo = (uint32_t)p;
+}
+
+void frs_philox4x32_10(const uint32_t ctr[4], const uint32_t key[2],
+    uint32_t out[4])
+{
+	uint32_t c0 = ctr[0], c1 = ctr[1], c2 = ctr[2], c3 = ctr[3];
+	uint32_t k0 = key[0], k1 = key[1];
+
+	for (int round = 0; round < 10; round++) {
+		uint32_t hi0, lo0, hi1, lo1;
+		if (round > 0) {
+			k0 += PHILOX_W0;
+			k1 += PHILOX_W1;
+		}
+		mulhilo(PHILOX_M0, c0, &hi0, &lo0);
+		mulhilo(PHILOX_M1, c2, &hi1, &lo1);
+		c0 = hi1 ^ c1 ^ k0;
+		c1 = lo1;
+		c2 = hi0 ^ c3 ^ k1;
+		c3 = lo0;
+	}
+	out[0] = c0;
+	out[1] = c1;
+	out[2] = c2;
+	out[3] = c3;
+}
+
+uint64_t frs_rand64(uint64_t seed, uint32_t stream, uint64_t index)
+{
+	return frs_rand64x(seed, stream, index, 0);
+}
+
+uint64_t frs_rand64x(uint64_t seed, uint32_t stream, uint64_t index,
+    uint32_t sub)
+{
+	uint32_t ctr[4] = { (uint32_t)index, (uint32_t)(index >> 32), stream,
+	    sub };
+	uint32_t key[2] = { (uint32_t)seed, (uint32_t)(seed >> 32) };
+	uint32_t out[4];
+
+	frs_philox4x32_10(ctr, key, out);
+	return (uint64_t)out[0] | (uint64_t)out[1] << 32;
+}
+
+double frs_rand01(uint64_t seed, uint32_t stream, uint64_t index)
+{
+	return (double)(frs_rand64(seed, stream, index) >> 11) * 0x1p-53;
+}
+
+void frs_rng_init(struct frs_rng *r, uint64_t seed, uint32_t stream)
+{
+	r->seed = seed;
+	r->stream = stream;
+	r->index = 0;
+}
+
+uint64_t frs_rng_next64(struct frs_rng *r)
+{
+	return frs_rand64(r->seed, r->stream, r->index++);
+}
+
+double frs_rng_next01(struct frs_rng *r)
+{
+	return (double)(frs_rng_next64(r) >> 11) * 0x1p-53;
+}
+
+uint64_t frs_rng_below(struct frs_rng *r, uint64_t bound)
+{
+	/* Rejection from the top of the range keeps every residue equally
+	 * likely. */
+	uint64_t limit = UINT64_MAX - UINT64_MAX % bound;
+	uint64_t x;
+
+	do
+		x = frs_rng_next64(r);
+	while (x >= limit);
+	return x % bound;
+}

@@ -1,0 +1,255 @@
+#define _POSIX_C_SOURCE 200809L
+#include "formats/frdio.h"
+#include "base/err.h"
+#include "base/io.h"
+#include "base/mem.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int frd_alloc(struct frs_matrix *m, unsigned dims, uint32_t w, uint32_t h,
+    uint32_t d, const char *params)
+{
+	uint64_t n = (uint64_t)w * h * d;
+	char what[64];
+
+	memset(m, 0, sizeof *m);
+	if (dims < 2 || dims > 3 || w == 0 || h == 0 || d == 0 ||
+	    (dims == 2 && d != 1))
+		return frs_fail("impossible matrix size %ux%ux%u (k = %u)", w, h,
+		    d, dims);
+	if (n > FRD_MAX_ELEMS || n > SIZE_MAX / sizeof(uint32_t))
+		return frs_fail("matrix of %llu elements is too large",
+		    (unsigned long long)n);
+	snprintf(what, sizeof what, dims == 2 ? "%ux%u matrix" :
+	    "%ux%ux%u matrix", w, h, d);
+	if ((m->v = mem_calloc(what, n, sizeof *m->v)) == NULL)
+		return -1;
+	if ((m->params = strdup(params ? params : "")) == NULL) {
+		frd_free(m);
+		return frs_fail("out of memory for a matrix's parameters");
+	}
+	m->dims = dims;
+	m->w = w;
+	m->h = h;
+	m->d = d;
+	m->n = (size_t)n;
+	return 0;
+}
+
+void frd_free(struct frs_matrix *m)
+{
+	free(m->v);
+	free(m->params);
+	memset(m, 0, sizeof *m);
+}
+
+static int parse_header(const unsigned char *h, const char *name,
+    unsigned *dims, uint32_t sz[3], uint32_t *plen)
+{
+	uint32_t version;
+
+	if (memcmp(h, FRD_MAGIC, 8) != 0)
+		return frs_fail("%s: not a threshold matrix (wrong magic)", name);
+	version = io_get_u32(h + 8);
+	if (version != FRD_VERSION)
+		return frs_fail("%s: unsupported format version %u (this "
+		    "program reads version %d)", name, version, FRD_VERSION);
+	*dims = io_get_u32(h + 12);
+	for (int i = 0; i < 3; i++)
+		sz[i] = io_get_u32(h + 16 + 4 * i);
+	*plen = io_get_u32(h + 28);
+	if (*dims != 2 && *dims != 3)
+		return frs_fail("%s: dimension count %u is not 2 or 3", name,
+		    *dims);
+	if (sz[0] == 0 || sz[1] == 0 || sz[2] == 0 || (*dims == 2 && sz[2] != 1))
+		return frs_fail("%s: impossible size %ux%ux%u", name, sz[0],
+		    sz[1], sz[2]);
+	if ((uint64_t)sz[0] * sz[1] * sz[2] > FRD_MAX_ELEMS)
+		return frs_fail("%s: size %ux%ux%u exceeds 2^32 elements", name,
+		    sz[0], sz[1], sz[2]);
+	if (*plen > FRD_MAX_PARAMS)
+		return frs_fail("%s: parameter text of %u bytes is too long",
+		    name, *plen);
+	return 0;
+}
+
+static int read_params(FILE *fp, const char *name, uint32_t plen,
+    char **out)
+{
+	char *p = malloc((size_t)plen + 1);
+
+	if (p == NULL)
+		return frs_fail("%s: out of memory", name);
+	if (io_read_exact(fp, name, p, plen, "parameter text") < 0) {
+		free(p);
+		return -1;
+	}
+	p[plen] = '\0';
+	if (memchr(p, '\0', plen) != NULL) {
+		free(p);
+		return frs_fail("%s: parameter text contains a NUL byte", name);
+	}
+	*out = p;
+	return 0;
+}
+
+static int check_values(const struct frs_matrix *m, const char *name)
+{
+	for (size_t i = 0; i < m->n; i++)
+		if (m->v[i] >= m->n)
+			return frs_fail("%s: value %u at element %zu is not "
+			    "below the element count %zu", name, m->v[i], i,
+			    m->n);
+	return 0;
+}
+
+int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m)
+{
+	return frd_read_pre(fp, name, NULL, 0, m);
+}
+
+int frd_read_pre(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frs_matrix *m)
+{
+	unsigned char h[FRD_HEADER];
+	unsigned dims = 0;
+	uint32_t sz[3] = { 0, 0, 0 }, plen = 0;
+	long long fsize = io_file_size(fp);
+	char *params = NULL;
+	int c;
+
+	memset(m, 0, sizeof *m);
+	if (io_read_header(fp, name, pre, npre, h, sizeof h) < 0)
+		return -1;
+	if (parse_header(h, name, &dims, sz, &plen) < 0)
+		return -1;
+	if (fsize >= 0) {
+		unsigned long long want = FRD_HEADER + (unsigned long long)plen +
+		    4ull * sz[0] * sz[1] * sz[2];
+		if ((unsigned long long)fsize != want)
+			return frs_fail("%s: file has %lld bytes but its header "
+			    "(%ux%ux%u values) needs %llu", name, fsize, sz[0],
+			    sz[1], sz[2], want);
+	}
+	if (read_params(fp, name, plen, &params) < 0)
+		return -1;
+	if (frd_alloc(m, dims, sz[0], sz[1], sz[2], params) < 0) {
+		free(params);
+		return frs_fail_context(name);
+	}
+	free(params);
+	if (io_read_exact(fp, name, m->v, m->n * 4, "values") < 0)
+		goto fail;
+	io_le_u32(m->v, m->n);
+	if ((c = fgetc(fp)) != EOF) {
+		frs_fail("%s: trailing data after the values", name);
+		goto fail;
+	}
+	if (check_values(m, name) < 0)
+		goto fail;
+	return 0;
+fail:
+	frd_free(m);
+	return -1;
+}
+
+int frd_read(const char *path, struct frs_matrix *m)
+{
+	const char *name;
+	FILE *fp = io_open_in(path, &name);
+	int rc;
+
+	if (fp == NULL)
+		return -1;
+	rc = frd_read_fp(fp, name, m);
+	io_close_in(fp);
+	return rc;
+}
+
+int frd_peek_dims(const char *path)
+{
+	unsigned char h[FRD_HEADER];
+	FILE *fp;
+	size_t got;
+
+	if (strcmp(path, "-") == 0 || (fp = fopen(path, "rb")) == NULL)
+		return 0;
+	got = fread(h, 1, sizeof h, fp);
+	fclose(fp);
+	if (got != sizeof h || memcmp(h, FRD_MAGIC, 8) != 0)
+		return 0;
+	return (int)io_get_u32(h + 12);
+}
+
+int frd_write(FILE *fp, const char *name, const struct frs_matrix *m)
+{
+	unsigned char h[FRD_HEADER];
+	size_t plen = strlen(m->params);
+	int ok;
+
+	if (plen > FRD_MAX_PARAMS)
+		return frs_fail("%s: parameter text too long", name);
+	memcpy(h, FRD_MAGIC, 8);
+	io_put_u32(h + 8, FRD_VERSION);
+	io_put_u32(h + 12, m->dims);
+	io_put_u32(h + 16, m->w);
+	io_put_u32(h + 20, m->h);
+	io_put_u32(h + 24, m->d);
+	io_put_u32(h + 28, (uint32_t)plen);
+	ok = fwrite(h, 1, sizeof h, fp) == sizeof h &&
+	    fwrite(m->params, 1, plen, fp) == plen;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+	for (size_t i = 0; ok && i < m->n; i++) {
+		unsigned char b[4];
+		io_put_u32(b, m->v[i]);
+		ok = fwrite(b, 1, 4, fp) == 4;
+	}
+#else
+	ok = ok && fwrite(m->v, 4, m->n, fp) == m->n;
+#endif
+	if (!ok)
+		return frs_fail_errno("%s: write error", name);
+	return 0;
+}
+
+int frd_check_permutation(const struct frs_matrix *m, const char *name)
+{
+	size_t words = (m->n + 63) / 64;
+	uint64_t *seen = calloc(words ? words : 1, sizeof *seen);
+
+	if (seen == NULL)
+		return frs_fail("%s: out of memory", name);
+	for (size_t i = 0; i < m->n; i++) {
+		uint32_t v = m->v[i];
+		if (v >= m->n) {
+			free(seen);
+			return frs_fail("%s: value %u at element %zu is out of "
+			    "range", name, v, i);
+		}
+		if (seen[v / 64] >> (v % 64) & 1) {
+			free(seen);
+			return frs_fail("%s: not a permutation: value %u repeats "
+			    "at (%zu, %zu, %zu)", name, v, i % m->w,
+			    i / m->w % m->h, i / ((size_t)m->w * m->h));
+		}
+		seen[v / 64] |= (uint64_t)1 << (v % 64);
+	}
+	free(seen);
+	return 0;
+}
+
+uint64_t frd_checksum(const struct frs_matrix *m)
+{
+	uint64_t h = 0xcbf29ce484222325ull;
+	uint32_t head[4] = { m->dims, m->w, m->h, m->d };
+
+	for (int i = 0; i < 4; i++)
+		for (int b = 0; b < 4; b++)
+			h = (h ^ ((head[i] >> (8 * b)) & 0xff)) * 0x100000001b3ull;
+	for (size_t i = 0; i < m->n; i++)
+		for (int b = 0; b < 4; b++)
+			h = (h ^ ((m->v[i] >> (8 * b)) & 0xff)) * 0x100000001b3ull;
+	return h;
+}

@@ -1,0 +1,305 @@
+#define _POSIX_C_SOURCE 200809L
+#include "maps/imap.h"
+#include "maps/vol.h"
+#include "base/err.h"
+#include "base/io.h"
+#include "base/mem.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define FRS_PI 3.14159265358979323846
+
+int imap_alloc(struct frs_imap *m, uint32_t w, uint32_t h)
+{
+	char what[48];
+
+	memset(m, 0, sizeof *m);
+	if (w == 0 || h == 0)
+		return frs_fail("impossible map size %ux%u", w, h);
+	if (w > IMAP_MAX_SIDE || h > IMAP_MAX_SIDE ||
+	    (uint64_t)w * h > IMAP_MAX_PIXELS)
+		return frs_fail("map size %ux%u is too large (at most %u on a "
+		    "side and %llu pixels)", w, h, IMAP_MAX_SIDE,
+		    (unsigned long long)IMAP_MAX_PIXELS);
+	snprintf(what, sizeof what, "%ux%u map", w, h);
+	if ((m->v = mem_calloc(what, (uint64_t)w * h, sizeof *m->v)) == NULL)
+		return -1;
+	m->w = w;
+	m->h = h;
+	return 0;
+}
+
+void imap_free(struct frs_imap *m)
+{
+	free(m->v);
+	memset(m, 0, sizeof *m);
+}
+
+void imap_stats(const struct frs_imap *m, struct frs_imap_stats *s)
+{
+	double c = 0.0;	/* Kahan-Babuska compensation */
+	uint64_t finite = 0;
+
+	memset(s, 0, sizeof *s);
+	s->count = (uint64_t)m->w * m->h;
+	s->min = INFINITY;
+	s->max = -INFINITY;
+	for (uint64_t i = 0; i < s->count; i++) {
+		double v = m->v[i], t;
+		if (!isfinite(v)) {
+			if (s->nonfinite++ == 0) {
+				s->bad_x = (uint32_t)(i % m->w);
+				s->bad_y = (uint32_t)(i / m->w);
+				s->bad_value = v;
+			}
+			continue;
+		}
+		finite++;
+		if (v == 0.0)
+			s->zeros++;
+		if (v > 0.0 && (s->min_positive == 0.0 || v < s->min_positive))
+			s->min_positive = v;
+		if (v < 0.0) {
+			if (s->negatives++ == 0) {
+				s->neg_x = (uint32_t)(i % m->w);
+				s->neg_y = (uint32_t)(i / m->w);
+				s->min_negative = v;
+			}
+			if (v < s->min_negative)
+				s->min_negative = v;
+		}
+		s->min = v < s->min ? v : s->min;
+		s->max = v > s->max ? v : s->max;
+		t = s->sum + v;
+		if (fabs(s->sum) >= fabs(v))
+			c += (s->sum - t) + v;
+		else
+			c += (v - t) + s->sum;
+		s->sum = t;
+	}
+	s->sum += c;
+	s->mean = finite ? s->sum / (double)finite : 0.0;
+	if (finite == 0)
+		s->min = s->max = 0.0;
+}
+
+static int validate(struct frs_imap *m, const char *name, int flags)
+{
+	struct frs_imap_stats s;
+	uint64_t n = (uint64_t)m->w * m->h;
+
+	imap_stats(m, &s);
+	if (s.nonfinite)
+		return frs_fail("%s: pixel (%u, %u) is %s (%llu non-finite "
+		    "pixels)", name, s.bad_x, s.bad_y, isnan(s.bad_value) ? "NaN" :
+		    "infinite", (unsigned long long)s.nonfinite);
+	if (s.negatives) {
+		if (flags & IMAP_STRICT)
+			return frs_fail("%s: pixel (%u, %u) is negative (%.6g); "
+			    "%llu negative pixels, smallest %.6g", name, s.neg_x,
+			    s.neg_y, m->v[(size_t)s.neg_y * m->w + s.neg_x],
+			    (unsigned long long)s.negatives, s.min_negative);
+		frs_warn("%s: %llu negative pixels clamped to zero (smallest "
+		    "%.6g)", name, (unsigned long long)s.negatives,
+		    s.min_negative);
+		for (uint64_t i = 0; i < n; i++)
+			if (m->v[i] < 0.0)
+				m->v[i] = 0.0;
+		imap_stats(m, &s);
+	}
+	if (!(flags & IMAP_ALLOW_ZERO) && s.max <= 0.0)
+		return frs_fail("%s: importance is zero everywhere", name);
+	return 0;
+}
+
+int imap_validate(struct frs_imap *m, const char *name, int flags)
+{
+	if (validate(m, name, flags) == 0)
+		return 0;
+	frs_set_errkind(FRS_ERRKIND_MAP);	/* the values, not the file */
+	return -1;
+}
+
+/* Overlap of [a0, a1) with [b0, b1). */
+static double overlap(double a0, double a1, double b0, double b1)
+{
+	double lo = a0 > b0 ? a0 : b0, hi = a1 < b1 ? a1 : b1;
+	return hi > lo ? hi - lo : 0.0;
+}
+
+/*
+ * Weights of the 1-D box filter from n source cells onto m target cells,
+ * in source-cell units: target t covers [t*n/m, (t+1)*n/m).  For each
+ * target, first[t] is the first source cell and w[t*span + k] the weight
+ * of source first[t] + k divided by the target's width.
+ */
+struct boxmap {
+	uint32_t *first;
+	double *w;
+	uint32_t span;
+};
+
+static int boxmap_make(struct boxmap *b, uint32_t n, uint32_t m)
+{
+	double scale = (double)n / m;
+
+	b->span = (uint32_t)ceil(scale) + 1;
+	b->first = malloc(m * sizeof *b->first);
+	b->w = calloc((size_t)m * b->span, sizeof *b->w);
+	if (b->first == NULL || b->w == NULL)
+		return frs_fail("out of memory for resampling");
+	for (uint32_t t = 0; t < m; t++) {
+		/* Integer arithmetic for the cell range avoids rounding
+		 * drift: target t spans [t*n, (t+1)*n) in units of 1/m. */
+		uint64_t lo = (uint64_t)t * n, hi = (uint64_t)(t + 1) * n;
+		uint32_t s0 = (uint32_t)(lo / m);
+		b->first[t] = s0;
+		for (uint32_t k = 0; k < b->span && s0 + k < n; k++) {
+			double o = overlap((double)lo, (double)hi,
+			    (double)(s0 + k) * m, (double)(s0 + k + 1) * m);
+			b->w[(size_t)t * b->span + k] = o / (double)(hi - lo);
+		}
+	}
+	return 0;
+}
+
+static void boxmap_free(struct boxmap *b)
+{
+	free(b->first);
+	free(b->w);
+}
+
+int imap_resample(const struct frs_imap *in, uint32_t w, uint32_t h,
+    struct frs_imap *out)
+{
+	struct boxmap bx = { 0 }, by = { 0 };
+	double *row = NULL;
+	int rc = -1;
+
+	if (imap_alloc(out, w, h) < 0)
+		return -1;
+	if (boxmap_make(&bx, in->w, w) < 0 || boxmap_make(&by, in->h, h) < 0)
+		goto done;
+	row = malloc(w * sizeof *row);
+	if (row == NULL) {
+		frs_fail("out of memory for resampling");
+		goto done;
+	}
+	/* Separable: for each target row, mix source rows, then columns. */
+	for (uint32_t ty = 0; ty < h; ty++) {
+		for (uint32_t tx = 0; tx < w; tx++) {
+			double acc = 0.0;
+			for (uint32_t ky = 0; ky < by.span; ky++) {
+				double wy = by.w[(size_t)ty * by.span + ky];
+				const double *src;
+				double racc = 0.0;
+				if (wy == 0.0)
+					continue;
+				src = in->v + (size_t)(by.first[ty] + ky) * in->w;
+				for (uint32_t kx = 0; kx < bx.span; kx++) {
+					double wx = bx.w[(size_t)tx * bx.span + kx];
+					if (wx != 0.0)
+						racc += wx * src[bx.first[tx] + kx];
+				}
+				acc += wy * racc;
+			}
+			row[tx] = acc;
+		}
+		memcpy(out->v + (size_t)ty * w, row, w * sizeof *row);
+	}
+	rc = 0;
+done:
+	free(row);
+	boxmap_free(&bx);
+	boxmap_free(&by);
+	if (rc < 0)
+		imap_free(out);
+	return rc;
+}
+
+void imap_equirect(struct frs_imap *m)
+{
+	for (uint32_t j = 0; j < m->h; j++) {
+		/* Mean of sin(theta) over the row's band of polar angles:
+		 * (cos t0 - cos t1) / (t1 - t0). */
+		double t0 = FRS_PI * j / m->h, t1 = FRS_PI * (j + 1) / m->h;
+		double wgt = (cos(t0) - cos(t1)) / (t1 - t0);
+		for (uint32_t i = 0; i < m->w; i++)
+			m->v[(size_t)j * m->w + i] *= wgt;
+	}
+}
+
+static int file_exists(const char *path)
+{
+	struct stat st;
+	return stat(path, &st) == 0;
+}
+
+static int load_file(const char *path, int flags, struct frs_imap *m)
+{
+	const char *name;
+	unsigned char *buf = NULL;
+	size_t len = 0;
+	/* Both decoders want random access, so buffer the whole input
+	 * (standard input included). */
+	int rc = io_slurp_path(path, &name, &buf, &len);
+
+	if (rc < 0)
+		return -1;
+	if (len == 0)
+		rc = frs_fail("%s: empty file", name);
+	else if (len >= 8 && memcmp(buf, "\211PNG\r\n\032\n", 8) == 0)
+		rc = imap_read_png_mem(buf, len, name, flags & IMAP_SRGB, m);
+	else if (len >= 4 && memcmp(buf, "\166\057\061\001", 4) == 0)
+		rc = imap_read_exr_mem(buf, len, name, m);
+	else if (len >= 8 && memcmp(buf, FRV_MAGIC, 8) == 0)
+		rc = frs_fail("%s: a volume (.frv) where a 2-D map is needed "
+		    "(volumes go with 3-D matrices)", name);
+	else
+		rc = frs_fail("%s: not a PNG or OpenEXR file", name);
+	free(buf);
+	return rc;
+}
+
+int imap_load_raw(const char *src, uint32_t w, uint32_t h, int flags,
+    struct frs_imap *m)
+{
+	memset(m, 0, sizeof *m);
+	if (strcmp(src, "-") == 0 || file_exists(src))
+		return load_file(src, flags, m);
+	if (imap_is_spec(src))
+		return imap_spec(src, w ? w : 128, h ? h : 128, m);
+	return frs_fail("%s: no such file, and not a procedural map (const, "
+	    "blob, ramp, aniso, sky)", src);
+}
+
+int imap_load(const char *src, uint32_t w, uint32_t h, int flags,
+    struct frs_imap *m)
+{
+	const char *name = strcmp(src, "-") == 0 ? "<stdin>" : src;
+	int rc = imap_load_raw(src, w, h, flags, m);
+
+	/* Check the source's own pixels first, so that messages name its
+	 * pixels, not those of the resampled map. */
+	if (rc == 0)
+		rc = imap_validate(m, name, flags | IMAP_ALLOW_ZERO);
+	if (rc == 0 && (flags & IMAP_EQUIRECT))
+		imap_equirect(m);
+	if (rc == 0 && w != 0 && (w != m->w || h != m->h)) {
+		struct frs_imap r;
+		rc = imap_resample(m, w, h, &r);
+		imap_free(m);
+		*m = r;
+		if (rc < 0)
+			frs_fail_context(name);
+	}
+	if (rc == 0)
+		rc = imap_validate(m, name, flags);
+	if (rc < 0)
+		imap_free(m);
+	return rc;
+}

@@ -1,0 +1,499 @@
+#define _POSIX_C_SOURCE 200809L
+#include "maps/imap.h"
+#include "maps/vol.h"
+#include "base/err.h"
+#include "base/parse.h"
+#include "base/par.h"
+#include "base/progress.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+#define MAXPARAM 6
+
+struct param {
+	const char *key;
+	double def, min, max;
+	const char *help;
+};
+
+struct spec {
+	const char *name;
+	const char *help;
+	struct param p[MAXPARAM];
+	/* Fill rows [y0, y1) of a w x h map; out points at row 0. */
+	int (*eval)(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+	    uint32_t y1, double *out);
+	/* Volumes: fill slices [z0, z1) of a w x h x d volume. */
+	int (*eval3)(const double *p, uint32_t w, uint32_t h, uint32_t d,
+	    uint32_t z0, uint32_t z1, double *out);
+};
+
+/* ---- evaluators: each fills w*h pixel means ------------------------- */
+
+static int eval_const(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
+{
+	(void)h;
+	for (size_t i = (size_t)y0 * w; i < (size_t)y1 * w; i++)
+		out[i] = p[0];
+	return 0;
+}
+
+/* Mean over [a, b] of exp(-(t-c)^2 / (2 s^2)), using erfc in the tails so
+ * that far pixels keep their relative precision. */
+static double gauss_mean(double a, double b, double c, double s)
+{
+	double k = 1.0 / (s * sqrt(2.0));
+	double u = (a - c) * k, v = (b - c) * k, d;
+
+	if (u >= 0.0)
+		d = erfc(u) - erfc(v);
+	else if (v <= 0.0)
+		d = erfc(-v) - erfc(-u);
+	else
+		d = erf(v) - erf(u);
+	return d * s * sqrt(PI / 2.0) / (b - a);
+}
+
+static int eval_blob(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
+{
+	double *gx = malloc(w * sizeof *gx);
+
+	if (gx == NULL)
+		return frs_fail("out of memory");
+	for (uint32_t i = 0; i < w; i++)
+		gx[i] = gauss_mean((double)i / w, (double)(i + 1) / w, p[0], p[2]);
+	for (uint32_t j = y0; j < y1; j++) {
+		double gy = gauss_mean((double)j / h, (double)(j + 1) / h, p[1],
+		    p[2]);
+		for (uint32_t i = 0; i < w; i++)
+			out[(size_t)j * w + i] = p[4] * gx[i] * gy + p[3];
+	}
+	free(gx);
+	return 0;
+}
+
+static int eval_ramp(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
+{
+	double a = p[2] * PI / 180.0, c = cos(a), s = sin(a);
+	double norm = fabs(c) + fabs(s);
+
+	/* Linear, so the pixel mean is the value at the pixel centre. */
+	for (uint32_t j = y0; j < y1; j++)
+		for (uint32_t i = 0; i < w; i++) {
+			double x = (i + 0.5) / w - 0.5, y = (j + 0.5) / h - 0.5;
+			double t = 0.5 + (x * c + y * s) / norm;
+			out[(size_t)j * w + i] = p[0] + (p[1] - p[0]) * t;
+		}
+	return 0;
+}
+
+/* Pixel means of f by n x n stratified supersampling. */
+static void supersample(double (*f)(const double *, double, double),
+    const double *p, uint32_t w, uint32_t h, uint32_t y0, uint32_t y1,
+    uint32_t n, double *out)
+{
+	for (uint32_t j = y0; j < y1; j++)
+		for (uint32_t i = 0; i < w; i++) {
+			double acc = 0.0;
+			for (uint32_t b = 0; b < n; b++)
+				for (uint32_t a = 0; a < n; a++)
+					acc += f(p, (i + (a + 0.5) / n) / w,
+					    (j + (b + 0.5) / n) / h);
+			out[(size_t)j * w + i] = acc / ((double)n * n);
+		}
+}
+
+static double aniso_at(const double *p, double x, double y)
+{
+	double a = p[0] * PI / 180.0;
+	/* Distance from the line through the centre at angle a. */
+	double d = -(x - 0.5) * sin(a) + (y - 0.5) * cos(a);
+	return p[2] + exp(-d * d / (2.0 * p[1] * p[1]));
+}
+
+static uint32_t ss_for(double feature, uint32_t w, uint32_t h)
+{
+	double pix = 1.0 / (w < h ? w : h);
+	double n = ceil(4.0 * pix / feature);
+	return n < 4.0 ? 4 : n > 64.0 ? 64 : (uint32_t)n;
+}
+
+static int eval_aniso(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
+{
+	supersample(aniso_at, p, w, h, y0, y1, ss_for(p[1], w, h), out);
+	return 0;
+}
+
+/*
+ * An equirectangular sky: x is the azimuth phi = 2 pi x, y the polar angle
+ * theta = pi y (zenith at the top).  Sky brightening towards the horizon,
+ * a dim ground, and a sun lobe exp(-(gamma/size)^2) around the sun
+ * direction, gamma the angle to it.
+ */
+static double sky_at(const double *p, double x, double y)
+{
+	double th = PI * y, ph = 2.0 * PI * x;
+	double ts = (90.0 - p[0]) * PI / 180.0, ps = p[1] * PI / 180.0;
+	double cg = sin(th) * sin(ts) * cos(ph - ps) + cos(th) * cos(ts);
+	double g = acos(cg > 1.0 ? 1.0 : cg < -1.0 ? -1.0 : cg);
+	double r = g / (p[2] * PI / 180.0);
+	double base = th < PI / 2.0 ? 1.0 + 1.5 * (1.0 - cos(th)) : p[4];
+
+	return base + p[3] * exp(-r * r);
+}
+
+static int eval_sky(const double *p, uint32_t w, uint32_t h, uint32_t y0,
+    uint32_t y1, double *out)
+{
+	supersample(sky_at, p, w, h, y0, y1, ss_for(p[2] / 360.0, w, h), out);
+	return 0;
+}
+
+static const struct spec specs[] = {
+	{ "const", "constant importance", {
+	    { "v", 1.0, 0.0, 1e300, "the value" } }, eval_const, NULL },
+	{ "blob", "Gaussian blob (exact pixel means)", {
+	    { "x", 0.5, -10.0, 10.0, "centre x" },
+	    { "y", 0.5, -10.0, 10.0, "centre y" },
+	    { "sigma", 0.15, 1e-6, 100.0, "standard deviation" },
+	    { "floor", 0.0, 0.0, 1e300, "constant added everywhere" },
+	    { "peak", 1.0, 1e-300, 1e300, "height of the Gaussian" } },
+	    eval_blob, NULL },
+	{ "ramp", "linear gradient", {
+	    { "from", 0.0, 0.0, 1e300, "value at the start edge" },
+	    { "to", 1.0, 0.0, 1e300, "value at the end edge" },
+	    { "angle", 0.0, -360.0, 360.0,
+	      "direction in degrees, 0 = left to right, 90 = top to bottom" } },
+	    eval_ramp, NULL },
+	{ "aniso", "thin ridge along a line through the centre", {
+	    { "angle", 30.0, -360.0, 360.0, "direction of the ridge, degrees" },
+	    { "width", 0.02, 1e-4, 10.0, "Gaussian width across the ridge" },
+	    { "floor", 0.001, 0.0, 1e300, "constant added everywhere" } },
+	    eval_aniso, NULL },
+	{ "sky", "equirectangular HDR sky with a sun", {
+	    { "elev", 30.0, -90.0, 90.0, "sun elevation, degrees" },
+	    { "azim", 90.0, -360.0, 360.0, "sun azimuth, degrees (x = azim/360)" },
+	    { "size", 2.0, 0.05, 90.0, "angular radius of the sun lobe, degrees" },
+	    { "sun", 1e5, 0.0, 1e300, "sun peak over the zenith sky" },
+	    { "ground", 0.05, 0.0, 1e300, "ground value below the horizon" } },
+	    eval_sky, NULL },
+};
+#define NSPECS (sizeof specs / sizeof specs[0])
+
+/* A family of procedural sources: the maps or the volumes. */
+struct family {
+	const struct spec *spec;
+	size_t n;
+	const char *names;	/* for messages */
+	const char *what;
+};
+
+static const struct family maps = { specs, NSPECS,
+	"const, blob, ramp, aniso, sky", "map" };
+static const struct spec *find_spec(const struct family *f, const char *s,
+    size_t len)
+{
+	for (size_t i = 0; i < f->n; i++)
+		if (strlen(f->spec[i].name) == len &&
+		    strncmp(f->spec[i].name, s, len) == 0)
+			return &f->spec[i];
+	return NULL;
+}
+
+int imap_is_spec(const char *src)
+{
+	return find_spec(&maps, src, strcspn(src, ":")) != NULL;
+}
+
+static int set_param(const struct spec *sp, const char *spec, char *item,
+    int pos, double *val)
+{
+	char *eq = strchr(item, '=');
+	const char *key = item, *v = eq ? eq + 1 : item;
+	int k = -1;
+
+	if (eq == NULL) {
+		if (pos != 0)
+			return frs_fail("%s: '%s': only the first parameter may "
+			    "omit its name", spec, item);
+		k = 0;
+	} else {
+		*eq = '\0';
+		for (int i = 0; i < MAXPARAM && sp->p[i].key; i++)
+			if (strcmp(sp->p[i].key, key) == 0)
+				k = i;
+	}
+	if (k < 0) {
+		char known[128] = "";
+		for (int i = 0; i < MAXPARAM && sp->p[i].key; i++) {
+			strncat(known, i ? ", " : "", sizeof known - strlen(known) - 1);
+			strncat(known, sp->p[i].key, sizeof known - strlen(known) - 1);
+		}
+		return frs_fail("%s: unknown parameter '%s' of %s (%s)", spec, key,
+		    sp->name, known);
+	}
+	if (parse_double(sp->p[k].key, v, sp->p[k].min, sp->p[k].max,
+	    &val[k]) < 0)
+		return frs_fail_context(spec);
+	return 0;
+}
+
+static int parse_spec(const struct family *f, const char *spec,
+    const struct spec **out, double *val)
+{
+	size_t nlen = strcspn(spec, ":");
+	const struct spec *sp = find_spec(f, spec, nlen);
+	char *copy, *item, *save = NULL;
+	int pos = 0, rc = 0;
+
+	if (sp == NULL)
+		return frs_fail("%s: unknown %s '%.*s' (%s)", spec, f->what,
+		    (int)nlen, spec, f->names);
+	for (int i = 0; i < MAXPARAM; i++)
+		val[i] = sp->p[i].def;
+	*out = sp;
+	if (spec[nlen] == '\0')
+		return 0;
+	copy = strdup(spec + nlen + 1);
+	if (copy == NULL)
+		return frs_fail("out of memory");
+	for (item = strtok_r(copy, ",", &save); item && rc == 0;
+	    item = strtok_r(NULL, ",", &save))
+		rc = set_param(sp, spec, item, pos++, val);
+	if (rc == 0 && pos == 0)
+		rc = frs_fail("%s: empty parameter list", spec);
+	free(copy);
+	return rc;
+}
+
+struct eval_job {
+	const struct spec *sp;
+	const double *val;
+	struct frs_imap *m;
+};
+
+/* Rows are independent, so any thread may fill any band. */
+static int eval_rows(void *ctx, uint64_t y0, uint64_t y1)
+{
+	struct eval_job *j = ctx;
+	return j->sp->eval(j->val, j->m->w, j->m->h, (uint32_t)y0, (uint32_t)y1,
+	    j->m->v);
+}
+
+int imap_spec(const char *spec, uint32_t w, uint32_t h, struct frs_imap *m)
+{
+	const struct spec *sp = NULL;
+	double val[MAXPARAM];
+	struct progress pr;
+	struct eval_job job;
+	int rc;
+
+	memset(m, 0, sizeof *m);
+	if (parse_spec(&maps, spec, &sp, val) < 0)
+		return -1;
+	if (imap_alloc(m, w, h) < 0)
+		return frs_fail_context(spec);
+	progress_begin(&pr, sp->name, h);
+	job.sp = sp;
+	job.val = val;
+	job.m = m;
+	rc = frs_parallel(h, 16, eval_rows, &job, &pr);
+	progress_end(&pr);
+	if (rc < 0) {
+		imap_free(m);
+		return frs_fail_context(spec);
+	}
+	return 0;
+}
+
+static void family_help(const struct family *f, char *buf, size_t size)
+{
+	size_t len = 0;
+
+	for (size_t i = 0; i < f->n && len < size; i++) {
+		const struct spec *sp = &f->spec[i];
+		len += (size_t)snprintf(buf + len, size - len, "  %-6s %s\n",
+		    sp->name, sp->help);
+		for (int k = 0; k < MAXPARAM && sp->p[k].key && len < size; k++)
+			len += (size_t)snprintf(buf + len, size - len,
+			    "         %s=%g  %s\n", sp->p[k].key, sp->p[k].def,
+			    sp->p[k].help);
+	}
+}
+
+const char *imap_spec_help(void)
+{
+	static char buf[4096];
+
+	if (buf[0] == '\0')
+		family_help(&maps, buf, sizeof buf);
+	return buf;
+}
+
+/* ---- volumes: each fills voxel means of slices [z0, z1) ------------- */
+
+static int eval3_const(const double *p, uint32_t w, uint32_t h, uint32_t d,
+    uint32_t z0, uint32_t z1, double *out)
+{
+	(void)d;
+	for (size_t i = (size_t)z0 * w * h; i < (size_t)z1 * w * h; i++)
+		out[i] = p[0];
+	return 0;
+}
+
+static int eval3_blob(const double *p, uint32_t w, uint32_t h, uint32_t d,
+    uint32_t z0, uint32_t z1, double *out)
+{
+	double *gx = malloc(w * sizeof *gx), *gy = malloc(h * sizeof *gy);
+
+	if (gx == NULL || gy == NULL) {
+		free(gx);
+		free(gy);
+		return frs_fail("out of memory");
+	}
+	for (uint32_t i = 0; i < w; i++)
+		gx[i] = gauss_mean((double)i / w, (double)(i + 1) / w, p[0], p[3]);
+	for (uint32_t j = 0; j < h; j++)
+		gy[j] = gauss_mean((double)j / h, (double)(j + 1) / h, p[1], p[3]);
+	for (uint32_t l = z0; l < z1; l++) {
+		double gz = gauss_mean((double)l / d, (double)(l + 1) / d, p[2],
+		    p[3]);
+		for (uint32_t j = 0; j < h; j++)
+			for (uint32_t i = 0; i < w; i++)
+				out[((size_t)l * h + j) * w + i] =
+				    p[5] * gx[i] * gy[j] * gz + p[4];
+	}
+	free(gx);
+	free(gy);
+	return 0;
+}
+
+/* Linear along one axis, so the voxel mean is the value at its centre. */
+static int eval3_ramp(const double *p, uint32_t w, uint32_t h, uint32_t d,
+    uint32_t z0, uint32_t z1, double *out)
+{
+	int axis = (int)p[2];
+	uint32_t n = axis == 0 ? w : axis == 1 ? h : d;
+
+	if (p[2] != axis)
+		return frs_fail("ramp3: axis %g is not 0 (x), 1 (y) or 2 (z)", p[2]);
+	for (uint32_t l = z0; l < z1; l++)
+		for (uint32_t j = 0; j < h; j++)
+			for (uint32_t i = 0; i < w; i++) {
+				uint32_t c = axis == 0 ? i : axis == 1 ? j : l;
+				double t = (c + 0.5) / n;
+				out[((size_t)l * h + j) * w + i] = p[0] + (p[1] - p[0]) * t;
+			}
+	return 0;
+}
+
+/* A spherical shell around the centre: floor + exp(-(r - R)^2 / 2w^2),
+ * voxel means by s^3 stratified supersampling. */
+static int eval3_shell(const double *p, uint32_t w, uint32_t h, uint32_t d,
+    uint32_t z0, uint32_t z1, double *out)
+{
+	uint32_t side = w < h ? (w < d ? w : d) : (h < d ? h : d);
+	uint32_t s = ss_for(p[1], side, side);
+
+	s = s > 16 ? 16 : s;
+	for (uint32_t l = z0; l < z1; l++)
+		for (uint32_t j = 0; j < h; j++)
+			for (uint32_t i = 0; i < w; i++) {
+				double acc = 0.0;
+				for (uint32_t c = 0; c < s * s * s; c++) {
+					double x = (i + (c % s + 0.5) / s) / w - 0.5;
+					double y = (j + (c / s % s + 0.5) / s) / h - 0.5;
+					double z = (l + (c / (s * s) + 0.5) / s) / d - 0.5;
+					double r = sqrt(x * x + y * y + z * z) - p[0];
+					acc += exp(-r * r / (2.0 * p[1] * p[1]));
+				}
+				out[((size_t)l * h + j) * w + i] =
+				    p[2] + acc / ((double)s * s * s);
+			}
+	return 0;
+}
+
+static const struct spec vspecs[] = {
+	{ "const", "constant importance", {
+	    { "v", 1.0, 0.0, 1e300, "the value" } }, NULL, eval3_const },
+	{ "blob3", "3-D Gaussian blob (exact voxel means)", {
+	    { "x", 0.5, -10.0, 10.0, "centre x" },
+	    { "y", 0.5, -10.0, 10.0, "centre y" },
+	    { "z", 0.5, -10.0, 10.0, "centre z" },
+	    { "sigma", 0.15, 1e-6, 100.0, "standard deviation" },
+	    { "floor", 0.0, 0.0, 1e300, "constant added everywhere" },
+	    { "peak", 1.0, 1e-300, 1e300, "height of the Gaussian" } },
+	    NULL, eval3_blob },
+	{ "ramp3", "linear gradient along one axis", {
+	    { "from", 0.0, 0.0, 1e300, "value at coordinate 0" },
+	    { "to", 1.0, 0.0, 1e300, "value at coordinate 1" },
+	    { "axis", 2.0, 0.0, 2.0, "0 = x, 1 = y, 2 = z" } },
+	    NULL, eval3_ramp },
+	{ "shell3", "spherical shell around the centre", {
+	    { "r", 0.3, 0.0, 2.0, "radius" },
+	    { "width", 0.03, 1e-4, 10.0, "Gaussian width across the shell" },
+	    { "floor", 0.01, 0.0, 1e300, "constant added everywhere" } },
+	    NULL, eval3_shell },
+};
+
+static const struct family vols = { vspecs,
+	sizeof vspecs / sizeof vspecs[0], "const, blob3, ramp3, shell3",
+	"volume" };
+
+int vol_is_spec(const char *src)
+{
+	return find_spec(&vols, src, strcspn(src, ":")) != NULL;
+}
+
+struct vol_job {
+	const struct spec *sp;
+	const double *val;
+	struct frs_vol *m;
+};
+
+static int eval_slices(void *ctx, uint64_t z0, uint64_t z1)
+{
+	struct vol_job *j = ctx;
+	return j->sp->eval3(j->val, j->m->w, j->m->h, j->m->d, (uint32_t)z0,
+	    (uint32_t)z1, j->m->v);
+}
+
+int vol_spec(const char *spec, uint32_t w, uint32_t h, uint32_t d,
+    struct frs_vol *m)
+{
+	const struct spec *sp = NULL;
+	double val[MAXPARAM];
+	struct vol_job job;
+
+	memset(m, 0, sizeof *m);
+	if (parse_spec(&vols, spec, &sp, val) < 0)
+		return -1;
+	if (w == 0)
+		w = h = d = VOL_DEFAULT_SIDE;
+	if (vol_alloc(m, w, h, d) < 0)
+		return frs_fail_context(spec);
+	job.sp = sp;
+	job.val = val;
+	job.m = m;
+	if (frs_parallel(d, 1, eval_slices, &job, NULL) < 0) {
+		vol_free(m);
+		return frs_fail_context(spec);
+	}
+	return 0;
+}
+
+const char *vol_spec_help(void)
+{
+	static char buf[4096];
+
+	if (buf[0] == '\0')
+		family_help(&vols, buf, sizeof buf);
+	return buf;
+}

@@ -1,0 +1,1502 @@
+#define _POSIX_C_SOURCE 200809L
+#include "sample/frscore.h"
+#include "base/err.h"
+#include "base/mem.h"
+#include "base/par.h"
+#include "base/rng.h"
+#include "sample/tile.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Samples a parallel chunk of map pixels is meant to hold: its points
+ * (24 bytes each with the density) stay in a core's cache between the
+ * thresholding that writes them and the output that reads them, and
+ * there are enough chunks for the threads to share even a peaked map. */
+#define CHUNK_SAMPLES 16384
+
+static const char *const algo_names[FRS_NALGO] = {
+	"naive", "stack", "level1", "level2", "sorted"
+};
+
+const char *frs_algo_name(enum frs_algo a)
+{
+	return a < FRS_NALGO ? algo_names[a] : "?";
+}
+
+int frs_algo_parse(const char *s, enum frs_algo *a)
+{
+	for (int i = 0; i < FRS_NALGO; i++)
+		if (strcmp(s, algo_names[i]) == 0) {
+			*a = (enum frs_algo)i;
+			return 0;
+		}
+	return frs_fail("-a: unknown implementation '%s' (naive, stack, "
+	    "level1, level2, sorted)", s);
+}
+
+static int is_pow2(uint64_t v)
+{
+	return v && !(v & (v - 1));
+}
+
+static unsigned log2u64(uint64_t v)
+{
+	unsigned l = 0;
+	while (((uint64_t)1 << l) < v)
+		l++;
+	return l;
+}
+
+/* ---- setup (Listing 5.1) ------------------------------------------ */
+
+/* Mean and maximum of the map times the power of two iscale (exact for
+ * every value that stays normal), compensated sum (Neumaier). */
+static void scaled_stats(const struct frs_imap *map, double iscale,
+    double *mean, double *max)
+{
+	uint64_t n = (uint64_t)map->w * map->h;
+	double sum = 0.0, c = 0.0, mx = 0.0;
+
+	for (uint64_t i = 0; i < n; i++) {
+		double v = map->v[i] * iscale, t = sum + v;
+		c += fabs(sum) >= fabs(v) ? (sum - t) + v : (v - t) + sum;
+		sum = t;
+		mx = v > mx ? v : mx;
+	}
+	*mean = (sum + c) / (double)n;
+	*max = mx;
+}
+
+int frs_setup(struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed)
+{
+	struct frs_imap_stats st;
+	uint32_t small, large;
+	double a, wmin, imax;
+	uint64_t ns = 1, ux, uy;
+
+	memset(s, 0, sizeof *s);
+	if (mat->dims != 2)
+		return frs_fail("a %u-D matrix cannot sample a 2-D map", mat->dims);
+	if (n == 0)
+		return frs_fail("-n: the count must be at least 1");
+	if (!(sigma >= 1.0 && isfinite(sigma)))
+		return frs_fail("--sigma: %g is below 1", sigma);
+	imap_stats(map, &st);
+	if (!(st.max > 0.0) || st.nonfinite || st.negatives)
+		return frs_fail("importance must be finite, non-negative and not "
+		    "zero everywhere");
+	/* Only ratios matter: scale an extreme map by a power of two, so
+	 * that tau and the mean stay finite; the thresholds of every other
+	 * map are those of the map as it is. */
+	s->iscale = 1.0;
+	s->imean = st.mean;
+	imax = st.max;
+	if (!(st.max >= 0x1p-900 && st.max <= 0x1p900)) {
+		int e = -ilogb(st.max);	/* 1074 for the smallest denormal */
+		s->iscale = ldexp(1.0, e < 1023 ? e : 1023);
+		scaled_stats(map, s->iscale, &s->imean, &imax);
+		st.mean = s->imean / s->iscale;
+	}
+	s->iw = map->w;
+	s->ih = map->h;
+	s->mw = mat->w;
+	s->mh = mat->h;
+	s->n = n;
+	s->sigma = sigma;
+	s->mean = st.mean;
+	s->max = st.max;
+	s->seed = seed;
+	small = map->w < map->h ? map->w : map->h;
+	large = map->w < map->h ? map->h : map->w;
+	a = (double)large / small;
+	wmin = ceil(sigma * sqrt((double)n * imax / (s->imean * a)));
+	while ((double)small * (double)ns < wmin) {
+		ns <<= 1;
+		if (ns > ((uint64_t)1 << 31))
+			return frs_fail("-n %llu: the window would need more than "
+			    "2^31 elements per pixel side", (unsigned long long)n);
+	}
+	s->ns = (uint32_t)ns;
+	s->sw = ns * map->w;
+	s->sh = ns * map->h;
+	/* A random multiple of n_s, or of the matrix when n_s exceeds it
+	 * (every offset is then the same). */
+	ux = ns < mat->w ? ns : mat->w;
+	uy = ns < mat->h ? ns : mat->h;
+	s->wx = (uint64_t)(frs_rand01(seed, FRS_STREAM_WINDOW, 0) *
+	    (double)(mat->w / ux)) * ux;
+	s->wy = (uint64_t)(frs_rand01(seed, FRS_STREAM_WINDOW, 1) *
+	    (double)(mat->h / uy)) * uy;
+	s->tau = frs_tau(s, n);
+	s->level0 = (unsigned)floor(log2(fmin((double)ns, sigma)));
+	return 0;
+}
+
+double frs_tau(const struct frs_setup *s, uint64_t n)
+{
+	return frs_xtau_get(&s->exact, n, (double)n * (double)s->mw *
+	    (double)s->mh / ((double)s->sw * (double)s->sh * s->imean));
+}
+
+double frs_xtau_get(const struct frs_xtau *x, uint64_t n, double dflt)
+{
+	for (unsigned k = 0; k < x->n; k++)
+		if (x->steps[k] == n)
+			return x->tau[k];
+	return dflt;
+}
+
+/* The most count passes one step's search may take (it takes a few:
+ * see frs-sample(1)); and the same-side landings after which it only
+ * bisects. */
+#define EXACT_PASSES 200
+#define EXACT_STREAK 12
+/* A bracket of this many counts or fewer is bisected: its counts are
+ * steps, no longer a line. */
+#define EXACT_BISECT 4
+
+/*
+ * The tau of exactly n from the guess t > lo, lo's count clo < n (tau 0,
+ * count 0 for the first step).  The counts grow about in proportion to
+ * tau, with a noise of about the square root of the keys crossed, so
+ * each pass aims, on the line through the bracket's ends [lo, hi] (hi
+ * unknown: the line through the origin and lo), at the middle of the
+ * count n; after two passes on the same side of n it aims past n by the
+ * square root of the miss, doubled at each further pass on that side, so
+ * that the bracket closes from both sides.  Past EXACT_STREAK such passes
+ * it bisects, and the search ends at the latest when lo and hi are
+ * neighbouring doubles, which only two keys in one ulp of tau can cause.
+ */
+static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
+    frs_count_fn count, void *ctx, double *tau, unsigned *passes)
+{
+	double hi = INFINITY;
+	uint64_t chi = 0, c;
+	int side = 0, streak = 0;
+
+	for (unsigned it = 0;; it++) {
+		double target, margin, mid;
+		int sd;
+		if (it == EXACT_PASSES)
+			return frs_fail("--exact-count: no threshold for exactly "
+			    "%llu samples after %u count passes",
+			    (unsigned long long)n, it);
+		if (count(ctx, t, &c) < 0)
+			return -1;
+		(*passes)++;
+		if (c == n) {
+			*tau = t;
+			return 0;
+		}
+		sd = c < n ? -1 : 1;
+		streak = sd == side ? streak + 1 : 1;
+		side = sd;
+		if (c < n) {
+			lo = t;
+			clo = c;
+		} else {
+			hi = t;
+			chi = c;
+		}
+		margin = streak < 2 ? 0.0 : sqrt((double)(c < n ? n - c : c - n)) *
+		    ldexp(1.0, streak - 2);
+		target = (double)n + 0.5 - (double)side * margin;
+		if (!isfinite(hi)) {
+			t = clo > 0 ? lo * (target / (double)clo) : 2.0 * lo;
+			if (!(t > lo) || !isfinite(t))
+				return frs_fail("--exact-count: no threshold "
+				    "reaches %llu samples", (unsigned long long)n);
+			continue;
+		}
+		mid = lo + (hi - lo) / 2;
+		t = lo + (hi - lo) * ((target - (double)clo) /
+		    (double)(chi - clo));
+		if (streak > EXACT_STREAK || chi - clo <= EXACT_BISECT ||
+		    !(t > lo && t < hi))
+			t = mid;
+		if (!(t > lo && t < hi))
+			return frs_fail("--exact-count: %llu elements share the "
+			    "threshold %.17g of sample %llu: no set of exactly "
+			    "%llu", (unsigned long long)(chi - clo), hi,
+			    (unsigned long long)(clo + 1), (unsigned long long)n);
+	}
+}
+
+uint64_t frs_exact_most(const double *v, uint64_t ncell, uint32_t ns,
+    unsigned dims)
+{
+	uint64_t e = 0;
+
+	for (uint64_t i = 0; i < ncell; i++)
+		e += v[i] > 0.0;
+	for (unsigned d = 0; d < dims; d++)
+		e = ns != 0 && e > UINT64_MAX / ns ? UINT64_MAX : e * ns;
+	return e;
+}
+
+int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
+    const double *tau0, uint64_t most, frs_count_fn count, void *ctx,
+    struct frs_xtau *x, unsigned *passes)
+{
+	double lo = 0.0;
+	uint64_t clo = 0;
+
+	memset(x, 0, sizeof *x);
+	*passes = 0;
+	if (frs_steps_check(steps, nsteps) < 0)
+		return -1;
+	if (steps[nsteps - 1] > most)
+		return frs_fail("--exact-count: the window has %llu elements of "
+		    "non-zero importance, fewer than %llu",
+		    (unsigned long long)most,
+		    (unsigned long long)steps[nsteps - 1]);
+	for (unsigned k = 0; k < nsteps; k++) {
+		double t = tau0[k], tk = 0.0;
+		if (!(t > lo))
+			t = clo > 0 ? lo * (double)steps[k] / (double)clo : 1.0;
+		if (exact_one(steps[k], lo, clo, t, count, ctx, &tk, passes) < 0)
+			return -1;
+		x->steps[k] = steps[k];
+		x->tau[k] = tk;
+		lo = tk;
+		clo = steps[k];
+	}
+	x->n = nsteps;
+	x->passes = *passes;
+	return 0;
+}
+
+double frs_unique(const struct frs_setup *s)
+{
+	return (double)s->mw * (double)s->mh / (s->sigma * s->sigma);
+}
+
+enum frs_tiling frs_tiles_auto(const struct frs_setup *s)
+{
+	return (double)s->n <= frs_unique(s) ? FRS_TILES_SHUFFLE :
+	    FRS_TILES_PLAIN;
+}
+
+uint64_t frs_tiles_axis(uint64_t o, uint64_t n, uint64_t m)
+{
+	return (o + n - 1) / m - o / m + 1;
+}
+
+uint64_t frs_tiles(const struct frs_setup *s, uint64_t *tx, uint64_t *ty)
+{
+	*tx = frs_tiles_axis(s->wx, s->sw, s->mw);
+	*ty = frs_tiles_axis(s->wy, s->sh, s->mh);
+	return *tx * *ty;
+}
+
+uint32_t frs_tile_max_block(const struct frs_setup *s)
+{
+	uint64_t gx = frs_tile_step(s->mw), gy = frs_tile_step(s->mh);
+
+	if (s->tiles == FRS_TILES_PLAIN)
+		return s->mw < s->mh ? s->mw : s->mh;
+	return (uint32_t)(gx < gy ? gx : gy);
+}
+
+/* ---- tiles -------------------------------------------------------- */
+
+/* The transforms of the tiles met last, direct-mapped by tile column:
+ * a thread's rows of pixels cross a row of tiles again and again, and a
+ * transform costs two Philox blocks. */
+#define TCACHE 64
+struct tcache {
+	struct {
+		uint64_t tx, ty;
+		int valid;
+		struct frs_tile t;
+	} e[TCACHE];
+};
+
+/* The tile of window element (x, y) and the element's place in it. */
+static const struct frs_tile *tile_at(const struct frs_setup *s,
+    struct tcache *c, uint64_t x, uint64_t y, uint64_t *lx, uint64_t *ly)
+{
+	uint64_t X = s->wx + x, Y = s->wy + y, tx = X / s->mw, ty = Y / s->mh;
+	unsigned k = (unsigned)(tx % TCACHE);
+
+	*lx = X - tx * s->mw;
+	*ly = Y - ty * s->mh;
+	if (!c->e[k].valid || c->e[k].tx != tx || c->e[k].ty != ty) {
+		uint64_t m[3] = { s->mw, s->mh, 1 };
+		if (s->tiles == FRS_TILES_PLAIN)
+			frs_tile_plain(&c->e[k].t);
+		else
+			frs_tile_make(&c->e[k].t, s->seed, 2, m, tx, ty, 0);
+		c->e[k].tx = tx;
+		c->e[k].ty = ty;
+		c->e[k].valid = 1;
+	}
+	return &c->e[k].t;
+}
+
+/* The index of the level-l matrix block that shows the level-l block of
+ * tile position (lx, ly), on the grid of (mw >> l) x (mh >> l). */
+static uint64_t block_index(const struct frs_setup *s,
+    const struct frs_tile *t, unsigned l, uint64_t lx, uint64_t ly)
+{
+	uint64_t m[3] = { s->mw, s->mh, 1 }, u[2] = { lx >> l, ly >> l }, v[2];
+
+	frs_tile_block(t, 2, m, l, u, v);
+	return v[1] * (s->mw >> l) + v[0];
+}
+
+uint64_t frs_matrix_index(const struct frs_setup *s, uint64_t x, uint64_t y)
+{
+	uint64_t X = s->wx + x, Y = s->wy + y, m[3] = { s->mw, s->mh, 1 };
+	struct frs_tile t;
+
+	if (s->tiles == FRS_TILES_PLAIN)
+		frs_tile_plain(&t);
+	else
+		frs_tile_make(&t, s->seed, 2, m, X / s->mw, Y / s->mh, 0);
+	return block_index(s, &t, 0, X % s->mw, Y % s->mh);
+}
+
+/* Element k of a sorted block of side b = 2^lb, at the block's window
+ * origin (x, y). */
+static void inblock(const struct frs_tile *t, uint32_t b, unsigned lb,
+    uint32_t k, uint64_t x, uint64_t y, uint64_t *ex, uint64_t *ey)
+{
+	uint64_t w[2] = { k & (b - 1), k >> lb }, u[2];
+
+	frs_tile_inblock(t, 2, b, w, u);
+	*ex = x + u[0];
+	*ey = y + u[1];
+}
+
+/* ---- preparation -------------------------------------------------- */
+
+void frs_prep_free(struct frs_prep *p)
+{
+	for (unsigned l = 1; l < p->nlev; l++)
+		free(p->lev[l]);
+	free(p->sval);
+	free(p->sidx);
+	free(p->soff);
+	memset(p, 0, sizeof *p);
+}
+
+static int make_minmap(struct frs_prep *p)
+{
+	const struct frs_matrix *m = p->m;
+
+	p->lev[0] = m->v;
+	p->nlev = 1;
+	while ((m->w >> p->nlev) > 0 && (m->h >> p->nlev) > 0 && p->nlev < 32) {
+		unsigned l = p->nlev;
+		uint32_t w = m->w >> l, h = m->h >> l, pw = m->w >> (l - 1);
+		const uint32_t *lo = p->lev[l - 1];
+		uint32_t *up = malloc((size_t)w * h * sizeof *up);
+		if (up == NULL)
+			return frs_fail("out of memory for the minmap");
+		for (uint32_t y = 0; y < h; y++)
+			for (uint32_t x = 0; x < w; x++) {
+				const uint32_t *q = lo + (size_t)2 * y * pw + 2 * x;
+				uint32_t a = q[0] < q[1] ? q[0] : q[1];
+				uint32_t b = q[pw] < q[pw + 1] ? q[pw] : q[pw + 1];
+				up[(size_t)y * w + x] = a < b ? a : b;
+			}
+		p->lev[l] = up;
+		p->nlev++;
+	}
+	return 0;
+}
+
+struct pair {
+	uint32_t v, i;
+};
+
+static int pair_cmp(const void *a, const void *b)
+{
+	const struct pair *x = a, *y = b;
+	return x->v < y->v ? -1 : x->v > y->v;
+}
+
+/* The block lists by comparison sort: any matrix values. */
+static void sort_blocks(struct frs_prep *p, struct pair *tmp)
+{
+	const struct frs_matrix *m = p->m;
+	uint32_t b = p->block, bw = m->w / b, bh = m->h / b;
+	size_t bb = (size_t)b * b;
+
+	for (uint32_t by = 0; by < bh; by++)
+		for (uint32_t bx = 0; bx < bw; bx++) {
+			size_t base = ((size_t)by * bw + bx) * bb;
+			for (uint32_t k = 0; k < bb; k++)
+				tmp[k] = (struct pair){ m->v[((size_t)by * b + k / b) *
+				    m->w + (size_t)bx * b + k % b], k };
+			qsort(tmp, bb, sizeof *tmp, pair_cmp);
+			for (size_t k = 0; k < bb; k++) {
+				p->sval[base + k] = tmp[k].v;
+				p->sidx[base + k] = tmp[k].i;
+			}
+		}
+}
+
+/* Whether the values are the permutation of 0 .. n - 1 that frd(5)
+ * promises: frd_check_permutation's answer without its message. */
+static int is_permutation(const struct frs_matrix *m)
+{
+	if (frd_check_permutation(m, "") == 0)
+		return 1;
+	frs_clearerr();
+	return 0;
+}
+
+struct invert {
+	const uint32_t *v;
+	uint32_t *inv;
+	uint64_t below;		/* values from it are left out */
+	uint64_t span;		/* matrix elements per task */
+	uint64_t *kept;		/* per task, the elements below */
+};
+
+/* No element of the matrix has this value (indices stay below 2^31). */
+#define NO_ELEM UINT32_MAX
+
+/* inv[v[i]] = i over [b, e): blind stores, distinct for a permutation,
+ * so tasks may run side by side. */
+static int invert_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct invert *iv = ctx;
+
+	for (uint64_t i = b; i < e; i++)
+		iv->inv[iv->v[i]] = (uint32_t)i;
+	return 0;
+}
+
+/* The same for the values below iv->below only, into an inv of that
+ * many entries set to NO_ELEM: one read of the matrix, rare stores.
+ * Repeated values store twice but count twice, which
+ * distinct_values then sees. */
+static int invert_below_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct invert *iv = ctx;
+	uint64_t kept = 0;
+
+	for (uint64_t i = b; i < e; i++)
+		if (iv->v[i] < iv->below) {
+			iv->inv[iv->v[i]] = (uint32_t)i;
+			kept++;
+		}
+	iv->kept[b / iv->span] = kept;
+	return 0;
+}
+
+/* Counting sort over the inverse permutation, in parallel over ranges
+ * of values: a first pass counts each range's values per block, the
+ * prefix sums over ranges then give every range its place in each
+ * block's list, and a second pass puts them there.  Each pass reads its
+ * range of inv once; no thread reads what another one does. */
+struct scatter {
+	struct frs_prep *p;
+	const uint32_t *inv;	/* NO_ELEM: a value the matrix lacks */
+	uint64_t nv;		/* values 0 .. nv - 1 */
+	uint64_t span;		/* values per range */
+	uint64_t nblk;		/* blocks */
+	uint64_t *fill;		/* per range and block: count, then place */
+};
+
+/* The block of matrix index i (lb = log2 block, lw = log2 width). */
+static uint64_t block_of(const struct frs_matrix *m, uint32_t i, unsigned lb,
+    unsigned lw)
+{
+	return (uint64_t)((i >> lw) >> lb) * (m->w >> lb) + ((i & (m->w - 1)) >> lb);
+}
+
+static int count_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct scatter *sc = ctx;
+	const struct frs_matrix *m = sc->p->m;
+	unsigned lb = log2u64(sc->p->block), lw = log2u64(m->w);
+
+	for (uint64_t r = b; r < e; r++) {
+		uint64_t *cnt = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
+		for (uint64_t v = r * sc->span; v < v1 && v < sc->nv; v++)
+			if (sc->inv[v] != NO_ELEM)
+				cnt[block_of(m, sc->inv[v], lb, lw)]++;
+	}
+	return 0;
+}
+
+/* Entries gathered per block before they go to its list: one cache
+ * line of values and one of indices, written whole, where single stores
+ * to many lists at once would each fetch a line first. */
+#define GATHER 16
+
+struct gather {
+	uint32_t v[GATHER], i[GATHER];
+};
+
+static void put_run(struct frs_prep *p, uint64_t *at, const struct gather *g,
+    unsigned n)
+{
+	memcpy(p->sval + *at, g->v, n * sizeof *g->v);
+	memcpy(p->sidx + *at, g->i, n * sizeof *g->i);
+	*at += n;
+}
+
+static int place_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct scatter *sc = ctx;
+	struct frs_prep *p = sc->p;
+	const struct frs_matrix *m = p->m;
+	uint32_t blk = p->block;
+	unsigned lb = log2u64(blk), lw = log2u64(m->w);
+	struct gather *g = malloc(sc->nblk * sizeof *g);
+	unsigned char *ng = calloc(sc->nblk, 1);
+
+	if (g == NULL || ng == NULL) {
+		free(g);
+		free(ng);
+		return frs_fail("out of memory for the sorted lists");
+	}
+	for (uint64_t r = b; r < e; r++) {
+		uint64_t *at = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
+		for (uint64_t v = r * sc->span; v < v1 && v < sc->nv; v++) {
+			uint32_t i = sc->inv[v], x = i & (m->w - 1), y = i >> lw;
+			uint64_t k;
+			if (i == NO_ELEM)
+				continue;
+			k = block_of(m, i, lb, lw);
+			g[k].v[ng[k]] = (uint32_t)v;
+			g[k].i[ng[k]] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+			if (++ng[k] == GATHER) {
+				put_run(p, &at[k], &g[k], GATHER);
+				ng[k] = 0;
+			}
+		}
+		for (uint64_t k = 0; k < sc->nblk; k++) {
+			put_run(p, &at[k], &g[k], ng[k]);
+			ng[k] = 0;
+		}
+	}
+	free(g);
+	free(ng);
+	return 0;
+}
+
+/* Radix sort (LSD, 11-bit digits, stable) of n keys with their
+ * payloads, from (k, i) through (tk, ti); the result ends in (k, i). */
+static void radix_pairs(uint32_t *k, uint32_t *i, uint32_t *tk, uint32_t *ti,
+    size_t n, uint32_t max)
+{
+	for (unsigned sh = 0; sh < 32 && (sh == 0 || (max >> sh) != 0); sh += 11) {
+		size_t cnt[2048] = { 0 }, sum = 0;
+		for (size_t j = 0; j < n; j++)
+			cnt[(k[j] >> sh) & 2047]++;
+		for (size_t d = 0; d < 2048; d++) {
+			size_t c = cnt[d];
+			cnt[d] = sum;
+			sum += c;
+		}
+		for (size_t j = 0; j < n; j++) {
+			size_t at = cnt[(k[j] >> sh) & 2047]++;
+			tk[at] = k[j];
+			ti[at] = i[j];
+		}
+		memcpy(k, tk, n * sizeof *k);
+		memcpy(i, ti, n * sizeof *i);
+	}
+}
+
+/* Small blocks, block rows r0 .. r1 - 1: each row's values (S_M b of
+ * them) sorted in cache with their positions, then dealt to the row's
+ * blocks in that order.  One pass over the whole matrix would scatter to
+ * (S_M / b)^2 places at once. */
+static int sort_rows(void *ctx, uint64_t r0, uint64_t r1)
+{
+	const struct scatter *sc = ctx;
+	struct frs_prep *p = sc->p;
+	const struct frs_matrix *m = p->m;
+	uint32_t blk = p->block, bw = m->w / blk;
+	unsigned lb = log2u64(blk), lw = log2u64(m->w);
+	size_t per = (size_t)m->w * blk, bb = (size_t)blk * blk;
+	uint32_t *t = malloc(4 * per * sizeof *t);
+	size_t *fill = malloc(bw * sizeof *fill);
+
+	if (t == NULL || fill == NULL) {
+		free(t);
+		free(fill);
+		return frs_fail("out of memory for the sorted lists");
+	}
+	for (uint64_t r = r0; r < r1; r++) {
+		size_t base = (size_t)r * per;
+		uint32_t max = 0;
+		for (size_t j = 0; j < per; j++) {	/* the rows are contiguous */
+			t[j] = m->v[base + j];
+			t[per + j] = (uint32_t)(base + j);
+			max = t[j] > max ? t[j] : max;
+		}
+		radix_pairs(t, t + per, t + 2 * per, t + 3 * per, per, max);
+		for (uint32_t k = 0; k < bw; k++)
+			fill[k] = base + k * bb;
+		for (size_t j = 0; j < per; j++) {
+			uint32_t i = t[per + j], x = i & (m->w - 1), y = i >> lw;
+			size_t at = fill[x >> lb]++;
+			p->sval[at] = t[j];
+			p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+		}
+	}
+	free(t);
+	free(fill);
+	return 0;
+}
+
+/* More blocks than this: sort_rows, no global inverse. */
+#define ONE_PASS_BLOCKS 4096
+
+/* The lists by counting over inv: count, place each range, put. */
+static int count_sort(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
+{
+	const struct frs_matrix *m = p->m;
+	uint64_t nt = (uint64_t)frs_threads(), bb = (uint64_t)p->block * p->block;
+	struct scatter sc = { p, inv, nv, 0, 0, NULL };
+	int rc;
+
+	nt = nt < 1 ? 1 : nt;
+	sc.span = (nv + nt - 1) / nt;
+	sc.nblk = m->n / bb;
+	if ((sc.fill = calloc(nt * sc.nblk, sizeof *sc.fill)) == NULL)
+		return frs_fail("out of memory for the sorted lists");
+	rc = frs_parallel(nt, 1, count_task, &sc, NULL);
+	for (uint64_t k = 0, at = 0; rc == 0 && k < sc.nblk; k++) {
+		p->soff[k] = (uint32_t)at;
+		for (uint64_t r = 0; r < nt; r++) {
+			uint64_t c = sc.fill[r * sc.nblk + k];
+			sc.fill[r * sc.nblk + k] = at;
+			at += c;
+		}
+		p->soff[k + 1] = (uint32_t)at;
+	}
+	if (rc == 0)
+		rc = frs_parallel(nt, 1, place_task, &sc, NULL);
+	free(sc.fill);
+	return rc;
+}
+
+/* Fewer values than this, or many small blocks: deal_below, whose one
+ * pass over them costs less than count_sort's arrays of every block
+ * (frscore.h). */
+uint64_t frs_deal_below = (uint64_t)1 << 20;
+
+/* The values in order, counted per block, then each appended to its
+ * block's list: the lists come out sorted. */
+static int deal_below(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
+{
+	const struct frs_matrix *m = p->m;
+	uint32_t blk = p->block;
+	unsigned lb = log2u64(blk), lw = log2u64(m->w);
+	uint64_t nblk = m->n / ((uint64_t)blk * blk);
+	uint32_t *fill = calloc(nblk, sizeof *fill);
+
+	if (fill == NULL)
+		return frs_fail("out of memory for the sorted lists");
+	for (uint64_t v = 0; v < nv; v++)
+		if (inv[v] != NO_ELEM)
+			fill[block_of(m, inv[v], lb, lw)]++;
+	p->soff[0] = 0;
+	for (uint64_t k = 0; k < nblk; k++) {
+		p->soff[k + 1] = p->soff[k] + fill[k];
+		fill[k] = p->soff[k];
+	}
+	for (uint64_t v = 0; v < nv; v++) {
+		uint32_t i = inv[v], x = i & (m->w - 1), y = i >> lw, at;
+		if (i == NO_ELEM)
+			continue;
+		at = fill[block_of(m, i, lb, lw)]++;
+		p->sval[at] = (uint32_t)v;
+		p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
+	}
+	free(fill);
+	return 0;
+}
+
+/* Lists of the values below `below` alone, by counting over an inverse
+ * of that many values; 1 when the values below repeat (the complete
+ * lists then sort them), 0 done, -1 failed. */
+static int sorted_below(struct frs_prep *p, uint64_t below)
+{
+	const struct frs_matrix *m = p->m;
+	uint64_t nt = (uint64_t)frs_threads(), kept = 0, distinct = 0;
+	struct invert iv = { m->v, NULL, below, 0, NULL };
+	int rc;
+
+	nt = nt < 1 ? 1 : nt;
+	iv.span = (m->n + nt - 1) / nt;
+	iv.inv = malloc((size_t)(below + 1) * sizeof *iv.inv);
+	iv.kept = calloc(nt, sizeof *iv.kept);
+	if (iv.inv == NULL || iv.kept == NULL) {
+		free(iv.inv);
+		free(iv.kept);
+		return frs_fail("out of memory for the sorted lists");
+	}
+	memset(iv.inv, 0xff, (size_t)below * sizeof *iv.inv);	/* NO_ELEM */
+	rc = frs_parallel(m->n, iv.span, invert_below_task, &iv, NULL);
+	for (uint64_t t = 0; t < nt; t++)
+		kept += iv.kept[t];
+	for (uint64_t v = 0; v < below; v++)
+		distinct += iv.inv[v] != NO_ELEM;
+	if (rc == 0 && kept != distinct)
+		rc = 1;
+	else if (rc == 0 && (below < frs_deal_below ||
+	    m->n / ((uint64_t)p->block * p->block) > ONE_PASS_BLOCKS))
+		rc = deal_below(p, iv.inv, below);
+	else if (rc == 0)
+		rc = count_sort(p, iv.inv, below);
+	free(iv.inv);
+	free(iv.kept);
+	return rc;
+}
+
+/* Listing 5.10, keeping every element of a block (no n_t cap: the
+ * thesis's cap 2 n_s^2 / sigma^2 is 0 for n_s < sigma and too small for
+ * some blocks, and a sample lost there is a bias).  O(S_M^2) for any
+ * block size, in parallel over block rows: many small blocks by
+ * sort_rows; few large ones of a permutation (every matrix read through
+ * frd(5)) by counting over the inverse permutation; others by qsort.
+ * The values below `below` alone, when they are fewer than half, by
+ * sorted_below, in lists of just those values. */
+static int make_sorted(struct frs_prep *p, uint32_t b, uint64_t below)
+{
+	const struct frs_matrix *m = p->m;
+	uint64_t nblk = (uint64_t)(m->w / b) * (m->h / b), bb = (uint64_t)b * b;
+	uint32_t *inv = NULL;
+	struct pair *tmp = NULL;
+	int rc = 0;
+
+	p->block = b;
+	p->below = FRS_ALL_VALUES;
+	if ((p->soff = malloc((nblk + 1) * sizeof *p->soff)) == NULL)
+		return frs_fail("out of memory for the sorted lists");
+	if (below < m->n / 2) {
+		p->sval = malloc((below + 1) * sizeof *p->sval);
+		p->sidx = malloc((below + 1) * sizeof *p->sidx);
+		if (p->sval == NULL || p->sidx == NULL)
+			return frs_fail("out of memory for the sorted lists");
+		if ((rc = sorted_below(p, below)) <= 0) {
+			if (rc == 0)
+				p->below = below;
+			return rc;
+		}
+		free(p->sval);	/* repeated values: the complete lists */
+		free(p->sidx);
+		rc = 0;
+	}
+	p->sval = mem_big(m->n * sizeof *p->sval);
+	p->sidx = mem_big(m->n * sizeof *p->sidx);
+	if (p->sval == NULL || p->sidx == NULL)
+		return frs_fail("out of memory for the sorted lists");
+	for (uint64_t k = 0; k <= nblk; k++)
+		p->soff[k] = (uint32_t)(k * bb);
+	if (nblk > ONE_PASS_BLOCKS) {
+		struct scatter sc = { p, NULL, 0, 0, 0, NULL };
+		rc = frs_parallel(m->h / b, 1, sort_rows, &sc, NULL);
+	} else if ((inv = mem_big(m->n * sizeof *inv)) == NULL)
+		rc = frs_fail("out of memory for the sorted lists");
+	else if (is_permutation(m)) {
+		uint64_t nt = (uint64_t)frs_threads();
+		struct invert iv = { m->v, inv, 0, 0, NULL };
+		nt = nt < 1 ? 1 : nt;
+		rc = frs_parallel(m->n, (m->n + nt - 1) / nt, invert_task, &iv,
+		    NULL);
+		if (rc == 0)
+			rc = count_sort(p, inv, m->n);
+	} else if ((tmp = malloc((size_t)b * b * sizeof *tmp)) == NULL)
+		rc = frs_fail("out of memory for the sorted lists");
+	else
+		sort_blocks(p, tmp);
+	free(inv);
+	free(tmp);
+	return rc;
+}
+
+int frs_prepare(struct frs_prep *p, const struct frs_matrix *m, int minmap,
+    uint32_t block)
+{
+	return frs_prepare_below(p, m, minmap, block, FRS_ALL_VALUES);
+}
+
+int frs_prepare_below(struct frs_prep *p, const struct frs_matrix *m,
+    int minmap, uint32_t block, uint64_t below)
+{
+	memset(p, 0, sizeof *p);
+	p->m = m;
+	p->lev[0] = m->v;
+	p->nlev = 1;
+	if ((minmap || block) && (!is_pow2(m->w) || !is_pow2(m->h)))
+		return frs_fail("the matrix is %ux%u: the minmap and sorted "
+		    "implementations need power-of-two sides (naive does not)",
+		    m->w, m->h);
+	if (block && (block > m->w || block > m->h || !is_pow2(block)))
+		return frs_fail("sorted blocks of %u do not fit the %ux%u matrix",
+		    block, m->w, m->h);
+	if ((minmap && make_minmap(p) < 0) || (block && make_sorted(p, block, below) < 0)) {
+		frs_prep_free(p);
+		return -1;
+	}
+	return 0;
+}
+
+/* ---- thresholds --------------------------------------------------- */
+
+void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule)
+{
+	/* Past 2^33 every value of a uint32 matrix passes. */
+	if (!(t < 0x1p33))
+		t = 0x1p33;
+	th->t = t;
+	th->tf = (uint64_t)floor(t);
+	th->frac = t - floor(t);
+	if (rule == FRS_THESIS)		/* v < T  <=>  v < ceil(T) */
+		th->lim = (uint64_t)ceil(t);
+	else
+		th->lim = th->tf + (th->frac > 0.0);
+}
+
+int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
+    uint64_t seed, uint64_t id)
+{
+	if (rule == FRS_THESIS)
+		return (double)v < th->t;
+	if (v < th->tf)
+		return 1;
+	return v == th->tf && th->frac > 0.0 &&
+	    frs_rand01(seed, FRS_STREAM_COIN, id) < th->frac;
+}
+
+static int passes(const struct frs_setup *s, const struct frs_thr *th,
+    uint64_t v, uint64_t x, uint64_t y)
+{
+	return frs_thr_passes(s->rule, th, v, s->seed, y * s->sw + x);
+}
+
+/* ---- the implementations ------------------------------------------ */
+
+struct run {
+	const struct frs_setup *s;
+	const struct frs_imap *map;
+	const struct frs_prep *p;
+	enum frs_algo algo;
+	const double *tau;	/* per step */
+	unsigned nsteps;
+	int count_only;
+	struct frs_result *r;
+	/* frs_sample_each: chunks from c0, handed to fn, not kept in r */
+	uint64_t c0;
+	const uint64_t *at;
+	struct frs_elem *store;
+	double *xy, *pdf;	/* points made in place, or NULL */
+	frs_chunk_fn fn;
+	void *ctx;
+};
+
+/* What one pixel's work needs. */
+struct pix {
+	const struct run *run;
+	struct frs_chunk *c;
+	struct frs_thr th[16];	/* per step; th[nsteps - 1] is the last */
+	uint64_t lim;
+	uint64_t x0, y0;	/* the pixel's first window element */
+	double pdf;		/* its density, for points made in place */
+	struct tcache tc;
+};
+
+static void emit(struct pix *px, uint64_t x, uint64_t y, uint32_t v)
+{
+	const struct run *run = px->run;
+	unsigned k, last = run->nsteps - 1;
+
+	if (!passes(run->s, &px->th[last], v, x, y))
+		return;
+	for (k = 0; k < last && !passes(run->s, &px->th[k], v, x, y); k++)
+		;
+	px->c->count++;
+	if (run->count_only)
+		return;
+	if (px->c->n == px->c->cap) {
+		uint64_t ncap = px->c->cap ? 2 * px->c->cap : 1024;
+		struct frs_elem *ne = px->c->fixed ? NULL :
+		    realloc(px->c->e, ncap * sizeof *ne);
+		if (ne == NULL) {
+			px->c->failed = 1;
+			return;
+		}
+		px->c->e = ne;
+		px->c->cap = ncap;
+	}
+	px->c->e[px->c->n++] = (struct frs_elem){ (uint32_t)x, (uint32_t)y, k };
+}
+
+static uint64_t wrap(uint64_t v, uint32_t n)
+{
+	return (n & (n - 1)) == 0 ? v & (n - 1) : v % n;
+}
+
+/* Listing 5.2: every window element of the pixel; with shuffled tiles
+ * each element through its tile's transform. */
+static void pix_naive(struct pix *px)
+{
+	const struct frs_setup *s = px->run->s;
+	const uint32_t *mv = px->run->p->m->v;
+
+	if (s->tiles == FRS_TILES_PLAIN) {
+		for (uint32_t sy = 0; sy < s->ns; sy++) {
+			uint64_t y = px->y0 + sy;
+			const uint32_t *row = mv + wrap(s->wy + y, s->mh) * s->mw;
+			uint64_t mx = wrap(s->wx + px->x0, s->mw);
+			for (uint32_t sx = 0; sx < s->ns; sx++) {
+				if (row[mx] < px->lim)
+					emit(px, px->x0 + sx, y, row[mx]);
+				if (++mx == s->mw)
+					mx = 0;
+			}
+		}
+		return;
+	}
+	for (uint64_t y = px->y0; y < px->y0 + s->ns; y++)
+		for (uint64_t x = px->x0; x < px->x0 + s->ns; x++) {
+			uint64_t lx, ly;
+			const struct frs_tile *t = tile_at(s, &px->tc, x, y, &lx, &ly);
+			uint32_t v = mv[block_index(s, t, 0, lx, ly)];
+			if (v < px->lim)
+				emit(px, x, y, v);
+		}
+}
+
+/* The minmap value of the level-l block whose first element is (x, y). */
+static uint32_t minmap_at(struct pix *px, unsigned l, uint64_t x, uint64_t y)
+{
+	const struct frs_setup *s = px->run->s;
+	uint64_t lx, ly;
+	const struct frs_tile *t;
+
+	/* Plain tiles are the identity.  Here, in the innermost lookup of
+	 * Stack and Level N, and not in tile_at and block_index: taught the
+	 * same shortcut, those still cost Level 1 a fifth more time. */
+	if (s->tiles == FRS_TILES_PLAIN) {
+		lx = wrap(s->wx + x, s->mw);
+		ly = wrap(s->wy + y, s->mh);
+		return px->run->p->lev[l][(ly >> l) * (s->mw >> l) + (lx >> l)];
+	}
+	t = tile_at(s, &px->tc, x, y, &lx, &ly);
+	return px->run->p->lev[l][block_index(s, t, l, lx, ly)];
+}
+
+unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
+    unsigned want)
+{
+	unsigned l = want, lns = log2u64(s->ns), lt = log2u64(frs_tile_max_block(s));
+	if (l > lns)
+		l = lns;
+	if (l > lt)
+		l = lt;
+	if (l > p->nlev - 1)
+		l = p->nlev - 1;
+	return l;
+}
+
+/* Listing 5.4: an explicit stack of minmap blocks. */
+struct blk {
+	uint64_t x, y;
+	unsigned l;
+};
+
+static void pix_stack(struct pix *px)
+{
+	const struct run *run = px->run;
+	unsigned L = frs_start_level(run->s, run->p, run->s->level0);
+	uint64_t b = (uint64_t)1 << L, nb = run->s->ns / b;
+	struct blk st[3 * 32 + 4];
+
+	for (uint64_t by = 0; by < nb; by++)
+		for (uint64_t bx = 0; bx < nb; bx++) {
+			int top = 0;
+			st[top++] = (struct blk){ px->x0 + bx * b, px->y0 + by * b, L };
+			while (top > 0) {
+				struct blk e = st[--top];
+				uint32_t v = minmap_at(px, e.l, e.x, e.y);
+				uint64_t h;
+				if (v >= px->lim)
+					continue;
+				if (e.l == 0) {
+					emit(px, e.x, e.y, v);
+					continue;
+				}
+				h = (uint64_t)1 << (e.l - 1);
+				st[top++] = (struct blk){ e.x + h, e.y + h, e.l - 1 };
+				st[top++] = (struct blk){ e.x, e.y + h, e.l - 1 };
+				st[top++] = (struct blk){ e.x + h, e.y, e.l - 1 };
+				st[top++] = (struct blk){ e.x, e.y, e.l - 1 };
+			}
+		}
+}
+
+/* Listing 5.5 for N = 1 and 2: nested loops over the quadrants. */
+static void level_block(struct pix *px, unsigned l, uint64_t x, uint64_t y)
+{
+	uint32_t v = minmap_at(px, l, x, y);
+	uint64_t h;
+
+	if (v >= px->lim)
+		return;
+	if (l == 0) {
+		emit(px, x, y, v);
+		return;
+	}
+	h = (uint64_t)1 << (l - 1);
+	for (uint64_t qy = 0; qy < 2; qy++)
+		for (uint64_t qx = 0; qx < 2; qx++)
+			level_block(px, l - 1, x + qx * h, y + qy * h);
+}
+
+static void pix_level(struct pix *px, unsigned n)
+{
+	unsigned L = frs_start_level(px->run->s, px->run->p, n);
+	uint64_t b = (uint64_t)1 << L, nb = px->run->s->ns / b;
+
+	for (uint64_t by = 0; by < nb; by++)
+		for (uint64_t bx = 0; bx < nb; bx++)
+			level_block(px, L, px->x0 + bx * b, px->y0 + by * b);
+}
+
+/* The coordinate of window element e with jitter j in [0, 1) on a side
+ * of the window: the one formula of frs_point, frs_points and
+ * take_points. */
+static double coord(uint64_t e, double j, double side)
+{
+	return frs_below_one(((double)e + j) / side);
+}
+
+/* The k elements of a block that take_block accepted, as points (no
+ * jitter: the centre of the element) straight into the chunk's xy, with
+ * the pixel's density: frs_point and api_pdf without the elements in
+ * between, a third of the memory traffic. */
+static void take_points(struct pix *px, const struct frs_tile *t,
+    const uint32_t *idx, uint32_t b, unsigned lb, uint64_t x, uint64_t y,
+    uint64_t k)
+{
+	const struct frs_setup *s = px->run->s;
+	struct frs_chunk *c = px->c;
+	double sw = (double)s->sw, sh = (double)s->sh, *o;
+	uint64_t ex, ey;
+
+	if (c->n + k > c->cap) {
+		c->failed = 1;
+		return;
+	}
+	o = c->xy + 2 * c->n;
+	if (t->flip == 0 && t->perm[0] == 0) {	/* plain: the fast path */
+		for (uint64_t j = 0; j < k; j++) {
+			o[2 * j] = coord(x + (idx[j] & (b - 1)), 0.5, sw);
+			o[2 * j + 1] = coord(y + (idx[j] >> lb), 0.5, sh);
+		}
+	} else {
+		for (uint64_t j = 0; j < k; j++) {
+			inblock(t, b, lb, idx[j], x, y, &ex, &ey);
+			o[2 * j] = coord(ex, 0.5, sw);
+			o[2 * j + 1] = coord(ey, 0.5, sh);
+		}
+	}
+	for (uint64_t j = 0; c->pdf != NULL && j < k; j++)
+		c->pdf[c->n + j] = px->pdf;
+	c->n += k;
+}
+
+/* Listing 5.11: the sorted values of each block, until one is too
+ * large.  One step: the values below lim by bisection, the last of them
+ * through its coin if it needs one (values are distinct, so only it can),
+ * then every element taken without further tests.  This is the hot loop
+ * of the fastest implementation.  (x, y): the block's window origin, b =
+ * 2^lb its side; t its tile's transform, whose in-block order k undoes. */
+static void take_block(struct pix *px, const struct frs_tile *t,
+    const uint32_t *val, const uint32_t *idx, uint32_t len, uint32_t b,
+    unsigned lb, uint64_t x, uint64_t y)
+{
+	uint64_t lo = 0, hi = len, k, ex, ey;
+	struct frs_chunk *c = px->c;
+
+	if (len == 0 || val[0] >= px->lim)
+		return;
+	while (lo < hi) {
+		uint64_t mid = lo + (hi - lo) / 2;
+		if (val[mid] < px->lim)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	k = lo;
+	if (k > 0) {
+		inblock(t, b, lb, idx[k - 1], x, y, &ex, &ey);
+		if (!passes(px->run->s, &px->th[0], val[k - 1], ex, ey))
+			k--;
+	}
+	c->count += k;
+	if (px->run->count_only || k == 0)
+		return;
+	if (c->xy != NULL) {
+		take_points(px, t, idx, b, lb, x, y, k);
+		return;
+	}
+	if (c->n + k > c->cap) {
+		uint64_t ncap = c->cap ? 2 * c->cap : 1024;
+		struct frs_elem *ne;
+		while (ncap < c->n + k)
+			ncap *= 2;
+		ne = c->fixed ? NULL : realloc(c->e, ncap * sizeof *ne);
+		if (ne == NULL) {
+			c->failed = 1;
+			return;
+		}
+		c->e = ne;
+		c->cap = ncap;
+	}
+	if (t->flip == 0 && t->perm[0] == 0) {	/* plain: the fast path */
+		for (uint64_t j = 0; j < k; j++)
+			c->e[c->n + j] = (struct frs_elem){
+			    (uint32_t)(x + (idx[j] & (b - 1))),
+			    (uint32_t)(y + (idx[j] >> lb)), 0 };
+	} else {
+		for (uint64_t j = 0; j < k; j++) {
+			inblock(t, b, lb, idx[j], x, y, &ex, &ey);
+			c->e[c->n + j] = (struct frs_elem){ (uint32_t)ex,
+			    (uint32_t)ey, 0 };
+		}
+	}
+	c->n += k;
+}
+
+/* A lower bound of the values of a pixel whose blocks are smaller than
+ * it (shuffled tiles with n_s above the step): the minmap of level
+ * log2 n_s over the (at most 2 x 2) blocks its matrix region meets, or 0
+ * when there is no such level.  Dark pixels then cost four lookups
+ * instead of a bisection per block. */
+static uint32_t pixel_bound(struct pix *px)
+{
+	const struct frs_setup *s = px->run->s;
+	const struct frs_prep *p = px->run->p;
+	unsigned L = log2u64(s->ns);
+	uint64_t lx, ly, c[2][2], lo[2], m[2] = { s->mw, s->mh };
+	uint32_t v = UINT32_MAX;
+	const struct frs_tile *t;
+
+	if (s->ns >= s->mw || s->ns >= s->mh || L >= p->nlev)
+		return 0;
+	t = tile_at(s, &px->tc, px->x0, px->y0, &lx, &ly);
+	for (uint64_t k = 0; k < 2; k++) {	/* opposite corners */
+		uint64_t i = block_index(s, t, 0, lx + k * (s->ns - 1),
+		    ly + k * (s->ns - 1));
+		c[k][0] = i % s->mw;
+		c[k][1] = i / s->mw;
+	}
+	/* The region starts at the smaller corner, or wraps around. */
+	for (int i = 0; i < 2; i++)
+		lo[i] = c[0][i] < c[1][i] ? c[0][i] : c[1][i];
+	for (int i = 0; i < 2; i++)
+		if ((c[0][i] > c[1][i] ? c[0][i] - c[1][i] : c[1][i] - c[0][i]) !=
+		    s->ns - 1)
+			lo[i] = c[0][i] > c[1][i] ? c[0][i] : c[1][i];
+	for (uint64_t qy = 0; qy < 2; qy++)
+		for (uint64_t qx = 0; qx < 2; qx++) {
+			uint64_t bx = ((lo[0] >> L) + qx) % (m[0] >> L);
+			uint64_t by = ((lo[1] >> L) + qy) % (m[1] >> L);
+			uint32_t w = p->lev[L][by * (m[0] >> L) + bx];
+			v = w < v ? w : v;
+		}
+	return v;
+}
+
+static void pix_sorted(struct pix *px)
+{
+	const struct run *run = px->run;
+	const struct frs_setup *s = run->s;
+	const struct frs_prep *p = run->p;
+	uint32_t b = p->block;
+	uint64_t nb = s->ns / b;
+	unsigned lb = 0;
+
+	while ((1u << lb) < b)
+		lb++;
+	if (nb > 1 && pixel_bound(px) >= px->lim)
+		return;
+	for (uint64_t by = 0; by < nb; by++)
+		for (uint64_t bx = 0; bx < nb; bx++) {
+			uint64_t x = px->x0 + bx * b, y = px->y0 + by * b, lx, ly;
+			const struct frs_tile *t = tile_at(s, &px->tc, x, y, &lx, &ly);
+			uint64_t blk = block_index(s, t, lb, lx, ly);
+			const uint32_t *val = p->sval + p->soff[blk];
+			const uint32_t *idx = p->sidx + p->soff[blk];
+			uint32_t len = p->soff[blk + 1] - p->soff[blk];
+			/* The block's minimum from the (small) minmap level
+			 * rather than from its list, a cache miss away. */
+			if (nb > 1 && lb < p->nlev && p->lev[lb][blk] >= px->lim)
+				continue;
+			if (run->nsteps == 1) {
+				take_block(px, t, val, idx, len, b, lb, x, y);
+				continue;
+			}
+			for (uint64_t k = 0; k < len && val[k] < px->lim; k++) {
+				uint64_t ex, ey;
+				inblock(t, b, lb, idx[k], x, y, &ex, &ey);
+				emit(px, ex, ey, val[k]);
+			}
+		}
+}
+
+/* Map pixels per chunk, in row-major order: about CHUNK_SAMPLES
+ * samples at the map's mean.  Chunks only divide the work; the samples
+ * come in map order for any chunking. */
+static uint64_t chunk_pixels(const struct frs_setup *s)
+{
+	uint64_t npix = (uint64_t)s->iw * s->ih;
+	uint64_t p = s->n > 0 ? CHUNK_SAMPLES * npix / s->n : npix;
+
+	return p < 1 ? 1 : p > npix ? npix : p;
+}
+
+/* The map pixels of chunk ci into px->c. */
+static void run_chunk(struct pix *px, uint64_t ci)
+{
+	const struct run *run = px->run;
+	const struct frs_setup *s = run->s;
+	uint64_t per = chunk_pixels(s), i1 = (ci + 1) * per;
+
+	i1 = i1 < (uint64_t)s->iw * s->ih ? i1 : (uint64_t)s->iw * s->ih;
+	for (uint64_t i = ci * per; i < i1; i++) {
+		uint64_t py = i / s->iw, pxi = i % s->iw;
+		double imp = run->map->v[i];
+		if (!(imp > 0.0))
+			continue;	/* zero importance costs nothing */
+		for (unsigned k = 0; k < run->nsteps; k++)
+			frs_thr_make(&px->th[k], run->tau[k] *
+			    (imp * s->iscale), s->rule);
+		px->lim = px->th[run->nsteps - 1].lim;
+		if (px->lim == 0)
+			continue;
+		px->x0 = pxi * s->ns;
+		px->y0 = py * s->ns;
+		px->pdf = imp / s->mean;
+		switch (run->algo) {
+		case FRS_NAIVE: pix_naive(px); break;
+		case FRS_STACK: pix_stack(px); break;
+		case FRS_LEVEL1: pix_level(px, 1); break;
+		case FRS_LEVEL2: pix_level(px, 2); break;
+		default: pix_sorted(px); break;
+		}
+	}
+}
+
+static int chunks_task(void *ctx, uint64_t b, uint64_t e)
+{
+	const struct run *run = ctx;
+	struct pix px;
+
+	px.run = run;
+	for (unsigned k = 0; k < TCACHE; k++)
+		px.tc.e[k].valid = 0;
+	for (uint64_t ci = b; ci < e; ci++) {
+		struct frs_chunk c = { 0 };
+		int rc = 0;
+		if (run->fn == NULL) {
+			px.c = &run->r->chunk[ci];
+			run_chunk(&px, ci);
+			if (px.c->failed)
+				return frs_fail("out of memory for the samples");
+			continue;
+		}
+		/* frs_sample_each: the chunk's place in the caller's store. */
+		c.e = run->store + run->at[ci];
+		c.cap = run->at[ci + 1] - run->at[ci];
+		c.fixed = 1;
+		if (run->xy != NULL) {
+			c.xy = run->xy + 2 * run->at[ci];
+			c.pdf = run->pdf != NULL ? run->pdf + run->at[ci] : NULL;
+		}
+		px.c = &c;
+		run_chunk(&px, run->c0 + ci);
+		if (c.failed)
+			rc = frs_fail("out of memory for the samples");
+		else
+			rc = run->fn(run->ctx, run->c0 + ci, &c);
+		if (rc < 0)
+			return -1;
+	}
+	return 0;
+}
+
+int frs_steps_check(const uint64_t *steps, unsigned nsteps)
+{
+	if (nsteps < 1 || nsteps > 16)
+		return frs_fail("--progressive: 1 to 16 steps");
+	for (unsigned k = 1; k < nsteps; k++)
+		if (steps[k] <= steps[k - 1])
+			return frs_fail("--progressive: counts must increase");
+	return 0;
+}
+
+uint64_t frs_lim_most(const struct frs_setup *s, double tau)
+{
+	struct frs_thr th;
+
+	frs_thr_make(&th, tau * (s->max * s->iscale), s->rule);
+	return th.lim;
+}
+
+int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
+    int algo, const char *name, const uint64_t *steps, unsigned nsteps,
+    int count_only, double *tau)
+{
+	if (frs_steps_check(steps, nsteps) < 0)
+		return -1;
+	for (unsigned k = 0; k < nsteps; k++)
+		tau[k] = frs_tau(s, steps[k]);
+	if (!count_only && (s->sw > UINT32_MAX || s->sh > UINT32_MAX))
+		return frs_fail("the window of %llux%llu elements is too large to "
+		    "store samples (--count-only counts them)",
+		    (unsigned long long)s->sw, (unsigned long long)s->sh);
+	if (algo != FRS_NAIVE && algo != FRS_SORTED && p->nlev < 2)
+		return frs_fail("-a %s: the matrix has no minmap", name);
+	if (algo == FRS_SORTED && (p->block == 0 || p->block > s->ns ||
+	    s->ns % p->block))
+		return frs_fail("-a sorted: lists of blocks of %u do not fit "
+		    "n_s = %u", p->block, s->ns);
+	if (algo == FRS_SORTED && p->block > frs_tile_max_block(s))
+		return frs_fail("-a sorted: shuffled tiles keep blocks of at most "
+		    "%u whole, not %u", frs_tile_max_block(s), p->block);
+	if (algo == FRS_SORTED && p->below != FRS_ALL_VALUES &&
+	    frs_lim_most(s, tau[nsteps - 1]) > p->below)
+		return frs_fail("-a sorted: the lists hold the values below "
+		    "%llu, the thresholds reach %llu",
+		    (unsigned long long)p->below, (unsigned long long)
+		    frs_lim_most(s, tau[nsteps - 1]));
+	return 0;
+}
+
+uint64_t frs_nchunks(const struct frs_setup *s)
+{
+	uint64_t per = chunk_pixels(s);
+	return ((uint64_t)s->iw * s->ih + per - 1) / per;
+}
+
+int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_prep *p, enum frs_algo algo, uint64_t c0, uint64_t c1,
+    const uint64_t *at, struct frs_elem *store, double *xy, double *pdf,
+    frs_chunk_fn fn, void *ctx)
+{
+	double tau;
+	struct run run = { s, map, p, algo, &tau, 1, 0, NULL, c0, at, store,
+	    NULL, NULL, fn, ctx };
+
+	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), &s->n, 1, 0,
+	    &tau) < 0)
+		return -1;
+	/* Points in place need Sorted without jitter (take_points). */
+	if (xy != NULL && algo == FRS_SORTED && s->jitter == FRS_JITTER_NONE) {
+		run.xy = xy;
+		run.pdf = pdf;
+	}
+	if (c1 > frs_nchunks(s) || c0 > c1)
+		return frs_fail("frs_sample_each: chunks %llu to %llu of %llu",
+		    (unsigned long long)c0, (unsigned long long)c1,
+		    (unsigned long long)frs_nchunks(s));
+	return frs_parallel(c1 - c0, 1, chunks_task, &run, NULL);
+}
+
+int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
+    unsigned nsteps, int count_only, struct frs_result *r)
+{
+	double tau[16];
+	struct run run = { s, map, p, algo, tau, nsteps, count_only, r, 0,
+	    NULL, NULL, NULL, NULL, NULL, NULL };
+	int rc;
+
+	memset(r, 0, sizeof *r);
+	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), steps,
+	    nsteps, count_only, tau) < 0)
+		return -1;
+	r->nchunk = frs_nchunks(s);
+	r->chunk = calloc(r->nchunk, sizeof *r->chunk);
+	if (r->chunk == NULL)
+		return frs_fail("out of memory");
+	rc = frs_parallel(r->nchunk, 1, chunks_task, &run, NULL);
+	for (uint64_t i = 0; i < r->nchunk; i++)
+		r->count += r->chunk[i].count;
+	if (rc < 0)
+		frs_result_free(r);
+	return rc;
+}
+
+void frs_result_free(struct frs_result *r)
+{
+	for (uint64_t i = 0; i < r->nchunk; i++)
+		free(r->chunk[i].e);
+	free(r->chunk);
+	memset(r, 0, sizeof *r);
+}
+
+/* ---- points ------------------------------------------------------- */
+
+double frs_radical_inverse(uint64_t i, unsigned base)
+{
+	double inv = 1.0 / base, f = inv, r = 0.0;
+	while (i > 0) {
+		r += (double)(i % base) * f;
+		i /= base;
+		f *= inv;
+	}
+	return r;
+}
+
+double frs_below_one(double v)
+{
+	return v < 1.0 ? v : 0x1.fffffffffffffp-1;
+}
+
+void frs_point(const struct frs_setup *s, const struct frs_elem *e,
+    double *x, double *y)
+{
+	uint64_t id = (uint64_t)e->y * s->sw + e->x;
+	double jx = 0.5, jy = 0.5;
+
+	if (s->jitter == FRS_JITTER_RANDOM) {
+		jx = frs_rand01(s->seed, FRS_STREAM_JITTER, 2 * id);
+		jy = frs_rand01(s->seed, FRS_STREAM_JITTER, 2 * id + 1);
+	} else if (s->jitter == FRS_JITTER_HALTON) {
+		/* Halton (2, 3) by element, rotated by the seed
+		 * (Cranley-Patterson), so it depends on nothing but both. */
+		double rx = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX);
+		double ry = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX - 1);
+		jx = frs_radical_inverse(id + 1, 2) + rx;
+		jy = frs_radical_inverse(id + 1, 3) + ry;
+		jx -= floor(jx);
+		jy -= floor(jy);
+	}
+	*x = coord(e->x, jx, (double)s->sw);
+	*y = coord(e->y, jy, (double)s->sh);
+}
+
+void frs_points(const struct frs_setup *s, const struct frs_elem *e,
+    size_t n, double *xy)
+{
+	double sw = (double)s->sw, sh = (double)s->sh;
+
+	if (s->jitter != FRS_JITTER_NONE) {
+		for (size_t i = 0; i < n; i++)
+			frs_point(s, &e[i], &xy[2 * i], &xy[2 * i + 1]);
+		return;
+	}
+	for (size_t i = 0; i < n; i++) {
+		xy[2 * i] = coord(e[i].x, 0.5, sw);
+		xy[2 * i + 1] = coord(e[i].y, 0.5, sh);
+	}
+}

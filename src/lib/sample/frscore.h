@@ -1,0 +1,299 @@
+/*
+ * Forced Random Sampling (thesis ch. 4-5): threshold a window of the
+ * tiled FRD matrix against importance * tau.
+ *
+ * Setup (Listing 5.1, done once here for every implementation): with the
+ * map's mean mu and maximum m, the window's smaller side needs at least
+ * w_min = ceil(sigma * sqrt(n m / (mu a))) elements, a the map's aspect
+ * ratio; n_s, the window elements per map pixel and side, is the smallest
+ * power of two with n_s * (smaller map side) >= w_min, the same in x and
+ * y, and the window is S_W = n_s * S_I in integers.  The window offset is
+ * a random multiple of n_s (of the matrix size when n_s exceeds it) per
+ * axis, and tau = n S_M^2 / (S_W,x S_W,y mu).
+ *
+ * Thresholds (unbiased, the default): with T = tau * I(pixel), an element
+ * whose matrix value v is below floor(T) passes, v == floor(T) passes with
+ * probability frac(T) by a coin of (seed, window element), so that every
+ * pixel gets n I / sum(I) samples in expectation.  The thesis's rule,
+ * v < T (Eq. 4.14), passes ceil(T) values of each matrix tile and biases
+ * dark pixels upwards; FRS_THESIS selects it.
+ *
+ * Implementations (Naive, Stack, Level 1, Level 2, Sorted) differ only in
+ * which elements they look at: all produce the same window elements, which
+ * frs_point turns into points the same way, with jitter and coins that
+ * depend only on (seed, window element).
+ */
+#ifndef FRS_FRSCORE_H
+#define FRS_FRSCORE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "formats/frdio.h"
+#include "maps/imap.h"
+
+enum frs_algo {
+	FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2, FRS_SORTED, FRS_NALGO
+};
+enum frs_jitter { FRS_JITTER_NONE, FRS_JITTER_HALTON, FRS_JITTER_RANDOM };
+enum frs_rule { FRS_UNBIASED, FRS_THESIS };
+/* How a window larger than the matrix tiles it: each tile through its
+ * own transform of (seed, tile) (cl/tile.cl), or the thesis's plain
+ * repetition. */
+enum frs_tiling { FRS_TILES_PLAIN, FRS_TILES_SHUFFLE };
+
+/* Exact counts (frs-sample --exact-count): the tau of each step moved so
+ * that exactly steps[k] elements of the window pass.  Under the unbiased
+ * rule an element of value v and coin u passes when v + u < tau I, its
+ * key (v + u) / I is continuous, and tau[k] is the steps[k]-th smallest
+ * key over the window (frs_exact_taus).  n 0: the taus of frs_tau. */
+struct frs_xtau {
+	unsigned n;
+	uint64_t steps[16];
+	double tau[16];
+	unsigned passes;	/* count passes the search made */
+};
+
+const char *frs_algo_name(enum frs_algo a);
+int frs_algo_parse(const char *s, enum frs_algo *a);
+
+struct frs_setup {
+	uint32_t iw, ih;	/* importance map */
+	uint32_t mw, mh;	/* matrix */
+	uint64_t n;		/* samples asked for (the last step) */
+	double sigma;
+	double mean, max;	/* of the map */
+	uint32_t ns;		/* window elements per pixel side, 2^k */
+	uint64_t sw, sh;	/* window: ns * iw, ns * ih */
+	uint64_t wx, wy;	/* window offset in the tiled matrix */
+	double tau;		/* for n */
+	unsigned level0;	/* first minmap level: log2 min(ns, sigma) */
+	uint64_t seed;
+	enum frs_rule rule;
+	enum frs_jitter jitter;
+	enum frs_tiling tiles;
+	/* Thresholds are T = tau * (I * iscale): iscale is a power of two, 1
+	 * unless the map's maximum lies outside [2^-900, 2^900], where tau
+	 * (denormal maps) or the mean (a sum past DBL_MAX) would overflow;
+	 * imean is the mean of I * iscale, which tau uses. */
+	double iscale, imean;
+	struct frs_xtau exact;	/* exact counts; n 0 unless asked */
+};
+
+/* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */
+int frs_setup(struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
+/* tau for another count with the same window (progressive steps); the
+ * exact tau of a step when s->exact has it. */
+double frs_tau(const struct frs_setup *s, uint64_t n);
+/* x's tau for the count n, or dflt when x has none. */
+double frs_xtau_get(const struct frs_xtau *x, uint64_t n, double dflt);
+/* The count of a run at threshold scale tau; -1 after frs_fail. */
+typedef int (*frs_count_fn)(void *ctx, double tau, uint64_t *count);
+/*
+ * The exact taus of steps (increasing, 1 to 16) into x: for each step the
+ * tau at which count(tau) is exactly steps[k], found by a safeguarded
+ * secant bisection over the count passes from the guess tau0[k]
+ * (frs_tau's).  The counts must not decrease with tau, and most is the
+ * count of a tau that passes everything (the window elements of non-zero
+ * importance): more fails.  Two keys in one double (an ulp of tau apart)
+ * would make the count jump past steps[k]; that fails too.  *passes gets
+ * the number of count passes made.
+ */
+int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
+    const double *tau0, uint64_t most, frs_count_fn count, void *ctx,
+    struct frs_xtau *x, unsigned *passes);
+/* frs_exact_taus's most: the window elements of the ncell map pixels (or
+ * volume voxels) v of non-zero importance, ns^dims each, saturated. */
+uint64_t frs_exact_most(const double *v, uint64_t ncell, uint32_t ns,
+    unsigned dims);
+/* Samples a matrix gives without repetition: S_M^2 / sigma^2 (Eq. 4.17). */
+double frs_unique(const struct frs_setup *s);
+/* --tiles auto: shuffled when n fits the matrix without repetition
+ * (n <= frs_unique), for then every repeat comes from the tiling; else
+ * plain, whose repeats cannot be avoided and which has no seams. */
+enum frs_tiling frs_tiles_auto(const struct frs_setup *s);
+/* Tiles of side m met by n elements from offset o on one axis. */
+uint64_t frs_tiles_axis(uint64_t o, uint64_t n, uint64_t m);
+/* Matrix tiles the window touches, per axis and in all. */
+uint64_t frs_tiles(const struct frs_setup *s, uint64_t *tx, uint64_t *ty);
+/* The largest block (sorted lists, minmap start level) that the tiling
+ * keeps whole: the offset step with shuffled tiles, else the matrix. */
+uint32_t frs_tile_max_block(const struct frs_setup *s);
+/* The matrix index (y * mw + x) that window element (x, y) shows. */
+uint64_t frs_matrix_index(const struct frs_setup *s, uint64_t x, uint64_t y);
+
+/* The matrix prepared for the implementations: minmap levels and
+ * block-sorted lists. */
+struct frs_prep {
+	const struct frs_matrix *m;
+	unsigned nlev;		/* levels 0 (the matrix) .. nlev - 1 */
+	uint32_t *lev[32];	/* level l: (mw >> l) x (mh >> l) minima */
+	uint32_t block;		/* block size of the sorted lists, 0: none */
+	uint32_t *sval;		/* per block, ascending values */
+	uint32_t *sidx;		/* and their index inside the block */
+	uint32_t *soff;		/* block k's list: soff[k] .. soff[k + 1] - 1 */
+	uint64_t below;		/* the lists hold every value below this */
+};
+
+/* frs_prepare_below's bound for complete lists. */
+#define FRS_ALL_VALUES UINT64_MAX
+
+/* Build the minmap (stack, levels) and, when block > 0, the sorted lists
+ * of blocks x blocks (sorted).  Power-of-two matrices only. */
+int frs_prepare(struct frs_prep *p, const struct frs_matrix *m,
+    int minmap, uint32_t block);
+/* The same with lists of the values below below only: a run whose thresholds stay
+ * under it (frs_lim_most) reads nothing else, and they cost a pass over
+ * the matrix and O(below), not O(S_M^2).  Complete lists when below is
+ * not much smaller than the matrix or its values repeat. */
+int frs_prepare_below(struct frs_prep *p, const struct frs_matrix *m,
+    int minmap, uint32_t block, uint64_t below);
+/* Below this many values (or with many small blocks) the partial lists
+ * are dealt in one serial pass, else counted in parallel; tests lower it
+ * to take both ways. */
+extern uint64_t frs_deal_below;
+void frs_prep_free(struct frs_prep *p);
+/* The minmap level at which Stack, Level N and Flat 1 start for the
+ * wanted level: at most log2 n_s, the top level and the tiling's block. */
+unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
+    unsigned want);
+
+/* One accepted window element; (x, y) window coordinates (windows of
+ * 2^32 or more elements a side can only be counted). */
+struct frs_elem {
+	uint32_t x, y;
+	uint32_t step;		/* progressive step, 0 for the first */
+};
+
+/* Elements in chunks of map pixels, in row-major order: the same order for any
+ * thread count, and no copy to join them. */
+struct frs_chunk {
+	struct frs_elem *e;
+	uint64_t n, cap;
+	uint64_t count;
+	int failed;
+	int fixed;		/* e is room in a caller's store: never grown */
+	double *xy, *pdf;	/* frs_sample_each's points made in place */
+};
+
+struct frs_result {
+	struct frs_chunk *chunk;
+	uint64_t nchunk;
+	uint64_t count;		/* elements accepted (also with count_only) */
+};
+
+/*
+ * Threshold the window.  steps: the counts of progressive sampling in
+ * increasing order (nsteps >= 1, the last equal to s->n); each element
+ * records the first step at which it passes.  count_only: count, store
+ * nothing.  threads: see frs_set_threads; the elements come in the same
+ * order for any thread count.
+ */
+int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
+    unsigned nsteps, int count_only, struct frs_result *r);
+void frs_result_free(struct frs_result *r);
+
+/*
+ * One step without a result: the chunks c0 .. c1 - 1 of the window (map
+ * rows in chunks), each in the caller's store, from store + at[c - c0]
+ * with room for at[c - c0 + 1] - at[c - c0] elements (the counts of a
+ * count_only run: exact), handed to fn by the thread that thresholded it.
+ * fn runs in parallel for different chunks; a chunk that overflows its
+ * room fails.  Memory in proportion to the chunks in flight, not to the
+ * samples of the run.
+ */
+typedef int (*frs_chunk_fn)(void *ctx, uint64_t ci, const struct frs_chunk *c);
+/* xy (and pdf, if not NULL) not NULL: with Sorted and no jitter each
+ * chunk's points go straight to xy + 2 at[c - c0] (its densities to pdf
+ * + at[c - c0]), frs_points and api_pdf as they would give them, and
+ * the chunk handed to fn has xy set and no elements. */
+int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_prep *p, enum frs_algo algo, uint64_t c0, uint64_t c1,
+    const uint64_t *at, struct frs_elem *store, double *xy, double *pdf,
+    frs_chunk_fn fn, void *ctx);
+/* The number of chunks of map pixels (about 16384 samples each). */
+uint64_t frs_nchunks(const struct frs_setup *s);
+/* Progressive counts: 1 to 16, increasing. */
+int frs_steps_check(const uint64_t *steps, unsigned nsteps);
+/* The argument checks of frs_sample (and frs_sample_cl): the steps, the
+ * window, what algorithm algo (named name in messages) needs of p; tau[k]
+ * gets the threshold of steps[k]. */
+int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
+    int algo, const char *name, const uint64_t *steps, unsigned nsteps,
+    int count_only, double *tau);
+/* The largest lim of any pixel for threshold tau, the brightest
+ * pixel's (the thresholds grow with I, roundings included): the values
+ * the sorted lists must hold. */
+uint64_t frs_lim_most(const struct frs_setup *s, double tau);
+
+/* The threshold of one pixel (or voxel) for one step. */
+struct frs_thr {
+	uint64_t lim;	/* values below lim may pass, values from lim never */
+	uint64_t tf;	/* floor(T) */
+	double frac;	/* T - floor(T) */
+	double t;	/* T */
+};
+void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule);
+/* Whether value v passes; id numbers the window element for its coin. */
+int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
+    uint64_t seed, uint64_t id);
+/* Radical inverse of i in the base; v, or the double below 1 if v is 1. */
+double frs_radical_inverse(uint64_t i, unsigned base);
+double frs_below_one(double v);
+
+/* The point of an element, in [0, 1)^2, with the setup's jitter. */
+void frs_point(const struct frs_setup *s, const struct frs_elem *e,
+    double *x, double *y);
+/* frs_point of n elements into xy (x, y pairs): the same values, one
+ * loop without calls when there is no jitter. */
+void frs_points(const struct frs_setup *s, const struct frs_elem *e,
+    size_t n, double *xy);
+
+/*
+ * Prepared matrices, the .frp format (see frd(5)), little-endian:
+ *   0   8  magic "\211FRP\r\n\032\n"
+ *   8   4  version 1
+ *   12  4  width, 16 4 height
+ *   20  4  flags: 1 minmap, 2 sorted lists
+ *   24  8  checksum of the matrix (frd_checksum)
+ *   32  4  number of sorted block sizes, 36 4 reserved (0)
+ *   40     the matrix values; then minmap levels 1, 2, ... while both
+ *          sides are at least 1; then per block size B: B, 0 (8 bytes),
+ *          the sorted values and their in-block indices, uint32 each.
+ */
+#define FRP_MAGIC "\211FRP\r\n\032\n"
+
+/* Write m with its minmap (if minmap) and the sorted lists of the given
+ * block sizes to fp (name in messages about writing); src names the
+ * matrix in messages about it (one that cannot be prepared). */
+int frp_write(FILE *fp, const char *name, const char *src,
+    const struct frs_matrix *m, int minmap, const uint32_t *blocks,
+    unsigned nblocks);
+/* Read a .frp: the matrix, the minmap when present, and the sorted lists
+ * of block size "block" when present (p->block = 0 if not).  The
+ * checksum must match the matrix read, and the file must hold all that
+ * its header announces (a regular file: by its length; a pipe: read to
+ * its end). */
+int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
+    uint32_t block);
+/* What frp_check_fp found in a valid .frp. */
+struct frp_summary {
+	uint32_t w, h;
+	uint64_t sum;
+	int minmap;
+	unsigned nblocks;
+	uint32_t blocks[32];	/* the block sizes of its sets, in order */
+};
+/* Read a whole .frp from fp, of which the first npre bytes (pre) were
+ * read already, and check all of it: the length, the checksum, the
+ * permutation, every minmap level and every set of sorted lists. */
+int frp_check_fp(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frp_summary *s);
+/* The size and checksum recorded in a .frp. */
+int frp_info(const char *path, uint32_t *w, uint32_t *h, uint64_t *sum);
+/* 1 if the file starts with the .frp magic, 0 if not, -1 if unreadable. */
+int frp_is(const char *path);
+
+#endif

@@ -1,0 +1,48 @@
+/*
+ * Hierarchical Sample Warping on an OpenCL device (cl/hsw.cl): the same
+ * points as hsw_warp_points (hsw.h), bit for bit and in the same order.
+ * The quadtree is built on the host (hsw_build) and uploaded once; each
+ * work-item warps one point by the CPU's operations in double.  A device
+ * without double precision (cl_khr_fp64) is refused with a message: its
+ * points could not equal the CPU's.
+ */
+#ifndef FRS_HSWCL_H
+#define FRS_HSWCL_H
+
+#include <stdint.h>
+
+#include "sample/hsw.h"
+#include "base/ocl.h"
+
+struct hswcl {
+	struct ocl *o;
+	const struct hsw_tree *t;
+	cl_program prog;
+	cl_kernel k;
+	cl_mem sum;		/* the tree's sums */
+	cl_mem pts;		/* points, warped in place, one chunk at a time */
+	uint64_t cap;		/* points pts holds */
+	uint64_t max_chunk;	/* most points per chunk */
+	size_t local;		/* work-group size */
+	/* Seconds spent, summed over the calls: building the program and
+	 * uploading the tree (hswcl_init), writing points, running the
+	 * kernel, reading points back. */
+	double t_setup, t_write, t_kernel, t_read;
+};
+
+/* Build the kernel on o's device and upload tree t, which must outlive
+ * h.  -1 with a message (no fp64, a tree too large for the device, an
+ * OpenCL error). */
+int hswcl_init(struct hswcl *h, struct ocl *o, const struct hsw_tree *t);
+void hswcl_free(struct hswcl *h);
+
+/* Warp n points (pairs x, y) from in to out (may be the same array): the
+ * contract of hsw_warp_points, on the device. */
+int hswcl_warp_points(struct hswcl *h, const double *in, double *out,
+    uint64_t n);
+
+/* hswcl_init, hswcl_warp_points, hswcl_free in one. */
+int hswcl_warp(struct ocl *o, const struct hsw_tree *t, const double *in,
+    double *out, uint64_t n);
+
+#endif

@@ -1,0 +1,59 @@
+#!/bin/sh
+# The library's layout (README, Layout): a folder of src/lib includes
+# headers only from itself and the folders before it, base, maps,
+# formats, frd, sample and analysis (side by side: neither includes the
+# other), api; only api includes the public frs.h; nothing in src/lib
+# includes the programs' src/cli; every include names its folder; and no
+# two headers include each other, directly or through others.
+. "$(dirname "$0")/lib.sh"
+TOP=$(cd "$(dirname "$0")/.." && pwd)
+
+rank() {
+	case $1 in
+	base) echo 0 ;; maps) echo 1 ;; formats) echo 2 ;; frd) echo 3 ;;
+	sample | analysis) echo 4 ;; api) echo 5 ;; *) echo 99 ;;
+	esac
+}
+
+# "FILE TARGET" for every quoted include of src/lib.
+(cd "$TOP" && grep -o '#include "[^"]*"' src/lib/*/*.[ch] src/lib/*/*.cc) |
+    sed 's/:#include "\(.*\)"$/ \1/' >"$T/inc"
+[ -s "$T/inc" ] && ok "the library's includes are listed" ||
+    nok "the library's includes are listed"
+
+: >"$T/bad"
+while read -r file target; do
+	from=${file#src/lib/}
+	from=${from%%/*}
+	case $target in
+	frs.h) [ "$from" = api ] || echo "$file: frs.h outside api" ;;
+	cli/*) echo "$file: includes the programs' $target" ;;
+	paths.h | ../../../cl/*.cl) ;;	# generated; the kernels' source
+	*/*)
+		to=${target%%/*}
+		[ -f "$TOP/src/lib/$target" ] ||
+		    echo "$file: $target is not in src/lib"
+		if [ "$to" != "$from" ] &&
+		    [ "$(rank "$to")" -ge "$(rank "$from")" ]; then
+			echo "$file: $from includes $target"
+		fi ;;
+	*) echo "$file: \"$target\" names no folder" ;;
+	esac
+done <"$T/inc" >"$T/bad"
+[ ! -s "$T/bad" ] && ok "every include goes to the folder's own or an earlier stage" || {
+	nok "every include goes to the folder's own or an earlier stage"
+	sed 's/^/# /' "$T/bad"
+}
+
+# Cycles among the headers: follow each header's includes (tsort says
+# when the graph has one).
+grep '\.h ' "$T/inc" | while read -r file target; do
+	case $target in */*) echo "${file#src/lib/} $target" ;; esac
+done >"$T/edges"
+if tsort "$T/edges" >/dev/null 2>"$T/cycle"; then
+	ok "no include cycle among the headers"
+else
+	nok "no include cycle among the headers"
+	sed 's/^/# /' "$T/cycle" | head -n 10
+fi
+
