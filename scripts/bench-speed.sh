@@ -94,8 +94,12 @@ for p in setup thresholding output; do
 		row "$p, -j $j" "$o" "$b" "$tgt"
 		[ $j = 1 ] && o1=$o
 	done
-	[ $p = thresholding ] && printf '%-40s %10s  (target 1.5)\n' \
-	    "thresholding -j 1 / -j 2 (ours)" "$(ratio "$o1" "$o")"
+	if [ $p = thresholding ]; then
+		r=$(ratio "$o1" "$o")
+		printf '%-40s %10s  target 1.5: %s\n' \
+		    "thresholding -j 1 / -j 2 (ours)" "$r" \
+		    "$(awk -v r="$r" 'BEGIN { print (r >= 1.5) ? "met" : "missed" }')"
+	fi
 done
 for e in 10 16; do
 	o=$(phase "$OURS" setup $((1 << e)) 1)
