@@ -74,7 +74,6 @@ FRS_FN FRS_U32 frd_extent(double rr, FRS_U32 cap)
 #define FRD_ROWS 8	/* rows per tile */
 #endif
 
-
 /*
  * One work-group per tile of the window, one work-item per tile row
  * (FRD_ROWS rows of 2^lg.x cells).
