@@ -1,6 +1,8 @@
 /*
  * Forced Random Dithering on the device (src/lib/frd/frdgencl.c): the force
- * update of one insertion and the minimum of every tile it touched.
+ * update of one insertion and the minimum of every tile it touched.  The
+ * toroidal offsets and reaches are one definition with the CPU
+ * (src/lib/frd/frdgen.c includes this file; the kernel is OpenCL's only).
  *
  * The field is stored tile by tile as in src/lib/frd/frdgen.c (tiles of
  * 2^LX x 2^LY x 2^LZ cells, row-major inside a tile, padding cells +inf).
@@ -15,31 +17,28 @@
  * row (largest e with e^2 <= r^2 - dy^2 - dz^2, capped at w/2), and the
  * x offset taken from the tile's first cell when the window is "fast".
  */
+#ifdef __OPENCL_VERSION__
 #pragma OPENCL EXTENSION cl_khr_fp64 : enable
 #pragma OPENCL FP_CONTRACT OFF
-
-#ifndef FRD_TS
-#define FRD_TS 128	/* cells per tile */
-#endif
-#ifndef FRD_ROWS
-#define FRD_ROWS 8	/* rows per tile */
+#else
+#include <math.h>
 #endif
 
 /* Toroidal offset a - c in (-n/2, n/2]. */
-long frd_toff(uint a, uint c, uint n)
+FRS_FN FRS_I64 frd_toff(FRS_U32 a, FRS_U32 c, FRS_U32 n)
 {
-	long d = (long)a - (long)c;
-	if (d > (long)(n / 2))
-		d -= (long)n;
-	else if (d <= -(long)((n + 1) / 2))
-		d += (long)n;
+	FRS_I64 d = (FRS_I64)a - (FRS_I64)c;
+	if (d > (FRS_I64)(n / 2))
+		d -= (FRS_I64)n;
+	else if (d <= -(FRS_I64)((n + 1) / 2))
+		d += (FRS_I64)n;
 	return d;
 }
 
 /* Toroidal distance from c to the nearest of the cells [a, b]. */
-ulong frd_tgap(uint c, uint a, uint b, uint n)
+FRS_FN FRS_U32 frd_tgap(FRS_U32 c, FRS_U32 a, FRS_U32 b, FRS_U32 n)
 {
-	long da, db;
+	FRS_I64 da, db;
 
 	if (c >= a && c <= b)
 		return 0;
@@ -47,25 +46,33 @@ ulong frd_tgap(uint c, uint a, uint b, uint n)
 	db = frd_toff(b, c, n);
 	da = da < 0 ? -da : da;
 	db = db < 0 ? -db : db;
-	return (ulong)(da < db ? da : db);
+	return (FRS_U32)(da < db ? da : db);
 }
 
 /* Largest e with e^2 <= rr, capped at cap (exact whatever sqrt gives). */
-long frd_extent(double rr, uint cap)
+FRS_FN FRS_U32 frd_extent(double rr, FRS_U32 cap)
 {
 	double e;
 
 	if (rr < 0.0)
 		return 0;
 	if (rr >= (double)cap * (double)cap)
-		return (long)cap;
+		return cap;
 	e = floor(sqrt(rr));
 	while ((e + 1.0) * (e + 1.0) <= rr)
 		e += 1.0;
 	while (e * e > rr)
 		e -= 1.0;
-	return (long)e;
+	return (FRS_U32)e;
 }
+
+#ifdef __OPENCL_VERSION__
+#ifndef FRD_TS
+#define FRD_TS 128	/* cells per tile */
+#endif
+#ifndef FRD_ROWS
+#define FRD_ROWS 8	/* rows per tile */
+#endif
 
 /*
  * One work-group per tile of the window, one work-item per tile row
@@ -115,7 +122,7 @@ __kernel void frd_add(__global double *field, __global const double *table,
 		    adz <= (long)eyz.y) {
 			double rr = r2 - (double)(dy * dy) - (double)(dz * dz);
 			if (!(rr < 0.0))
-				e = frd_extent(rr, hf.x);
+				e = (long)frd_extent(rr, hf.x);
 			trow = table + ((size_t)adz * (hf.y + 1) + (size_t)ady) *
 			    (hf.x + 1);
 		}
@@ -162,3 +169,4 @@ __kernel void frd_add(__global double *field, __global const double *table,
 		out[2 * (size_t)g + 1] = (double)zc;
 	}
 }
+#endif

@@ -5,33 +5,15 @@
  *
  * The host (src/lib/sample/frscl.c) does the setup and turns each pixel's
  * thresholds into integers, so no floating point happens here and every
- * device agrees with src/lib/sample/frs.c bit for bit.  Per active pixel p the
- * record thr[p * (2 + 2 nsteps)] holds
- *   [0] px | py << 32     the pixel
- *   [1] lim               values from lim never pass (last step)
- *   [2 + 2k] tf_k         values below tf_k pass at step k
- *   [3 + 2k] c_k          v == tf_k passes when the 53-bit coin < c_k
- *                         (c_k = ceil(frac_k 2^53); 0: never)
- * par: [0] sw [1] ns [2] wx [3] wy [4] mw [5] mh [6] seed [7] nsteps
- *      [8] number of active pixels [9] start level / sorted block size
- *      [10] 1: shuffled tiles (cl/tile.cl), 0: plain.
+ * device agrees with src/lib/sample/frs.c bit for bit.  The records of
+ * the active pixels and the words of the setup (the first argument) are
+ * laid out as cl/defs.cl says.
  *
  * Every per-pixel kernel runs twice: with write = 0 it stores the number
  * of elements of each pixel in cnt; with write = 1 it writes them as
  * (x, y, step) uint triples from out[3 off[p]], in the order in which
  * src/lib/sample/frs.c emits them.  All window coordinates are 64-bit.
  */
-#define PAR_SW 0
-#define PAR_NS 1
-#define PAR_WX 2
-#define PAR_WY 3
-#define PAR_MW 4
-#define PAR_MH 5
-#define PAR_SEED 6
-#define PAR_NSTEPS 7
-#define PAR_NACT 8
-#define PAR_L 9
-#define PAR_TILES 10
 
 /* src/lib/sample/frs.c tile_at(): the transform of the last tile met. */
 struct tcache {
@@ -42,11 +24,12 @@ struct tcache {
 
 /* The tile of window element (x, y), the element's place in it in
  * (*lx, *ly). */
-static void tile_at(__global const ulong *par, struct tcache *c, ulong x,
+static void tile_at(__global const ulong *setup, struct tcache *c, ulong x,
     ulong y, ulong *lx, ulong *ly)
 {
-	ulong mw = par[PAR_MW], mh = par[PAR_MH];
-	ulong X = par[PAR_WX] + x, Y = par[PAR_WY] + y, tx = X / mw, ty = Y / mh;
+	ulong mw = setup[FRSCL_MW], mh = setup[FRSCL_MH];
+	ulong X = setup[FRSCL_WX] + x, Y = setup[FRSCL_WY] + y;
+	ulong tx = X / mw, ty = Y / mh;
 
 	*lx = X - tx * mw;
 	*ly = Y - ty * mh;
@@ -55,8 +38,9 @@ static void tile_at(__global const ulong *par, struct tcache *c, ulong x,
 		m[0] = mw;
 		m[1] = mh;
 		m[2] = 1;
-		if (par[PAR_TILES])
-			frs_tile_make(&c->t, par[PAR_SEED], 2, m, tx, ty, 0);
+		if (setup[FRSCL_TILES])
+			frs_tile_make(&c->t, setup[FRSCL_SEED], 2, m, tx,
+			    ty, 0);
 		else
 			frs_tile_plain(&c->t);
 		c->tx = tx;
@@ -66,18 +50,18 @@ static void tile_at(__global const ulong *par, struct tcache *c, ulong x,
 }
 
 /* src/lib/sample/frs.c block_index(). */
-static ulong block_index(__global const ulong *par, const struct frs_tile *t,
+static ulong block_index(__global const ulong *setup, const struct frs_tile *t,
     uint l, ulong lx, ulong ly)
 {
 	ulong m[3], u[2], v[2];
 
-	m[0] = par[PAR_MW];
-	m[1] = par[PAR_MH];
+	m[0] = setup[FRSCL_MW];
+	m[1] = setup[FRSCL_MH];
 	m[2] = 1;
 	u[0] = lx >> l;
 	u[1] = ly >> l;
 	frs_tile_block(t, 2, m, l, u, v);
-	return v[1] * (par[PAR_MW] >> l) + v[0];
+	return v[1] * (setup[FRSCL_MW] >> l) + v[0];
 }
 
 /* src/lib/sample/frs.c inblock(). */
@@ -112,7 +96,7 @@ static ulong wrapn(ulong v, ulong n)
 /* src/lib/sample/frs.c passes() with integer thresholds. */
 static int passes_k(const struct pix *p, uint k, ulong v, ulong x, ulong y)
 {
-	ulong tf = p->th[2 + 2 * k], c = p->th[3 + 2 * k];
+	ulong tf = p->th[FRSCL_REC_TF(k)], c = p->th[FRSCL_REC_COIN(k)];
 
 	if (v < tf)
 		return 1;
@@ -143,27 +127,34 @@ static void emit(struct pix *p, ulong x, ulong y, uint v)
 	put(p, x, y, k);
 }
 
-static void pix_init(struct pix *p, __global const ulong *par,
+/* The record of active pixel i; its first window element in (*x0, *y0). */
+static __global const ulong *record(__global const ulong *setup,
+    __global const ulong *thr, ulong i, ulong *x0, ulong *y0)
+{
+	__global const ulong *th = thr + i * FRSCL_RECORD(setup[FRSCL_NSTEPS]);
+	ulong px = th[FRSCL_REC_PIXEL];
+
+	*x0 = (px & 0xffffffffUL) * setup[FRSCL_NS];
+	*y0 = (px >> 32) * setup[FRSCL_NS];
+	return th;
+}
+
+static void pix_init(struct pix *p, __global const ulong *setup,
     __global const ulong *thr, ulong i, __global const ulong *off,
     __global uint *out, int write)
 {
-	ulong rec = 2 + 2 * par[PAR_NSTEPS], pp;
-
-	p->th = thr + i * rec;
-	p->seed = par[PAR_SEED];
-	p->sw = par[PAR_SW];
-	p->nsteps = (uint)par[PAR_NSTEPS];
-	p->lim = p->th[1];
-	pp = p->th[0];
-	p->x0 = (pp & 0xffffffffUL) * par[PAR_NS];
-	p->y0 = (pp >> 32) * par[PAR_NS];
+	p->th = record(setup, thr, i, &p->x0, &p->y0);
+	p->seed = setup[FRSCL_SEED];
+	p->sw = setup[FRSCL_SW];
+	p->nsteps = (uint)setup[FRSCL_NSTEPS];
+	p->lim = p->th[FRSCL_REC_LIM];
 	p->count = 0;
 	p->write = write;
 	p->out = write ? out + 3 * off[i] : out;
 }
 
 /* Listing 5.2. */
-__kernel void frs_naive(__global const ulong *par, __global const ulong *thr,
+__kernel void frs_naive(__global const ulong *setup, __global const ulong *thr,
     __global const uint *mat, __global ulong *cnt, __global const ulong *off,
     __global uint *out, int write)
 {
@@ -171,23 +162,23 @@ __kernel void frs_naive(__global const ulong *par, __global const ulong *thr,
 	ulong ns, mw, mh, wx, wy;
 	struct pix p;
 
-	if (i >= par[PAR_NACT])
+	if (i >= setup[FRSCL_NACT])
 		return;
-	pix_init(&p, par, thr, i, off, out, write);
-	ns = par[PAR_NS];
-	mw = par[PAR_MW];
-	mh = par[PAR_MH];
-	wx = par[PAR_WX];
-	wy = par[PAR_WY];
-	if (par[PAR_TILES]) {
+	pix_init(&p, setup, thr, i, off, out, write);
+	ns = setup[FRSCL_NS];
+	mw = setup[FRSCL_MW];
+	mh = setup[FRSCL_MH];
+	wx = setup[FRSCL_WX];
+	wy = setup[FRSCL_WY];
+	if (setup[FRSCL_TILES]) {
 		struct tcache tc;
 		tc.valid = 0;
 		for (ulong y = p.y0; y < p.y0 + ns; y++)
 			for (ulong x = p.x0; x < p.x0 + ns; x++) {
 				ulong lx, ly;
 				uint v;
-				tile_at(par, &tc, x, y, &lx, &ly);
-				v = mat[block_index(par, &tc.t, 0, lx, ly)];
+				tile_at(setup, &tc, x, y, &lx, &ly);
+				v = mat[block_index(setup, &tc.t, 0, lx, ly)];
 				if (v < p.lim)
 					emit(&p, x, y, v);
 			}
@@ -211,13 +202,13 @@ __kernel void frs_naive(__global const ulong *par, __global const ulong *thr,
 
 /* The minmap value of the level-l block whose first element is (x, y);
  * lev holds every level, level l from lev[loff[l]]. */
-static uint minmap_at(__global const ulong *par, __global const uint *lev,
+static uint minmap_at(__global const ulong *setup, __global const uint *lev,
     __global const ulong *loff, struct tcache *tc, uint l, ulong x, ulong y)
 {
 	ulong lx, ly;
 
-	tile_at(par, tc, x, y, &lx, &ly);
-	return lev[loff[l] + block_index(par, &tc->t, l, lx, ly)];
+	tile_at(setup, tc, x, y, &lx, &ly);
+	return lev[loff[l] + block_index(setup, &tc->t, l, lx, ly)];
 }
 
 struct blk {
@@ -227,8 +218,8 @@ struct blk {
 
 /* Listing 5.4 (Stack) and 5.5 (Level N) in one: the same depth-first
  * visit of the quadrants in the order (0,0), (1,0), (0,1), (1,1) from
- * start blocks of level par[PAR_L] in row order. */
-__kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
+ * start blocks of level setup[FRSCL_START] in row order. */
+__kernel void frs_minmap(__global const ulong *setup, __global const ulong *thr,
     __global const uint *lev, __global const ulong *loff,
     __global ulong *cnt, __global const ulong *off, __global uint *out,
     int write)
@@ -240,13 +231,13 @@ __kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
 	struct blk st[3 * 32 + 4];
 	struct tcache tc;
 
-	if (i >= par[PAR_NACT])
+	if (i >= setup[FRSCL_NACT])
 		return;
 	tc.valid = 0;
-	pix_init(&p, par, thr, i, off, out, write);
-	L = (uint)par[PAR_L];
+	pix_init(&p, setup, thr, i, off, out, write);
+	L = (uint)setup[FRSCL_START];
 	b = (ulong)1 << L;
-	nb = par[PAR_NS] / b;
+	nb = setup[FRSCL_NS] / b;
 	for (ulong by = 0; by < nb; by++)
 		for (ulong bx = 0; bx < nb; bx++) {
 			int top = 0;
@@ -256,7 +247,8 @@ __kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
 			while (top > 0) {
 				struct blk e = st[--top];
 				ulong x = p.x0 + e.x, y = p.y0 + e.y;
-				uint v = minmap_at(par, lev, loff, &tc, e.l, x, y);
+				uint v = minmap_at(setup, lev, loff, &tc,
+				    e.l, x, y);
 				uint h;
 				if (v >= p.lim)
 					continue;
@@ -279,12 +271,12 @@ __kernel void frs_minmap(__global const ulong *par, __global const ulong *thr,
 		cnt[i] = p.count;
 }
 
-/* Listing 5.11: the sorted values of each block of b x b (par[PAR_L]),
- * as take_block / pix_sorted of src/lib/sample/frs.c. */
-__kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
+/* Listing 5.11: the sorted values of each block of b x b
+ * (setup[FRSCL_START]), as take_block / pix_sorted of src/lib/sample/frs.c. */
+__kernel void frs_sorted(__global const ulong *setup, __global const ulong *thr,
     __global const uint *sval, __global const uint *sidx,
-    __global const uint *soff, __global ulong *cnt, __global const ulong *off, __global uint *out,
-    int write)
+    __global const uint *soff, __global ulong *cnt, __global const ulong *off,
+    __global uint *out, int write)
 {
 	ulong i = get_global_id(0);
 	ulong b, nb;
@@ -292,20 +284,21 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 	struct pix p;
 	struct tcache tc;
 
-	if (i >= par[PAR_NACT])
+	if (i >= setup[FRSCL_NACT])
 		return;
 	tc.valid = 0;
-	pix_init(&p, par, thr, i, off, out, write);
-	b = par[PAR_L];
-	nb = par[PAR_NS] / b;
+	pix_init(&p, setup, thr, i, off, out, write);
+	b = setup[FRSCL_START];
+	nb = setup[FRSCL_NS] / b;
 	while (((ulong)1 << lb) < b)
 		lb++;
 	for (ulong by = 0; by < nb; by++)
 		for (ulong bx = 0; bx < nb; bx++) {
-			ulong x = p.x0 + bx * b, y = p.y0 + by * b, lx, ly, blk, ex, ey;
+			ulong x = p.x0 + bx * b, y = p.y0 + by * b;
+			ulong lx, ly, blk, ex, ey;
 			__global const uint *val, *idx;
-			tile_at(par, &tc, x, y, &lx, &ly);
-			blk = block_index(par, &tc.t, lb, lx, ly);
+			tile_at(setup, &tc, x, y, &lx, &ly);
+			blk = block_index(setup, &tc.t, lb, lx, ly);
 			val = sval + soff[blk];
 			idx = sidx + soff[blk];
 			if (p.nsteps == 1) {
@@ -319,8 +312,10 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 				}
 				k = lo;
 				if (k > 0) {
-					inblock(&tc.t, b, lb, idx[k - 1], x, y, &ex, &ey);
-					if (!passes_k(&p, 0, val[k - 1], ex, ey))
+					inblock(&tc.t, b, lb, idx[k - 1], x, y,
+					    &ex, &ey);
+					if (!passes_k(&p, 0, val[k - 1], ex,
+					    ey))
 						k--;
 				}
 				if (!p.write) {
@@ -328,7 +323,8 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 					continue;
 				}
 				for (ulong j = 0; j < k; j++) {
-					inblock(&tc.t, b, lb, idx[j], x, y, &ex, &ey);
+					inblock(&tc.t, b, lb, idx[j], x, y, &ex,
+					    &ey);
 					put(&p, ex, ey, 0);
 				}
 				continue;
@@ -346,7 +342,7 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
 /*
  * Flat 1 (thesis Sec. 5.4).  Candidates are uint triples (active pixel,
  * x, y inside the pixel).  frs_flat_init makes the start blocks (level
- * par[PAR_L]) whose minimum is below the pixel's limit, per pixel;
+ * setup[FRSCL_START]) whose minimum is below the pixel's limit, per pixel;
  * frs_flat_refine, launched once per level l >= 1, keeps the children
  * (level l - 1) of each candidate whose minimum passes; frs_flat_final
  * tests the elements of level 0 and writes the samples.  Each runs with
@@ -354,33 +350,29 @@ __kernel void frs_sorted(__global const ulong *par, __global const ulong *thr,
  * offsets the host made from the counts: every list is sized exactly.
  * The order is that of Stack from the same start level.
  */
-__kernel void frs_flat_init(__global const ulong *par,
+__kernel void frs_flat_init(__global const ulong *setup,
     __global const ulong *thr, __global const uint *lev,
     __global const ulong *loff, __global ulong *cnt,
     __global const ulong *off, __global uint *cand, int write)
 {
 	ulong i = get_global_id(0);
-	ulong rec, b, nb, x0, y0, lim, ns, n = 0;
+	ulong b, nb, x0, y0, lim, n = 0;
 	uint L;
 	__global uint *o;
 	struct tcache tc;
 
-	if (i >= par[PAR_NACT])
+	if (i >= setup[FRSCL_NACT])
 		return;
 	tc.valid = 0;
-	rec = 2 + 2 * par[PAR_NSTEPS];
-	ns = par[PAR_NS];
-	x0 = (thr[i * rec] & 0xffffffffUL) * ns;
-	y0 = (thr[i * rec] >> 32) * ns;
-	lim = thr[i * rec + 1];
-	L = (uint)par[PAR_L];
+	lim = record(setup, thr, i, &x0, &y0)[FRSCL_REC_LIM];
+	L = (uint)setup[FRSCL_START];
 	b = (ulong)1 << L;
-	nb = ns / b;
+	nb = setup[FRSCL_NS] / b;
 	o = write ? cand + 3 * off[i] : cand;
 	for (ulong by = 0; by < nb; by++)
 		for (ulong bx = 0; bx < nb; bx++)
-			if (minmap_at(par, lev, loff, &tc, L, x0 + bx * b, y0 + by * b) <
-			    lim) {
+			if (minmap_at(setup, lev, loff, &tc, L, x0 + bx * b,
+			    y0 + by * b) < lim) {
 				if (write) {
 					o[3 * n] = (uint)i;
 					o[3 * n + 1] = (uint)(bx * b);
@@ -392,14 +384,14 @@ __kernel void frs_flat_init(__global const ulong *par,
 		cnt[i] = n;
 }
 
-__kernel void frs_flat_refine(__global const ulong *par,
+__kernel void frs_flat_refine(__global const ulong *setup,
     __global const ulong *thr, __global const uint *lev,
     __global const ulong *loff, __global const uint *cin, ulong ncand,
     uint l, __global uint *cnt, __global const ulong *off,
     __global uint *cout, int write)
 {
 	ulong i = get_global_id(0);
-	ulong rec, x0, y0, lim, ns;
+	ulong x0, y0, lim;
 	uint pi, cx, cy, h, n = 0;
 	__global uint *o;
 	struct tcache tc;
@@ -410,16 +402,13 @@ __kernel void frs_flat_refine(__global const ulong *par,
 	pi = cin[3 * i];
 	cx = cin[3 * i + 1];
 	cy = cin[3 * i + 2];
-	rec = 2 + 2 * par[PAR_NSTEPS];
-	ns = par[PAR_NS];
-	x0 = (thr[pi * rec] & 0xffffffffUL) * ns;
-	y0 = (thr[pi * rec] >> 32) * ns;
-	lim = thr[pi * rec + 1];
+	lim = record(setup, thr, pi, &x0, &y0)[FRSCL_REC_LIM];
 	h = 1u << (l - 1);
 	o = write ? cout + 3 * off[i] : cout;
 	for (uint q = 0; q < 4; q++) {
 		uint x = cx + (q & 1) * h, y = cy + (q >> 1) * h;
-		if (minmap_at(par, lev, loff, &tc, l - 1, x0 + x, y0 + y) < lim) {
+		if (minmap_at(setup, lev, loff, &tc, l - 1, x0 + x, y0 + y) <
+		    lim) {
 			if (write) {
 				o[3 * n] = pi;
 				o[3 * n + 1] = x;
@@ -432,7 +421,7 @@ __kernel void frs_flat_refine(__global const ulong *par,
 		cnt[i] = n;
 }
 
-__kernel void frs_flat_final(__global const ulong *par,
+__kernel void frs_flat_final(__global const ulong *setup,
     __global const ulong *thr, __global const uint *mat,
     __global const uint *cin, ulong ncand, __global uint *cnt,
     __global const ulong *off, __global uint *out, int write)
@@ -447,13 +436,13 @@ __kernel void frs_flat_final(__global const ulong *par,
 		return;
 	tc.valid = 0;
 	pi = cin[3 * i];
-	pix_init(&p, par, thr, pi, off, out, 0);
+	pix_init(&p, setup, thr, pi, off, out, 0);
 	x = p.x0 + cin[3 * i + 1];
 	y = p.y0 + cin[3 * i + 2];
 	p.write = write;
 	p.out = write ? out + 3 * off[i] : out;
-	tile_at(par, &tc, x, y, &lx, &ly);
-	emit(&p, x, y, mat[block_index(par, &tc.t, 0, lx, ly)]);
+	tile_at(setup, &tc, x, y, &lx, &ly);
+	emit(&p, x, y, mat[block_index(setup, &tc.t, 0, lx, ly)]);
 	if (!write)
 		cnt[i] = (uint)p.count;
 }

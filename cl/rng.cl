@@ -1,9 +1,9 @@
 /*
  * Philox4x32-10 (Salmon et al. 2011), as src/lib/base/rng.c: the key is the
  * 64-bit seed, the counter (index low, index high, stream, sub).  Every
- * kernel source is built after this one.
+ * kernel source is built after this one (and after cl/defs.cl, which
+ * holds the streams).
  */
-#define FRS_STREAM_COIN 5u
 
 uint4 frs_philox(uint4 c, uint2 k)
 {

@@ -235,10 +235,11 @@ int ocl_program(struct ocl *o, const char *name, const char *options,
 int ocl_build(struct ocl *o, const char *name, const char *text,
     const char *options, cl_program *prog)
 {
-	const char *src[3] = { ocl_source("rng"), ocl_source("tile"), text };
+	const char *src[4] = { ocl_source("defs"), ocl_source("rng"),
+	    ocl_source("tile"), text };
 	cl_int err;
 
-	*prog = clCreateProgramWithSource(o->ctx, 3, src, NULL, &err);
+	*prog = clCreateProgramWithSource(o->ctx, 4, src, NULL, &err);
 	if (err != CL_SUCCESS)
 		return ocl_fail(err, name);
 	err = clBuildProgram(*prog, 1, &o->device, options ? options : "",

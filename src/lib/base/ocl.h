@@ -53,8 +53,8 @@ void ocl_close(struct ocl *o);
  * whose message holds the build log. */
 int ocl_program(struct ocl *o, const char *name, const char *options,
     cl_program *prog);
-/* The same from source text (after cl/rng.cl and cl/tile.cl); name for
- * messages. */
+/* The same from source text (after cl/defs.cl, cl/rng.cl and
+ * cl/tile.cl); name for messages. */
 int ocl_build(struct ocl *o, const char *name, const char *text,
     const char *options, cl_program *prog);
 /* A kernel of a built program. */

@@ -8,27 +8,16 @@
  * order or device; OpenCL kernels use the same function.
  *
  * Streams separate independent uses of one seed; each consumer owns one
- * of the FRS_STREAM_* values below and derives the index from what it
- * randomises (an insertion step, a window element, a point number).
+ * of the FRS_STREAM_* values (cl/defs.cl, which the kernels share) and
+ * derives the index from what it randomises (an insertion step, a window
+ * element, a point number).
  */
 #ifndef FRS_RNG_H
 #define FRS_RNG_H
 
 #include <stdint.h>
 
-enum {
-	FRS_STREAM_TEST = 0,
-	FRS_STREAM_FRD_COIN = 1,	/* frd-gen candidate selection */
-	FRS_STREAM_FRD_TIE = 2,		/* frd-gen tie breaking */
-	FRS_STREAM_WINDOW = 3,		/* frs window offset */
-	FRS_STREAM_JITTER = 4,		/* frs jitter, per window element */
-	FRS_STREAM_COIN = 5,		/* frs fractional threshold coin */
-	FRS_STREAM_REF = 6,		/* reference samplers */
-	FRS_STREAM_HSW = 7,		/* hierarchical sample warping */
-	FRS_STREAM_SHAPES = 8,		/* discrepancy random shapes */
-	FRS_STREAM_SET = 9,		/* per-set seeds of repeated runs */
-	FRS_STREAM_FRD_DRAW = 10	/* frd-gen cells drawn for large ties */
-};
+#include "../../../cl/defs.cl"
 
 /* One Philox4x32-10 block. */
 void frs_philox4x32_10(const uint32_t ctr[4], const uint32_t key[2],

@@ -14,6 +14,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* frd_toff, frd_tgap and frd_extent: one definition with the kernel. */
+#include "../../../cl/frdgen.cl"
+
 #define MAXLEV 40
 #define DEFAULT_TOL 1e-2
 #define DEFAULT_REACH 3.0
@@ -611,48 +614,6 @@ void frdgen_window(const struct frdgen_params *pr,
 	wd->ez = umin(wd->e, z->hd);
 }
 
-/* Largest e with e^2 <= rr, capped at cap. */
-static uint32_t extent(double rr, uint32_t cap)
-{
-	double e;
-
-	if (rr < 0.0)
-		return 0;
-	if (rr >= (double)cap * cap)
-		return cap;
-	e = floor(sqrt(rr));
-	while ((e + 1) * (e + 1) <= rr)
-		e += 1;
-	while (e * e > rr)
-		e -= 1;
-	return (uint32_t)e;
-}
-
-/* Toroidal offset a - c in (-n/2, n/2]. */
-static int64_t toff(uint32_t a, uint32_t c, uint32_t n)
-{
-	int64_t d = (int64_t)a - (int64_t)c;
-	if (d > (int64_t)(n / 2))
-		d -= n;
-	else if (d <= -(int64_t)((n + 1) / 2))
-		d += n;
-	return d;
-}
-
-/* Toroidal distance from c to the nearest of the cells [a, b]. */
-static uint32_t tgap(uint32_t c, uint32_t a, uint32_t b, uint32_t n)
-{
-	int64_t da, db;
-
-	if (c >= a && c <= b)
-		return 0;
-	da = toff(a, c, n);
-	db = toff(b, c, n);
-	da = da < 0 ? -da : da;
-	db = db < 0 ? -db : db;
-	return (uint32_t)(da < db ? da : db);
-}
-
 /* The x reach of every row (dy, dz) of the window, once per insertion. */
 static void window_extents(struct gen *g, struct frdgen_win *wd)
 {
@@ -662,7 +623,7 @@ static void window_extents(struct gen *g, struct frdgen_win *wd)
 		for (int64_t dy = -(int64_t)wd->ey; dy <= (int64_t)wd->ey; dy++) {
 			double rr = wd->r2 - (double)(dy * dy) - (double)(dz * dz);
 			g->ext[(size_t)(dz + wd->ez) * ny + (size_t)(dy + wd->ey)] =
-			    rr < 0.0 ? -1 : (int32_t)extent(rr, g->sz.hw);
+			    rr < 0.0 ? -1 : (int32_t)frd_extent(rr, g->sz.hw);
 		}
 }
 
@@ -685,7 +646,7 @@ static void add_tile_row(struct gen *g, const struct frdgen_win *wd,
 	    (size_t)(dy < 0 ? -dy : dy)) * (g->sz.hw + 1);
 	if (!wd->fast) {
 		for (uint32_t x = x0; x <= x1; x++) {
-			int64_t dx = toff(x, g->cx, g->sz.w);
+			int64_t dx = frd_toff(x, g->cx, g->sz.w);
 			if ((dx < 0 ? -dx : dx) <= e)
 				row[x - x0] += frdgen_add(t[dx < 0 ? -dx : dx],
 				    wd->sub);
@@ -696,7 +657,7 @@ static void add_tile_row(struct gen *g, const struct frdgen_win *wd,
 	 * seam of the torus inside the tile would break the run, but 2e + 1
 	 * is two tiles shorter than the row, so cells past a seam are out of
 	 * reach and fall outside [klo, khi]. */
-	dx0 = toff(x0, g->cx, g->sz.w);
+	dx0 = frd_toff(x0, g->cx, g->sz.w);
 	klo = -e - dx0 > 0 ? -e - dx0 : 0;
 	khi = e - dx0 < (int64_t)(x1 - x0) ? e - dx0 : (int64_t)(x1 - x0);
 	kmid = -dx0 < klo ? klo : -dx0 > khi + 1 ? khi + 1 : -dx0;
@@ -713,9 +674,9 @@ static int add_tile(struct gen *g, const struct frdgen_win *wd, uint32_t t)
 	uint32_t x0 = tx * g->tx, x1 = umin(x0 + g->tx, g->sz.w) - 1;
 	uint32_t y0 = ty * g->ty, y1 = umin(y0 + g->ty, g->sz.h) - 1;
 	uint32_t z0 = tz * g->tz, z1 = umin(z0 + g->tz, g->sz.d) - 1;
-	uint32_t gx = tgap(g->cx, x0, x1, g->sz.w);
-	uint32_t gy = tgap(g->cy, y0, y1, g->sz.h);
-	uint32_t gz = tgap(g->cz, z0, z1, g->sz.d);
+	uint32_t gx = frd_tgap(g->cx, x0, x1, g->sz.w);
+	uint32_t gy = frd_tgap(g->cy, y0, y1, g->sz.h);
+	uint32_t gz = frd_tgap(g->cz, z0, z1, g->sz.d);
 	double *blk = g->field + (size_t)t * g->ts, old = g->lev[0].min[t];
 	unsigned a = g->lev[0].arg[t];
 	int64_t ax, ay, az;
@@ -725,13 +686,13 @@ static int add_tile(struct gen *g, const struct frdgen_win *wd, uint32_t t)
 	for (uint32_t z = z0; z <= z1; z++)
 		for (uint32_t y = y0; y <= y1; y++)
 			add_tile_row(g, wd, blk + (((z - z0) << g->ly | (y - y0)) <<
-			    g->lx), x0, x1, toff(y, g->cy, g->sz.h),
-			    toff(z, g->cz, g->sz.d));
+			    g->lx), x0, x1, frd_toff(y, g->cy, g->sz.h),
+			    frd_toff(z, g->cz, g->sz.d));
 	/* Forces only grow: if the cell holding the minimum got nothing
 	 * (and is not the one just taken), the minimum stays. */
-	ax = toff(x0 + (a & (g->tx - 1)), g->cx, g->sz.w);
-	ay = toff(y0 + (a >> g->lx & (g->ty - 1)), g->cy, g->sz.h);
-	az = toff(z0 + (a >> (g->lx + g->ly)), g->cz, g->sz.d);
+	ax = frd_toff(x0 + (a & (g->tx - 1)), g->cx, g->sz.w);
+	ay = frd_toff(y0 + (a >> g->lx & (g->ty - 1)), g->cy, g->sz.h);
+	az = frd_toff(z0 + (a >> (g->lx + g->ly)), g->cz, g->sz.d);
 	if ((double)(ax * ax + ay * ay + az * az) > wd->r2 && blk[a] == old &&
 	    old != 0.0)	/* zero counts must stay exact */
 		return 0;

@@ -3,13 +3,11 @@
 #include "base/err.h"
 #include "base/progress.h"
 
+#include "../../../cl/defs.cl"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* par[] of cl/frs.cl */
-enum { PAR_SW, PAR_NS, PAR_WX, PAR_WY, PAR_MW, PAR_MH, PAR_SEED,
-	PAR_NSTEPS, PAR_NACT, PAR_L, PAR_TILES, PAR_N };
 
 static struct {
 	cl_context ctx;
@@ -69,41 +67,36 @@ static int program(struct ocl *o, cl_program *prog)
 	return 0;
 }
 
-/* src/lib/sample/frs.c make_thr() and passes() as integers: the record of one
- * pixel (see cl/frs.cl).  Returns the last step's limit. */
+/* The thresholds of one pixel (frs_thr_make) with frs_thr_passes's test
+ * as integers, into its record (FRSCL_REC_* of cl/defs.cl).  Returns the
+ * last step's limit. */
 static uint64_t pixel_record(uint64_t *rec, const double *tau, unsigned nsteps,
     double imp, enum frs_rule rule)
 {
-	uint64_t lim = 0;
+	struct frs_thr th = { 0 };
 
 	for (unsigned k = 0; k < nsteps; k++) {
-		double t = tau[k] * imp, frac;
-		uint64_t tf;
-		if (!(t < 0x1p33))
-			t = 0x1p33;
-		tf = (uint64_t)floor(t);
-		frac = t - floor(t);
-		if (rule == FRS_THESIS) {	/* v < T  <=>  v < ceil(T) */
-			lim = (uint64_t)ceil(t);
-			rec[2 + 2 * k] = lim;
-			rec[3 + 2 * k] = 0;
+		frs_thr_make(&th, tau[k] * imp, rule);
+		if (rule == FRS_THESIS) {	/* v < T  <=>  v < lim */
+			rec[FRSCL_REC_TF(k)] = th.lim;
+			rec[FRSCL_REC_COIN(k)] = 0;
 		} else {
 			/* coin u 2^-53 < frac  <=>  u < ceil(frac 2^53) */
-			lim = tf + (frac > 0.0);
-			rec[2 + 2 * k] = tf;
-			rec[3 + 2 * k] = frac > 0.0 ?
-			    (uint64_t)ceil(frac * 0x1p53) : 0;
+			rec[FRSCL_REC_TF(k)] = th.tf;
+			rec[FRSCL_REC_COIN(k)] = th.frac > 0.0 ?
+			    (uint64_t)ceil(th.frac * 0x1p53) : 0;
 		}
 	}
-	rec[1] = lim;
-	return lim;
+	rec[FRSCL_REC_LIM] = th.lim;
+	return th.lim;
 }
 
 /* What one call holds on the device. */
 struct clrun {
 	struct ocl *o;
 	cl_program prog;
-	cl_mem par, thr, mat, loff, sval, sidx, soff, cnt, off, out, ca, cb, ccnt;
+	cl_mem setup, thr, mat, loff, sval, sidx, soff, cnt, off, out, ca, cb,
+	    ccnt;
 	cl_kernel k, k2, k3;
 	uint64_t nact;
 	double t;	/* start of the current phase */
@@ -118,8 +111,9 @@ static void rel(cl_mem *m)
 
 static void clrun_free(struct clrun *c)
 {
-	cl_mem *all[] = { &c->par, &c->thr, &c->mat, &c->loff, &c->sval,
-	    &c->sidx, &c->soff, &c->cnt, &c->off, &c->out, &c->ca, &c->cb, &c->ccnt };
+	cl_mem *all[] = { &c->setup, &c->thr, &c->mat, &c->loff, &c->sval,
+	    &c->sidx, &c->soff, &c->cnt, &c->off, &c->out, &c->ca, &c->cb,
+	    &c->ccnt };
 	for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
 		rel(all[i]);
 	if (c->k)
@@ -216,7 +210,8 @@ static int take(struct clrun *c, uint64_t total, struct frs_result *r)
 {
 	struct frs_chunk *ch = &r->chunk[0];
 
-	if (total > 0 && ocl_read(c->o, c->out, total * sizeof *ch->e, ch->e) < 0)
+	if (total > 0 &&
+	    ocl_read(c->o, c->out, total * sizeof *ch->e, ch->e) < 0)
 		return -1;
 	ch->n = total;
 	return 0;
@@ -243,6 +238,9 @@ static int out_buffer(struct clrun *c, uint64_t total, struct frs_result *r)
 	phase(c, &last.download);
 	return 0;
 }
+
+/* A kernel argument, for ocl_args: its size and where it is. */
+#define ARG(x) sizeof(x), &(x)
 
 static int kernel(struct clrun *c, const char *name, cl_kernel *k)
 {
@@ -323,16 +321,14 @@ static int per_pixel(struct clrun *c, int algo, int count_only,
 	m2 = algo == FRS_SORTED ? c->sidx : c->loff;
 	phase(c, &last.upload);
 	for (;;) {
-		if (algo == FRS_NAIVE ? ocl_args(c->k, 7, sizeof c->par, &c->par,
-		    sizeof c->thr, &c->thr, sizeof m1, &m1, sizeof c->cnt, &c->cnt,
-		    sizeof c->off, &c->off, sizeof c->out, &c->out, sizeof wr, &wr) :
-		    algo == FRS_SORTED ? ocl_args(c->k, 9, sizeof c->par, &c->par,
-		    sizeof c->thr, &c->thr, sizeof m1, &m1, sizeof m2, &m2,
-		    sizeof c->soff, &c->soff, sizeof c->cnt, &c->cnt,
-		    sizeof c->off, &c->off, sizeof c->out, &c->out, sizeof wr, &wr) :
-		    ocl_args(c->k, 8, sizeof c->par, &c->par, sizeof c->thr, &c->thr,
-		    sizeof m1, &m1, sizeof m2, &m2, sizeof c->cnt, &c->cnt,
-		    sizeof c->off, &c->off, sizeof c->out, &c->out, sizeof wr, &wr))
+		if (algo == FRS_NAIVE ? ocl_args(c->k, 7, ARG(c->setup),
+		    ARG(c->thr), ARG(m1), ARG(c->cnt), ARG(c->off), ARG(c->out),
+		    ARG(wr)) :
+		    algo == FRS_SORTED ? ocl_args(c->k, 9, ARG(c->setup),
+		    ARG(c->thr), ARG(m1), ARG(m2), ARG(c->soff), ARG(c->cnt),
+		    ARG(c->off), ARG(c->out), ARG(wr)) :
+		    ocl_args(c->k, 8, ARG(c->setup), ARG(c->thr), ARG(m1),
+		    ARG(m2), ARG(c->cnt), ARG(c->off), ARG(c->out), ARG(wr)))
 			return -1;
 		if (launch(c, c->k, c->nact) < 0)
 			return -1;
@@ -350,10 +346,9 @@ static int per_pixel(struct clrun *c, int algo, int count_only,
 static int flat_init(struct clrun *c, uint64_t *ncand)
 {
 	for (int wr = 0; wr < 2; wr++) {
-		if (ocl_args(c->k, 8, sizeof c->par, &c->par, sizeof c->thr,
-		    &c->thr, sizeof c->mat, &c->mat, sizeof c->loff, &c->loff,
-		    sizeof c->cnt, &c->cnt, sizeof c->off, &c->off, sizeof c->ca,
-		    &c->ca, sizeof wr, &wr) < 0 || launch(c, c->k, c->nact) < 0)
+		if (ocl_args(c->k, 8, ARG(c->setup), ARG(c->thr), ARG(c->mat),
+		    ARG(c->loff), ARG(c->cnt), ARG(c->off), ARG(c->ca),
+		    ARG(wr)) < 0 || launch(c, c->k, c->nact) < 0)
 			return -1;
 		if (!wr && make_room(c, c->cnt, c->nact, 1, &c->ca, ncand) < 0)
 			return -1;
@@ -372,11 +367,9 @@ static int flat_refine(struct clrun *c, unsigned l, uint64_t *ncand)
 	    buffer(c, 12, NULL, &c->cb) < 0)
 		return -1;
 	for (int wr = 0; wr < 2; wr++) {
-		if (ocl_args(c->k2, 11, sizeof c->par, &c->par, sizeof c->thr,
-		    &c->thr, sizeof c->mat, &c->mat, sizeof c->loff, &c->loff,
-		    sizeof c->ca, &c->ca, sizeof *ncand, ncand, sizeof l, &l,
-		    sizeof c->ccnt, &c->ccnt, sizeof c->off, &c->off,
-		    sizeof c->cb, &c->cb, sizeof wr, &wr) < 0 ||
+		if (ocl_args(c->k2, 11, ARG(c->setup), ARG(c->thr), ARG(c->mat),
+		    ARG(c->loff), ARG(c->ca), ARG(*ncand), ARG(l), ARG(c->ccnt),
+		    ARG(c->off), ARG(c->cb), ARG(wr)) < 0 ||
 		    launch(c, c->k2, *ncand) < 0)
 			return -1;
 		if (!wr && make_room(c, c->ccnt, *ncand, 0, &c->cb, &next) < 0)
@@ -415,10 +408,9 @@ static int flat1(struct clrun *c, unsigned L, int count_only,
 	    buffer(c, 12, NULL, &c->out) < 0)
 		return -1;
 	for (int wr = 0; wr < 2; wr++) {
-		if (ocl_args(c->k3, 9, sizeof c->par, &c->par, sizeof c->thr,
-		    &c->thr, sizeof c->mat, &c->mat, sizeof c->ca, &c->ca,
-		    sizeof ncand, &ncand, sizeof c->ccnt, &c->ccnt, sizeof c->off,
-		    &c->off, sizeof c->out, &c->out, sizeof wr, &wr) < 0 ||
+		if (ocl_args(c->k3, 9, ARG(c->setup), ARG(c->thr), ARG(c->mat),
+		    ARG(c->ca), ARG(ncand), ARG(c->ccnt), ARG(c->off),
+		    ARG(c->out), ARG(wr)) < 0 ||
 		    launch(c, c->k3, ncand) < 0)
 			return -1;
 		if (wr)
@@ -460,7 +452,8 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
     struct frs_result *r)
 {
 	double tau[16];
-	uint64_t par[PAR_N], rec = 2 + 2 * (uint64_t)nsteps, *thr = NULL;
+	uint64_t setup[FRSCL_NSETUP], *thr = NULL;
+	uint64_t rec = FRSCL_RECORD((uint64_t)nsteps);
 	uint64_t npix = (uint64_t)s->iw * s->ih;
 	struct clrun c;
 	unsigned L = 0;
@@ -494,7 +487,7 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 			continue;
 		if (pixel_record(t, tau, nsteps, imp * s->iscale, s->rule) == 0)
 			continue;
-		t[0] = (i % s->iw) | (i / s->iw) << 32;
+		t[FRSCL_REC_PIXEL] = (i % s->iw) | (i / s->iw) << 32;
 		c.nact++;
 	}
 	if (algo == FRS_STACK || algo == FRSCL_FLAT1)
@@ -503,18 +496,18 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 		L = frs_start_level(s, p, 1);
 	else if (algo == FRS_LEVEL2)
 		L = frs_start_level(s, p, 2);
-	par[PAR_SW] = s->sw;
-	par[PAR_NS] = s->ns;
-	par[PAR_WX] = s->wx;
-	par[PAR_WY] = s->wy;
-	par[PAR_MW] = s->mw;
-	par[PAR_MH] = s->mh;
-	par[PAR_SEED] = s->seed;
-	par[PAR_NSTEPS] = nsteps;
-	par[PAR_NACT] = c.nact;
-	par[PAR_L] = algo == FRS_SORTED ? p->block : L;
-	par[PAR_TILES] = s->tiles == FRS_TILES_SHUFFLE;
-	if (buffer(&c, sizeof par, par, &c.par) < 0 ||
+	setup[FRSCL_SW] = s->sw;
+	setup[FRSCL_NS] = s->ns;
+	setup[FRSCL_WX] = s->wx;
+	setup[FRSCL_WY] = s->wy;
+	setup[FRSCL_MW] = s->mw;
+	setup[FRSCL_MH] = s->mh;
+	setup[FRSCL_SEED] = s->seed;
+	setup[FRSCL_NSTEPS] = nsteps;
+	setup[FRSCL_NACT] = c.nact;
+	setup[FRSCL_START] = algo == FRS_SORTED ? p->block : L;
+	setup[FRSCL_TILES] = s->tiles == FRS_TILES_SHUFFLE;
+	if (buffer(&c, sizeof setup, setup, &c.setup) < 0 ||
 	    buffer(&c, c.nact * rec * sizeof *thr, thr, &c.thr) < 0)
 		goto out;
 	if (algo == FRS_NAIVE) {

@@ -13,8 +13,9 @@
 #include "base/par.h"
 #include "base/rng.h"
 
-/* The largest double below 1. */
-#define BELOW_ONE 0x1.fffffffffffffp-1
+/* BELOW_ONE, hsw_split, hsw_place and the descent of one point: one
+ * definition with the kernel. */
+#include "../../../cl/hsw.cl"
 
 static uint64_t level_offset(unsigned l)
 {
@@ -112,60 +113,9 @@ void hsw_free(struct hsw_tree *t)
 	memset(t, 0, sizeof *t);
 }
 
-/* Split u in [0,1) between parts of weight a and b: returns 0 (first) or
- * 1, u rescaled to [0,1) of that part.  The test u < a / (a + b) is done
- * as u (a + b) < a, and the selection without branches (the choice is a
- * coin toss the processor cannot predict).  A zero part is never chosen:
- * b = 0 keeps to the first, a = 0 gives u (a + b) >= a always. */
-static inline unsigned split(double a, double b, double *u)
-{
-	double t = *u * (a + b), num, den, v, f;
-	unsigned c = (t >= a) & (b > 0);
-
-	/* Arithmetic, not branches: the processor cannot predict the coin.
-	 * 1 * x + 0 * y is exactly x for finite x and y. */
-	f = (double)c;
-	num = t - f * a;
-	den = f * b + (1.0 - f) * a;
-	v = num / den;
-	*u = v < BELOW_ONE ? v : BELOW_ONE;
-	return c;
-}
-
-/* (i + u) / n inside pixel i of n: rounding may not move it out. */
-static inline double place(uint32_t i, double u, uint32_t n)
-{
-	double x = ((double)i + u) / (double)n;
-
-	while (x * (double)n >= (double)i + 1.0 || x >= 1.0)
-		x = nextafter(x, 0.0);
-	while (x * (double)n < (double)i)
-		x = nextafter(x, 1.0);
-	return x;
-}
-
 uint64_t hsw_warp(const struct hsw_tree *t, double *x, double *y)
 {
-	const double *s = t->sum;
-	uint64_t k = 0, off = 0;
-	uint32_t i = 0, j = 0;
-	double u = *x, v = *y;
-
-	for (unsigned l = 0; l < t->levels; l++) {
-		const double *c;
-		unsigned cx, cy;
-
-		off += (uint64_t)1 << (2 * l);	/* start of level l + 1 */
-		c = s + off + 4 * k;
-		cx = split(c[0] + c[2], c[1] + c[3], &u);
-		cy = split(c[cx], c[cx + 2], &v);
-		k = 4 * k + 2 * cy + cx;
-		i = 2 * i + cx;
-		j = 2 * j + cy;
-	}
-	*x = place(i, u, t->w);
-	*y = place(j, v, t->h);
-	return (uint64_t)j * t->w + i;
+	return hsw_descend(t->sum, t->levels, t->w, t->h, x, y);
 }
 
 /* Points per chunk of frs_parallel: the unit handed to a thread. */
@@ -462,7 +412,7 @@ static void place_group(const uint32_t *i, const double *u, uint32_t n,
 	}
 	if (bad)
 		for (unsigned q = 0; q < GROUP; q++)
-			x[q] = place(i[q], u[q], n);
+			x[q] = hsw_place(i[q], u[q], n);
 }
 
 /* m points (pairs) from in to m records of stride doubles in out (out
