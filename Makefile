@@ -6,6 +6,7 @@
 #   make demo       install missing packages, build, run the pipeline,
 #                   pictures in results/
 #   make bench      benchmarks, built with -O3 -march=native
+#   make fuzz       libFuzzer on every parser (mk/fuzz.mk)
 #   make install    PREFIX=/usr/local DESTDIR= (also BINDIR LIBDIR INCDIR
 #                   MANDIR PKGCONFIGDIR): programs, frs.h, libfrs.a,
 #                   libfrs.so, frs.pc, frs-static.pc, the shipped data,
@@ -123,9 +124,10 @@ $(1)/%.o: $(2)/%.cc
 	$$(CXX) $$(ALL_CXXFLAGS) $(3) -c $$< -o $$@
 endef
 
-# The library twice: for libfrs.a, and position-independent for
-# libfrs.so (below); the programs' helpers; the programs; the tests
-# (test/hard/ includes test/'s helpers), benchmarks and references.
+# The library with its embedded kernels ($(B)/gen) twice: for libfrs.a,
+# and position-independent for libfrs.so (below); the programs' helpers;
+# the programs; the tests (test/hard/ includes test/'s helpers), the
+# benchmark drivers and the references.
 $(eval $(call objects,$(B)/lib,src/lib))
 $(eval $(call objects,$(B)/gen,$(B)/gen))
 $(eval $(call objects,$(B)/pic/lib,src/lib,-fPIC))
