@@ -6,6 +6,7 @@
 #   make demo       install missing packages, build, run the pipeline,
 #                   pictures in results/
 #   make bench      benchmarks, built with -O3 -march=native
+#   make fuzz       libFuzzer on every parser (mk/fuzz.mk)
 #   make install    PREFIX=/usr/local DESTDIR= (also BINDIR LIBDIR INCDIR
 #                   MANDIR PKGCONFIGDIR): programs, frs.h, libfrs.a,
 #                   libfrs.so, frs.pc, frs-static.pc, the shipped data,
@@ -47,8 +48,10 @@ CLISRC = $(wildcard src/cli/*.c)
 TESTSRC = $(wildcard test/test_*.c)
 # test/hard/: the numerical hard cases gathered in one suite.
 HARDSRC = $(wildcard test/hard/test_*.c)
-# The benchmarks' reference implementations and drivers (test/bench_*.c).
-REFSRC = $(wildcard test/ref_*.c) $(wildcard test/bench_*.c)
+# The benchmarks' reference implementations (test/ref/) and drivers
+# (test/bench/), built as $(B)/test/NAME beside the tests.
+REFSRC = $(wildcard test/ref/*.c) $(wildcard test/bench/*.c)
+REFNAMES = $(notdir $(REFSRC:.c=))
 # Programs on the public API alone, as a user writes them (test/user_*.c).
 USERSRC = $(wildcard test/user_*.c)
 
@@ -85,7 +88,7 @@ LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o) \
 	$(LIBCXXSRC:src/lib/%.cc=$(B)/lib/%.o) $(B)/gen/clsrc.o
 PROGBIN = $(PROGS:%=$(B)/bin/%)
 TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%) $(HARDSRC:test/hard/%.c=$(B)/test/%)
-REFBIN = $(REFSRC:test/%.c=$(B)/test/%)
+REFBIN = $(REFNAMES:%=$(B)/test/%)
 USERBIN = $(USERSRC:test/%.c=$(B)/test/%)
 
 .PHONY: all progs libs tests check demo bench install uninstall clean deps \
@@ -104,6 +107,38 @@ endif
 progs: $(PROGBIN)
 tests: $(TESTBIN) $(PROGBIN) $(REFBIN) $(USERBIN)
 
+# -ffp-contract=off: g++ fuses a * b + c by default (gcc in C11 mode does
+# not), so imap_luma inlined here gave other EXR maps under -march=native.
+ALL_CXXFLAGS = -std=c++14 -ffp-contract=off -Wall -Wextra $(VFLAGS) \
+	-Isrc/lib -Isrc $(PKG_CFLAGS) $(CXXFLAGS) -MMD -MP
+
+# The one compile rule: $(call objects,OBJDIR,SRCDIR,FLAGS) makes
+# OBJDIR/X.o from SRCDIR/X.c (or X.cc, by $(CXX)) with the flags above
+# and FLAGS; the table below (and mk/fuzz.mk) says which folder goes where.
+define objects
+$(1)/%.o: $(2)/%.c
+	@mkdir -p $$(@D)
+	$$(CC) $$(ALL_CFLAGS) $(3) -c $$< -o $$@
+$(1)/%.o: $(2)/%.cc
+	@mkdir -p $$(@D)
+	$$(CXX) $$(ALL_CXXFLAGS) $(3) -c $$< -o $$@
+endef
+
+# The library with its embedded kernels ($(B)/gen) twice: for libfrs.a,
+# and position-independent for libfrs.so (below); the programs' helpers;
+# the programs; the tests (test/hard/ includes test/'s helpers), the
+# benchmark drivers and the references.
+$(eval $(call objects,$(B)/lib,src/lib))
+$(eval $(call objects,$(B)/gen,$(B)/gen))
+$(eval $(call objects,$(B)/pic/lib,src/lib,-fPIC))
+$(eval $(call objects,$(B)/pic/gen,$(B)/gen,-fPIC))
+$(eval $(call objects,$(B)/cli,src/cli))
+$(eval $(call objects,$(B)/obj,src))
+$(eval $(call objects,$(B)/test,test,-Wno-conversion))
+$(eval $(call objects,$(B)/test,test/hard,-Itest -Wno-conversion))
+$(eval $(call objects,$(B)/test,test/bench,-Wno-conversion))
+$(eval $(call objects,$(B)/test,test/ref,-Wno-conversion))
+
 $(B)/libfrs.a: $(LIBOBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && $(AR) rcs $@ $^
@@ -112,18 +147,6 @@ CLIOBJ = $(CLISRC:src/cli/%.c=$(B)/cli/%.o)
 $(B)/libfrscli.a: $(CLIOBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && $(AR) rcs $@ $^
-
-$(B)/cli/%.o: src/cli/%.c
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -c $< -o $@
-
-# What the programs, tests and fuzz drivers link (test/user_*.c: libfrs
-# alone).
-PROGLIBS = $(B)/libfrscli.a $(B)/libfrs.a
-
-$(B)/lib/%.o: src/lib/%.c
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
 $(B)/gen/paths.h: FORCE
 	@mkdir -p $(@D)
@@ -137,18 +160,6 @@ $(B)/lib/base/datadir.o $(B)/pic/lib/base/datadir.o: $(B)/gen/paths.h
 $(B)/gen/clsrc.c: $(CLSRC) scripts/cl2c.sh
 	@mkdir -p $(@D)
 	sh scripts/cl2c.sh $@ $(CLSRC)
-
-$(B)/gen/clsrc.o: $(B)/gen/clsrc.c
-	$(CC) $(CSTD) $(VFLAGS) $(CFLAGS) -c $< -o $@
-
-# -ffp-contract=off: g++ fuses a * b + c by default (gcc in C11 mode does
-# not), so imap_luma inlined here gave other EXR maps under -march=native.
-ALL_CXXFLAGS = -std=c++14 -ffp-contract=off -Wall -Wextra $(VFLAGS) \
-	-Isrc/lib -Isrc $(PKG_CFLAGS) $(CXXFLAGS) -MMD -MP
-
-$(B)/lib/%.o: src/lib/%.cc
-	@mkdir -p $(@D)
-	$(CXX) $(ALL_CXXFLAGS) -c $< -o $@
 
 # The shared library (make libs; part of make all in the rel variant):
 # the library's sources again as position-independent objects in
@@ -172,51 +183,26 @@ $(B)/$(SOFILE): $(PICOBJ) $(SOMAP)
 $(B)/$(SONAME) $(B)/libfrs.so: $(B)/$(SOFILE)
 	ln -sf $(SOFILE) $@
 
-$(B)/pic/lib/%.o: src/lib/%.c
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -fPIC -c $< -o $@
-
-$(B)/pic/lib/%.o: src/lib/%.cc
-	@mkdir -p $(@D)
-	$(CXX) $(ALL_CXXFLAGS) -fPIC -c $< -o $@
-
-$(B)/pic/gen/clsrc.o: $(B)/gen/clsrc.c
-	@mkdir -p $(@D)
-	$(CC) $(CSTD) $(VFLAGS) $(CFLAGS) -fPIC -c $< -o $@
-
-$(B)/obj/%.o: src/%.c
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -c $< -o $@
+# What the programs, tests, benchmarks and fuzz drivers link (test/user_*.c:
+# libfrs alone, as a user has it).
+PROGLIBS = $(B)/libfrscli.a $(B)/libfrs.a
+LINK = $(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(PROGLIBS) $(LIBS)
 
 $(B)/bin/%: $(B)/obj/%.o $(PROGLIBS)
 	@mkdir -p $(@D)
-	$(CC) $(ALL_LDFLAGS) $< $(PROGLIBS) $(LIBS) -o $@
-
-$(B)/test/%.o: test/%.c
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Wno-conversion -c $< -o $@
-
-$(B)/test/%.o: test/hard/%.c
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Itest -Wno-conversion -c $< -o $@
+	$(LINK) -o $@
 
 $(B)/test/test_%: $(B)/test/test_%.o $(PROGLIBS)
-	$(CC) $(ALL_LDFLAGS) $< $(PROGLIBS) $(LIBS) $(CMOCKA_LIBS) -o $@
+	$(LINK) $(CMOCKA_LIBS) -o $@
 
-# Reference implementations for the benchmarks (test/ref_*.c), and
-# drivers (test/bench_*.c).
-$(B)/test/ref_%: $(B)/test/ref_%.o $(PROGLIBS)
-	$(CC) $(ALL_LDFLAGS) $< $(PROGLIBS) $(LIBS) -o $@
-
-$(B)/test/bench_%: $(B)/test/bench_%.o $(PROGLIBS)
-	$(CC) $(ALL_LDFLAGS) $< $(PROGLIBS) $(LIBS) -o $@
+$(REFBIN): $(B)/test/%: $(B)/test/%.o $(PROGLIBS)
+	$(LINK) -o $@
 
 $(B)/test/user_%: $(B)/test/user_%.o $(B)/libfrs.a
 	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
 
--include $(LIBOBJ:.o=.d) $(CLIOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) $(TESTBIN:=.d) $(REFBIN:=.d) \
-	$(USERBIN:=.d) \
-	$(PICOBJ:.o=.d) $(wildcard $(B)/fuzz/*.d $(B)/fuzz/prog/*.d)
+-include $(LIBOBJ:.o=.d) $(CLIOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) \
+	$(TESTBIN:=.d) $(REFBIN:=.d) $(USERBIN:=.d) $(PICOBJ:.o=.d)
 
 deps:
 	@sh scripts/deps.sh
@@ -231,7 +217,8 @@ demo: deps
 	@sh scripts/demo.sh
 
 bench: deps
-	@$(MAKE) --no-print-directory VARIANT=bench progs $(REFSRC:test/%.c=build/bench/test/%)
+	@$(MAKE) --no-print-directory VARIANT=bench progs \
+	    $(REFNAMES:%=build/bench/test/%)
 	@sh scripts/bench.sh build/bench
 
 # make experiments [ONLY=fig6.3,tab6.1] [QUICK=0] [-j2]: every thesis
@@ -293,68 +280,5 @@ uninstall:
 clean:
 	rm -rf build bin
 
-# Fuzzing (test/fuzz/): one libFuzzer target per parser.
-#   make fuzz [FUZZ_SECONDS=600] [-j2]   build with clang and run each
-#       target on its seed corpus (new inputs in build/fuzz/corpus/T/),
-#       crashes saved in $(FUZZ_CRASHES)/T/
-# make tests also builds replay drivers, $(B)/fuzz/replay_T, that run
-# the same targets on the seed corpus and the saved crashes (test/run.sh).
-FUZZ_TARGETS = $(patsubst test/fuzz/fuzz_%.c,%,$(wildcard test/fuzz/fuzz_*.c))
-FUZZ_SECONDS ?= 600
-FUZZ_CC ?= clang
-FUZZ_CXX ?= clang++
-FUZZ_SAN = -fsanitize=address,undefined -fno-sanitize-recover=undefined
-FUZZ_VFLAGS = -O1 -g -fno-omit-frame-pointer $(FUZZ_SAN) \
-	-fsanitize=fuzzer-no-link
-FUZZ_CRASHES ?= test/fuzz/crashes
-FUZZ_FLAGS ?= -rss_limit_mb=4096 -timeout=30
-FUZZBIN = $(FUZZ_TARGETS:%=build/fuzz/fuzz_%)
-REPLAYBIN = $(FUZZ_TARGETS:%=$(B)/fuzz/replay_%)
-
-.PHONY: fuzz fuzz-build fuzz-lib $(FUZZ_TARGETS:%=fuzz-%)
-
-tests: $(REPLAYBIN)
-
-$(B)/fuzz/%.o: test/fuzz/%.c test/fuzz/fuzz.h
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -c $< -o $@
-
-$(B)/fuzz/replay_%: $(B)/fuzz/fuzz_%.o $(B)/fuzz/replay.o $(PROGLIBS)
-	$(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(PROGLIBS) $(LIBS) -o $@
-
-# fuzz_opts runs every program's main: the programs again, main renamed
-# main_NAME (dashes as underscores).
-$(B)/fuzz/prog/%.o: src/%.c
-	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) -Dmain=main_$(subst -,_,$*) -c $< -o $@
-$(B)/fuzz/replay_opts: $(PROGS:%=$(B)/fuzz/prog/%.o)
-
-# The library again, built by clang with the fuzzer's instrumentation.
-fuzz-lib:
-	@$(MAKE) --no-print-directory VARIANT=fuzz CC=$(FUZZ_CC) \
-	    CXX=$(FUZZ_CXX) VFLAGS='$(FUZZ_VFLAGS)' build/fuzz/libfrs.a build/fuzz/libfrscli.a
-
-fuzz-build: fuzz-lib
-	@$(MAKE) --no-print-directory $(FUZZBIN)
-
-build/fuzz/fuzz_%: test/fuzz/fuzz_%.c test/fuzz/fuzz.h build/fuzz/libfrs.a
-	@mkdir -p $(@D)
-	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib -Isrc \
-	    $(PKG_CFLAGS) $(CFLAGS) -c $< -o $@.o
-	$(FUZZ_CXX) -fsanitize=fuzzer $(FUZZ_SAN) $@.o \
-	    $(filter build/fuzz/prog/%.o,$^) build/fuzz/libfrscli.a \
-	    build/fuzz/libfrs.a $(LIBS) -o $@
-build/fuzz/fuzz_opts: $(PROGS:%=build/fuzz/prog/%.o)
-build/fuzz/prog/%.o: src/%.c build/fuzz/libfrs.a
-	@mkdir -p $(@D)
-	$(FUZZ_CC) $(CSTD) $(WARN) $(FUZZ_VFLAGS) -Isrc/lib -Isrc \
-	    $(PKG_CFLAGS) $(CFLAGS) -Dmain=main_$(subst -,_,$*) \
-	    -c $< -o $@
-
-fuzz: $(FUZZ_TARGETS:%=fuzz-%)
-
-$(FUZZ_TARGETS:%=fuzz-%): fuzz-%: fuzz-build
-	@mkdir -p build/fuzz/corpus/$* $(FUZZ_CRASHES)/$*
-	build/fuzz/fuzz_$* -max_total_time=$(FUZZ_SECONDS) $(FUZZ_FLAGS) \
-	    -artifact_prefix=$(FUZZ_CRASHES)/$*/ \
-	    build/fuzz/corpus/$* test/fuzz/corpus/$*
+# make fuzz, make fuzz-build and the replay drivers of make tests.
+include mk/fuzz.mk

@@ -1,9 +1,10 @@
 #!/bin/sh
-# libfrs through its API (src/lib/frs.h, test/bench_api.c): samples per
-# second of frs_draw into the caller's buffer and of frs_draw_each, on
-# one thread and on all, beside frs-sample's own figures for the same
-# matrix (data/default.frd), map (blob), n and seed.  The ratio is
-# samples/s over that of the whole frs-sample process with the .frd
+# libfrs through its API (src/lib/frs.h, test/bench/bench_api.c):
+# samples per second of frs_draw into the caller's buffer and of
+# frs_draw_each, on one thread and on all, beside frs-sample's own
+# figures for the same matrix (data/default.frd), map (blob), n and
+# seed.  The ratio is samples/s over that of the whole frs-sample
+# process with the .frd
 # (which prepares the sorted lists each run, as the API's first call
 # does once).  Best of R runs.  BENCH_QUICK=1: n = 10^6 only.
 set -eu

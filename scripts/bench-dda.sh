@@ -1,10 +1,10 @@
 #!/bin/sh
 # dda: what the spectra and distances cost.  (a) the exact Fourier
 # spectrum of 10 sets of 1024 points at K = 128 (the thesis view), one and
-# all threads, against the direct-sum reference (test/ref_dda), psa and a
-# numpy matrix product (published), and the approximate method's time and
-# error; (b) DDA of 10 sets of 1024; (c) density of 2^20 points by the
-# grid search, against the O(n^2) reference on 2^14 points.
+# all threads, against the direct-sum reference (test/ref/ref_dda.c), psa
+# and a numpy matrix product (published), and the approximate method's
+# time and error; (b) DDA of 10 sets of 1024; (c) density of 2^20 points
+# by the grid search, against the O(n^2) reference on 2^14 points.
 #   scripts/bench-dda.sh [BUILD]      BENCH_QUICK=1: no reference at 2^16
 set -eu
 BUILD=${1:-build/bench}
@@ -26,7 +26,7 @@ done
 echo "dda: Fourier power spectrum, 10 sets of 1024 dart-throwing points,"
 echo "K = 128 (257 x 257 frequencies)"
 echo "(psa: 5.75 s on two threads; numpy matrix product: 0.22 s; both"
-echo " published; ref: test/ref_dda, a direct sum of cos and sin)"
+echo " published; ref: test/ref/ref_dda.c, a direct sum of cos and sin)"
 printf '%-22s %8s %9s %9s %9s %s\n' method seconds vs_psa vs_numpy vs_ref max_rel_err
 timed "$T/ref" "$REF" fourier 128 1024 "$T/dart.pts"
 ref=$SEC

@@ -2,7 +2,7 @@
 # discrepancy: what accuracy costs.  (0) the exact L2 star D2 alone, 2-D
 # and 3-D, against scipy in-process and against commit 034c211 built
 # beside it (scripts/benchlib.sh: baseline_build); (a) the exact L2 star discrepancy
-# against the brute-force reference (test/ref_disc) and scipy's published
+# against the brute-force reference (test/ref/ref_disc.c) and scipy's published
 # timings, and the star grid against the reference's summed-area table,
 # (b) per class D2 and Dinf against seconds per set, at the
 # thesis parameters and cheaper ones, (c) the Fig. 6.3 sweep (star, 6

@@ -5,7 +5,7 @@
 # shipped matrix (data/default.frd, no .frp), binary points to
 # /dev/null; the setup, thresholding and output phases (-v) on one
 # thread and two; the output to /dev/null and to a pipe; the same draw in
-# memory through libfrs (test/bench_api); OpenCL Sorted against the CPU
+# memory through libfrs (test/bench/bench_api.c); OpenCL Sorted against the CPU
 # path.  Medians of R runs.  FRS_AUTHORS: a command that times the thesis
 # authors' Sorted sampler for N samples (it is run as "$FRS_AUTHORS N"
 # and prints seconds), timed in the same run when set.

@@ -1,13 +1,36 @@
 # Helpers for the shell tests; source it.  Each check prints "ok - what"
-# or "not ok - what"; test/run.sh counts them.
+# or "not ok - what"; test/run.sh counts them.  Every script ends with
+# done_testing: one that exits before it (an early exit, a stray exit 0,
+# a failed command under set -e) would lose its later checks unseen, so
+# then the exit prints one more "not ok" and the status is 1.
 set -u
 : "${BIN:?BIN must name the directory of the programs}"
 PATH="$BIN:$PATH"
 SHARED=${FRS_SHARED:-../shared}
 T=$(mktemp -d "${TMPDIR:-/tmp}/frs-test.XXXXXX")
-trap 'rm -rf "$T"' EXIT INT TERM
+reached_end=0
+at_exit() {
+	rm -rf "$T"
+	if [ "$reached_end" -eq 0 ]; then
+		echo "not ok - the script stopped before its end (done_testing)"
+		exit 1
+	fi
+}
+trap at_exit EXIT
+trap 'rm -rf "$T"' INT TERM
 
 ok() { echo "ok - $*"; }
+
+# done_testing: the last line of every test script.
+done_testing() { reached_end=1; }
+
+# skip_all WHY: the script cannot run here (a tool missing): one skipped
+# check, and the script ends.
+skip_all() {
+	ok "# SKIP $*"
+	reached_end=1
+	exit 0
+}
 
 # nolsan CMD...: run CMD without LeakSanitizer's exit check: for whole
 # experiment scripts, whose many OpenCL processes make a tracer crash (see

@@ -47,3 +47,4 @@ done
 [ "$(head -n 1 "$T/err")" = "frs-sample: option requires an argument -- 'n'" ] &&
     ok "a missing argument: the program's name" ||
     nok "a missing argument: $(head -n 1 "$T/err")"
+done_testing

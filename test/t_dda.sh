@@ -255,3 +255,4 @@ cmp -s "$T/sc" "$T/sd" && ok "--sets 512 agreeing with the set column" || nok "-
 expect_fail "--sets 256 disagreeing with the set column" 1 \
     "rand.pts: --sets 256: set 0 of the file's set column has 512 points" "$T/o3" \
     dda --sets 256 -o "$T/o3" "$T/rand.pts"
+done_testing

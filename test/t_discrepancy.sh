@@ -401,3 +401,4 @@ expect_fail "set column decreasing" 1 "dec.txt: point 1: set 0 after set 1" "$T/
 printf '#pts dims=2 extra=1 names=set\n0.1 0.2 0.5\n' >"$T/half.txt"
 expect_fail "set column not whole" 1 "half.txt: point 0: set 0.5 is not a whole number" "$T/o9" \
     discrepancy -o "$T/o9" "$T/half.txt"
+done_testing

@@ -170,3 +170,4 @@ else
 	nok "tab6.1 quick mode"
 	sed 's/^/# /' "$T/err" | tail -n 5
 fi
+done_testing

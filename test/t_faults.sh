@@ -321,3 +321,4 @@ echo "$pipe_rows" | while read -r bytes cmd; do
 	wait
 	cat "$T/log.default" "$T/log.ignore"
 done
+done_testing

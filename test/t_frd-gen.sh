@@ -208,3 +208,4 @@ done
 expect_fail "--device gpu" 2 "gpu" "$T/o.frd" frd-gen -s 16 --device gpu -o "$T/o.frd"
 expect_fail "--device cl with --checkpoint" 2 "--checkpoint" "$T/o.frd" \
     frd-gen -s 16 --device cl --checkpoint "$T/ck" -o "$T/o.frd"
+done_testing

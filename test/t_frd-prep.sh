@@ -156,3 +156,4 @@ expect_fail "--for with --blocks" 2 "one or the other" "$T/x.frp" \
 expect_fail "--for 0" 2 "--for" "$T/x.frp" frd-prep --for 0 "$T/f.frd" -o "$T/x.frp"
 expect_fail "--for with -a stack" 2 "--for needs" "$T/x.frp" \
     frd-prep -a stack --for 100 "$T/f.frd" -o "$T/x.frp"
+done_testing

@@ -295,3 +295,4 @@ done
 expect_fail "--device gpu" 2 "--device" "$T/o.pts" frs-sample -m "$M" -n 10 --device gpu -o "$T/o.pts"
 expect_fail "-a flat1 without OpenCL" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 -o "$T/o.pts"
 expect_fail "-a flat1 --device cpu" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 --device cpu -o "$T/o.pts"
+done_testing

@@ -160,4 +160,4 @@ expect_fail "imap convert of a volume" 2 "not converted" "$T/v.png" imap convert
 expect_fail "a value past float32" 1 "outside the float range" "$T/big.frv" imap gen const:1e300 -s 2 -o "$T/big.frv"
 expect_fail "a value below float32" 1 "outside the float range" "$T/small.frv" imap gen const:1e-300 -s 2 -o "$T/small.frv"
 expect_fail "imap gen blob3 -s 4x4" 2 "WxHxD" "$T/v.frv" imap gen blob3 -s 4x4 -o "$T/v.frv"
-
+done_testing

@@ -146,3 +146,4 @@ else
 fi
 expect_fail "--device gpu" 2 "gpu" "$T/gpu.pts" \
     hsw-sample -i blob -n 10 --device gpu -o "$T/gpu.pts"
+done_testing

@@ -158,3 +158,4 @@ for sz in 64 127 128 129 200; do
 	    near "$(value mean "$T/iz")" "$(value mean "$T/is")" 1e-6 || bad="$bad $sz"
 done
 [ -z "$bad" ] && ok "EXR files read back as written" || nok "EXR files read back as written (bad:$bad)"
+done_testing

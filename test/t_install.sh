@@ -319,3 +319,4 @@ expect_fail "no data: mc-error -f env names every place" 1 \
 	nok "no data: frs_default_matrix is FRS_E_IO, naming the places"
 	sed 's/^/# /' "$T/err" | head -n 5
 }
+done_testing

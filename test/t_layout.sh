@@ -56,4 +56,4 @@ else
 	nok "no include cycle among the headers"
 	sed 's/^/# /' "$T/cycle" | head -n 10
 fi
-
+done_testing

@@ -10,8 +10,7 @@ USER_PROG="$BIN/../test/user_mapload"
 SIZE_W=4096 SIZE_H=2048
 
 if ! command -v script >/dev/null 2>&1; then
-	ok "# SKIP script(1) missing: no terminal to run on"
-	exit 0
+	skip_all "script(1) missing: no terminal to run on"
 fi
 
 # on_tty FILE CMD: run CMD (one shell word list) on a pseudo-terminal,
@@ -46,3 +45,4 @@ on_tty "$T/imapq.out" "imap gen -q -j 1 -s ${SIZE_W}x$SIZE_H -o $T/b.exr aniso"
 [ -s "$T/b.exr" ] && [ ! -s "$T/imapq.out" ] &&
     ok "imap gen -q on a terminal: no bar" ||
     nok "imap gen -q on a terminal: no bar"
+done_testing

@@ -67,3 +67,4 @@ else
 	nok "runs within the ceiling"
 	sed 's/^/# /' "$T/err"
 fi
+done_testing

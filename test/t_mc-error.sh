@@ -280,3 +280,4 @@ expect_fail "--env: missing file" 1 "$T/none.exr" "$O" \
     mc-error -f gauss --env "$T/none.exr" -o "$O" "$T/r3.pts"
 expect_fail "--env: all zero" 1 "const:0" "$O" \
     mc-error --env const:0 -o "$O" "$T/r3.pts"
+done_testing

@@ -327,3 +327,4 @@ expect_fail "--set of no point" 1 "--set 9: no point has that set" "$T/o.png" \
     sh -c "frs-sample -q -n 100 --sets 4 | pts-render --set 9 -o '$T/o.png'"
 expect_fail "--sets without --set" 2 "--set K" "$T/o.png" \
     pts-render --sets 64 -o "$T/o.png" "$T/old.txt"
+done_testing

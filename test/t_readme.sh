@@ -45,3 +45,4 @@ cmp -s "$T/before" "$T/after" && ok "no new untracked files in the tree" || {
 	nok "no new untracked files in the tree"
 	diff "$T/before" "$T/after" | head -n 10 | sed 's/^/# /'
 }
+done_testing

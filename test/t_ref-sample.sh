@@ -245,3 +245,4 @@ expect_fail "-d 3 -k relaxed-dart" 2 "relaxed-dart is two-dimensional only" "$T/
     ref-sample -d 3 -k relaxed-dart -n 10 -o "$T/o.pts"
 expect_fail "-d 3 -i blob" 2 "-i is two-dimensional only" "$T/o.pts" \
     ref-sample -d 3 -k dart -i blob -n 10 -o "$T/o.pts"
+done_testing

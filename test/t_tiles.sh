@@ -2,7 +2,7 @@
 # frs-sample --tiles: shuffled tiles give the same points from every
 # implementation and device, in 2-D (square and not), in 3-D and when a
 # pixel holds several tiles; they break the repetition that plain tiling
-# shows (the measure of test/ref_tiles.c, which must fire on planted
+# shows (the measure of test/ref/ref_tiles.c, which must fire on planted
 # periodic and mirrored sets); the counts still follow the map.
 . "$(dirname "$0")/lib.sh"
 REF=$BIN/../test/ref_tiles
@@ -117,3 +117,4 @@ frs-sample -q -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles plain -o /dev/null 2
 expect_fail "--tiles bogus" 2 "--tiles" "$T/o.pts" frs-sample -m "$T/m.frd" -n 10 --tiles bogus -o "$T/o.pts"
 frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 -v -o /dev/null 2>"$T/v.txt"
 grep -q 'tiles ([0-9]*x[0-9]*), plain' "$T/v.txt" && ok "plain by default" || nok "plain by default"
+done_testing

@@ -38,7 +38,7 @@ static void permutations(void **state)
 	}
 }
 
-#include "ref_frd.h"
+#include "ref/ref_frd.h"
 
 static void against_reference_pr(const struct frdgen_params *pr)
 {

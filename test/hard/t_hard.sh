@@ -241,3 +241,4 @@ dda --density --torus -o "$T/d2.tsv" "$T/two.txt"
 [ "$(col 3 "$T/d2.tsv")" = 0.625 ] && rel "$(col 4 "$T/d2.tsv")" "$(awk -v r="$r4" \
     'BEGIN { printf "%.17g", 0.625 * r }')" 1e-8 &&
     ok "two points: dmin 0.625, rho 0.625 3^(1/4)" || nok "two points: $(sed -n 2p "$T/d2.tsv")"
+done_testing
