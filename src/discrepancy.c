@@ -12,6 +12,7 @@
 
 #include "cli/cli.h"
 #include "analysis/disc.h"
+#include "analysis/groupstat.h"
 #include "base/outfile.h"
 #include "base/par.h"
 #include "base/progress.h"
@@ -131,58 +132,59 @@ static void per_set_rows(FILE *fp, const struct disc_opts *o,
 	}
 }
 
+/* The D2 and Dinf statistics of group k's row; its first set. */
+static size_t group_row(FILE *fp, const struct disc_opts *o,
+    const struct pt_set *sets, const size_t *group, size_t k,
+    const double *v, size_t nsets)
+{
+	struct group_stat d2, dinf;
+
+	group_stat(sets, nsets, group, k, v, 0, &d2);
+	group_stat(sets, nsets, group, k, v + nsets, 0, &dinf);
+	fprintf(fp, "%s\t%.10g\t%.0f\t", disc_class_name(o->cls), d2.n,
+	    d2.sets);
+	put_value(fp, d2.mean, o->no_d2);
+	fputc('\t', fp);
+	if (o->no_d2)
+		fputs("nan", fp);
+	else if (d2.sets > 1)
+		fprintf(fp, "%.3g", d2.se);
+	else
+		fputc('-', fp);
+	fputc('\t', fp);
+	put_value(fp, dinf.max, o->no_dinf);
+	fputc('\t', fp);
+	put_value(fp, dinf.mean, o->no_dinf);
+	return d2.first;
+}
+
 /* One row per group of sets (Eq. 6.3), in order of first appearance;
  * n is the mean point count of the group. */
 static void group_rows(FILE *fp, const struct disc_opts *o, enum pt_group g,
     const struct pt_set *sets, const struct disc_result *res, size_t nsets,
     const char *meth, double tests, int files)
 {
-	char *done = calloc(nsets, 1);
+	size_t *group = calloc(nsets, sizeof *group), ngroups;
+	double *v = calloc(nsets, 2 * sizeof *v);	/* D2s, then Dinfs */
 
-	if (done == NULL)
+	if (group == NULL || v == NULL)
 		cli_die("no memory");
+	for (size_t i = 0; i < nsets; i++)
+		v[i] = res[i].d2, v[nsets + i] = res[i].dinf;
+	ngroups = group_sets(g, sets, nsets, group);
 	fprintf(fp, "class\tn\tsets\tD2\tD2_se\tDinf\tDinf_mean\tshapes\t"
 	    "method%s\n", files ? "\tfile" : "");
-	for (size_t i = 0; i < nsets; i++) {
-		double s1 = 0, c1 = 0, smax = 0, sinf = 0, m = 0, var = 0;
-		double sn = 0;
-		if (done[i])
-			continue;
-		for (size_t j = i; j < nsets; j++)
-			if (pt_same_group(g, &sets[i], &sets[j])) {
-				s1 += res[j].d2, sinf += res[j].dinf, m++;
-				sn += (double)sets[j].n;
-				smax = res[j].dinf > smax ? res[j].dinf : smax;
-			}
-		s1 /= m;
-		for (size_t j = i; j < nsets; j++)
-			if (pt_same_group(g, &sets[i], &sets[j])) {
-				c1 = res[j].d2 - s1;
-				var += c1 * c1;
-				done[j] = 1;
-			}
-		fprintf(fp, "%s\t%.10g\t%.0f\t", disc_class_name(o->cls),
-		    sn / m, m);
-		put_value(fp, s1, o->no_d2);
-		fputc('\t', fp);
-		if (o->no_d2)
-			fputs("nan", fp);
-		else if (m > 1)
-			fprintf(fp, "%.3g", sqrt(var / (m - 1) / m));
-		else
-			fputc('-', fp);
-		fputc('\t', fp);
-		put_value(fp, smax, o->no_dinf);
-		fputc('\t', fp);
-		put_value(fp, sinf / m, o->no_dinf);
+	for (size_t k = 0; k < ngroups; k++) {
+		size_t first = group_row(fp, o, sets, group, k, v, nsets);
 		fprintf(fp, "\t%.17g\t%s", tests, meth);
 		if (files) {
 			fputc('\t', fp);
-			pt_put_name(fp, sets[i].file);
+			pt_put_name(fp, sets[first].file);
 		}
 		fputc('\n', fp);
 	}
-	free(done);
+	free(group);
+	free(v);
 }
 
 /* Every set before any work: a 3-D set with another class than star, or
