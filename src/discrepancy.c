@@ -11,6 +11,8 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/output.h"
+#include "cli/ptsopt.h"
 #include "analysis/disc.h"
 #include "analysis/groupstat.h"
 #include "base/outfile.h"
@@ -249,24 +251,15 @@ int main(int argc, char **argv)
 		case OPT_EXACT: o.exact_d2 = 1; break;
 		case OPT_D2_ONLY: o.no_dinf = 1; break;
 		case OPT_DINF_ONLY: o.no_d2 = 1; break;
-		case OPT_SETS:
-			per = (size_t)cli_u64("--sets", optarg, 1,
-			    (uint64_t)1 << 40);
-			break;
+		case OPT_SETS: per = cli_sets(optarg); break;
 		case OPT_PER_SET: per_set = 1; break;
-		case OPT_GROUP:
-			if ((c = pt_group_parse(optarg)) < 0)
-				cli_usage_error("--group: '%s' is not n, file "
-				    "or all", optarg);
-			group = (enum pt_group)c;
-			break;
+		case OPT_GROUP: group = cli_group(optarg); break;
 		default:
 			if (!cli_common_opt(c, optarg))
 				cli_usage(2);
 		}
 	}
-	if (optind == argc)
-		cli_usage_error("no point files");
+	cli_need_files(argc);
 	if (o.exact_d2 && !disc_has_exact_d2(o.cls))
 		cli_usage_error("--exact: no closed form for class %s; use "
 		    "--shapes or --grid", disc_class_name(o.cls));
@@ -290,9 +283,7 @@ int main(int argc, char **argv)
 	cli_options_done();
 
 	ps.max_dims = 3;
-	for (int i = optind; i < argc; i++)
-		if (pt_sets_add(&ps, argv[i], per) < 0)
-			cli_die_lib();
+	cli_read_sets(&ps, argc, argv, per, NULL, NULL);
 	sets = ps.set, nsets = ps.n;
 	if (ps.dims == 3 && !have_grid)
 		o.grid = DISC3_STAR_GRID;
@@ -322,15 +313,13 @@ int main(int argc, char **argv)
 	method(&o, meth, sizeof meth);
 	tests = o.exact_d2 && (o.exact_dinf || o.no_dinf) ? 0.0 :
 	    disc_tests_dims(&o, ps.dims);
-	if (outfile_open(&of, cli.out, 0) < 0)
-		cli_die_lib();
+	cli_out_open(&of, cli.out, 0);
 	if (per_set)
 		per_set_rows(of.fp, &o, sets, res, nsets, meth, tests);
 	else
 		group_rows(of.fp, &o, group, sets, res, nsets, meth, tests,
 		    pt_group_files(group, (size_t)(argc - optind)));
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
+	cli_out_commit(&of, 0);
 	pt_sets_free(&ps);
 	free(res);
 	return 0;

@@ -10,6 +10,7 @@
 
 #include "api/hswrun.h"
 #include "cli/cli.h"
+#include "cli/output.h"
 #include "maps/imap.h"
 #include "base/mem.h"
 #include "base/outfile.h"
@@ -216,23 +217,20 @@ static void warp_and_write(const struct opts *o, struct hsw_run *r,
 	static const char *const names[] = { PTS_COL_PDF };
 	double t0;
 
-	if (outfile_open(&u->of, cli.out, !cli.text) < 0)
-		cli_die_lib();
-	if (pts_writer_begin(&u->w, u->of.fp, u->of.name, 2, (unsigned)o->pdf,
-	    names, o->n, cli.text) < 0 || hsw_run_each(r,
-	    (enum hsw_input)(o->input == INPUT_DART ? HSW_HALTON : o->input),
-	    pts, o->n, cli.seed, o->pdf, put_round, u) < 0)
-		goto fail;
+	int rc;
+
+	cli_out_open(&u->of, cli.out, !cli.text);
+	rc = pts_writer_begin(&u->w, u->of.fp, u->of.name, 2, (unsigned)o->pdf,
+	    names, o->n, cli.text);
+	if (rc == 0)
+		rc = hsw_run_each(r, (enum hsw_input)(o->input == INPUT_DART ?
+		    HSW_HALTON : o->input), pts, o->n, cli.seed, o->pdf,
+		    put_round, u);
 	t0 = progress_now();
-	if (pts_writer_end(&u->w) < 0)
-		goto fail;
-	if (outfile_commit(&u->of) < 0)
-		cli_die_lib();
+	if (rc == 0)
+		rc = pts_writer_end(&u->w);
+	cli_out_commit(&u->of, rc);
 	u->t_out += progress_now() - t0;
-	return;
-fail:
-	outfile_abort(&u->of);
-	cli_die_lib();
 }
 
 static void report(const struct opts *o, const struct hsw_run *r,

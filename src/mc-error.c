@@ -11,6 +11,8 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/output.h"
+#include "cli/ptsopt.h"
 #include "analysis/groupstat.h"
 #include "analysis/integrand.h"
 #include "base/datadir.h"
@@ -86,15 +88,16 @@ static void parse_functions(const char *arg, unsigned *mask)
 		cli_usage_error("-f: no integrand in '%s'", arg);
 }
 
-/* Read a file as sets (pt_sets_add) and check its densities: required
- * by --weights, positive and finite when used.  -1 with a message. */
-static int add_file(struct pt_sets *s, const char *path, size_t per,
-    enum pdfmode mode)
+/* A file's sets (from first on) as the pdf mode wants them: a density
+ * required by --weights, positive and finite when used.  -1 with a
+ * message. */
+static int check_pdf(void *ctx, const struct pt_sets *s, size_t file,
+    size_t first)
 {
-	size_t first = s->n;
+	enum pdfmode mode = *(const enum pdfmode *)ctx;
+	const char *path = s->set[first].file;
 
-	if (pt_sets_add(s, path, per) < 0)
-		return -1;
+	(void)file;
 	if (mode == PDF_REQUIRE && s->set[first].w == NULL)
 		return frs_fail("%s: --weights: no pdf column", path);
 	/* Points counted from 0 over the file, as its reader counts them. */
@@ -176,15 +179,6 @@ static void load_env(const char *src, unsigned mask)
 		cli_die_lib();
 }
 
-static enum pt_group parse_group(const char *arg)
-{
-	int g = pt_group_parse(arg);
-
-	if (g < 0)
-		cli_usage_error("--group: '%s' is not n, file or all", arg);
-	return (enum pt_group)g;
-}
-
 int main(int argc, char **argv)
 {
 	unsigned mask = 0;
@@ -201,11 +195,8 @@ int main(int argc, char **argv)
 	    longopts)) != -1) {
 		switch (c) {
 		case 'f': parse_functions(optarg, &mask); break;
-		case OPT_SETS:
-			per = (size_t)cli_u64("--sets", optarg, 1,
-			    (uint64_t)1 << 40);
-			break;
-		case OPT_GROUP: grp = parse_group(optarg); break;
+		case OPT_SETS: per = cli_sets(optarg); break;
+		case OPT_GROUP: grp = cli_group(optarg); break;
 		case OPT_WEIGHTS: weights = 1; break;
 		case OPT_NO_PDF: nopdf = 1; break;
 		case OPT_ENV: env = optarg; break;
@@ -214,8 +205,7 @@ int main(int argc, char **argv)
 				cli_usage(2);
 		}
 	}
-	if (optind == argc)
-		cli_usage_error("no point files");
+	cli_need_files(argc);
 	if (weights && nopdf)
 		cli_usage_error("--weights and --no-pdf exclude each other");
 	mode = weights ? PDF_REQUIRE : nopdf ? PDF_IGNORE : PDF_AUTO;
@@ -224,14 +214,10 @@ int main(int argc, char **argv)
 	cli_options_done();
 
 	load_env(env, mask);
-	for (int i = optind; i < argc; i++)
-		if (add_file(&s, argv[i], per, mode) < 0)
-			cli_die_lib();
-	if (outfile_open(&of, cli.out, 0) < 0)
-		cli_die_lib();
+	cli_read_sets(&s, argc, argv, per, check_pdf, &mode);
+	cli_out_open(&of, cli.out, 0);
 	table(of.fp, mask, grp, &s, mode, (size_t)(argc - optind));
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
+	cli_out_commit(&of, 0);
 	pt_sets_free(&s);
 	imap_free(&envmap);
 	return 0;
