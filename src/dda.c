@@ -169,8 +169,7 @@ static void parse(int argc, char **argv, struct opts *o)
 		case OPT_DB: parse_db(o, optarg); break;
 		case OPT_SETS: o->per = cli_sets(optarg); break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	cli_need_files(argc);

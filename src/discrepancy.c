@@ -255,8 +255,7 @@ int main(int argc, char **argv)
 		case OPT_PER_SET: per_set = 1; break;
 		case OPT_GROUP: group = cli_group(optarg); break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	cli_need_files(argc);

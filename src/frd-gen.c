@@ -450,8 +450,7 @@ int main(int argc, char **argv)
 			verbose = 1;
 			break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	if (qfile != NULL) {
@@ -461,8 +460,7 @@ int main(int argc, char **argv)
 			quality(argv[i]);
 		return 0;
 	}
-	if (optind != argc)
-		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	cli_no_operands(argc, argv);
 	if (size == NULL)
 		cli_usage_error("-s SIZE is required");
 	parse_dims(size, &pr);

@@ -230,8 +230,7 @@ int main(int argc, char **argv)
 		case OPT_SIGMA: sigma = cli_double("--sigma", optarg, 1.0, 1e6); break;
 		case 'v': verbose = 1; break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	if (argc - optind > 1)

@@ -113,12 +113,10 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		case OPT_LIST: cli_list_devices();
 		case 'v': o->verbose = 1; break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
-	if (optind != argc)
-		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	cli_no_operands(argc, argv);
 	if (o->imp == NULL)
 		cli_usage_error("-i IMPORTANCE is required");
 	if (!o->have_n && o->file == NULL)

@@ -157,8 +157,7 @@ static int parse_opts(int argc, char **argv)
 				    "frv", optarg);
 			break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	return optind;

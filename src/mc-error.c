@@ -201,8 +201,7 @@ int main(int argc, char **argv)
 		case OPT_NO_PDF: nopdf = 1; break;
 		case OPT_ENV: env = optarg; break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	cli_need_files(argc);

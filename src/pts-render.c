@@ -208,8 +208,7 @@ int main(int argc, char **argv)
 				    optarg);
 			break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	if (argc - optind > 1)

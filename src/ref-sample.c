@@ -174,12 +174,10 @@ int main(int argc, char **argv)
 			sets = cli_u64("--sets", optarg, 1, SETS_MAX_TOTAL);
 			break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
-	if (optind != argc)
-		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	cli_no_operands(argc, argv);
 	if (!have_n)
 		cli_usage_error("-n COUNT is required");
 	check_dims(dims, kind, imp);
