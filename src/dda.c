@@ -12,6 +12,8 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/output.h"
+#include "cli/ptsopt.h"
 #include "analysis/ddaspec.h"
 #include "analysis/density.h"
 #include "maps/imap.h"
@@ -165,17 +167,12 @@ static void parse(int argc, char **argv, struct opts *o)
 		case OPT_PNG: o->png = cli_outname("--png", optarg); break;
 		case OPT_RADIAL: o->radial = cli_outname("--radial", optarg); break;
 		case OPT_DB: parse_db(o, optarg); break;
-		case OPT_SETS:
-			o->per = (size_t)cli_u64("--sets", optarg, 1,
-			    (uint64_t)1 << 40);
-			break;
+		case OPT_SETS: o->per = cli_sets(optarg); break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
-	if (optind == argc)
-		cli_usage_error("no point files");
+	cli_need_files(argc);
 	if (o->nmodes > 1)
 		cli_usage_error("one of --fourier, --dda, --density, --rdf");
 	if (o->summary && (o->mode == DENSITY || o->mode == RDF))
@@ -249,11 +246,9 @@ static void write_radial(const struct opts *o, const struct spec_img *im)
 	struct outfile of;
 
 	radial_of(o, im, &r);
-	if (outfile_open(&of, o->radial, 0) < 0)
-		cli_die_lib();
+	cli_out_open(&of, o->radial, 0);
 	print_radial(o, of.fp, &r, NULL);
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
+	cli_out_commit(&of, 0);
 	spec_radial_free(&r);
 }
 
@@ -261,14 +256,9 @@ static void write_png(const struct opts *o, const struct spec_img *im)
 {
 	struct outfile of;
 
-	if (outfile_open(&of, o->png, 1) < 0)
-		cli_die_lib();
-	if (spec_write_png(of.fp, of.name, im, o->lo_db, o->hi_db) < 0) {
-		outfile_abort(&of);
-		cli_die_lib();
-	}
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
+	cli_out_open(&of, o->png, 1);
+	cli_out_commit(&of, spec_write_png(of.fp, of.name, im, o->lo_db,
+	    o->hi_db));
 }
 
 /* The image as a table: offset x, offset y, value. */
@@ -701,14 +691,8 @@ static void summary(const struct opts *o, const struct pt_sets *ps,
 		print_rdf(o, out, gr[k].g, gr[k].set[0].file);
 	}
 	if (ppg != NULL) {
-		if (outfile_open(&of, o->png, 1) < 0)
-			cli_die_lib();
-		if (raster_write_png(of.fp, of.name, &pg.r) < 0) {
-			outfile_abort(&of);
-			cli_die_lib();
-		}
-		if (outfile_commit(&of) < 0)
-			cli_die_lib();
+		cli_out_open(&of, o->png, 1);
+		cli_out_commit(&of, raster_write_png(of.fp, of.name, &pg.r));
 		raster_free(&pg.r);
 	}
 	for (size_t k = 0; k < ngroups; k++) {
@@ -718,6 +702,17 @@ static void summary(const struct opts *o, const struct pt_sets *ps,
 	free(gr);
 	free(dmin);
 	free(rho);
+}
+
+/* first[k + 1]: the sets of files 0 .. k. */
+static int note_first(void *ctx, const struct pt_sets *s, size_t file,
+    size_t first)
+{
+	size_t *f = ctx;
+
+	(void)first;
+	f[file + 1] = s->n;
+	return 0;
 }
 
 int main(int argc, char **argv)
@@ -736,16 +731,11 @@ int main(int argc, char **argv)
 	if ((first = calloc((size_t)(argc - optind) + 1, sizeof *first)) ==
 	    NULL)
 		cli_die("no memory");
-	for (int i = optind; i < argc; i++) {
-		if (pt_sets_add(&ps, argv[i], o.per) < 0)
-			cli_die_lib();
-		first[i - optind + 1] = ps.n;
-	}
+	cli_read_sets(&ps, argc, argv, o.per, note_first, first);
 	check_3d(&o, &ps);
 	if (o.imp && imap_load(o.imp, o.mw, o.mh, 0, &map) < 0)
 		cli_die_lib();
-	if (outfile_open(&of, cli.out, 0) < 0)
-		cli_die_lib();
+	cli_out_open(&of, cli.out, 0);
 	if (o.summary)
 		summary(&o, &ps, first, (size_t)(argc - optind), &map, of.fp);
 	else switch (o.mode) {
@@ -754,8 +744,7 @@ int main(int argc, char **argv)
 	case DENSITY: density(&o, &ps, &map, of.fp); break;
 	default: rdf(&o, &ps, &map, of.fp); break;
 	}
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
+	cli_out_commit(&of, 0);
 	if (o.imp)
 		imap_free(&map);
 	pt_sets_free(&ps);

@@ -11,7 +11,10 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/output.h"
+#include "cli/ptsopt.h"
 #include "analysis/disc.h"
+#include "analysis/groupstat.h"
 #include "base/outfile.h"
 #include "base/par.h"
 #include "base/progress.h"
@@ -131,58 +134,59 @@ static void per_set_rows(FILE *fp, const struct disc_opts *o,
 	}
 }
 
+/* The D2 and Dinf statistics of group k's row; its first set. */
+static size_t group_row(FILE *fp, const struct disc_opts *o,
+    const struct pt_set *sets, const size_t *group, size_t k,
+    const double *v, size_t nsets)
+{
+	struct group_stat d2, dinf;
+
+	group_stat(sets, nsets, group, k, v, 0, &d2);
+	group_stat(sets, nsets, group, k, v + nsets, 0, &dinf);
+	fprintf(fp, "%s\t%.10g\t%.0f\t", disc_class_name(o->cls), d2.n,
+	    d2.sets);
+	put_value(fp, d2.mean, o->no_d2);
+	fputc('\t', fp);
+	if (o->no_d2)
+		fputs("nan", fp);
+	else if (d2.sets > 1)
+		fprintf(fp, "%.3g", d2.se);
+	else
+		fputc('-', fp);
+	fputc('\t', fp);
+	put_value(fp, dinf.max, o->no_dinf);
+	fputc('\t', fp);
+	put_value(fp, dinf.mean, o->no_dinf);
+	return d2.first;
+}
+
 /* One row per group of sets (Eq. 6.3), in order of first appearance;
  * n is the mean point count of the group. */
 static void group_rows(FILE *fp, const struct disc_opts *o, enum pt_group g,
     const struct pt_set *sets, const struct disc_result *res, size_t nsets,
     const char *meth, double tests, int files)
 {
-	char *done = calloc(nsets, 1);
+	size_t *group = calloc(nsets, sizeof *group), ngroups;
+	double *v = calloc(nsets, 2 * sizeof *v);	/* D2s, then Dinfs */
 
-	if (done == NULL)
+	if (group == NULL || v == NULL)
 		cli_die("no memory");
+	for (size_t i = 0; i < nsets; i++)
+		v[i] = res[i].d2, v[nsets + i] = res[i].dinf;
+	ngroups = group_sets(g, sets, nsets, group);
 	fprintf(fp, "class\tn\tsets\tD2\tD2_se\tDinf\tDinf_mean\tshapes\t"
 	    "method%s\n", files ? "\tfile" : "");
-	for (size_t i = 0; i < nsets; i++) {
-		double s1 = 0, c1 = 0, smax = 0, sinf = 0, m = 0, var = 0;
-		double sn = 0;
-		if (done[i])
-			continue;
-		for (size_t j = i; j < nsets; j++)
-			if (pt_same_group(g, &sets[i], &sets[j])) {
-				s1 += res[j].d2, sinf += res[j].dinf, m++;
-				sn += (double)sets[j].n;
-				smax = res[j].dinf > smax ? res[j].dinf : smax;
-			}
-		s1 /= m;
-		for (size_t j = i; j < nsets; j++)
-			if (pt_same_group(g, &sets[i], &sets[j])) {
-				c1 = res[j].d2 - s1;
-				var += c1 * c1;
-				done[j] = 1;
-			}
-		fprintf(fp, "%s\t%.10g\t%.0f\t", disc_class_name(o->cls),
-		    sn / m, m);
-		put_value(fp, s1, o->no_d2);
-		fputc('\t', fp);
-		if (o->no_d2)
-			fputs("nan", fp);
-		else if (m > 1)
-			fprintf(fp, "%.3g", sqrt(var / (m - 1) / m));
-		else
-			fputc('-', fp);
-		fputc('\t', fp);
-		put_value(fp, smax, o->no_dinf);
-		fputc('\t', fp);
-		put_value(fp, sinf / m, o->no_dinf);
+	for (size_t k = 0; k < ngroups; k++) {
+		size_t first = group_row(fp, o, sets, group, k, v, nsets);
 		fprintf(fp, "\t%.17g\t%s", tests, meth);
 		if (files) {
 			fputc('\t', fp);
-			pt_put_name(fp, sets[i].file);
+			pt_put_name(fp, sets[first].file);
 		}
 		fputc('\n', fp);
 	}
-	free(done);
+	free(group);
+	free(v);
 }
 
 /* Every set before any work: a 3-D set with another class than star, or
@@ -247,24 +251,14 @@ int main(int argc, char **argv)
 		case OPT_EXACT: o.exact_d2 = 1; break;
 		case OPT_D2_ONLY: o.no_dinf = 1; break;
 		case OPT_DINF_ONLY: o.no_d2 = 1; break;
-		case OPT_SETS:
-			per = (size_t)cli_u64("--sets", optarg, 1,
-			    (uint64_t)1 << 40);
-			break;
+		case OPT_SETS: per = cli_sets(optarg); break;
 		case OPT_PER_SET: per_set = 1; break;
-		case OPT_GROUP:
-			if ((c = pt_group_parse(optarg)) < 0)
-				cli_usage_error("--group: '%s' is not n, file "
-				    "or all", optarg);
-			group = (enum pt_group)c;
-			break;
+		case OPT_GROUP: group = cli_group(optarg); break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
-	if (optind == argc)
-		cli_usage_error("no point files");
+	cli_need_files(argc);
 	if (o.exact_d2 && !disc_has_exact_d2(o.cls))
 		cli_usage_error("--exact: no closed form for class %s; use "
 		    "--shapes or --grid", disc_class_name(o.cls));
@@ -288,9 +282,7 @@ int main(int argc, char **argv)
 	cli_options_done();
 
 	ps.max_dims = 3;
-	for (int i = optind; i < argc; i++)
-		if (pt_sets_add(&ps, argv[i], per) < 0)
-			cli_die_lib();
+	cli_read_sets(&ps, argc, argv, per, NULL, NULL);
 	sets = ps.set, nsets = ps.n;
 	if (ps.dims == 3 && !have_grid)
 		o.grid = DISC3_STAR_GRID;
@@ -320,15 +312,13 @@ int main(int argc, char **argv)
 	method(&o, meth, sizeof meth);
 	tests = o.exact_d2 && (o.exact_dinf || o.no_dinf) ? 0.0 :
 	    disc_tests_dims(&o, ps.dims);
-	if (outfile_open(&of, cli.out, 0) < 0)
-		cli_die_lib();
+	cli_out_open(&of, cli.out, 0);
 	if (per_set)
 		per_set_rows(of.fp, &o, sets, res, nsets, meth, tests);
 	else
 		group_rows(of.fp, &o, group, sets, res, nsets, meth, tests,
 		    pt_group_files(group, (size_t)(argc - optind)));
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
+	cli_out_commit(&of, 0);
 	pt_sets_free(&ps);
 	free(res);
 	return 0;

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "cli/output.h"
 #include "frd/frdgen.h"
 #include "frd/frdgencl.h"
 #include "formats/frdio.h"
@@ -294,12 +295,7 @@ static void check_method(const struct method_opts *mo,
 /* Write a finished matrix to the open output, or die removing it. */
 static void write_matrix(struct outfile *of, const struct frs_matrix *m)
 {
-	if (frd_write(of->fp, of->name, m) < 0) {
-		outfile_abort(of);
-		cli_die_lib();
-	}
-	if (outfile_commit(of) < 0)
-		cli_die_lib();
+	cli_out_commit(of, frd_write(of->fp, of->name, m));
 }
 
 /* --method vac: the void-and-cluster baseline (vac.h). */
@@ -327,8 +323,7 @@ static int run_vac(const struct frdgen_params *pr,
 		cli_usage_error("%s", frs_errmsg());
 	check_memory(pr, vac_memory(&vp));
 	cli_options_done();
-	if (outfile_open(&of, cli.out, 1) < 0)
-		cli_die_lib();
+	cli_out_open(&of, cli.out, 1);
 	t0 = progress_now();
 	progress_begin(&prog, "void-and-cluster", (uint64_t)vp.w * vp.h * vp.d);
 	if (vac_run(&vp, &m, &prog, &st) < 0) {
@@ -455,8 +450,7 @@ int main(int argc, char **argv)
 			verbose = 1;
 			break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	if (qfile != NULL) {
@@ -466,8 +460,7 @@ int main(int argc, char **argv)
 			quality(argv[i]);
 		return 0;
 	}
-	if (optind != argc)
-		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	cli_no_operands(argc, argv);
 	if (size == NULL)
 		cli_usage_error("-s SIZE is required");
 	parse_dims(size, &pr);
@@ -490,8 +483,7 @@ int main(int argc, char **argv)
 	if (use_cl && ocl_open(&o, dev) < 0)
 		cli_die_lib();
 	/* Open the output first: a bad path fails before hours of work. */
-	if (outfile_open(&of, cli.out, 1) < 0)
-		cli_die_lib();
+	cli_out_open(&of, cli.out, 1);
 	t0 = progress_now();
 	progress_begin(&prog, "inserting", (uint64_t)pr.w * pr.h * pr.d);
 	if ((use_cl ? frdgen_run_cl(&pr, &o, &m, &prog) :

@@ -9,6 +9,7 @@
 
 #include "api/api.h"
 #include "cli/cli.h"
+#include "cli/output.h"
 #include "formats/frdio.h"
 #include "sample/frscore.h"
 #include "maps/imap.h"
@@ -162,8 +163,7 @@ static noreturn void check_frp(FILE *fp, const char *name,
 	if (frp_check_fp(fp, name, pre, npre, &s) < 0)
 		cli_die_lib();
 	io_close_in(fp);
-	if (outfile_open(&o, cli.out, 0) < 0)
-		cli_die_lib();
+	cli_out_open(&o, cli.out, 0);
 	fprintf(o.fp, "%s: a valid prepared matrix: %ux%u, checksum %016llx, "
 	    "%s, ", name, s.w, s.h, (unsigned long long)s.sum,
 	    s.minmap ? "a minmap" : "no minmap");
@@ -172,8 +172,7 @@ static noreturn void check_frp(FILE *fp, const char *name,
 	for (unsigned i = 0; i < s.nblocks; i++)
 		fprintf(o.fp, "%s%u%s", i ? "," : "sorted lists of blocks ",
 		    s.blocks[i], i + 1 == s.nblocks ? "\n" : "");
-	if (outfile_commit(&o) < 0)
-		cli_die_lib();
+	cli_out_commit(&o, 0);
 	if (verbose)
 		fprintf(stderr, "frd-prep: %ux%u matrix, checksum %016llx\n", s.w,
 		    s.h, (unsigned long long)s.sum);
@@ -231,8 +230,7 @@ int main(int argc, char **argv)
 		case OPT_SIGMA: sigma = cli_double("--sigma", optarg, 1.0, 1e6); break;
 		case 'v': verbose = 1; break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	if (argc - optind > 1)
@@ -286,17 +284,11 @@ int main(int argc, char **argv)
 		if (blocks[i] > m.w || blocks[i] > m.h)
 			cli_die("--blocks: %u exceeds the %ux%u matrix", blocks[i],
 			    m.w, m.h);
-	if (outfile_open(&o, cli.out, 1) < 0)
-		cli_die_lib();
+	cli_out_open(&o, cli.out, 1);
 	rc = minmap || sorted ? frp_write(o.fp, o.name, src, &m, minmap,
 	    sorted ? blocks : NULL, sorted ? nblocks : 0) :
 	    frd_write(o.fp, o.name, &m);
-	if (rc < 0) {
-		outfile_abort(&o);
-		cli_die_lib();
-	}
-	if (outfile_commit(&o) < 0)
-		cli_die_lib();
+	cli_out_commit(&o, rc);
 	if (verbose)
 		fprintf(stderr, "frd-prep: %ux%u matrix, checksum %016llx\n", m.w,
 		    m.h, (unsigned long long)frd_checksum(&m));

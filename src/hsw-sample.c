@@ -3,19 +3,16 @@
  * map (Clarberg et al. 2005), the reference FRS is compared with.
  */
 #define _POSIX_C_SOURCE 200809L
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-#include "api/api.h"
+#include "api/hswrun.h"
 #include "cli/cli.h"
-#include "sample/hsw.h"
-#include "sample/hswcl.h"
+#include "cli/output.h"
 #include "maps/imap.h"
 #include "base/mem.h"
-#include "base/ocl.h"
 #include "base/outfile.h"
 #include "base/par.h"
 #include "base/progress.h"
@@ -116,12 +113,10 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		case OPT_LIST: cli_list_devices();
 		case 'v': o->verbose = 1; break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
-	if (optind != argc)
-		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	cli_no_operands(argc, argv);
 	if (o->imp == NULL)
 		cli_usage_error("-i IMPORTANCE is required");
 	if (!o->have_n && o->file == NULL)
@@ -197,146 +192,90 @@ static double *make_input(struct opts *o)
 	return pts;
 }
 
-/* Points per round of warping and writing: the record buffer (1.5 MiB
- * with --pdf), filled by all threads, then written at once. */
-#define ROUND ((uint64_t)1 << 16)
-
-/* Seconds spent warping and writing. */
-struct times {
-	double warp, out;
+/* The output, and the seconds spent writing it. */
+struct output {
+	struct outfile of;
+	struct pts_writer w;
+	double t_out;
 };
 
-/*
- * Rounds of ROUND points: warped into the record buffer (x, y and the
- * density with --pdf) by all threads, or, with the device, warped there
- * beforehand (pts) and packed here; then written by one
- * pts_writer_put_n.  A point depends only on its index, so the bytes
- * are the same for any thread count, round or chunk size.
- */
-static int write_rounds(const struct opts *o, const frs_hsw *hw,
-    struct hswcl *hc, double *pts, struct pts_writer *w,
-    struct times *tm)
+static int put_round(void *ctx, const double *rec, size_t k)
 {
-	struct hsw_source src = { HSW_HALTON, o->n, cli.seed, pts };
-	const struct frs_imap *map = o->pdf ? &hw->map : NULL;
-	unsigned stride = o->pdf ? 3 : 2;
-	uint64_t cap = o->n < ROUND ? o->n : ROUND;
-	double *rec, t0 = progress_now(), mean = hsw_mean(&hw->t, &hw->map);
-	int rc = -1;
+	struct output *u = ctx;
+	double t0 = progress_now();
+	int rc = pts_writer_put_n(&u->w, rec, k);
 
-	if (pts == NULL && o->input != INPUT_DART)
-		src.kind = (enum hsw_input)o->input;
-	if ((rec = mem_calloc("output buffer", cap, stride * sizeof *rec)) ==
-	    NULL)
-		return -1;
-	if (hc != NULL && hswcl_warp_points(hc, pts, pts, o->n) < 0)
-		goto out;
-	for (uint64_t b = 0; b < o->n; b += ROUND) {
-		uint64_t m = o->n - b < ROUND ? o->n - b : ROUND;
-		double t1;
-
-		if (hc == NULL) {
-			if (hsw_sample(&hw->t, &src, map, b, b + m, rec) < 0)
-				goto out;
-		} else
-			for (uint64_t q = 0; q < m; q++) {
-				double *r = rec + q * stride;
-				r[0] = pts[2 * (b + q)];
-				r[1] = pts[2 * (b + q) + 1];
-				if (map != NULL)
-					r[2] = hsw_pdf_at(map, mean, r[0], r[1]);
-			}
-		t1 = progress_now();
-		tm->warp += t1 - t0;
-		if (pts_writer_put_n(w, rec, (size_t)m) < 0)
-			goto out;
-		t0 = progress_now();
-		tm->out += t0 - t1;
-	}
-	rc = 0;
-out:
-	free(rec);
+	u->t_out += progress_now() - t0;
 	return rc;
 }
 
-static void warp_and_write(const struct opts *o, const frs_hsw *hw,
-    struct hswcl *hc, double *pts, struct times *tm)
+static void warp_and_write(const struct opts *o, struct hsw_run *r,
+    double *pts, struct output *u)
 {
-	struct outfile of;
-	struct pts_writer w;
 	static const char *const names[] = { PTS_COL_PDF };
 	double t0;
 
-	if (outfile_open(&of, cli.out, !cli.text) < 0)
-		cli_die_lib();
-	if (pts_writer_begin(&w, of.fp, of.name, 2, (unsigned)o->pdf, names,
-	    o->n, cli.text) < 0 || write_rounds(o, hw, hc, pts, &w, tm) < 0)
-		goto fail;
+	int rc;
+
+	cli_out_open(&u->of, cli.out, !cli.text);
+	rc = pts_writer_begin(&u->w, u->of.fp, u->of.name, 2, (unsigned)o->pdf,
+	    names, o->n, cli.text);
+	if (rc == 0)
+		rc = hsw_run_each(r, (enum hsw_input)(o->input == INPUT_DART ?
+		    HSW_HALTON : o->input), pts, o->n, cli.seed, o->pdf,
+		    put_round, u);
 	t0 = progress_now();
-	if (pts_writer_end(&w) < 0)
-		goto fail;
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
-	tm->out += progress_now() - t0;
-	return;
-fail:
-	outfile_abort(&of);
-	cli_die_lib();
+	if (rc == 0)
+		rc = pts_writer_end(&u->w);
+	cli_out_commit(&u->of, rc);
+	u->t_out += progress_now() - t0;
+}
+
+static void report(const struct opts *o, const struct hsw_run *r,
+    double t_setup, double t_out)
+{
+	static const char *const names[] = { "random", "regular", "jittered",
+	    "halton", "hammersley" };
+	uint32_t w, h, side;
+	unsigned levels;
+	double mean;
+
+	hsw_run_shape(r, &w, &h, &side, &levels, &mean);
+	fprintf(stderr, "hsw-sample: map %ux%u padded to %ux%u (%u levels), "
+	    "mean %.6g; input %s, %llu points, %d threads\n", w, h, side, side,
+	    levels, mean, o->file ? o->file : o->input == INPUT_DART ? "dart" :
+	    names[o->input], (unsigned long long)o->n, frs_threads());
+	fprintf(stderr, "hsw-sample: setup %.6f s, warping %.6f s, output "
+	    "%.6f s\n", t_setup, r->t_warp, t_out);
+	if (r->cl)
+		fprintf(stderr, "hsw-sample: device %s: program and tree %.6f "
+		    "s; points written %.6f s, kernel %.6f s, read %.6f s\n",
+		    r->dev.name, r->hc.t_setup, r->hc.t_write, r->hc.t_kernel,
+		    r->hc.t_read);
 }
 
 int main(int argc, char **argv)
 {
-	static const char *const names[] = { "random", "regular", "jittered",
-	    "halton", "hammersley" };
 	struct opts o = { NULL, NULL, HSW_HALTON, 0, 0, 0, 0, 0, 0, 0, -1 };
-	struct frs_imap map;
-	frs_hsw *hw;
-	frs_error err;
-	struct ocl dev;
-	struct hswcl hc;
-	double *pts = NULL, t0, t1;
-	struct times tm = { 0, 0 };
+	struct hsw_run r;
+	struct output u = { .t_out = 0 };
+	double *pts = NULL, t0, t_input;
 
 	cli_init("hsw-sample", usage);
 	parse_opts(argc, argv, &o);
 	cli_options_done();
-	if (o.cl && ocl_open(&dev, o.cl_index) < 0)
+	if (hsw_run_open(&r, o.imp, o.w, o.h, o.cl, o.cl_index) < 0)
 		cli_die_lib();
-	if (imap_load(o.imp, o.w, o.h, 0, &map) < 0)
-		cli_die_lib();
-	t0 = progress_now();
-	if (frs_hsw_new_f64(&hw, map.v, map.w, map.h, 0, &err) != FRS_OK)
-		cli_die("%s: %s", o.imp, err.message);
-	if (o.cl && hswcl_init(&hc, &dev, &hw->t) < 0)
-		cli_die_lib();
-	/* The sets are made on the fly, chunk by chunk, except for the
+	/* The sets are made on the fly, round by round, except for the
 	 * device, which is handed them all. */
+	t0 = progress_now();
 	if (o.file != NULL || o.input == INPUT_DART || o.cl)
 		pts = make_input(&o);
-	t1 = progress_now();
-	warp_and_write(&o, hw, o.cl ? &hc : NULL, pts, &tm);
-	if (o.verbose) {
-		fprintf(stderr, "hsw-sample: map %ux%u padded to %ux%u "
-		    "(%u levels), mean %.6g; input %s, %llu points, %d "
-		    "threads\n", map.w, map.h, hw->t.size, hw->t.size,
-		    hw->t.levels, hw->t.total / ((double)map.w * (double)map.h),
-		    o.file ? o.file : o.input == INPUT_DART ? "dart" :
-		    names[o.input], (unsigned long long)o.n,
-		    frs_threads());
-		fprintf(stderr, "hsw-sample: setup %.6f s, warping %.6f s, "
-		    "output %.6f s\n", t1 - t0, tm.warp, tm.out);
-		if (o.cl)
-			fprintf(stderr, "hsw-sample: device %s: program and "
-			    "tree %.6f s; points written %.6f s, kernel %.6f "
-			    "s, read %.6f s\n", dev.name, hc.t_setup,
-			    hc.t_write, hc.t_kernel, hc.t_read);
-	}
-	if (o.cl) {
-		hswcl_free(&hc);
-		ocl_close(&dev);
-	}
+	t_input = progress_now() - t0;
+	warp_and_write(&o, &r, pts, &u);
+	if (o.verbose)
+		report(&o, &r, r.t_tree + t_input, u.t_out);
+	hsw_run_close(&r);
 	free(pts);
-	frs_hsw_free(hw);
-	imap_free(&map);
 	return 0;
 }

@@ -10,6 +10,7 @@
 #include <strings.h>
 
 #include "cli/cli.h"
+#include "cli/output.h"
 #include "maps/imap.h"
 #include "base/outfile.h"
 #include "maps/vol.h"
@@ -106,23 +107,15 @@ static void write_map(const char *path, struct frs_imap *m)
 {
 	struct outfile o;
 	enum fmt f = format_of(path);
-	int rc;
 
 	if (f == FMT_FRV)
 		cli_usage_error("%s: a 2-D map cannot be written as a volume "
 		    "(.frv)", path ? path : "<stdout>");
 	if (opt_log)
 		to_log(m);
-	if (outfile_open(&o, path, 1) < 0)
-		cli_die_lib();
-	rc = f == FMT_PNG ? imap_write_png16(o.fp, o.name, m) :
-	    imap_write_exr(o.fp, o.name, m);
-	if (rc < 0) {
-		outfile_abort(&o);
-		cli_die_lib();
-	}
-	if (outfile_commit(&o) < 0)
-		cli_die_lib();
+	cli_out_open(&o, path, 1);
+	cli_out_commit(&o, f == FMT_PNG ? imap_write_png16(o.fp, o.name, m) :
+	    imap_write_exr(o.fp, o.name, m));
 }
 
 static int parse_opts(int argc, char **argv)
@@ -164,8 +157,7 @@ static int parse_opts(int argc, char **argv)
 				    "frv", optarg);
 			break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	return optind;
@@ -213,14 +205,8 @@ static int gen_volume(const char *spec)
 	if (vol_spec(spec, sz[0], sz[1], sz[2], &v) < 0 ||
 	    vol_validate(&v, spec, opt_flags | IMAP_ALLOW_ZERO) < 0)
 		cli_die_lib();
-	if (outfile_open(&o, cli.out, 1) < 0)
-		cli_die_lib();
-	if (vol_write(o.fp, o.name, &v) < 0) {
-		outfile_abort(&o);
-		cli_die_lib();
-	}
-	if (outfile_commit(&o) < 0)
-		cli_die_lib();
+	cli_out_open(&o, cli.out, 1);
+	cli_out_commit(&o, vol_write(o.fp, o.name, &v));
 	vol_free(&v);
 	return 0;
 }

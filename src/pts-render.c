@@ -9,6 +9,8 @@
 #include <strings.h>
 
 #include "cli/cli.h"
+#include "cli/output.h"
+#include "cli/ptsopt.h"
 #include "maps/imap.h"
 #include "base/outfile.h"
 #include "formats/ptsets.h"
@@ -194,8 +196,7 @@ int main(int argc, char **argv)
 			have_set = 1;
 			break;
 		case OPT_SETS:
-			per = (size_t)cli_u64("--sets", optarg, 1,
-			    (uint64_t)1 << 40);
+			per = cli_sets(optarg);
 			break;
 		case OPT_FORMAT:
 			if (strcmp(optarg, "png") == 0)
@@ -207,8 +208,7 @@ int main(int argc, char **argv)
 				    optarg);
 			break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
 	if (argc - optind > 1)
@@ -229,8 +229,7 @@ int main(int argc, char **argv)
 	/* The output first: a bad path fails before any work, and standard
 	 * output is never a terminal. */
 	cli_options_done();
-	if (outfile_open(&o, cli.out, 1) < 0)
-		cli_die_lib();
+	cli_out_open(&o, cli.out, 1);
 
 	name = is_stdin(in) ? "<stdin>" : in;
 	if (pts_read(in, &p) < 0)
@@ -279,12 +278,7 @@ int main(int argc, char **argv)
 	format = format_of(format, cli.out);
 	rc = format == FMT_PNM ? raster_write_pnm(o.fp, o.name, &r) :
 	    raster_write_png(o.fp, o.name, &r);
-	if (rc < 0) {
-		outfile_abort(&o);
-		cli_die_lib();
-	}
+	cli_out_commit(&o, rc);
 	raster_free(&r);
-	if (outfile_commit(&o) < 0)
-		cli_die_lib();
 	return 0;
 }

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/output.h"
 #include "maps/imap.h"
 #include "base/mem.h"
 #include "base/outfile.h"
@@ -129,20 +130,6 @@ static void note_grid(enum refsamp_kind kind, unsigned dims, uint64_t n,
 		    s, s, (unsigned long long)n);
 }
 
-/* One set's n points of dims coordinates; with rec (--sets M, M > 1),
- * each followed by the set column, set. */
-static int put_set(struct pts_writer *w, const double *xy, size_t n,
-    unsigned dims, double *rec, uint64_t set)
-{
-	if (rec == NULL)
-		return pts_writer_put_n(w, xy, n);
-	for (size_t i = 0; i < n; i++) {
-		memcpy(rec + i * (dims + 1), xy + i * dims, dims * sizeof *xy);
-		rec[i * (dims + 1) + dims] = (double)set;
-	}
-	return pts_writer_put_n(w, rec, n);
-}
-
 int main(int argc, char **argv)
 {
 	enum refsamp_kind kind = REFSAMP_RANDOM;
@@ -159,7 +146,6 @@ int main(int argc, char **argv)
 	struct pts_writer w;
 	struct progress pr;
 	static const char *const names[] = { PTS_COL_SET };
-	double *rec = NULL;	/* --sets: the records with the set column */
 
 	cli_init("ref-sample", usage);
 	while ((c = cli_getopt(argc, argv, "n:d:k:i:s:" CLI_COMMON_SHORTOPTS,
@@ -188,12 +174,10 @@ int main(int argc, char **argv)
 			sets = cli_u64("--sets", optarg, 1, SETS_MAX_TOTAL);
 			break;
 		default:
-			if (!cli_common_opt(c, optarg))
-				cli_usage(2);
+			cli_common_only(c, optarg);
 		}
 	}
-	if (optind != argc)
-		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	cli_no_operands(argc, argv);
 	if (!have_n)
 		cli_usage_error("-n COUNT is required");
 	check_dims(dims, kind, imp);
@@ -248,11 +232,7 @@ int main(int argc, char **argv)
 		    "row rejected)", (unsigned long long)placed,
 		    (unsigned long long)count, (unsigned long long)maxf);
 	}
-	if (outfile_open(&of, cli.out, !cli.text) < 0)
-		cli_die_lib();
-	if (sets > 1 && (rec = mem_calloc(what, count, (dims + 1) *
-	    sizeof *rec)) == NULL)
-		goto fail;
+	cli_out_open(&of, cli.out, !cli.text);
 	if (pts_writer_begin(&w, of.fp, of.name, dims, sets > 1 ? 1 : 0,
 	    names, sets > 1 ? sets * count : placed, cli.text) < 0)
 		goto fail;
@@ -279,25 +259,24 @@ int main(int argc, char **argv)
 				    (unsigned long long)maxf);
 			}
 		}
-		if (put_set(&w, xy, (size_t)placed, dims, rec, set) < 0)
+		/* --sets M, M > 1: each point followed by its set. */
+		if (pts_writer_put_cols(&w, xy, &(struct pts_col){ NULL,
+		    (double)set }, (size_t)placed) < 0)
 			goto fail;
 		progress_update(&pr, set + 1);
 	}
 	progress_end(&pr);
 	if (pts_writer_end(&w) < 0)
 		goto fail;
-	if (outfile_commit(&of) < 0)
-		cli_die_lib();
+	cli_out_commit(&of, 0);
 	if (have_map)
 		imap_free(&map);
 	free(xy);
-	free(rec);
 	return 0;
 fail:
 	outfile_abort(&of);
 	if (have_map)
 		imap_free(&map);
 	free(xy);
-	free(rec);
 	cli_die_lib();
 }

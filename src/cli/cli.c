@@ -272,6 +272,18 @@ int cli_common_opt(int c, const char *arg)
 	}
 }
 
+void cli_common_only(int c, const char *arg)
+{
+	if (!cli_common_opt(c, arg))
+		cli_usage(2);
+}
+
+void cli_no_operands(int argc, char **argv)
+{
+	if (optind != argc)
+		cli_usage_error("unexpected argument '%s'", argv[optind]);
+}
+
 const char *cli_outname(const char *opt, const char *s)
 {
 	if (*s == '\0')

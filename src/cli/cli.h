@@ -55,6 +55,11 @@ int cli_getopt(int argc, char **argv, const char *shortopts,
     const struct option *longopts);
 /* Handle a common option; returns 1 if c was one. */
 int cli_common_opt(int c, const char *arg);
+/* The default of a program's option switch: a common option, else a
+ * usage error. */
+void cli_common_only(int c, const char *arg);
+/* No operands after the options: the first is a usage error. */
+void cli_no_operands(int argc, char **argv);
 
 noreturn void cli_usage(int status);
 noreturn void cli_usage_error(const char *fmt, ...) FRS_PRINTF(1, 2);
