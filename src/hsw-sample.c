@@ -14,6 +14,7 @@
 #include "sample/hsw.h"
 #include "sample/hswcl.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "base/mem.h"
 #include "base/ocl.h"
 #include "base/outfile.h"

@@ -10,6 +10,7 @@
 
 #include "cli/cli.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "base/outfile.h"
 #include "formats/ptsets.h"
 #include "formats/ptsio.h"

@@ -11,6 +11,7 @@
 
 #include "cli/cli.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "base/mem.h"
 #include "base/outfile.h"
 #include "base/progress.h"
