@@ -12,6 +12,7 @@
 
 #include "cli/cli.h"
 #include "analysis/disc.h"
+#include "analysis/discint.h"
 #include "base/outfile.h"
 #include "base/par.h"
 #include "base/progress.h"

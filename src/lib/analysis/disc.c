@@ -18,7 +18,6 @@
 
 #include "analysis/disc.h"
 #include "analysis/discint.h"
-#include "analysis/discshape.h"
 #include "base/err.h"
 #include "base/geom.h"
 
@@ -137,16 +136,6 @@ static double l2_combine(struct dd pairs, struct dd single, struct dd cnst,
 	t = dd_add(t, cnst);
 	double v = dd_value(t) / shapes;
 	return v > 0.0 ? sqrt(v) : 0.0;
-}
-
-double disc_star_line(uint32_t i, uint32_t s)
-{
-	return (double)i / (double)s;
-}
-
-double disc_rect_line(uint32_t a, uint32_t s)
-{
-	return (double)a / (double)(s - 1);
 }
 
 double disc_star_l2_exact(const double *xy, size_t n)

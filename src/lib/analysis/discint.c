@@ -8,14 +8,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/disc.h"
 #include "analysis/discint.h"
 #include "base/err.h"
 #include "base/progress.h"
 
 /* ---- loops and sums ------------------------------------------------- */
 
-/* The progress of disc_set_progress (disc.h), for disc_run_chunks. */
 static struct progress *disc_pr;
 
 void disc_set_progress(struct progress *pr)
@@ -138,6 +136,16 @@ int disc_order(const double *v, size_t n, size_t stride, uint32_t *ord)
 }
 
 /* ---- grid bins ------------------------------------------------------ */
+
+double disc_star_line(uint32_t i, uint32_t s)
+{
+	return (double)i / (double)s;
+}
+
+double disc_rect_line(uint32_t a, uint32_t s)
+{
+	return (double)a / (double)(s - 1);
+}
 
 /* Number of lines line(i), i = lo..hi, at or below v (lines increase). */
 static uint32_t lines_le(double v, uint32_t lo, uint32_t hi, uint32_t s,
