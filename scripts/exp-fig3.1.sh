@@ -36,7 +36,6 @@ S=$(pick 64 256 512)
 MATS=$(pick 1 2 10)
 K=$((S / 2))
 DOTS=$(awk -v n=$((S * S)) 'BEGIN { printf "%d", 0.025 * n + 0.5 }')
-J="sh -c '. \"\$0\"; cached \"\$@\"' $TOP/scripts/explib.sh"
 C=$CACHE/fig3.1
 mkdir -p "$C" "$CACHE/frd" "$OUT/img"
 mat() { echo "$CACHE/frd/s$S-p$1-S$2.frd"; }

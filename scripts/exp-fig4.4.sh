@@ -29,8 +29,6 @@ SETS=$(pick 3 10 10)
 N=1024
 SIG=8
 MAP=$((32 * SIG))
-# J FILE CMD...: a par_run line running explib's cached in a child shell
-J="sh -c '. \"\$0\"; cached \"\$@\"' $TOP/scripts/explib.sh"
 matrix() {
 	if [ "$1" = 2048 ]; then echo "$FRS_MATRIX"; else echo "$CACHE/frd/s$1-p0.5-S1.frd"; fi
 }
@@ -57,13 +55,6 @@ pts() { echo "$C/frs-m$1-sig$SIG-map$MAP-n$N-$2-S$3.pts"; }
 } | par_run
 
 # 3. one DDA per setting: radial statistics (cached) and the image
-dda_line() { # NAME SETOPT FILES...
-	name=$1 so=$2
-	shift 2
-	[ -s "$C/$name.png" ] || rm -f "$C/$name.tsv"
-	printf '%s %s sh -c '\''dda --dda -q -j 1 %s --radial "$0.r" --png %s -o /dev/null "$@" && cat "$0.r" && rm -f "$0.r"'\'' %s %s\n' \
-	    "$J" "$C/$name.tsv" "$so" "$C/$name.png" "$C/$name" "$*"
-}
 {
 	for s in $SIZES; do
 		for jit in none random; do
@@ -75,16 +66,12 @@ dda_line() { # NAME SETOPT FILES...
 } | par_run
 
 # 4. tables
-sname() { [ "$1" = none ] && echo frs || echo frs-jitter; }
 printf 'sampler\tS_M\tdist\tpower\taniso_db\n' >"$OUT/radial.tsv"
-awk -F '\t' 'NR > 1 { printf "dart\t0\t%s\t%s\t%s\n", $1, $2, $3 }' \
-    "$C/dda-dart-sets$SETS.tsv" >>"$OUT/radial.tsv"
+rad dart 0 "$C/dda-dart-sets$SETS.tsv" >>"$OUT/radial.tsv"
 cp "$C/dda-dart-sets$SETS.png" "$OUT/img/dart.png"
 for jit in none random; do
 	for s in $SIZES; do
-		f=$C/dda-m$s-sig$SIG-$jit-sets$SETS.tsv
-		awk -F '\t' -v n="$(sname $jit)" -v s=$s \
-		    'NR > 1 { printf "%s\t%s\t%s\t%s\t%s\n", n, s, $1, $2, $3 }' "$f" >>"$OUT/radial.tsv"
+		rad "$(sname $jit)" $s "$C/dda-m$s-sig$SIG-$jit-sets$SETS.tsv" >>"$OUT/radial.tsv"
 		cp "$C/dda-m$s-sig$SIG-$jit-sets$SETS.png" "$OUT/img/$(sname $jit)-m$s.png"
 	done
 done
@@ -98,10 +85,7 @@ done
 # that dart lacks is one of the matrix
 {
 	printf 'sampler\tS_M\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_dart\trms_frs_jitter\tspike_dist\tspike\tsd_beyond2\n'
-	awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(
-		for jit in none random; do for s in $SIZES; do
-			printf '%s:%s:%s ' "$(sname $jit)" $s "$(set_points $s $jit)"
-		done; done)" "$RADIAL_AWK"'
+	awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(radial_pts "$SIZES")" "$RADIAL_AWK"'
 	$1 == "dart" { ref[$3 + 0] = $4 + 0 }
 	END {
 		for (i = 1; i <= no; i++) {
@@ -149,7 +133,6 @@ NS=$(echo $SIZES | wc -w)
 } | gnuplot
 
 # 6. summary
-st() { awk -F '\t' -v n="$1" -v s="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next } $1 == n && $2 == s { print $col[c] }' "$OUT/stats.tsv"; }
 # elem DIST: a distance in mean spacings as window elements (the window
 # is MAP elements a side, n_s = 1)
 elem() { awk -v d="$1" -v n=$N -v w=$MAP 'BEGIN { printf "%.1f", d * sqrt(2 / (sqrt(3) * n)) * w }'; }
@@ -178,7 +161,7 @@ exp_note "Dart throwing is the reference; $SETS sets of n = $N per setting; clos
 amax=$(for s in $SIZES; do [ $s -ge 512 ] && st frs $s aniso_db; done | sort -g | tail -n 1)
 rmax=$(for s in $SIZES; do [ $s -ge 512 ] && st frs-jitter $s rms_vs_dart; done | sort -g | tail -n 1)
 dsp=$(st dart 0 spike)
-lim=$(awk -v a="$dsp" -v b="$(st dart 0 sd_beyond2)" 'BEGIN { printf "%.4f", a + 2 * b }')
+lim=$(dart_limit)
 for s in $SIZES; do
 	af=$(st frs $s aniso_db)
 	aj=$(st frs-jitter $s aniso_db)

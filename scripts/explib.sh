@@ -182,6 +182,9 @@ cached() {
 	mv -f "$_f.key.tmp.$$" "$_f.key"
 }
 
+# J FILE CMD...: a par_run line running explib's cached in a child shell
+J="sh -c '. \"\$0\"; cached \"\$@\"' $TOP/scripts/explib.sh"
+
 # par_run: run the shell commands on standard input, one a line, with GNU
 # parallel on JOBS cores (or the SSHLOGIN hosts); stops at the first
 # failure.
@@ -190,7 +193,7 @@ par_run() {
 		parallel --will-cite --halt now,fail=1 --sshlogin "$SSHLOGIN" \
 		    --ssh "${SSH:-ssh}" --workdir "$TOP" --env PATH --env MODE \
 		    --env RES --env BIN --env ENVMAP --env FRS_MATRIX \
-		    --env FRS_MATRIX3
+		    --env FRS_MATRIX3 --env ID
 	else
 		parallel --will-cite --halt now,fail=1 -j "$JOBS"
 	fi
@@ -326,6 +329,44 @@ RADIAL_AWK='
 		}
 		sdv = sqrt(u2 / nu)
 	}'
+
+# dda_line NAME SETOPT FILES...: the par_run line of the DDA of the sets
+# of the fig4 experiments (dda --dda, one image of all FILES): radial
+# statistics cached in $C/NAME.tsv, the image $C/NAME.png (made again
+# when it is missing).
+dda_line() {
+	name=$1 so=$2
+	shift 2
+	[ -s "$C/$name.png" ] || rm -f "$C/$name.tsv"
+	printf '%s %s sh -c '\''dda --dda -q -j 1 %s --radial "$0.r" --png %s -o /dev/null "$@" && cat "$0.r" && rm -f "$0.r"'\'' %s %s\n' \
+	    "$J" "$C/$name.tsv" "$so" "$C/$name.png" "$C/$name" "$*"
+}
+
+# sname JITTER: the sampler's name in the fig4 tables (none: frs).
+sname() { [ "$1" = none ] && echo frs || echo frs-jitter; }
+
+# rad SAMPLER PARAM FILE: the rows of radial.tsv (sampler param dist
+# power aniso_db) from a DDA's radial statistics.
+rad() {
+	awk -F '\t' -v n="$1" -v s="$2" 'NR > 1 { printf "%s\t%s\t%s\t%s\t%s\n", n, s, $1, $2, $3 }' "$3"
+}
+
+# radial_pts PARAMS: the pts_list of RADIAL_AWK for FRS and jittered FRS
+# at each PARAM, from the experiment's set_points.
+radial_pts() {
+	for jit in none random; do for p in $1; do
+		printf '%s:%s:%s ' "$(sname $jit)" $p "$(set_points $p $jit)"
+	done; done
+}
+
+# st SAMPLER PARAM COLUMN: a value of the experiment's stats.tsv.
+st() { awk -F '\t' -v n="$1" -v s="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next } $1 == n && $2 == s { print $col[c] }' "$OUT/stats.tsv"; }
+
+# dart_limit: the height of a ring beyond 2 spacings that dart throwing
+# lacks, dart's strongest value there plus 2 of its deviations from 1.
+dart_limit() {
+	awk -v a="$(st dart 0 spike)" -v b="$(st dart 0 sd_beyond2)" 'BEGIN { printf "%.4f", a + 2 * b }'
+}
 
 # awk function best(lo, hi) over the annuli f[1..n] with powers p[]: the
 # annulus of the highest power in [lo, hi), that power left in bp (the
