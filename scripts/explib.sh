@@ -368,6 +368,71 @@ dart_limit() {
 	awk -v a="$(st dart 0 spike)" -v b="$(st dart 0 sd_beyond2)" 'BEGIN { printf "%.4f", a + 2 * b }'
 }
 
+# dda_sets BASE DIST MAP: the par_run line of the DDA (dda --dda, images
+# of 2K+1 pixels a side) on MAP of the M sets of N points of DIST, in
+# BASE-DIST-nN-S<seed>.pts (ref: all in BASE-ref-nN-mM.pts); it writes
+# BASE-DIST-nN-mM-KK.tsv, .png and .rad.
+dda_sets() {
+	if [ "$2" = ref ]; then
+		_files="--sets $N $1-ref-n$N-m$M.pts"
+	else
+		_files=$(for s in $(seq 1 "$M"); do printf ' %s' "$1-$2-n$N-S$s.pts"; done)
+	fi
+	_b=$1-$2-n$N-m$M-K$K
+	echo "$J $_b.tsv dda -q -j 1 --dda -i $3 --size $K --png $_b.png --radial $_b.rad $_files"
+}
+
+# dda_copy BASE DIST NAME: dda_sets' radial statistics and image as
+# $OUT/radial-NAME.tsv and $OUT/dda/NAME.png.
+dda_copy() {
+	cp "$1-$2-n$N-m$M-K$K.rad" "$OUT/radial-$3.tsv"
+	cp "$1-$2-n$N-m$M-K$K.png" "$OUT/dda/$3.png"
+}
+
+# gp_page FILE SIZE FONT LAYOUT TITLE: the preamble of a gnuplot page of
+# pictures: SIZE "width,height", LAYOUT "rows,columns".
+gp_page() {
+	gp_png "$1"
+	echo "set terminal png size $2 font ',$3'"
+	echo "set output '$1'"
+	echo "set multiplot layout $4 title '$5'"
+}
+
+# gp_pictures: images at their aspect, without key, tics or border.
+gp_pictures() {
+	echo "unset key; set size ratio -1; unset xtics; unset ytics; unset border"
+}
+
+# gp_centre K: the centre of a DDA image of 2K+1 pixels a side, +-3 of
+# its +-12 spacings.
+gp_centre() {
+	echo "set xrange [$(($1 - $1 / 4)):$(($1 + $1 / 4))]; set yrange [$(($1 - $1 / 4)):$(($1 + $1 / 4))]"
+}
+
+# frd_param KEY: the value of KEY in the parameters of FRS_MATRIX's
+# header (empty when it has none).
+frd_param() {
+	LC_ALL=C head -c 4096 "$FRS_MATRIX" | tr '\000' '\n' | sed -n "s/^$1=//p" | head -n 1
+}
+
+# cut_radius SPACING: where the force of FRS_MATRIX was cut off for points
+# SPACING cells apart, R = min(cap S, max(reach SPACING, R_eps)) cells
+# (frd-gen(1)), from its header: "R R/SPACING", or 0 when the header does
+# not give it.
+cut_radius() {
+	awk -v f="$(frd_param force)" -v s="$(frd_param s)" -v q="$(frd_param q)" -v t="$(frd_param tol)" \
+	    -v r="$(frd_param reach)" -v c="$(frd_param cap)" -v sz="$(frd_param size)" -v sp="$1" '
+	BEGIN {
+		split(sz, d, "x"); S = (d[2] + 0 < d[1] + 0) ? d[2] : d[1]
+		if (f == "power") re = s * (t ^ (-1 / q) - 1)
+		else if (f == "exp") re = s * (log(1 / t)) ^ (1 / q)
+		else { print 0; exit }
+		R = r * sp; if (re > R) R = re
+		if (c > 0 && c * S < R) R = c * S
+		printf "%.1f %.2f\n", R, R / sp
+	}'
+}
+
 # awk function best(lo, hi) over the annuli f[1..n] with powers p[]: the
 # annulus of the highest power in [lo, hi), that power left in bp (the
 # radial peaks of fig6.9 and fig6.10-6.11).
