@@ -58,15 +58,6 @@ D=$CACHE/perf-cpu
 TAG=$(basename "$FRP" | tr . _)
 printf 'map\talgo\tthreads\tlog2n\tn\tsamples\tsetup_s\tthreshold_s\toutput_s\tn_s\n' >"$OUT/times.tsv"
 nr() { if [ "$1" -ge 20 ]; then echo 1; else echo "$REPS"; fi; }
-# mkey MAP: the map's name in the cache files (env: $ENVMAP's base name)
-mkey() {
-	if [ "$1" = env ]; then
-		mk_=$(basename "$ENVMAP")
-		echo "${mk_%.*}"
-	else
-		echo "$1"
-	fi
-}
 for m in $MAPS; do
 	mk=$(mkey $m)
 	for a in sorted naive level1 stack hsw; do
@@ -74,10 +65,9 @@ for m in $MAPS; do
 			case $a in naive | level1 | stack) [ "$e" -gt "$SLOWMAX" ] && continue ;; esac
 			case $a in naive | level1 | stack)
 				# the window, from the Sorted run of the same n
-				w=$(sed -n 's/.* window \([0-9]*\)x\([0-9]*\) .*/\1 \2/p' "$D/sorted_${mk}_${TAG}_s8_n${e}_j1_x$(nr "$e").v" | head -n 1)
 				lim=$LIM
 				[ $a = stack ] && lim=$((LIM + 4))
-				awk -v w="$w" -v l=$lim 'BEGIN { split(w, a, " "); exit !(a[1] * a[2] > 2^l) }' && continue ;;
+				window_over "$D/sorted_${mk}_${TAG}_s8_n${e}_j1_x$(nr "$e").v" $lim && continue ;;
 			esac
 			r=$(nr "$e")
 			for j in $THREADS; do
@@ -161,18 +151,8 @@ END {
 }' "$OUT/times.tsv"
 
 # Ours beside the thesis wherever both exist.
-awk -F'\t' '
-FNR == 1 { next }
-NR == FNR { for (i = 3; i <= 7; i++) th[$1, i] = $i; next }
-{
-	split("naive level1 stack sorted hsw", A, " ")
-	for (i = 3; i <= 7; i++) {
-		if (!(($1, i) in th) || $i == "-") continue
-		r = ($i > 0 && th[$1, i] > 0) ? sprintf("%.1f", th[$1, i] / $i) : "-"
-		printf "%d\t%s\t%s\t%s\t%s\t%s\n", $1, A[i - 2], $i, $(i + 5), th[$1, i], r
-	}
-}' "$OUT/thesis.tsv" "$OUT/avg.tsv" |
-    { printf 'log2n\talgo\tours_j1_s\tours_jall_s\tthesis_s\tthesis_over_ours\n'; sort -k2,2 -k1,1n; } >"$OUT/compare.tsv"
+compare_thesis "naive level1 stack sorted hsw" %.1f \
+    "$(printf 'log2n\talgo\tours_j1_s\tours_jall_s\tthesis_s\tthesis_over_ours')" >"$OUT/compare.tsv"
 
 # Figures: the averages beside the thesis, and one panel per map.
 {

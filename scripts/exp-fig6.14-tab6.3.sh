@@ -63,19 +63,14 @@ TAG=$(basename "$FRP" | tr . _)
 DTAG=$(echo "$DEV" | tr -c 'A-Za-z0-9\n' _ | cut -c 1-40)
 printf 'map\talgo\tlog2n\tn\tsamples\tkernel_ms\ttotal_ms\n' >"$OUT/times.tsv"
 for m in $MAPS; do
-	mk=$m
-	if [ $m = env ]; then
-		mk=$(basename "$ENVMAP")
-		mk=${mk%.*}
-	fi
+	mk=$(mkey $m)
 	for a in sorted naive level1 flat1 stack hsw; do
 		for e in $NS; do
 			case $a in naive | level1 | flat1 | stack)
 				[ "$e" -gt "$SLOWMAX" ] && continue
-				w=$(sed -n 's/.* window \([0-9]*\)x\([0-9]*\) .*/\1 \2/p' "$D/sorted_${mk}_${TAG}_s8_n${e}_${DTAG}.v" | head -n 1)
 				lim=$LIM
 				case $a in stack | flat1) lim=$((LIM + 4)) ;; esac
-				awk -v w="$w" -v l=$lim 'BEGIN { split(w, a, " "); exit !(a[1] * a[2] > 2^l) }' && continue ;;
+				window_over "$D/sorted_${mk}_${TAG}_s8_n${e}_${DTAG}.v" $lim && continue ;;
 			esac
 			f=$D/${a}_${mk}_${TAG}_s8_n${e}_${DTAG}.v
 			cached "$f" meas $a $m "$e"
@@ -147,18 +142,8 @@ END {
 	}
 }' "$OUT/times.tsv"
 
-awk -F'\t' '
-FNR == 1 { next }
-NR == FNR { for (i = 3; i <= 8; i++) th[$1, i] = $i; next }
-{
-	split("naive level1 flat1 stack sorted hsw", A, " ")
-	for (i = 3; i <= 8; i++) {
-		if (!(($1, i) in th) || th[$1, i] == "-" || $i == "-") continue
-		r = ($i > 0) ? sprintf("%.2f", th[$1, i] / $i) : "-"
-		printf "%d\t%s\t%s\t%s\t%s\t%s\n", $1, A[i - 2], $i, $(i + 6), th[$1, i], r
-	}
-}' "$OUT/thesis.tsv" "$OUT/avg.tsv" |
-    { printf 'log2n\talgo\tours_kernel_ms\tours_total_ms\tthesis_ms\tthesis_over_ours_kernel\n'; sort -k2,2 -k1,1n; } >"$OUT/compare.tsv"
+compare_thesis "naive level1 flat1 stack sorted hsw" %.2f \
+    "$(printf 'log2n\talgo\tours_kernel_ms\tours_total_ms\tthesis_ms\tthesis_over_ours_kernel')" >"$OUT/compare.tsv"
 
 {
 	gp_png "$OUT/fig6.14.png"

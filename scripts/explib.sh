@@ -239,6 +239,43 @@ mapin() {
 	if [ "$1" = env ]; then echo "$ENV128"; else echo "$1"; fi
 }
 
+# mkey MAP: the map's name in the cache files (env: $ENVMAP's base name).
+mkey() {
+	if [ "$1" = env ]; then
+		mk_=$(basename "$ENVMAP")
+		echo "${mk_%.*}"
+	else
+		echo "$1"
+	fi
+}
+
+# window_over FILE LIM: the window that frs-sample -v reported in FILE
+# has more than 2^LIM elements (the slow algorithms are not timed there).
+window_over() {
+	_w=$(sed -n 's/.* window \([0-9]*\)x\([0-9]*\) .*/\1 \2/p' "$1" | head -n 1)
+	awk -v w="$_w" -v l="$2" 'BEGIN { split(w, a, " "); exit !(a[1] * a[2] > 2^l) }'
+}
+
+# compare_thesis ALGOS FMT HEADER: ours beside the thesis wherever both
+# $OUT/thesis.tsv and $OUT/avg.tsv have a value, sorted by algorithm and
+# n, under HEADER: "log2n algo ours ours' thesis thesis/ours", ALGOS the
+# columns of both from the third on, ours' the column |ALGOS| further in
+# avg.tsv, the ratio in printf format FMT ("-" where one is 0).
+compare_thesis() {
+	awk -F'\t' -v algos="$1" -v fmt="$2" '
+	BEGIN { na = split(algos, A, " ") }
+	FNR == 1 { next }
+	NR == FNR { for (i = 3; i <= na + 2; i++) th[$1, i] = $i; next }
+	{
+		for (i = 3; i <= na + 2; i++) {
+			if (!(($1, i) in th) || th[$1, i] == "-" || $i == "-") continue
+			r = ($i > 0 && th[$1, i] > 0) ? sprintf(fmt, th[$1, i] / $i) : "-"
+			printf "%d\t%s\t%s\t%s\t%s\t%s\n", $1, A[i - 2], $i, $(i + na), th[$1, i], r
+		}
+	}' "$OUT/thesis.tsv" "$OUT/avg.tsv" |
+	    { printf '%s\n' "$3"; sort -k2,2 -k1,1n; }
+}
+
 # mean_points FILE...: the mean point count of binary .pts files, from
 # their headers (the count is the 8 bytes at offset 24).
 mean_points() {
