@@ -150,7 +150,6 @@ FP=$(awk -v n=$DOTS 'BEGIN { printf "%.1f", sqrt(n) }')
 } | gnuplot
 
 # 6. summary
-st() { awk -F '\t' -v k="$1" -v p="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next } $1 == k && $2 == p { print $col[c] }' "$OUT/stats.tsv"; }
 for p in $PS; do
 	row "p = $p: lowpass / peak (at f/f_p) / aniso dB, last \| first" \
 	    "$(st last $p lowpass) / $(st last $p peak) ($(st last $p peak_f_over_fp)) / $(st last $p aniso_db) \| $(st first $p lowpass) / $(st first $p peak) ($(st first $p peak_f_over_fp)) / $(st first $p aniso_db)" \

@@ -71,8 +71,8 @@ rad dart 0 "$C/dda-dart-sets$SETS.tsv" >>"$OUT/radial.tsv"
 cp "$C/dda-dart-sets$SETS.png" "$OUT/img/dart.png"
 for jit in none random; do
 	for s in $SIZES; do
-		rad "$(sname $jit)" $s "$C/dda-m$s-sig$SIG-$jit-sets$SETS.tsv" >>"$OUT/radial.tsv"
-		cp "$C/dda-m$s-sig$SIG-$jit-sets$SETS.png" "$OUT/img/$(sname $jit)-m$s.png"
+		rad "$(jit_name $jit)" $s "$C/dda-m$s-sig$SIG-$jit-sets$SETS.tsv" >>"$OUT/radial.tsv"
+		cp "$C/dda-m$s-sig$SIG-$jit-sets$SETS.png" "$OUT/img/$(jit_name $jit)-m$s.png"
 	done
 done
 # peak of the radial mean beyond 0.3 spacings, mean anisotropy of the
@@ -106,9 +106,8 @@ done
 } >"$OUT/stats.tsv"
 
 # 5. figures
-NS=$(echo $SIZES | wc -w)
 {
-	dda_grid "$OUT/fig4.4-dda.png" $((NS + 1)) 'DDA, +-6 spacings (grey: -10..+10 dB; top: FRS, bottom: jittered FRS)'
+	dda_grid "$OUT/fig4.4-dda.png" $(($(echo $SIZES | wc -w) + 1)) 'DDA, +-6 spacings (grey: -10..+10 dB; top: FRS, bottom: jittered FRS)'
 	dda_img "$OUT/img/dart.png" "dart throwing"
 	for s in $SIZES; do dda_img "$OUT/img/frs-m$s.png" "FRS S_M=$s"; done
 	echo "set multiplot next"
@@ -121,7 +120,7 @@ NS=$(echo $SIZES | wc -w)
 	echo "set xlabel 'distance (mean spacings)'; set ylabel 'DDA radial mean'"
 	echo "set xrange [0:6]; set yrange [0:*]; set key top right"
 	for jit in none random; do
-		n=$(sname $jit)
+		n=$(jit_name $jit)
 		echo "set title '$n'"
 		printf "plot '%s' u (strcol(1) eq 'dart' ? \$3 : NaN):4 w l lw 2 lc rgb 'black' t 'dart'" "$OUT/radial.tsv"
 		for s in $SIZES; do

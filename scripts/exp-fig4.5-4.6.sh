@@ -73,7 +73,7 @@ dname() { echo "dda-m$SM-sig$1-$2-sets$SETS"; }
 	rad dart 0 "$C/dda-dart-sets$SETS.tsv"
 	for jit in none random; do
 		for sig in $SIGMAS; do
-			rad "$(sname $jit)" $sig "$C/$(dname $sig $jit).tsv"
+			rad "$(jit_name $jit)" $sig "$C/$(dname $sig $jit).tsv"
 		done
 	done
 } >"$OUT/radial.tsv"
@@ -82,7 +82,7 @@ cp "$C/dda-jittered-sets$SETS.png" "$OUT/img/jittered-grid.png"
 cp "$C/dda-dart-sets$SETS.png" "$OUT/img/dart.png"
 for jit in none random; do
 	for sig in $SIGMAS; do
-		cp "$C/$(dname $sig $jit).png" "$OUT/img/$(sname $jit)-sigma$sig.png"
+		cp "$C/$(dname $sig $jit).png" "$OUT/img/$(jit_name $jit)-sigma$sig.png"
 	done
 done
 # peak of the radial mean beyond 0.3 spacings, mean anisotropy of the
@@ -117,9 +117,8 @@ done
 } >"$OUT/stats.tsv"
 
 # 5. figures
-NS=$(echo $SIGMAS | wc -w)
 {
-	dda_grid "$OUT/fig4.5-4.6-dda.png" $((NS + 1)) "DDA, S_M=$SM, +-6 spacings (grey: -10..+10 dB; top: FRS (Fig. 4.5), bottom: jittered FRS (Fig. 4.6))"
+	dda_grid "$OUT/fig4.5-4.6-dda.png" $(($(echo $SIGMAS | wc -w) + 1)) "DDA, S_M=$SM, +-6 spacings (grey: -10..+10 dB; top: FRS (Fig. 4.5), bottom: jittered FRS (Fig. 4.6))"
 	dda_img "$OUT/img/regular.png" "regular grid"
 	for sig in $SIGMAS; do dda_img "$OUT/img/frs-sigma$sig.png" "FRS sigma=$sig"; done
 	dda_img "$OUT/img/jittered-grid.png" "jittered grid"
@@ -132,7 +131,7 @@ NS=$(echo $SIGMAS | wc -w)
 	echo "set xlabel 'distance (mean spacings)'; set ylabel 'DDA radial mean'"
 	echo "set xrange [0:6]; set yrange [0:3]; set key top right"
 	for jit in none random; do
-		n=$(sname $jit)
+		n=$(jit_name $jit)
 		ref=$([ $jit = none ] && echo regular || echo jittered-grid)
 		echo "set title '$n, S_M=$SM'"
 		printf "plot '%s' u (strcol(1) eq 'dart' ? \$3 : NaN):4 w l lw 2 lc rgb 'black' t 'dart'" "$OUT/radial.tsv"

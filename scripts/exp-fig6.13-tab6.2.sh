@@ -202,15 +202,6 @@ EOF
 } | gnuplot
 
 # Key numbers.
-get() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/avg.tsv"; }
-thv() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/thesis.tsv"; }
-pretty() {
-	case $1 in
-	naive) echo Naive ;; level1) echo "Level 1" ;; flat1) echo "Flat 1" ;;
-	stack) echo Stack ;; sorted) echo Sorted ;; hsw) echo HSW ;; *) echo "$1" ;;
-	esac
-}
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.3g", a / b }'; }
 fmt() { awk -v a="$1" 'BEGIN { if (a == "" || a == "-") print "-"; else printf "%.4g s", a }'; }
 # tm MAP ALGO E [COLUMN]: the one-thread time (or another column) of times.tsv
 tm() { awk -F'\t' -v m="$1" -v a="$2" -v e="$3" -v c="${4:-8}" 'NR > 1 && $1 == m && $2 == a && $3 == 1 && $4 == e { print $c }' "$OUT/times.tsv"; }
@@ -254,9 +245,9 @@ if [ -n "$CROSS" ]; then CR="from 2^$CROSS on"; else CR="never up to 2^$EMAX"; f
 row "Sorted faster than HSW" "$CR" "from 2^10 on (HSW best up to 2^9)"
 # the stair step on the first map (const, where the window is the thesis')
 M1=$(echo $MAPS | cut -d' ' -f1)
-st() { tm "$1" naive "$2"; }
-a=$(st "$M1" 14)
-b=$(st "$M1" 15)
+naive_t() { tm "$1" naive "$2"; }
+a=$(naive_t "$M1" 14)
+b=$(naive_t "$M1" 15)
 if [ -n "$a" ] && [ -n "$b" ]; then
 	row "Naive stair step t(2^15) / t(2^14), map $M1" "$(ratio "$b" "$a")" "$(ratio "$(thv 15 naive)" "$(thv 14 naive)") (constant up to 2^14, then x4 every 2nd doubling)"
 fi

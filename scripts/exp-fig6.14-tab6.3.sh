@@ -180,15 +180,6 @@ CH=$(cat "$CACHE/perf-cl/cmp_hsw_${TAG}_${DTAG}_n$CE.txt")
 printf 'case\tresult\nsorted cl vs cpu, blob, n = 2^%s\t%s\nflat1 cl vs stack cpu, blob, n = 2^%s\t%s\nhsw cl vs cpu, blob, n = 2^%s\t%s\n' \
     "$CE" "$CS" "$CE" "$CF" "$CE" "$CH" >"$OUT/cmp.tsv"
 
-get() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/avg.tsv"; }
-thv() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/thesis.tsv"; }
-pretty() {
-	case $1 in
-	naive) echo Naive ;; level1) echo "Level 1" ;; flat1) echo "Flat 1" ;;
-	stack) echo Stack ;; sorted) echo Sorted ;; hsw) echo HSW ;; *) echo "$1" ;;
-	esac
-}
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.3g", a / b }'; }
 row "OpenCL device" "$DEV ($DEVTYPE)" "NVIDIA GeForce GTX 680 (GPU)"
 EMAX=$(echo $NS | tr ' ' '\n' | tail -n 1)
 RE="20 24"

@@ -276,6 +276,19 @@ compare_thesis() {
 	    { printf '%s\n' "$3"; sort -k2,2 -k1,1n; }
 }
 
+# get LOG2N COLUMN, thv LOG2N COLUMN: a value of $OUT/avg.tsv, of
+# $OUT/thesis.tsv; pretty ALGO: the algorithm's name in the thesis;
+# ratio A B: A / B, "-" where either is missing or B is 0.
+get() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/avg.tsv"; }
+thv() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/thesis.tsv"; }
+pretty() {
+	case $1 in
+	naive) echo Naive ;; level1) echo "Level 1" ;; flat1) echo "Flat 1" ;;
+	stack) echo Stack ;; sorted) echo Sorted ;; hsw) echo HSW ;; *) echo "$1" ;;
+	esac
+}
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.3g", a / b }'; }
+
 # mean_points FILE...: the mean point count of binary .pts files, from
 # their headers (the count is the 8 bytes at offset 24).
 mean_points() {
@@ -379,8 +392,8 @@ dda_line() {
 	    "$J" "$C/$name.tsv" "$so" "$C/$name.png" "$C/$name" "$*"
 }
 
-# sname JITTER: the sampler's name in the fig4 tables (none: frs).
-sname() { [ "$1" = none ] && echo frs || echo frs-jitter; }
+# jit_name JITTER: the sampler's name in the fig4 tables (none: frs).
+jit_name() { [ "$1" = none ] && echo frs || echo frs-jitter; }
 
 # rad SAMPLER PARAM FILE: the rows of radial.tsv (sampler param dist
 # power aniso_db) from a DDA's radial statistics.
@@ -392,7 +405,7 @@ rad() {
 # at each PARAM, from the experiment's set_points.
 radial_pts() {
 	for jit in none random; do for p in $1; do
-		printf '%s:%s:%s ' "$(sname $jit)" $p "$(set_points $p $jit)"
+		printf '%s:%s:%s ' "$(jit_name $jit)" $p "$(set_points $p $jit)"
 	done; done
 }
 
