@@ -83,9 +83,7 @@ done
 # annuli) the strongest value (spike, where: spike_dist) and the RMS
 # deviation from the Poisson level 1 (sd_beyond2): a ring of FRS there
 # that dart lacks is one of the matrix
-{
-	printf 'sampler\tS_M\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_dart\trms_frs_jitter\tspike_dist\tspike\tsd_beyond2\n'
-	awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(radial_pts "$SIZES")" "$RADIAL_AWK"'
+radial_stats 'sampler\tS_M\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_dart\trms_frs_jitter\tspike_dist\tspike\tsd_beyond2' "$SIZES" '
 	$1 == "dart" { ref[$3 + 0] = $4 + 0 }
 	END {
 		for (i = 1; i <= no; i++) {
@@ -102,8 +100,7 @@ done
 			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(t2 / nd)),
 			    sq, sp, sdv
 		}
-	}' "$OUT/radial.tsv"
-} >"$OUT/stats.tsv"
+	}'
 
 # 5. figures
 {

@@ -93,9 +93,7 @@ done
 # annuli) the strongest value (spike, where: spike_dist) and the RMS
 # deviation from the Poisson level 1 (sd_beyond2): a ring of FRS there
 # that dart lacks is one of the matrix
-{
-	printf 'sampler\tsigma\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_grid\trms_vs_dart\tspike_dist\tspike\tsd_beyond2\n'
-	awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(radial_pts "$SIGMAS")" "$RADIAL_AWK"'
+radial_stats 'sampler\tsigma\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_grid\trms_vs_dart\tspike_dist\tspike\tsd_beyond2' "$SIGMAS" '
 	END {
 		for (i = 1; i <= no; i++) {
 			key = order[i]; s2 = 0; t2 = 0
@@ -113,8 +111,7 @@ done
 			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(s2 / nd)), sqrt(t2 / nd),
 			    sq, sp, sdv
 		}
-	}' "$OUT/radial.tsv"
-} >"$OUT/stats.tsv"
+	}'
 
 # 5. figures
 {

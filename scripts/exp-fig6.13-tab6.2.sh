@@ -181,12 +181,8 @@ EOF
 	nm=$(echo $MAPS | wc -w)
 	cols=$(( nm > 1 ? 2 : 1 ))
 	rows=$(( (nm + 1) / 2 ))
+	gp_loglog
 	cat <<EOF
-set datafile missing '-'
-set logscale x 2
-set logscale y 10
-set format x '2^{%L}'
-set format y '10^{%L}'
 set grid
 set key left top font ',8'
 set multiplot layout $rows,$cols title 'Fig. 6.13 (a-d): per map, one thread, seconds'

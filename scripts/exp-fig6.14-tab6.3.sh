@@ -147,12 +147,8 @@ compare_thesis "naive level1 flat1 stack sorted hsw" %.2f \
 
 {
 	gp_png "$OUT/fig6.14.png"
+	gp_loglog
 	cat <<EOF
-set datafile missing '-'
-set logscale x 2
-set logscale y 10
-set format x '2^{%L}'
-set format y '10^{%L}'
 set xlabel 'samples n'
 set ylabel 'milliseconds'
 set key left top font ',8'

@@ -409,6 +409,16 @@ radial_pts() {
 	done; done
 }
 
+# radial_stats HEADER PARAMS RULES: $OUT/stats.tsv, the line HEADER
+# (printf %b) over what RADIAL_AWK followed by the experiment's RULES
+# (its END) makes of $OUT/radial.tsv, FRS and jittered FRS at PARAMS.
+radial_stats() {
+	{
+		printf '%b\n' "$1"
+		awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(radial_pts "$2")" "$RADIAL_AWK$3" "$OUT/radial.tsv"
+	} >"$OUT/stats.tsv"
+}
+
 # st SAMPLER PARAM COLUMN: a value of the experiment's stats.tsv.
 st() { awk -F '\t' -v n="$1" -v s="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next } $1 == n && $2 == s { print $col[c] }' "$OUT/stats.tsv"; }
 
@@ -513,6 +523,15 @@ gp_png() {
 	echo "set output '$1'"
 	echo "set datafile separator '\t'"
 	echo "set key autotitle columnhead"
+}
+
+# gp_loglog: axes for times against n ("-" missing), powers of 2 and 10.
+gp_loglog() {
+	echo "set datafile missing '-'"
+	echo "set logscale x 2"
+	echo "set logscale y 10"
+	echo "set format x '2^{%L}'"
+	echo "set format y '10^{%L}'"
 }
 
 # row "what" "ours" "thesis": a line of the summary table.
