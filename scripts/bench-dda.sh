@@ -11,14 +11,8 @@ BUILD=${1:-build/bench}
 DDA=$BUILD/bin/dda
 GEN=$BUILD/bin/ref-sample
 REF=$BUILD/test/ref_dda
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-NCPU=$(nproc)
-for p in "$DDA" "$GEN" "$REF"; do
-	[ -x "$p" ] || { echo "bench-dda: $p: missing"; exit 1; }
-done
-
 . "$(dirname "$0")/benchlib.sh"
+bench_setup bench-dda "$DDA" "$GEN" "$REF"
 
 "$GEN" -q -k dart -n 1024 --sets 10 -o "$T/dart.pts"
 "$GEN" -q -k random -n 1024 --sets 10 -o "$T/rand.pts"

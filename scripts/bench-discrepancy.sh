@@ -17,18 +17,13 @@ BUILD=${1:-build/bench}
 DISC=$BUILD/bin/discrepancy
 GEN=$BUILD/bin/ref-sample
 REF=$BUILD/test/ref_disc
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-NCPU=$(nproc)
-for p in "$DISC" "$GEN" "$REF"; do
-	[ -x "$p" ] || { echo "bench-discrepancy: $p: missing"; exit 1; }
-done
+. "$(dirname "$0")/benchlib.sh"
+bench_setup bench-discrepancy "$DISC" "$GEN" "$REF"
 if [ -n "${BENCH_QUICK:-}" ]; then
 	AN="10 13 16" LIM=3 M=50
 else
 	AN="10 13 16 20" LIM=1000000 M=1000
 fi
-. "$(dirname "$0")/benchlib.sh"
 REFLIM=60	# (a): the reference only where it takes up to REFLIM s
 DTOL=10		# (c): grid Dinf error allowed at n = 8192, per cent
 

@@ -3,6 +3,19 @@
 
 now() { date +%s.%N; }
 
+# bench_setup NAME PROG...: T a temporary directory (removed at exit) and
+# NCPU the cores; the benchmark NAME stops when a PROG is missing.
+bench_setup() {
+	_bn=$1
+	shift
+	T=$(mktemp -d)
+	trap 'rm -rf "$T"' EXIT
+	NCPU=$(nproc)
+	for _p in "$@"; do
+		[ -x "$_p" ] || { echo "$_bn: $_p: missing"; exit 1; }
+	done
+}
+
 # timed OUT CMD...: run CMD once, standard output to OUT; seconds in SEC.
 timed() {
 	out=$1

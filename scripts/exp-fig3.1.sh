@@ -36,7 +36,6 @@ S=$(pick 64 256 512)
 MATS=$(pick 1 2 10)
 K=$((S / 2))
 DOTS=$(awk -v n=$((S * S)) 'BEGIN { printf "%d", 0.025 * n + 0.5 }')
-J="sh -c '. \"\$0\"; cached \"\$@\"' $TOP/scripts/explib.sh"
 C=$CACHE/fig3.1
 mkdir -p "$C" "$CACHE/frd" "$OUT/img"
 mat() { echo "$CACHE/frd/s$S-p$1-S$2.frd"; }
@@ -151,7 +150,6 @@ FP=$(awk -v n=$DOTS 'BEGIN { printf "%.1f", sqrt(n) }')
 } | gnuplot
 
 # 6. summary
-st() { awk -F '\t' -v k="$1" -v p="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next } $1 == k && $2 == p { print $col[c] }' "$OUT/stats.tsv"; }
 for p in $PS; do
 	row "p = $p: lowpass / peak (at f/f_p) / aniso dB, last \| first" \
 	    "$(st last $p lowpass) / $(st last $p peak) ($(st last $p peak_f_over_fp)) / $(st last $p aniso_db) \| $(st first $p lowpass) / $(st first $p peak) ($(st first $p peak_f_over_fp)) / $(st first $p aniso_db)" \

@@ -29,8 +29,6 @@ SETS=$(pick 3 10 10)
 N=1024
 SIG=8
 MAP=$((32 * SIG))
-# J FILE CMD...: a par_run line running explib's cached in a child shell
-J="sh -c '. \"\$0\"; cached \"\$@\"' $TOP/scripts/explib.sh"
 matrix() {
 	if [ "$1" = 2048 ]; then echo "$FRS_MATRIX"; else echo "$CACHE/frd/s$1-p0.5-S1.frd"; fi
 }
@@ -57,13 +55,6 @@ pts() { echo "$C/frs-m$1-sig$SIG-map$MAP-n$N-$2-S$3.pts"; }
 } | par_run
 
 # 3. one DDA per setting: radial statistics (cached) and the image
-dda_line() { # NAME SETOPT FILES...
-	name=$1 so=$2
-	shift 2
-	[ -s "$C/$name.png" ] || rm -f "$C/$name.tsv"
-	printf '%s %s sh -c '\''dda --dda -q -j 1 %s --radial "$0.r" --png %s -o /dev/null "$@" && cat "$0.r" && rm -f "$0.r"'\'' %s %s\n' \
-	    "$J" "$C/$name.tsv" "$so" "$C/$name.png" "$C/$name" "$*"
-}
 {
 	for s in $SIZES; do
 		for jit in none random; do
@@ -75,17 +66,13 @@ dda_line() { # NAME SETOPT FILES...
 } | par_run
 
 # 4. tables
-sname() { [ "$1" = none ] && echo frs || echo frs-jitter; }
 printf 'sampler\tS_M\tdist\tpower\taniso_db\n' >"$OUT/radial.tsv"
-awk -F '\t' 'NR > 1 { printf "dart\t0\t%s\t%s\t%s\n", $1, $2, $3 }' \
-    "$C/dda-dart-sets$SETS.tsv" >>"$OUT/radial.tsv"
+rad dart 0 "$C/dda-dart-sets$SETS.tsv" >>"$OUT/radial.tsv"
 cp "$C/dda-dart-sets$SETS.png" "$OUT/img/dart.png"
 for jit in none random; do
 	for s in $SIZES; do
-		f=$C/dda-m$s-sig$SIG-$jit-sets$SETS.tsv
-		awk -F '\t' -v n="$(sname $jit)" -v s=$s \
-		    'NR > 1 { printf "%s\t%s\t%s\t%s\t%s\n", n, s, $1, $2, $3 }' "$f" >>"$OUT/radial.tsv"
-		cp "$C/dda-m$s-sig$SIG-$jit-sets$SETS.png" "$OUT/img/$(sname $jit)-m$s.png"
+		rad "$(jit_name $jit)" $s "$C/dda-m$s-sig$SIG-$jit-sets$SETS.tsv" >>"$OUT/radial.tsv"
+		cp "$C/dda-m$s-sig$SIG-$jit-sets$SETS.png" "$OUT/img/$(jit_name $jit)-m$s.png"
 	done
 done
 # peak of the radial mean beyond 0.3 spacings, mean anisotropy of the
@@ -96,12 +83,7 @@ done
 # annuli) the strongest value (spike, where: spike_dist) and the RMS
 # deviation from the Poisson level 1 (sd_beyond2): a ring of FRS there
 # that dart lacks is one of the matrix
-{
-	printf 'sampler\tS_M\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_dart\trms_frs_jitter\tspike_dist\tspike\tsd_beyond2\n'
-	awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(
-		for jit in none random; do for s in $SIZES; do
-			printf '%s:%s:%s ' "$(sname $jit)" $s "$(set_points $s $jit)"
-		done; done)" "$RADIAL_AWK"'
+radial_stats 'sampler\tS_M\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_dart\trms_frs_jitter\tspike_dist\tspike\tsd_beyond2' "$SIZES" '
 	$1 == "dart" { ref[$3 + 0] = $4 + 0 }
 	END {
 		for (i = 1; i <= no; i++) {
@@ -118,13 +100,11 @@ done
 			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(t2 / nd)),
 			    sq, sp, sdv
 		}
-	}' "$OUT/radial.tsv"
-} >"$OUT/stats.tsv"
+	}'
 
 # 5. figures
-NS=$(echo $SIZES | wc -w)
 {
-	dda_grid "$OUT/fig4.4-dda.png" $((NS + 1)) 'DDA, +-6 spacings (grey: -10..+10 dB; top: FRS, bottom: jittered FRS)'
+	dda_grid "$OUT/fig4.4-dda.png" $(($(echo $SIZES | wc -w) + 1)) 'DDA, +-6 spacings (grey: -10..+10 dB; top: FRS, bottom: jittered FRS)'
 	dda_img "$OUT/img/dart.png" "dart throwing"
 	for s in $SIZES; do dda_img "$OUT/img/frs-m$s.png" "FRS S_M=$s"; done
 	echo "set multiplot next"
@@ -137,7 +117,7 @@ NS=$(echo $SIZES | wc -w)
 	echo "set xlabel 'distance (mean spacings)'; set ylabel 'DDA radial mean'"
 	echo "set xrange [0:6]; set yrange [0:*]; set key top right"
 	for jit in none random; do
-		n=$(sname $jit)
+		n=$(jit_name $jit)
 		echo "set title '$n'"
 		printf "plot '%s' u (strcol(1) eq 'dart' ? \$3 : NaN):4 w l lw 2 lc rgb 'black' t 'dart'" "$OUT/radial.tsv"
 		for s in $SIZES; do
@@ -149,7 +129,6 @@ NS=$(echo $SIZES | wc -w)
 } | gnuplot
 
 # 6. summary
-st() { awk -F '\t' -v n="$1" -v s="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next } $1 == n && $2 == s { print $col[c] }' "$OUT/stats.tsv"; }
 # elem DIST: a distance in mean spacings as window elements (the window
 # is MAP elements a side, n_s = 1)
 elem() { awk -v d="$1" -v n=$N -v w=$MAP 'BEGIN { printf "%.1f", d * sqrt(2 / (sqrt(3) * n)) * w }'; }
@@ -178,7 +157,7 @@ exp_note "Dart throwing is the reference; $SETS sets of n = $N per setting; clos
 amax=$(for s in $SIZES; do [ $s -ge 512 ] && st frs $s aniso_db; done | sort -g | tail -n 1)
 rmax=$(for s in $SIZES; do [ $s -ge 512 ] && st frs-jitter $s rms_vs_dart; done | sort -g | tail -n 1)
 dsp=$(st dart 0 spike)
-lim=$(awk -v a="$dsp" -v b="$(st dart 0 sd_beyond2)" 'BEGIN { printf "%.4f", a + 2 * b }')
+lim=$(dart_limit)
 for s in $SIZES; do
 	af=$(st frs $s aniso_db)
 	aj=$(st frs-jitter $s aniso_db)

@@ -30,7 +30,6 @@ SM=$(pick 128 512 512)
 SETS=$(pick 2 10 10)
 SIGMAS="1 2 4 8 16"
 N=1024
-J="sh -c '. \"\$0\"; cached \"\$@\"' $TOP/scripts/explib.sh"
 M=$CACHE/frd/s$SM-p0.5-S1.frd
 C=$CACHE/fig4
 mkdir -p "$C" "$CACHE/frd" "$OUT/img"
@@ -54,13 +53,6 @@ pts() { echo "$C/frs-m$SM-sig$1-map$((32 * $1))-n$N-$2-S$3.pts"; }
 } | par_run
 
 # 3. one DDA per setting: radial statistics (cached) and the image
-dda_line() { # NAME SETOPT FILES...
-	name=$1 so=$2
-	shift 2
-	[ -s "$C/$name.png" ] || rm -f "$C/$name.tsv"
-	printf '%s %s sh -c '\''dda --dda -q -j 1 %s --radial "$0.r" --png %s -o /dev/null "$@" && cat "$0.r" && rm -f "$0.r"'\'' %s %s\n' \
-	    "$J" "$C/$name.tsv" "$so" "$C/$name.png" "$C/$name" "$*"
-}
 dname() { echo "dda-m$SM-sig$1-$2-sets$SETS"; }
 {
 	for sig in $SIGMAS; do
@@ -74,10 +66,6 @@ dname() { echo "dda-m$SM-sig$1-$2-sets$SETS"; }
 } | par_run
 
 # 4. tables
-sname() { [ "$1" = none ] && echo frs || echo frs-jitter; }
-rad() { # SAMPLER SIGMA FILE
-	awk -F '\t' -v n="$1" -v s="$2" 'NR > 1 { printf "%s\t%s\t%s\t%s\t%s\n", n, s, $1, $2, $3 }' "$3"
-}
 {
 	printf 'sampler\tsigma\tdist\tpower\taniso_db\n'
 	rad regular 0 "$C/dda-regular-n$N.tsv"
@@ -85,7 +73,7 @@ rad() { # SAMPLER SIGMA FILE
 	rad dart 0 "$C/dda-dart-sets$SETS.tsv"
 	for jit in none random; do
 		for sig in $SIGMAS; do
-			rad "$(sname $jit)" $sig "$C/$(dname $sig $jit).tsv"
+			rad "$(jit_name $jit)" $sig "$C/$(dname $sig $jit).tsv"
 		done
 	done
 } >"$OUT/radial.tsv"
@@ -94,7 +82,7 @@ cp "$C/dda-jittered-sets$SETS.png" "$OUT/img/jittered-grid.png"
 cp "$C/dda-dart-sets$SETS.png" "$OUT/img/dart.png"
 for jit in none random; do
 	for sig in $SIGMAS; do
-		cp "$C/$(dname $sig $jit).png" "$OUT/img/$(sname $jit)-sigma$sig.png"
+		cp "$C/$(dname $sig $jit).png" "$OUT/img/$(jit_name $jit)-sigma$sig.png"
 	done
 done
 # peak of the radial mean beyond 0.3 spacings, mean anisotropy of the
@@ -105,12 +93,7 @@ done
 # annuli) the strongest value (spike, where: spike_dist) and the RMS
 # deviation from the Poisson level 1 (sd_beyond2): a ring of FRS there
 # that dart lacks is one of the matrix
-{
-	printf 'sampler\tsigma\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_grid\trms_vs_dart\tspike_dist\tspike\tsd_beyond2\n'
-	awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(
-		for jit in none random; do for sig in $SIGMAS; do
-			printf '%s:%s:%s ' "$(sname $jit)" $sig "$(set_points $sig $jit)"
-		done; done)" "$RADIAL_AWK"'
+radial_stats 'sampler\tsigma\tsets\tpoints\tpeak_dist\tpeak_power\taniso_db\trms_vs_grid\trms_vs_dart\tspike_dist\tspike\tsd_beyond2' "$SIGMAS" '
 	END {
 		for (i = 1; i <= no; i++) {
 			key = order[i]; s2 = 0; t2 = 0
@@ -128,13 +111,11 @@ done
 			    nm[key] == "dart" ? "NaN" : sprintf("%.4f", sqrt(s2 / nd)), sqrt(t2 / nd),
 			    sq, sp, sdv
 		}
-	}' "$OUT/radial.tsv"
-} >"$OUT/stats.tsv"
+	}'
 
 # 5. figures
-NS=$(echo $SIGMAS | wc -w)
 {
-	dda_grid "$OUT/fig4.5-4.6-dda.png" $((NS + 1)) "DDA, S_M=$SM, +-6 spacings (grey: -10..+10 dB; top: FRS (Fig. 4.5), bottom: jittered FRS (Fig. 4.6))"
+	dda_grid "$OUT/fig4.5-4.6-dda.png" $(($(echo $SIGMAS | wc -w) + 1)) "DDA, S_M=$SM, +-6 spacings (grey: -10..+10 dB; top: FRS (Fig. 4.5), bottom: jittered FRS (Fig. 4.6))"
 	dda_img "$OUT/img/regular.png" "regular grid"
 	for sig in $SIGMAS; do dda_img "$OUT/img/frs-sigma$sig.png" "FRS sigma=$sig"; done
 	dda_img "$OUT/img/jittered-grid.png" "jittered grid"
@@ -147,7 +128,7 @@ NS=$(echo $SIGMAS | wc -w)
 	echo "set xlabel 'distance (mean spacings)'; set ylabel 'DDA radial mean'"
 	echo "set xrange [0:6]; set yrange [0:3]; set key top right"
 	for jit in none random; do
-		n=$(sname $jit)
+		n=$(jit_name $jit)
 		ref=$([ $jit = none ] && echo regular || echo jittered-grid)
 		echo "set title '$n, S_M=$SM'"
 		printf "plot '%s' u (strcol(1) eq 'dart' ? \$3 : NaN):4 w l lw 2 lc rgb 'black' t 'dart'" "$OUT/radial.tsv"
@@ -161,7 +142,6 @@ NS=$(echo $SIGMAS | wc -w)
 } | gnuplot
 
 # 6. summary
-st() { awk -F '\t' -v n="$1" -v s="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next } $1 == n && $2 == s { print $col[c] }' "$OUT/stats.tsv"; }
 # elem SIGMA DIST: a distance in mean spacings as window elements (the
 # window is 32 sigma elements a side)
 elem() { awk -v w=$((32 * $1)) -v d="$2" -v n=$N 'BEGIN { printf "%.1f", d * sqrt(2 / (sqrt(3) * n)) * w }'; }
@@ -212,7 +192,7 @@ f=$(st frs 8 rms_vs_dart)
 j=$(st frs-jitter 8 rms_vs_dart)
 check "sigma = 8: FRS and jittered FRS close to dart (RMS < 0.1)" "$f / $j" "$f < 0.1 && $j < 0.1"
 dsp=$(st dart 0 spike)
-lim=$(awk -v a="$dsp" -v b="$(st dart 0 sd_beyond2)" 'BEGIN { printf "%.4f", a + 2 * b }')
+lim=$(dart_limit)
 f=$(st frs 8 spike)
 j=$(st frs-jitter 8 spike)
 check "sigma = 8: no ring beyond 2 spacings that dart lacks (FRS and jittered at most $lim: dart's $dsp + 2 sd)" \

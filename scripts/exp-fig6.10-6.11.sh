@@ -19,12 +19,6 @@
 # centre +-3 spacings) and fig6.11.png (radial means, constant map).
 # ids: fig6.10-6.11 fig6.10 fig6.11
 . "$(dirname "$0")/explib.sh"
-SELF=$TOP/scripts/exp-fig6.10-6.11.sh
-if [ "${1:-}" = --cached ]; then
-	shift
-	cached "$@"
-	exit 0
-fi
 exp_begin fig6.10-6.11 "DDA power spectra of adaptive sampling" \
     "Sec. 6.3, Fig. 6.10 and 6.11: 10 sets of 1024 points, maps Gaussian blob, linear gradient, environment, constant; relaxation dart throwing, FRS, jittered FRS (sigma 8), HSW with random, regular, Halton and Poisson-disk input; DDA with a Gaussian kernel and eps = 12" \
     "about 80 s (measured)"
@@ -55,17 +49,10 @@ mapkey() {
 	*) echo "$1" ;;
 	esac
 }
-seeds() {
-	s=1
-	while [ $s -le "$M" ]; do
-		echo $s
-		s=$((s + 1))
-	done
-}
 
 # Stage 1: the rotated Halton input of HSW.
-for s in $(seeds); do
-	echo "sh $SELF --cached $C/halton-n$N-S$s.pts ref-sample -q -k halton -n $N -S $s"
+for s in $(seq 1 "$M"); do
+	echo "$J $C/halton-n$N-S$s.pts ref-sample -q -k halton -n $N -S $s"
 done | par_run
 
 # Stage 2: the point sets, one file per map, distribution and seed
@@ -73,14 +60,14 @@ done | par_run
 for m in $MAPS; do
 	i=$(mapspec $m)
 	k=$(mapkey $m)
-	echo "sh $SELF --cached $C/$k-ref-n$N-m$M.pts ref-sample -q -k relaxed-dart -i $i -n $N --sets $M -S 1"
-	for s in $(seeds); do
-		echo "sh $SELF --cached $C/$k-frs-n$N-S$s.pts frs-sample -q -i $i -n $N -S $s"
-		echo "sh $SELF --cached $C/$k-frs-jit-n$N-S$s.pts frs-sample -q -i $i -n $N -S $s --jitter random --sigma 8"
+	echo "$J $C/$k-ref-n$N-m$M.pts ref-sample -q -k relaxed-dart -i $i -n $N --sets $M -S 1"
+	for s in $(seq 1 "$M"); do
+		echo "$J $C/$k-frs-n$N-S$s.pts frs-sample -q -i $i -n $N -S $s"
+		echo "$J $C/$k-frs-jit-n$N-S$s.pts frs-sample -q -i $i -n $N -S $s --jitter random --sigma 8"
 		for inp in random regular dart; do
-			echo "sh $SELF --cached $C/$k-hsw-$inp-n$N-S$s.pts hsw-sample -q -i $i -n $N -S $s --input $inp"
+			echo "$J $C/$k-hsw-$inp-n$N-S$s.pts hsw-sample -q -i $i -n $N -S $s --input $inp"
 		done
-		echo "sh $SELF --cached $C/$k-hsw-halton-n$N-S$s.pts hsw-sample -q -i $i -n $N -S $s --input $C/halton-n$N-S$s.pts"
+		echo "$J $C/$k-hsw-halton-n$N-S$s.pts hsw-sample -q -i $i -n $N -S $s --input $C/halton-n$N-S$s.pts"
 	done
 done | par_run
 
@@ -89,21 +76,13 @@ for m in $MAPS; do
 	i=$(mapspec $m)
 	k=$(mapkey $m)
 	for d in $DISTS; do
-		if [ $d = ref ]; then
-			files="--sets $N $C/$k-ref-n$N-m$M.pts"
-		else
-			files=$(for s in $(seeds); do printf ' %s' "$C/$k-$d-n$N-S$s.pts"; done)
-		fi
-		b=$C/$k-$d-n$N-m$M-K$K
-		echo "sh $SELF --cached $b.tsv dda -q -j 1 --dda -i $i --size $K --png $b.png --radial $b.rad $files"
+		dda_sets "$C/$k" $d "$i"
 	done
 done | par_run
 for m in $MAPS; do
 	k=$(mapkey $m)
 	for d in $DISTS; do
-		b=$C/$k-$d-n$N-m$M-K$K
-		cp "$b.rad" "$OUT/radial-$m-$d.tsv"
-		cp "$b.png" "$OUT/dda/$m-$d.png"
+		dda_copy "$C/$k" $d $m-$d
 	done
 done
 
@@ -145,15 +124,10 @@ done
 
 # Fig. 6.10: rows the distributions, columns the maps; the centre of
 # each DDA image, +-3 of the eps = 12 spacings.
-lo=$((K - K / 4))
-hi=$((K + K / 4))
 {
-	gp_png "$OUT/fig6.10.png"
-	echo "set terminal png size 1000,1700 font ',9'"
-	echo "set output '$OUT/fig6.10.png'"
-	echo "set multiplot layout 7,4 title 'Fig. 6.10: DDA (n = $N, $M sets; centre +-3 spacings; -10..+10 dB)'"
-	echo "unset key; set size ratio -1; unset xtics; unset ytics; unset border"
-	echo "set xrange [$lo:$hi]; set yrange [$lo:$hi]"
+	gp_page "$OUT/fig6.10.png" 1000,1700 9 7,4 "Fig. 6.10: DDA (n = $N, $M sets; centre +-3 spacings; -10..+10 dB)"
+	gp_pictures
+	gp_centre $K
 	for d in $DISTS; do
 		for m in $MAPS; do
 			echo "set title '$d, $m'"
@@ -197,19 +171,9 @@ row "uniform: strongest FRS peak beyond 2 spacings (dist, power)" "$sd spacings 
 # the uniform FRS sets' level (frd-gen(1): R = min(cap S, max(reach
 # spacing, R_eps)), the spacing r_u W cells), from its header; 0 when the
 # header does not give it.
-mat() { LC_ALL=C head -c 4096 "$FRS_MATRIX" | tr '\000' '\n' | sed -n "s/^$1=//p" | head -n 1; }
-RCUT=$(awk -v f="$(mat force)" -v s="$(mat s)" -v q="$(mat q)" -v t="$(mat tol)" \
-    -v r="$(mat reach)" -v c="$(mat cap)" -v sz="$(mat size)" -v sp="$(awk -v a="$RU" -v b="$WC" 'BEGIN { print a * b }')" '
-	BEGIN {
-		split(sz, d, "x"); S = (d[2] + 0 < d[1] + 0) ? d[2] : d[1]
-		if (f == "power") re = s * (t ^ (-1 / q) - 1)
-		else if (f == "exp") re = s * (log(1 / t)) ^ (1 / q)
-		else { print 0; exit }
-		R = r * sp; if (re > R) R = re
-		if (c > 0 && c * S < R) R = c * S
-		printf "%.1f", R
-	}')
-CUTOFF=$(mat cutoff)
+RCUT=$(cut_radius "$(awk -v a="$RU" -v b="$WC" 'BEGIN { print a * b }')")
+RCUT=${RCUT% *}
+CUTOFF=$(frd_param cutoff)
 for m in blob ramp env; do
 	row "$m: first peak FRS / reference (dist)" "$(v $m frs peak1_dist) / $(v $m ref peak1_dist)" "very similar spectra for all maps"
 done

@@ -18,12 +18,6 @@
 # and fig6.12-radial.png (radial mean and anisotropy).
 # ids: fig6.12
 . "$(dirname "$0")/explib.sh"
-SELF=$TOP/scripts/exp-fig6.12.sh
-if [ "${1:-}" = --cached ]; then
-	shift
-	cached "$@"
-	exit 0
-fi
 exp_begin fig6.12 "a highly anisotropic importance map: HSW against FRS" \
     "Sec. 6.3, Fig. 6.12: HSW with Poisson-disk input, FRS and relaxation dart throwing on an artificial anisotropic map; HSW's set highly anisotropic, FRS close to the reference" \
     "about 15 s (measured)"
@@ -35,37 +29,22 @@ MAP=aniso
 C=$CACHE/fig6.12
 mkdir -p "$C" "$OUT/points" "$OUT/dda"
 DISTS="ref frs hsw-dart"
-seeds() {
-	s=1
-	while [ $s -le "$M" ]; do
-		echo $s
-		s=$((s + 1))
-	done
-}
 
 {
-	echo "sh $SELF --cached $C/$MAP-ref-n$N-m$M.pts ref-sample -q -k relaxed-dart -i $MAP -n $N --sets $M -S 1"
-	echo "sh $SELF --cached $C/$MAP-ref-n$N-S1.pts ref-sample -q -k relaxed-dart -i $MAP -n $N -S 1"
-	for s in $(seeds); do
-		echo "sh $SELF --cached $C/$MAP-frs-n$N-S$s.pts frs-sample -q -i $MAP -n $N -S $s"
-		echo "sh $SELF --cached $C/$MAP-hsw-dart-n$N-S$s.pts hsw-sample -q -i $MAP -n $N -S $s --input dart"
+	echo "$J $C/$MAP-ref-n$N-m$M.pts ref-sample -q -k relaxed-dart -i $MAP -n $N --sets $M -S 1"
+	echo "$J $C/$MAP-ref-n$N-S1.pts ref-sample -q -k relaxed-dart -i $MAP -n $N -S 1"
+	for s in $(seq 1 "$M"); do
+		echo "$J $C/$MAP-frs-n$N-S$s.pts frs-sample -q -i $MAP -n $N -S $s"
+		echo "$J $C/$MAP-hsw-dart-n$N-S$s.pts hsw-sample -q -i $MAP -n $N -S $s --input dart"
 	done
 } | par_run
 
 for d in $DISTS; do
-	if [ $d = ref ]; then
-		files="--sets $N $C/$MAP-ref-n$N-m$M.pts"
-	else
-		files=$(for s in $(seeds); do printf ' %s' "$C/$MAP-$d-n$N-S$s.pts"; done)
-	fi
-	b=$C/$MAP-$d-n$N-m$M-K$K
-	echo "sh $SELF --cached $b.tsv dda -q -j 1 --dda -i $MAP --size $K --png $b.png --radial $b.rad $files"
-	echo "sh $SELF --cached $C/$MAP-$d-n$N-S1.png pts-render -q -i $MAP $C/$MAP-$d-n$N-S1.pts"
+	dda_sets "$C/$MAP" $d $MAP
+	echo "$J $C/$MAP-$d-n$N-S1.png pts-render -q -i $MAP $C/$MAP-$d-n$N-S1.pts"
 done | par_run
 for d in $DISTS; do
-	b=$C/$MAP-$d-n$N-m$M-K$K
-	cp "$b.rad" "$OUT/radial-$d.tsv"
-	cp "$b.png" "$OUT/dda/$d.png"
+	dda_copy "$C/$MAP" $d $d
 	cp "$C/$MAP-$d-n$N-S1.png" "$OUT/points/$d.png"
 done
 
@@ -92,19 +71,14 @@ r1=$(awk -F '\t' 'NR > 1 && $2 > bp { bp = $2; bf = $1 } END { print bf }' "$OUT
 	done
 } >"$OUT/aniso.tsv"
 
-lo=$((K - K / 4))
-hi=$((K + K / 4))
 {
-	gp_png "$OUT/fig6.12.png"
-	echo "set terminal png size 1200,820 font ',10'"
-	echo "set output '$OUT/fig6.12.png'"
-	echo "set multiplot layout 2,3 title 'Fig. 6.12: anisotropic importance map (n = $N); DDA of $M sets, centre +-3 spacings'"
-	echo "unset key; set size ratio -1; unset xtics; unset ytics; unset border"
+	gp_page "$OUT/fig6.12.png" 1200,820 10 2,3 "Fig. 6.12: anisotropic importance map (n = $N); DDA of $M sets, centre +-3 spacings"
+	gp_pictures
 	for d in $DISTS; do
 		echo "set title '$d: points (first set)'; set autoscale xy"
 		echo "plot '$OUT/points/$d.png' binary filetype=png with rgbimage"
 	done
-	echo "set xrange [$lo:$hi]; set yrange [$lo:$hi]"
+	gp_centre $K
 	for d in $DISTS; do
 		echo "set title '$d: DDA'"
 		echo "plot '$OUT/dda/$d.png' binary filetype=png with rgbimage"
@@ -158,21 +132,10 @@ row "sharpest peak beyond the first ring (dist, height above its surroundings): 
 cached "$C/$MAP-frs-n$N-setup.txt" sh -c "frs-sample -v -i $MAP -n $N -S 1 -o /dev/null 2>&1"
 cached "$C/$MAP-info.txt" imap info $MAP
 W=$(sed -n 's/.*window \([0-9]*\)x.*/\1/p' "$C/$MAP-frs-n$N-setup.txt" | head -n 1)
-mat() { LC_ALL=C head -c 4096 "$FRS_MATRIX" | tr '\000' '\n' | sed -n "s/^$1=//p" | head -n 1; }
-RING=$(awk -v f="$(mat force)" -v s="$(mat s)" -v q="$(mat q)" -v t="$(mat tol)" \
-    -v r="$(mat reach)" -v c="$(mat cap)" -v sz="$(mat size)" -v n="$N" -v w="$W" \
+RING=$(cut_radius "$(awk -v n="$N" -v w="$W" \
     -v mx="$(awk '$1 == "max" { print $2 }' "$C/$MAP-info.txt")" \
-    -v mn="$(awk '$1 == "mean" { print $2 }' "$C/$MAP-info.txt")" '
-	BEGIN {
-		split(sz, d, "x"); S = (d[2] + 0 < d[1] + 0) ? d[2] : d[1]
-		sp = sqrt(2 / (sqrt(3) * n)) * w / sqrt(mx / mn)
-		if (f == "power") re = s * (t ^ (-1 / q) - 1)
-		else if (f == "exp") re = s * (log(1 / t)) ^ (1 / q)
-		else { print 0; exit }
-		R = r * sp; if (re > R) R = re
-		if (c > 0 && c * S < R) R = c * S
-		printf "%.1f %.2f", R, R / sp
-	}')
+    -v mn="$(awk '$1 == "mean" { print $2 }' "$C/$MAP-info.txt")" \
+    'BEGIN { printf "%.17g", sqrt(2 / (sqrt(3) * n)) * w / sqrt(mx / mn) }')")
 RCELLS=${RING% *}
 RSP=${RING#* }
 
@@ -195,7 +158,7 @@ check "HSW's ring distorted (its first peak 20 % off the reference's distance, o
 check "no isolated peaks in FRS (its sharpest peak beyond the first ring at most 0.05 higher above its surroundings than the reference's)" \
     "$fsp at $fsd / $rsp at $rsd spacings" "$fsp <= $rsp + 0.05"
 observe "$fsp > $rsp + 0.05 && $RSP > 0 && $fsd > 0.9 * $RSP && $fsd < 1.1 * $RSP" \
-    "FRS's sharpest peak beyond its first ring, at $fsd spacings, lies within 10 % of where the matrix's force was cut off, seen from the ridge: $RCELLS cells, $RSP spacings of the ridge's points (cutoff=$(mat cutoff), from the header of $(basename "$FRS_MATRIX"); frd-gen(1): a force cut off at R leaves a ring at R)."
+    "FRS's sharpest peak beyond its first ring, at $fsd spacings, lies within 10 % of where the matrix's force was cut off, seen from the ridge: $RCELLS cells, $RSP spacings of the ridge's points (cutoff=$(frd_param cutoff), from the header of $(basename "$FRS_MATRIX"); frd-gen(1): a force cut off at R leaves a ring at R)."
 fa=$(v frs mean_aniso_db) ra=$(v ref mean_aniso_db) ha=$(v hsw-dart mean_aniso_db)
 observe "$he > 1.5 && $ha - $fa < 2 && $fa - $ha < 2" \
     "The mean anisotropy over the annuli from $r1 to 6 spacings does not separate HSW from FRS ($ha against $fa dB); the elongation of the empty disc does."

@@ -58,15 +58,6 @@ D=$CACHE/perf-cpu
 TAG=$(basename "$FRP" | tr . _)
 printf 'map\talgo\tthreads\tlog2n\tn\tsamples\tsetup_s\tthreshold_s\toutput_s\tn_s\n' >"$OUT/times.tsv"
 nr() { if [ "$1" -ge 20 ]; then echo 1; else echo "$REPS"; fi; }
-# mkey MAP: the map's name in the cache files (env: $ENVMAP's base name)
-mkey() {
-	if [ "$1" = env ]; then
-		mk_=$(basename "$ENVMAP")
-		echo "${mk_%.*}"
-	else
-		echo "$1"
-	fi
-}
 for m in $MAPS; do
 	mk=$(mkey $m)
 	for a in sorted naive level1 stack hsw; do
@@ -74,10 +65,9 @@ for m in $MAPS; do
 			case $a in naive | level1 | stack) [ "$e" -gt "$SLOWMAX" ] && continue ;; esac
 			case $a in naive | level1 | stack)
 				# the window, from the Sorted run of the same n
-				w=$(sed -n 's/.* window \([0-9]*\)x\([0-9]*\) .*/\1 \2/p' "$D/sorted_${mk}_${TAG}_s8_n${e}_j1_x$(nr "$e").v" | head -n 1)
 				lim=$LIM
 				[ $a = stack ] && lim=$((LIM + 4))
-				awk -v w="$w" -v l=$lim 'BEGIN { split(w, a, " "); exit !(a[1] * a[2] > 2^l) }' && continue ;;
+				window_over "$D/sorted_${mk}_${TAG}_s8_n${e}_j1_x$(nr "$e").v" $lim && continue ;;
 			esac
 			r=$(nr "$e")
 			for j in $THREADS; do
@@ -161,18 +151,8 @@ END {
 }' "$OUT/times.tsv"
 
 # Ours beside the thesis wherever both exist.
-awk -F'\t' '
-FNR == 1 { next }
-NR == FNR { for (i = 3; i <= 7; i++) th[$1, i] = $i; next }
-{
-	split("naive level1 stack sorted hsw", A, " ")
-	for (i = 3; i <= 7; i++) {
-		if (!(($1, i) in th) || $i == "-") continue
-		r = ($i > 0 && th[$1, i] > 0) ? sprintf("%.1f", th[$1, i] / $i) : "-"
-		printf "%d\t%s\t%s\t%s\t%s\t%s\n", $1, A[i - 2], $i, $(i + 5), th[$1, i], r
-	}
-}' "$OUT/thesis.tsv" "$OUT/avg.tsv" |
-    { printf 'log2n\talgo\tours_j1_s\tours_jall_s\tthesis_s\tthesis_over_ours\n'; sort -k2,2 -k1,1n; } >"$OUT/compare.tsv"
+compare_thesis "naive level1 stack sorted hsw" %.1f \
+    "$(printf 'log2n\talgo\tours_j1_s\tours_jall_s\tthesis_s\tthesis_over_ours')" >"$OUT/compare.tsv"
 
 # Figures: the averages beside the thesis, and one panel per map.
 {
@@ -201,12 +181,8 @@ EOF
 	nm=$(echo $MAPS | wc -w)
 	cols=$(( nm > 1 ? 2 : 1 ))
 	rows=$(( (nm + 1) / 2 ))
+	gp_loglog
 	cat <<EOF
-set datafile missing '-'
-set logscale x 2
-set logscale y 10
-set format x '2^{%L}'
-set format y '10^{%L}'
 set grid
 set key left top font ',8'
 set multiplot layout $rows,$cols title 'Fig. 6.13 (a-d): per map, one thread, seconds'
@@ -222,15 +198,6 @@ EOF
 } | gnuplot
 
 # Key numbers.
-get() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/avg.tsv"; }
-thv() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/thesis.tsv"; }
-pretty() {
-	case $1 in
-	naive) echo Naive ;; level1) echo "Level 1" ;; flat1) echo "Flat 1" ;;
-	stack) echo Stack ;; sorted) echo Sorted ;; hsw) echo HSW ;; *) echo "$1" ;;
-	esac
-}
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.3g", a / b }'; }
 fmt() { awk -v a="$1" 'BEGIN { if (a == "" || a == "-") print "-"; else printf "%.4g s", a }'; }
 # tm MAP ALGO E [COLUMN]: the one-thread time (or another column) of times.tsv
 tm() { awk -F'\t' -v m="$1" -v a="$2" -v e="$3" -v c="${4:-8}" 'NR > 1 && $1 == m && $2 == a && $3 == 1 && $4 == e { print $c }' "$OUT/times.tsv"; }
@@ -274,9 +241,9 @@ if [ -n "$CROSS" ]; then CR="from 2^$CROSS on"; else CR="never up to 2^$EMAX"; f
 row "Sorted faster than HSW" "$CR" "from 2^10 on (HSW best up to 2^9)"
 # the stair step on the first map (const, where the window is the thesis')
 M1=$(echo $MAPS | cut -d' ' -f1)
-st() { tm "$1" naive "$2"; }
-a=$(st "$M1" 14)
-b=$(st "$M1" 15)
+naive_t() { tm "$1" naive "$2"; }
+a=$(naive_t "$M1" 14)
+b=$(naive_t "$M1" 15)
 if [ -n "$a" ] && [ -n "$b" ]; then
 	row "Naive stair step t(2^15) / t(2^14), map $M1" "$(ratio "$b" "$a")" "$(ratio "$(thv 15 naive)" "$(thv 14 naive)") (constant up to 2^14, then x4 every 2nd doubling)"
 fi

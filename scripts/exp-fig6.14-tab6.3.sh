@@ -63,19 +63,14 @@ TAG=$(basename "$FRP" | tr . _)
 DTAG=$(echo "$DEV" | tr -c 'A-Za-z0-9\n' _ | cut -c 1-40)
 printf 'map\talgo\tlog2n\tn\tsamples\tkernel_ms\ttotal_ms\n' >"$OUT/times.tsv"
 for m in $MAPS; do
-	mk=$m
-	if [ $m = env ]; then
-		mk=$(basename "$ENVMAP")
-		mk=${mk%.*}
-	fi
+	mk=$(mkey $m)
 	for a in sorted naive level1 flat1 stack hsw; do
 		for e in $NS; do
 			case $a in naive | level1 | flat1 | stack)
 				[ "$e" -gt "$SLOWMAX" ] && continue
-				w=$(sed -n 's/.* window \([0-9]*\)x\([0-9]*\) .*/\1 \2/p' "$D/sorted_${mk}_${TAG}_s8_n${e}_${DTAG}.v" | head -n 1)
 				lim=$LIM
 				case $a in stack | flat1) lim=$((LIM + 4)) ;; esac
-				awk -v w="$w" -v l=$lim 'BEGIN { split(w, a, " "); exit !(a[1] * a[2] > 2^l) }' && continue ;;
+				window_over "$D/sorted_${mk}_${TAG}_s8_n${e}_${DTAG}.v" $lim && continue ;;
 			esac
 			f=$D/${a}_${mk}_${TAG}_s8_n${e}_${DTAG}.v
 			cached "$f" meas $a $m "$e"
@@ -147,27 +142,13 @@ END {
 	}
 }' "$OUT/times.tsv"
 
-awk -F'\t' '
-FNR == 1 { next }
-NR == FNR { for (i = 3; i <= 8; i++) th[$1, i] = $i; next }
-{
-	split("naive level1 flat1 stack sorted hsw", A, " ")
-	for (i = 3; i <= 8; i++) {
-		if (!(($1, i) in th) || th[$1, i] == "-" || $i == "-") continue
-		r = ($i > 0) ? sprintf("%.2f", th[$1, i] / $i) : "-"
-		printf "%d\t%s\t%s\t%s\t%s\t%s\n", $1, A[i - 2], $i, $(i + 6), th[$1, i], r
-	}
-}' "$OUT/thesis.tsv" "$OUT/avg.tsv" |
-    { printf 'log2n\talgo\tours_kernel_ms\tours_total_ms\tthesis_ms\tthesis_over_ours_kernel\n'; sort -k2,2 -k1,1n; } >"$OUT/compare.tsv"
+compare_thesis "naive level1 flat1 stack sorted hsw" %.2f \
+    "$(printf 'log2n\talgo\tours_kernel_ms\tours_total_ms\tthesis_ms\tthesis_over_ours_kernel')" >"$OUT/compare.tsv"
 
 {
 	gp_png "$OUT/fig6.14.png"
+	gp_loglog
 	cat <<EOF
-set datafile missing '-'
-set logscale x 2
-set logscale y 10
-set format x '2^{%L}'
-set format y '10^{%L}'
 set xlabel 'samples n'
 set ylabel 'milliseconds'
 set key left top font ',8'
@@ -195,15 +176,6 @@ CH=$(cat "$CACHE/perf-cl/cmp_hsw_${TAG}_${DTAG}_n$CE.txt")
 printf 'case\tresult\nsorted cl vs cpu, blob, n = 2^%s\t%s\nflat1 cl vs stack cpu, blob, n = 2^%s\t%s\nhsw cl vs cpu, blob, n = 2^%s\t%s\n' \
     "$CE" "$CS" "$CE" "$CF" "$CE" "$CH" >"$OUT/cmp.tsv"
 
-get() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/avg.tsv"; }
-thv() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/thesis.tsv"; }
-pretty() {
-	case $1 in
-	naive) echo Naive ;; level1) echo "Level 1" ;; flat1) echo "Flat 1" ;;
-	stack) echo Stack ;; sorted) echo Sorted ;; hsw) echo HSW ;; *) echo "$1" ;;
-	esac
-}
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.3g", a / b }'; }
 row "OpenCL device" "$DEV ($DEVTYPE)" "NVIDIA GeForce GTX 680 (GPU)"
 EMAX=$(echo $NS | tr ' ' '\n' | tail -n 1)
 RE="20 24"

@@ -24,12 +24,7 @@ exp_begin fig6.15 "Share of time per task, Sorted FRS and HSW" \
 
 NS=$(pick "8 12" "8 12 16 20 24" "4 8 12 16 20 24")
 REPS=$(pick 1 2 5)
-if [ "$MODE" = tiny ]; then
-	FRP=$FRS_MATRIX
-else
-	FRP=$CACHE/default-all.frp
-	cached "$FRP" frd-prep -q -a all "$FRS_MATRIX"
-fi
+timing_inputs blob
 TAG=$(basename "$FRP" | tr . _)
 
 meas() { # frs|hsw sigma jitter e

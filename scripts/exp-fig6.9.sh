@@ -17,12 +17,6 @@
 # throwing on one plot).
 # ids: fig6.9
 . "$(dirname "$0")/explib.sh"
-SELF=$TOP/scripts/exp-fig6.9.sh
-if [ "${1:-}" = --cached ]; then
-	shift
-	cached "$@"
-	exit 0
-fi
 exp_begin fig6.9 "Fourier power spectra of uniform sampling" \
     "Sec. 6.3, Fig. 6.9: 10 sets of 1024 points, FRS and jittered FRS (sigma 8) against random, regular, Halton and dart throwing" \
     "a few seconds"
@@ -39,12 +33,12 @@ DISTS="frs frs-jit random regular halton dart"
 {
 	s=1
 	while [ $s -le "$M" ]; do
-		echo "sh $SELF --cached $C/frs-n$N-S$s.pts frs-sample -q -n $N -S $s"
-		echo "sh $SELF --cached $C/frs-jit-n$N-S$s.pts frs-sample -q -n $N -S $s --jitter random --sigma 8"
+		echo "$J $C/frs-n$N-S$s.pts frs-sample -q -n $N -S $s"
+		echo "$J $C/frs-jit-n$N-S$s.pts frs-sample -q -n $N -S $s --jitter random --sigma 8"
 		s=$((s + 1))
 	done
 	for k in random regular halton dart; do
-		echo "sh $SELF --cached $C/$k-n$N-m$M.pts ref-sample -q -k $k -n $N --sets $M -S 1"
+		echo "$J $C/$k-n$N-m$M.pts ref-sample -q -k $k -n $N --sets $M -S 1"
 	done
 } | par_run
 
@@ -64,7 +58,7 @@ for d in $DISTS; do
 		sets="--sets $N" ;;
 	esac
 	b=$C/$d-n$N-m$M-K$K
-	echo "sh $SELF --cached $b.tsv dda -q --fourier --size $K $sets --png $b.png --radial $b.rad $files"
+	echo "$J $b.tsv dda -q --fourier --size $K $sets --png $b.png --radial $b.rad $files"
 done | par_run
 for d in $DISTS; do
 	b=$C/$d-n$N-m$M-K$K
@@ -93,10 +87,7 @@ done
 # The figure: the spectra above their radial mean (red) and anisotropy
 # (blue), as in the thesis.
 {
-	gp_png "$OUT/fig6.9.png"
-	echo "set terminal png size 1800,640 font ',9'"
-	echo "set output '$OUT/fig6.9.png'"
-	echo "set multiplot layout 2,6 title 'Fig. 6.9: power spectra (n = $N, $M sets), radial mean (red) and anisotropy (blue, dB, right axis)'"
+	gp_page "$OUT/fig6.9.png" 1800,640 9 2,6 "Fig. 6.9: power spectra (n = $N, $M sets), radial mean (red) and anisotropy (blue, dB, right axis)"
 	for d in $DISTS; do
 		echo "set title '$d'; unset key; set size ratio -1; unset xtics; unset ytics; unset y2tics; unset border"
 		echo "plot '$OUT/spectra/$d.png' binary filetype=png with rgbimage"

@@ -182,6 +182,9 @@ cached() {
 	mv -f "$_f.key.tmp.$$" "$_f.key"
 }
 
+# J FILE CMD...: a par_run line running explib's cached in a child shell
+J="sh -c '. \"\$0\"; cached \"\$@\"' $TOP/scripts/explib.sh"
+
 # par_run: run the shell commands on standard input, one a line, with GNU
 # parallel on JOBS cores (or the SSHLOGIN hosts); stops at the first
 # failure.
@@ -190,7 +193,7 @@ par_run() {
 		parallel --will-cite --halt now,fail=1 --sshlogin "$SSHLOGIN" \
 		    --ssh "${SSH:-ssh}" --workdir "$TOP" --env PATH --env MODE \
 		    --env RES --env BIN --env ENVMAP --env FRS_MATRIX \
-		    --env FRS_MATRIX3
+		    --env FRS_MATRIX3 --env ID
 	else
 		parallel --will-cite --halt now,fail=1 -j "$JOBS"
 	fi
@@ -235,6 +238,56 @@ timing_inputs() {
 mapin() {
 	if [ "$1" = env ]; then echo "$ENV128"; else echo "$1"; fi
 }
+
+# mkey MAP: the map's name in the cache files (env: $ENVMAP's base name).
+mkey() {
+	if [ "$1" = env ]; then
+		mk_=$(basename "$ENVMAP")
+		echo "${mk_%.*}"
+	else
+		echo "$1"
+	fi
+}
+
+# window_over FILE LIM: the window that frs-sample -v reported in FILE
+# has more than 2^LIM elements (the slow algorithms are not timed there).
+window_over() {
+	_w=$(sed -n 's/.* window \([0-9]*\)x\([0-9]*\) .*/\1 \2/p' "$1" | head -n 1)
+	awk -v w="$_w" -v l="$2" 'BEGIN { split(w, a, " "); exit !(a[1] * a[2] > 2^l) }'
+}
+
+# compare_thesis ALGOS FMT HEADER: ours beside the thesis wherever both
+# $OUT/thesis.tsv and $OUT/avg.tsv have a value, sorted by algorithm and
+# n, under HEADER: "log2n algo ours ours' thesis thesis/ours", ALGOS the
+# columns of both from the third on, ours' the column |ALGOS| further in
+# avg.tsv, the ratio in printf format FMT ("-" where one is 0).
+compare_thesis() {
+	awk -F'\t' -v algos="$1" -v fmt="$2" '
+	BEGIN { na = split(algos, A, " ") }
+	FNR == 1 { next }
+	NR == FNR { for (i = 3; i <= na + 2; i++) th[$1, i] = $i; next }
+	{
+		for (i = 3; i <= na + 2; i++) {
+			if (!(($1, i) in th) || th[$1, i] == "-" || $i == "-") continue
+			r = ($i > 0 && th[$1, i] > 0) ? sprintf(fmt, th[$1, i] / $i) : "-"
+			printf "%d\t%s\t%s\t%s\t%s\t%s\n", $1, A[i - 2], $i, $(i + na), th[$1, i], r
+		}
+	}' "$OUT/thesis.tsv" "$OUT/avg.tsv" |
+	    { printf '%s\n' "$3"; sort -k2,2 -k1,1n; }
+}
+
+# get LOG2N COLUMN, thv LOG2N COLUMN: a value of $OUT/avg.tsv, of
+# $OUT/thesis.tsv; pretty ALGO: the algorithm's name in the thesis;
+# ratio A B: A / B, "-" where either is missing or B is 0.
+get() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/avg.tsv"; }
+thv() { awk -F'\t' -v e="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i } NR > 1 && $1 == e { print $k }' "$OUT/thesis.tsv"; }
+pretty() {
+	case $1 in
+	naive) echo Naive ;; level1) echo "Level 1" ;; flat1) echo "Flat 1" ;;
+	stack) echo Stack ;; sorted) echo Sorted ;; hsw) echo HSW ;; *) echo "$1" ;;
+	esac
+}
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "" || a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.3g", a / b }'; }
 
 # mean_points FILE...: the mean point count of binary .pts files, from
 # their headers (the count is the 8 bytes at offset 24).
@@ -327,6 +380,119 @@ RADIAL_AWK='
 		sdv = sqrt(u2 / nu)
 	}'
 
+# dda_line NAME SETOPT FILES...: the par_run line of the DDA of the sets
+# of the fig4 experiments (dda --dda, one image of all FILES): radial
+# statistics cached in $C/NAME.tsv, the image $C/NAME.png (made again
+# when it is missing).
+dda_line() {
+	name=$1 so=$2
+	shift 2
+	[ -s "$C/$name.png" ] || rm -f "$C/$name.tsv"
+	printf '%s %s sh -c '\''dda --dda -q -j 1 %s --radial "$0.r" --png %s -o /dev/null "$@" && cat "$0.r" && rm -f "$0.r"'\'' %s %s\n' \
+	    "$J" "$C/$name.tsv" "$so" "$C/$name.png" "$C/$name" "$*"
+}
+
+# jit_name JITTER: the sampler's name in the fig4 tables (none: frs).
+jit_name() { [ "$1" = none ] && echo frs || echo frs-jitter; }
+
+# rad SAMPLER PARAM FILE: the rows of radial.tsv (sampler param dist
+# power aniso_db) from a DDA's radial statistics.
+rad() {
+	awk -F '\t' -v n="$1" -v s="$2" 'NR > 1 { printf "%s\t%s\t%s\t%s\t%s\n", n, s, $1, $2, $3 }' "$3"
+}
+
+# radial_pts PARAMS: the pts_list of RADIAL_AWK for FRS and jittered FRS
+# at each PARAM, from the experiment's set_points.
+radial_pts() {
+	for jit in none random; do for p in $1; do
+		printf '%s:%s:%s ' "$(jit_name $jit)" $p "$(set_points $p $jit)"
+	done; done
+}
+
+# radial_stats HEADER PARAMS RULES: $OUT/stats.tsv, the line HEADER
+# (printf %b) over what RADIAL_AWK followed by the experiment's RULES
+# (its END) makes of $OUT/radial.tsv, FRS and jittered FRS at PARAMS.
+radial_stats() {
+	{
+		printf '%b\n' "$1"
+		awk -F '\t' -v sets=$SETS -v n=$N -v pts_list="$(radial_pts "$2")" "$RADIAL_AWK$3" "$OUT/radial.tsv"
+	} >"$OUT/stats.tsv"
+}
+
+# st SAMPLER PARAM COLUMN: a value of the experiment's stats.tsv.
+st() { awk -F '\t' -v n="$1" -v s="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next } $1 == n && $2 == s { print $col[c] }' "$OUT/stats.tsv"; }
+
+# dart_limit: the height of a ring beyond 2 spacings that dart throwing
+# lacks, dart's strongest value there plus 2 of its deviations from 1.
+dart_limit() {
+	awk -v a="$(st dart 0 spike)" -v b="$(st dart 0 sd_beyond2)" 'BEGIN { printf "%.4f", a + 2 * b }'
+}
+
+# dda_sets BASE DIST MAP: the par_run line of the DDA (dda --dda, images
+# of 2K+1 pixels a side) on MAP of the M sets of N points of DIST, in
+# BASE-DIST-nN-S<seed>.pts (ref: all in BASE-ref-nN-mM.pts); it writes
+# BASE-DIST-nN-mM-KK.tsv, .png and .rad.
+dda_sets() {
+	if [ "$2" = ref ]; then
+		_files="--sets $N $1-ref-n$N-m$M.pts"
+	else
+		_files=$(for s in $(seq 1 "$M"); do printf ' %s' "$1-$2-n$N-S$s.pts"; done)
+	fi
+	_b=$1-$2-n$N-m$M-K$K
+	echo "$J $_b.tsv dda -q -j 1 --dda -i $3 --size $K --png $_b.png --radial $_b.rad $_files"
+}
+
+# dda_copy BASE DIST NAME: dda_sets' radial statistics and image as
+# $OUT/radial-NAME.tsv and $OUT/dda/NAME.png.
+dda_copy() {
+	cp "$1-$2-n$N-m$M-K$K.rad" "$OUT/radial-$3.tsv"
+	cp "$1-$2-n$N-m$M-K$K.png" "$OUT/dda/$3.png"
+}
+
+# gp_page FILE SIZE FONT LAYOUT TITLE: the preamble of a gnuplot page of
+# pictures: SIZE "width,height", LAYOUT "rows,columns".
+gp_page() {
+	gp_png "$1"
+	echo "set terminal png size $2 font ',$3'"
+	echo "set output '$1'"
+	echo "set multiplot layout $4 title '$5'"
+}
+
+# gp_pictures: images at their aspect, without key, tics or border.
+gp_pictures() {
+	echo "unset key; set size ratio -1; unset xtics; unset ytics; unset border"
+}
+
+# gp_centre K: the centre of a DDA image of 2K+1 pixels a side, +-3 of
+# its +-12 spacings.
+gp_centre() {
+	echo "set xrange [$(($1 - $1 / 4)):$(($1 + $1 / 4))]; set yrange [$(($1 - $1 / 4)):$(($1 + $1 / 4))]"
+}
+
+# frd_param KEY: the value of KEY in the parameters of FRS_MATRIX's
+# header (empty when it has none).
+frd_param() {
+	LC_ALL=C head -c 4096 "$FRS_MATRIX" | tr '\000' '\n' | sed -n "s/^$1=//p" | head -n 1
+}
+
+# cut_radius SPACING: where the force of FRS_MATRIX was cut off for points
+# SPACING cells apart, R = min(cap S, max(reach SPACING, R_eps)) cells
+# (frd-gen(1)), from its header: "R R/SPACING", or 0 when the header does
+# not give it.
+cut_radius() {
+	awk -v f="$(frd_param force)" -v s="$(frd_param s)" -v q="$(frd_param q)" -v t="$(frd_param tol)" \
+	    -v r="$(frd_param reach)" -v c="$(frd_param cap)" -v sz="$(frd_param size)" -v sp="$1" '
+	BEGIN {
+		split(sz, d, "x"); S = (d[2] + 0 < d[1] + 0) ? d[2] : d[1]
+		if (f == "power") re = s * (t ^ (-1 / q) - 1)
+		else if (f == "exp") re = s * (log(1 / t)) ^ (1 / q)
+		else { print 0; exit }
+		R = r * sp; if (re > R) R = re
+		if (c > 0 && c * S < R) R = c * S
+		printf "%.1f %.2f\n", R, R / sp
+	}'
+}
+
 # awk function best(lo, hi) over the annuli f[1..n] with powers p[]: the
 # annulus of the highest power in [lo, hi), that power left in bp (the
 # radial peaks of fig6.9 and fig6.10-6.11).
@@ -357,6 +523,15 @@ gp_png() {
 	echo "set output '$1'"
 	echo "set datafile separator '\t'"
 	echo "set key autotitle columnhead"
+}
+
+# gp_loglog: axes for times against n ("-" missing), powers of 2 and 10.
+gp_loglog() {
+	echo "set datafile missing '-'"
+	echo "set logscale x 2"
+	echo "set logscale y 10"
+	echo "set format x '2^{%L}'"
+	echo "set format y '10^{%L}'"
 }
 
 # row "what" "ours" "thesis": a line of the summary table.

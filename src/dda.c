@@ -17,6 +17,7 @@
 #include "analysis/ddaspec.h"
 #include "analysis/density.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "base/outfile.h"
 #include "analysis/plot.h"
 #include "base/progress.h"

@@ -14,6 +14,7 @@
 #include "cli/output.h"
 #include "cli/ptsopt.h"
 #include "analysis/disc.h"
+#include "analysis/discint.h"
 #include "analysis/groupstat.h"
 #include "base/outfile.h"
 #include "base/par.h"

@@ -21,6 +21,7 @@
 #include "base/progress.h"
 #include "formats/ptsio.h"
 #include "maps/vol.h"
+#include "maps/mapload.h"
 
 static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"

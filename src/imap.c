@@ -14,6 +14,10 @@
 #include "maps/imap.h"
 #include "base/outfile.h"
 #include "maps/vol.h"
+#include "maps/exrio.h"
+#include "maps/mapload.h"
+#include "maps/pngio.h"
+#include "maps/spec.h"
 
 static const char usage[] =
     "usage: imap gen [-q] [-s SIZE] [--equirect] [--log]\n"

@@ -18,6 +18,7 @@
 #include "base/datadir.h"
 #include "base/err.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "base/outfile.h"
 #include "formats/ptsets.h"
 

@@ -12,6 +12,7 @@
 #include "cli/output.h"
 #include "cli/ptsopt.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "base/outfile.h"
 #include "formats/ptsets.h"
 #include "formats/ptsio.h"

@@ -12,6 +12,7 @@
 #include "cli/cli.h"
 #include "cli/output.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "base/mem.h"
 #include "base/outfile.h"
 #include "base/progress.h"

@@ -7,6 +7,7 @@
 #include "formats/frdio.h"
 #include "sample/frscore.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "base/rng.h"
 
 /* A random permutation matrix: the implementations must agree on any. */

@@ -3,8 +3,9 @@
 # headers only from itself and the folders before it, base, maps,
 # formats, frd, sample and analysis (side by side: neither includes the
 # other), api; only api includes the public frs.h; nothing in src/lib
-# includes the programs' src/cli; every include names its folder; and no
-# two headers include each other, directly or through others.
+# includes the programs' src/cli; every include names its folder; no two
+# headers include each other, directly or through others; and no two
+# modules (a .c and its .h) depend on each other that way.
 . "$(dirname "$0")/lib.sh"
 TOP=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -56,4 +57,25 @@ else
 	nok "no include cycle among the headers"
 	sed 's/^/# /' "$T/cycle" | head -n 10
 fi
+
+# Cycles among the modules (maps/imap for imap.c and imap.h): A depends
+# on B when A.c or A.h includes B.h.  A cycle marks a file with two jobs
+# (a type and the loader that calls back into it).
+while read -r file target; do
+	case $target in
+	../*) ;;
+	*/*)
+		from=${file#src/lib/}
+		from=${from%.*}
+		to=${target%.h}
+		[ "$from" = "$to" ] || echo "$from $to" ;;
+	esac
+done <"$T/inc" >"$T/modules"
+if tsort "$T/modules" >/dev/null 2>"$T/cycle"; then
+	ok "no dependency cycle among the modules"
+else
+	nok "no dependency cycle among the modules"
+	sed 's/^/# /' "$T/cycle" | head -n 10
+fi
+
 done_testing

@@ -20,6 +20,8 @@
 #include "formats/ptsio.h"
 #include "base/rng.h"
 #include "maps/vol.h"
+#include "maps/exrio.h"
+#include "maps/mapload.h"
 
 #define MATRIX "data/default.frd"
 

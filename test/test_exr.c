@@ -10,6 +10,7 @@
  */
 #include "base/err.h"
 #include "maps/imap.h"
+#include "maps/exrio.h"
 
 #include <stdarg.h>
 #include <stddef.h>

@@ -6,6 +6,7 @@
 #include "base/par.h"
 #include "base/rng.h"
 #include "maps/vol.h"
+#include "maps/mapload.h"
 
 #include <math.h>
 

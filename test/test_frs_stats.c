@@ -7,6 +7,7 @@
 #include "formats/frdio.h"
 #include "sample/frscore.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "moments.h"
 
 static struct frs_matrix M;

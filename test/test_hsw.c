@@ -5,6 +5,7 @@
 #include "testutil.h"
 #include "sample/hsw.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "moments.h"
 #include "base/par.h"
 #include "base/rng.h"

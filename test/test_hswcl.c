@@ -7,6 +7,7 @@
 #include "sample/hsw.h"
 #include "sample/hswcl.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "sample/refsamp.h"
 #include "base/progress.h"
 

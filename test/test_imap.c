@@ -2,6 +2,8 @@
  * resampling and the equirectangular weight, against closed forms. */
 #include "testutil.h"
 #include "maps/imap.h"
+#include "maps/exrio.h"
+#include "maps/mapload.h"
 
 #include <math.h>
 

@@ -3,6 +3,7 @@
  * Rec. 709 luminance), and broken files are refused. */
 #include "testutil.h"
 #include "maps/imap.h"
+#include "maps/pngio.h"
 
 #include <png.h>
 

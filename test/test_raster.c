@@ -5,6 +5,7 @@
  * to the same pixels. */
 #include "testutil.h"
 #include "maps/imap.h"
+#include "maps/pngio.h"
 #include "analysis/raster.h"
 
 static const uint8_t black[3] = { 0, 0, 0 };

@@ -2,6 +2,7 @@
  * integration of the defining formulas, moments and symmetry. */
 #include "testutil.h"
 #include "maps/imap.h"
+#include "maps/spec.h"
 
 #define PI 3.14159265358979323846
 

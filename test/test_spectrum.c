@@ -5,6 +5,7 @@
 #include "testutil.h"
 #include <complex.h>
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "base/par.h"
 #include "base/rng.h"
 #include "analysis/spectrum.h"

@@ -3,6 +3,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "fuzz.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

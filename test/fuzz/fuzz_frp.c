@@ -4,6 +4,7 @@
 #include "fuzz.h"
 #include "formats/frdio.h"
 #include "sample/frscore.h"
+#include "sample/frpio.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -6,6 +6,7 @@
 
 #include "fuzz.h"
 #include "maps/imap.h"
+#include "maps/pngio.h"
 
 static uint32_t crc_table[256];
 

@@ -7,6 +7,7 @@
 #include "fuzz.h"
 #include "maps/imap.h"
 #include "maps/vol.h"
+#include "maps/spec.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

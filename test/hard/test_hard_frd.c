@@ -16,6 +16,8 @@
 #include "frsutil.h"
 #include "hard.h"
 #include "frd/frdgen.h"
+#include "formats/frdimport.h"
+#include "sample/frpio.h"
 
 /* ---- permutations and the least-force rule -------------------------- */
 

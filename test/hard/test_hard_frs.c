@@ -12,6 +12,7 @@
 #include "testutil.h"
 #include "frsutil.h"
 #include "hard.h"
+#include "maps/exrio.h"
 
 #include <float.h>
 

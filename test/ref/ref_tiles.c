@@ -29,6 +29,7 @@
 
 #include "base/err.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 #include "formats/ptsio.h"
 
 static void die(const char *msg)

@@ -120,10 +120,6 @@ int disc_set_dims(struct disc_ctx *c, const double *x, size_t n,
 /* disc_tests for sets of dims coordinates: s^3 for the 3-D grid. */
 double disc_tests_dims(const struct disc_opts *o, unsigned dims);
 
-/* A progress bar for the parallel loops inside one set (NULL: none). */
-struct progress;
-void disc_set_progress(struct progress *pr);
-
 /* The pieces, for tests and benchmarks.  L2 values are D2 (not squared). */
 double disc_star_l2_exact(const double *xy, size_t n);
 double disc_rect_l2_exact(const double *xy, size_t n);
@@ -137,6 +133,13 @@ int disc_rect_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
 int disc_rect_dinf_exact(const double *xy, size_t n, int par, double *dinf);
 int disc_half(const double *xy, size_t n, uint32_t s, int par,
     struct disc_result *r);
+/* The random-shape classes (quad, circle): k shapes drawn once. */
+struct disc_shapes;
+struct disc_shapes *disc_shapes_new(enum disc_class cls, uint64_t k,
+    uint64_t seed);
+void disc_shapes_free(struct disc_shapes *sh);
+int disc_shapes_run(const struct disc_shapes *sh, const double *xy, size_t n,
+    int par, struct disc_result *res);
 
 /* 3-D star pieces: Warnock's D2 for points of k >= 1 coordinates
  * (k = 3 in O(n log^2 n); any other k by the O(n^2) sum over pairs, so
@@ -148,9 +151,7 @@ int disc3_star_dinf_exact(const double *xyz, size_t n, int par,
 int disc3_star_grid(const double *xyz, size_t n, uint32_t s, int par,
     struct disc_result *r);
 
-/* Grid lines as the methods define them. */
-double disc_star_line(uint32_t i, uint32_t s);	/* i/s */
-double disc_rect_line(uint32_t a, uint32_t s);	/* a/(s-1) */
+/* Grid lines as the methods define them (star and rect: discint.h). */
 double disc_half_pos(uint32_t i, uint32_t s);	/* (i + 1/2)/s */
 /* Border point i of side 0 bottom, 1 right, 2 top, 3 left (counter-
  * clockwise), and the area left of the directed line e -> f through two

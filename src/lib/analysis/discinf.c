@@ -11,34 +11,6 @@
 #include "analysis/discint.h"
 #include "base/err.h"
 
-int disc_rows_make(struct disc_rows *r, const uint32_t *bin, size_t n,
-    uint32_t nbins)
-{
-	r->start = calloc((size_t)nbins + 1, sizeof *r->start);
-	r->idx = malloc((n ? n : 1) * sizeof *r->idx);
-	if (r->start == NULL || r->idx == NULL) {
-		disc_rows_free(r);
-		return frs_fail("no memory for a grid of %u rows", nbins);
-	}
-	for (size_t i = 0; i < n; i++)
-		r->start[bin[i] + 1]++;
-	for (uint32_t b = 0; b < nbins; b++)
-		r->start[b + 1] += r->start[b];
-	for (size_t i = 0; i < n; i++)
-		r->idx[r->start[bin[i]]++] = (uint32_t)i;
-	for (uint32_t b = nbins; b > 0; b--)
-		r->start[b] = r->start[b - 1];
-	r->start[0] = 0;
-	return 0;
-}
-
-void disc_rows_free(struct disc_rows *r)
-{
-	free(r->start);
-	free(r->idx);
-	r->start = r->idx = NULL;
-}
-
 static int dcmp(const void *a, const void *b)
 {
 	double p = *(const double *)a, q = *(const double *)b;

@@ -1,4 +1,6 @@
-/* Internal to the discrepancy modules (disc*.c). */
+/* Internal to the discrepancy modules (disc*.c): the pieces they share;
+ * and the progress bar of their parallel loops, which discrepancy(1)
+ * sets. */
 #ifndef FRS_DISCINT_H
 #define FRS_DISCINT_H
 
@@ -7,6 +9,8 @@
 
 #include "base/par.h"
 
+/* A progress bar for the parallel loops inside one set (NULL: none). */
+void disc_set_progress(struct progress *pr);
 /* Chunks of [0, n) in order, on the thread team when par is set. */
 int disc_run_chunks(uint64_t n, uint64_t chunk,
     int (*fn)(void *, uint64_t, uint64_t), void *ctx, int par);
@@ -15,6 +19,9 @@ double disc_sum(const double *v, size_t k);
 /* ord[0..n-1]: the indices of v[i * stride], i < n, in ascending order
  * of the values, equal values by index (a stable radix sort, O(n)). */
 int disc_order(const double *v, size_t n, size_t stride, uint32_t *ord);
+/* Grid lines as the methods define them. */
+double disc_star_line(uint32_t i, uint32_t s);	/* i/s */
+double disc_rect_line(uint32_t a, uint32_t s);	/* a/(s-1) */
 /* Grid bins: star, lines i/s (i = 1..s) at or below v; rect, the index
  * of the interval [a/(s-1), (a+1)/(s-1)) holding v. */
 uint32_t disc_star_bin(double v, uint32_t s);

@@ -27,12 +27,4 @@ void disc_cols_free(struct disc_cols *c);
 uint64_t disc_count_quad(const struct disc_cols *c, const double q[8]);
 uint64_t disc_count_circle(const struct disc_cols *c, const double e[3]);
 
-struct disc_shapes;
-struct disc_result;
-struct disc_shapes *disc_shapes_new(enum disc_class cls, uint64_t k,
-    uint64_t seed);
-void disc_shapes_free(struct disc_shapes *sh);
-int disc_shapes_run(const struct disc_shapes *sh, const double *xy, size_t n,
-    int par, struct disc_result *res);
-
 #endif

@@ -17,11 +17,14 @@
 #include "base/datadir.h"
 #include "base/err.h"
 #include "sample/frscore.h"
+#include "sample/frpio.h"
 #include "sample/hsw.h"
 #include "base/io.h"
 #include "base/par.h"
 #include "base/progress.h"
 #include "maps/vol.h"
+#include "maps/mapload.h"
+#include "maps/spec.h"
 
 /* ---- errors ---------------------------------------------------------- */
 

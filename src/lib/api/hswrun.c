@@ -7,6 +7,7 @@
 #include "base/mem.h"
 #include "base/progress.h"
 #include "maps/imap.h"
+#include "maps/mapload.h"
 
 /* Points per round of warping and handing out: the record buffer
  * (1.5 MiB with the density), filled by all threads, then given to the

@@ -78,11 +78,6 @@ void outfile_cleanup_all(void)
 		}
 }
 
-int outfile_is_stdout(const struct outfile *o)
-{
-	return o->path == NULL;
-}
-
 static int open_stdout(struct outfile *o, int binary)
 {
 	if (binary && isatty(STDOUT_FILENO))

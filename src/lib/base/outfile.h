@@ -27,7 +27,5 @@ void outfile_abort(struct outfile *o);
 /* Remove every temporary file still open (called at exit and from the
  * signal handler, which outfile_open installs). */
 void outfile_cleanup_all(void);
-/* 1 when standard output of the process is the target. */
-int outfile_is_stdout(const struct outfile *o);
 
 #endif

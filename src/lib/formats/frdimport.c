@@ -1,7 +1,9 @@
 #define _POSIX_C_SOURCE 200809L
+#include "formats/frdimport.h"
 #include "formats/frdio.h"
 #include "base/err.h"
 #include "maps/imap.h"
+#include "maps/pngio.h"
 #include "base/io.h"
 
 #include <ctype.h>

@@ -10,7 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "frd/frdgen.h"
+struct frdgen_params;
 
 /* The sizes a run works with. */
 struct frdgen_size {

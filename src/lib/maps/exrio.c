@@ -1,4 +1,3 @@
-#define _POSIX_C_SOURCE 200809L
 /*
  * OpenEXR reading and writing through the OpenEXR 3.1 C API (OpenEXRCore).
  *
@@ -20,6 +19,7 @@
  * Writing builds the whole file in memory, because the library writes at
  * offsets (the chunk offset table last) and the output may be a pipe.
  */
+#include "maps/exrio.h"
 #include "maps/imap.h"
 #include "base/err.h"
 #include "base/mem.h"

@@ -1,4 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
+#include "maps/pngio.h"
 #include "maps/imap.h"
 #include "base/err.h"
 #include "base/mem.h"

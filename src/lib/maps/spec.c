@@ -1,4 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
+#include "maps/spec.h"
 #include "maps/imap.h"
 #include "maps/vol.h"
 #include "base/err.h"

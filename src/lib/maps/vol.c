@@ -53,11 +53,6 @@ int vol_is_file(const char *path)
 	return got == sizeof b && memcmp(b, FRV_MAGIC, 8) == 0;
 }
 
-int vol_is_volume(const char *src)
-{
-	return vol_is_file(src) == 1 || (vol_is_spec(src) && !imap_is_spec(src));
-}
-
 static int read_header(FILE *fp, const char *name, uint32_t sz[3])
 {
 	unsigned char h[FRV_HEADER];
@@ -217,37 +212,4 @@ int vol_validate(struct frs_vol *m, const char *name, int flags)
 		return 0;
 	frs_set_errkind(FRS_ERRKIND_MAP);	/* the values, not the file */
 	return -1;
-}
-
-int vol_load(const char *src, uint32_t w, uint32_t h, uint32_t d, int flags,
-    struct frs_vol *m)
-{
-	int rc, isf = vol_is_file(src);
-
-	memset(m, 0, sizeof *m);
-	if (isf == 1 || strcmp(src, "-") == 0) {
-		if (vol_read(src, m) < 0)
-			return -1;
-		if (w != 0 && (w != m->w || h != m->h || d != m->d)) {
-			rc = frs_fail("%s: the volume is %ux%ux%u, not the %ux%ux%u "
-			    "asked for (volumes are not resampled)", src, m->w, m->h,
-			    m->d, w, h, d);
-			vol_free(m);
-			return rc;
-		}
-	} else if (vol_is_spec(src)) {
-		if (vol_spec(src, w, h, d, m) < 0)
-			return -1;
-	} else if (imap_is_spec(src)) {
-		return frs_fail("%s: a 2-D map where a volume is needed (.frv, or "
-		    "const, blob3, ramp3, shell3)", src);
-	} else if (isf == 0) {
-		return frs_fail("%s: not an importance volume (.frv)", src);
-	} else {
-		return frs_fail_errno("%s", src);
-	}
-	rc = vol_validate(m, strcmp(src, "-") == 0 ? "<stdin>" : src, flags);
-	if (rc < 0)
-		vol_free(m);
-	return rc;
 }

@@ -44,28 +44,9 @@ struct frs_imap vol_as_map(const struct frs_vol *m);
 
 /* 1 if the file starts with the .frv magic, 0 if not, -1 if unreadable. */
 int vol_is_file(const char *path);
-/* A .frv file or a spec that only volumes have (const is both). */
-int vol_is_volume(const char *src);
 int vol_read(const char *path, struct frs_vol *m);
 int vol_write(FILE *fp, const char *name, const struct frs_vol *m);
 
-/*
- * Procedural volumes: "name[:param=value,...]"; names const, blob3,
- * ramp3, shell3 (see vol_spec_help).  Evaluated at w x h x d (0: the
- * default side).
- */
-int vol_spec(const char *spec, uint32_t w, uint32_t h, uint32_t d,
-    struct frs_vol *m);
-int vol_is_spec(const char *src);
-const char *vol_spec_help(void);
-
-/*
- * A .frv file (at its own size: w, h, d must be 0 or equal to it) or a
- * procedural spec, then vol_validate.  IMAP_STRICT and IMAP_ALLOW_ZERO
- * of imap.h apply.
- */
-int vol_load(const char *src, uint32_t w, uint32_t h, uint32_t d, int flags,
-    struct frs_vol *m);
 /* NaN and infinity are errors naming the voxel; negative values are
  * clamped with one warning (an error under IMAP_STRICT); an all-zero
  * volume is an error unless IMAP_ALLOW_ZERO. */

@@ -1,4 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
+#include "sample/frpio.h"
 #include "sample/frscore.h"
 #include "base/err.h"
 #include "base/io.h"
