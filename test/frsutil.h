@@ -9,12 +9,10 @@
 #include "maps/imap.h"
 #include "base/rng.h"
 
-/* A random permutation matrix: the implementations must agree on any. */
-static inline void tu_perm_matrix(struct frs_matrix *m, uint32_t w,
-    uint32_t h, uint64_t seed)
+/* The values of an allocated matrix a random permutation of 0 .. n-1. */
+static inline void tu_perm_fill(struct frs_matrix *m, uint64_t seed)
 {
 	struct frs_rng r;
-	assert_int_equal(frd_alloc(m, 2, w, h, 1, ""), 0);
 	frs_rng_init(&r, seed, FRS_STREAM_TEST);
 	for (uint32_t i = 0; i < m->n; i++)
 		m->v[i] = i;
@@ -23,6 +21,14 @@ static inline void tu_perm_matrix(struct frs_matrix *m, uint32_t w,
 		m->v[i] = m->v[j];
 		m->v[j] = t;
 	}
+}
+
+/* A random permutation matrix: the implementations must agree on any. */
+static inline void tu_perm_matrix(struct frs_matrix *m, uint32_t w,
+    uint32_t h, uint64_t seed)
+{
+	assert_int_equal(frd_alloc(m, 2, w, h, 1, ""), 0);
+	tu_perm_fill(m, seed);
 }
 
 /* A map from a spec, file or procedural, at w x h. */
