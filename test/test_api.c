@@ -404,11 +404,10 @@ static frs_sampler *sampler_f64(const frs_mask *mk, const struct frs_imap *m,
 static const char *write_exr(const char *name, const struct frs_imap *m)
 {
 	const char *path = tu_path(name);
-	FILE *fp = fopen(path, "wb");
+	FILE *fp = tu_create(path);
 
-	assert_non_null(fp);
 	assert_int_equal(imap_write_exr(fp, path, m), 0);
-	assert_int_equal(fclose(fp), 0);
+	tu_close(fp);
 	return path;
 }
 
@@ -1984,10 +1983,33 @@ static double *draw3(const frs_sampler3 *s, const uint64_t *steps,
 	return rec;
 }
 
+/* One record of oracle3: frs3_point, the density I / mean, the step. */
+struct oracle3 {
+	const struct frs3_setup *su;
+	const struct frs_vol *vol;
+	double *rec;
+	size_t n, k;
+	int pdf, steps;
+};
+
+static int put3(void *ctx, const struct frs3_elem *e)
+{
+	struct oracle3 *o = ctx;
+	double *q = o->rec + o->n++ * o->k;
+	uint32_t ns = o->su->ns;
+
+	frs3_point(o->su, e, q);
+	if (o->pdf)
+		q[3] = o->vol->v[((size_t)(e->z / ns) * o->vol->h + e->y / ns) *
+		    o->vol->w + e->x / ns] / o->su->mean;
+	if (o->steps)
+		q[3 + o->pdf] = (double)(e->step + 1);
+	return 0;
+}
+
 /* oracle_draw in 3-D, as records in frs-sample's layout: frs3_setup with
  * the options, the exact taus of frs3_exact, the same implementation's
- * elements in the order of frs.h, frs3_point, and the density I /
- * mean. */
+ * elements in the order of frs.h (frs3_each), each by put3. */
 static double *oracle3(const struct frs_vol *vol, const struct frs_options *o,
     const uint64_t *steps, unsigned nsteps, uint64_t seed, int pdf, size_t *n)
 {
@@ -1996,7 +2018,7 @@ static double *oracle3(const struct frs_vol *vol, const struct frs_options *o,
 	struct frs3_setup su;
 	struct frs3_prep p;
 	struct frs3_result r;
-	double *rec;
+	struct oracle3 o3 = { &su, vol, NULL, 0, k, pdf, nsteps > 1 };
 
 	if (mat3.v == NULL)
 		assert_int_equal(frd_read(MATRIX3, &mat3), 0);
@@ -2011,28 +2033,14 @@ static double *oracle3(const struct frs_vol *vol, const struct frs_options *o,
 		assert_int_equal(frs3_exact(&su, vol, &p, steps, nsteps), 0);
 	frs_set_threads(1);
 	assert_int_equal(frs3_sample(&su, vol, &p, a, steps, nsteps, 0, &r), 0);
-	rec = malloc((r.count + 1) * k * sizeof *rec);
-	assert_non_null(rec);
-	*n = 0;
-	for (uint32_t t = 0; t < nsteps; t++)
-		for (uint64_t c = 0; c < r.nchunk; c++)
-			for (uint64_t i = 0; i < r.chunk[c].n; i++) {
-				const struct frs3_elem *e = &r.chunk[c].e[i];
-				double *q = rec + *n * k;
-				if (nsteps > 1 && e->step != t)
-					continue;
-				frs3_point(&su, e, q);
-				if (pdf)
-					q[3] = vol->v[((size_t)(e->z / su.ns) * vol->h +
-					    e->y / su.ns) * vol->w + e->x / su.ns] / su.mean;
-				if (nsteps > 1)
-					q[3 + pdf] = (double)(e->step + 1);
-				++*n;
-			}
+	o3.rec = malloc((r.count + 1) * k * sizeof *o3.rec);
+	assert_non_null(o3.rec);
+	frs3_each(&r, nsteps, put3, &o3);
+	*n = o3.n;
 	assert_true(*n == r.count);
 	frs3_result_free(&r);
 	frs3_prep_free(&p);
-	return rec;
+	return o3.rec;
 }
 
 /* The API's samples for a 3-D mask (s made from vol with the options o,

@@ -72,12 +72,11 @@ static void check_lists(const struct frs_prep *p, uint32_t b)
 static const char *write_frp(const char *name, int minmap, unsigned nb)
 {
 	const char *path = tu_path(name);
-	FILE *fp = fopen(path, "wb");
+	FILE *fp = tu_create(path);
 
-	assert_non_null(fp);
 	assert_int_equal(frp_write(fp, path, "mat", &mat, minmap, blocks, nb),
 	    0);
-	assert_int_equal(fclose(fp), 0);
+	tu_close(fp);
 	return path;
 }
 
@@ -286,10 +285,9 @@ static void damaged_files_refused(void **state)
 static void write_refusals(void **state)
 {
 	struct frs_matrix m;
-	FILE *fp = fopen(tu_path("no.frp"), "wb");
+	FILE *fp = tu_create(tu_path("no.frp"));
 
 	(void)state;
-	assert_non_null(fp);
 	assert_int_equal(frd_alloc(&m, 3, 4, 4, 4, ""), 0);
 	tu_perm_fill(&m, 2);
 	assert_int_equal(frp_write(fp, "no.frp", "cube.frd", &m, 1, NULL, 0),

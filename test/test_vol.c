@@ -20,11 +20,10 @@ static void numbered(struct frs_vol *v, uint32_t w, uint32_t h, uint32_t d)
 static const char *write_vol(const char *name, const struct frs_vol *v)
 {
 	const char *path = tu_path(name);
-	FILE *fp = fopen(path, "wb");
+	FILE *fp = tu_create(path);
 
-	assert_non_null(fp);
 	assert_int_equal(vol_write(fp, path, v), 0);
-	assert_int_equal(fclose(fp), 0);
+	tu_close(fp);
 	return path;
 }
 
@@ -93,8 +92,7 @@ static void layout_and_round_trip(void **state)
 	assert_true(r.v[7] == (double)0.1f && r.v[7] != 0.1);
 	vol_free(&r);
 	/* What float32 cannot hold is refused, the voxel named. */
-	fp = fopen(tu_path("out.frv"), "wb");
-	assert_non_null(fp);
+	fp = tu_create(tu_path("out.frv"));
 	v.v[9] = 1e300;
 	assert_int_equal(vol_write(fp, "big.frv", &v), -1);
 	assert_err_has("big.frv", "1e+300", "voxel 9");

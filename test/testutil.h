@@ -62,6 +62,19 @@ static inline const char *tu_path(const char *name)
 	return buf[k];
 }
 
+/* A file opened for writing, and its closing checked. */
+static inline FILE *tu_create(const char *path)
+{
+	FILE *fp = fopen(path, "wb");
+	assert_non_null(fp);
+	return fp;
+}
+
+static inline void tu_close(FILE *fp)
+{
+	assert_int_equal(fclose(fp), 0);
+}
+
 static inline void tu_write(const char *path, const void *data, size_t n)
 {
 	FILE *fp = fopen(path, "wb");
