@@ -193,6 +193,21 @@ static const char *step_list(const uint64_t *steps, unsigned nsteps)
 	return buf;
 }
 
+/* frs-sample -m matrix ARGS with the counts, seed and --pdf, into out. */
+static void frs_sample_prog(const char *matrix, const char *args,
+    const uint64_t *steps, unsigned nsteps, uint64_t seed, int pdf,
+    const char *out)
+{
+	if (nsteps > 1)
+		prog("frs-sample -q -m %s %s --progressive %s -S %llu %s -o %s",
+		    matrix, args, step_list(steps, nsteps),
+		    (unsigned long long)seed, pdf ? "--pdf" : "", out);
+	else
+		prog("frs-sample -q -m %s %s -n %llu -S %llu %s -o %s", matrix,
+		    args, (unsigned long long)steps[0], (unsigned long long)seed,
+		    pdf ? "--pdf" : "", out);
+}
+
 /* ---- the oracle: the library's stages without api.c -------------- */
 
 /* The options as frs.h defines them, in the internal names. */
@@ -356,18 +371,8 @@ static void compare(const frs_sampler *s, const struct frs_imap *map,
 	struct drawn d, want;
 	double *rec, *ref;
 
-	if (o == NULL) {
-		frs_options_init(&dflt);
-		o = &dflt;
-	}
-	if (nsteps > 1)
-		prog("frs-sample -q -m %s %s --progressive %s -S %llu %s -o %s",
-		    MATRIX, args, step_list(steps, nsteps),
-		    (unsigned long long)seed, pdf ? "--pdf" : "", out);
-	else
-		prog("frs-sample -q -m %s %s -n %llu -S %llu %s -o %s", MATRIX,
-		    args, (unsigned long long)steps[0], (unsigned long long)seed,
-		    pdf ? "--pdf" : "", out);
+	o = o != NULL ? o : (frs_options_init(&dflt), &dflt);
+	frs_sample_prog(MATRIX, args, steps, nsteps, seed, pdf, out);
 	d = draw(s, steps, nsteps, seed, pdf);
 	rec = records(&d, pdf, nsteps > 1);
 	want = oracle_draw(map, o, steps, nsteps, seed);
@@ -2055,18 +2060,8 @@ static void compare3(const frs_sampler3 *s, const struct frs_vol *vol,
 	struct frs_points p;
 	struct frs_options dflt;
 
-	if (o == NULL) {
-		frs_options_init(&dflt);
-		o = &dflt;
-	}
-	if (nsteps > 1)
-		prog("frs-sample -q -m %s %s --progressive %s -S %llu %s -o %s",
-		    MATRIX3, args, step_list(steps, nsteps),
-		    (unsigned long long)seed, pdf ? "--pdf" : "", out);
-	else
-		prog("frs-sample -q -m %s %s -n %llu -S %llu %s -o %s", MATRIX3,
-		    args, (unsigned long long)steps[0], (unsigned long long)seed,
-		    pdf ? "--pdf" : "", out);
+	o = o != NULL ? o : (frs_options_init(&dflt), &dflt);
+	frs_sample_prog(MATRIX3, args, steps, nsteps, seed, pdf, out);
 	rec = draw3(s, steps, nsteps, seed, pdf, &n);
 	ref = oracle3(vol, o, steps, nsteps, seed, pdf, &nref);
 	assert_int_equal(n, nref);
