@@ -9,13 +9,29 @@
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "base/rng.h"
+#include "frd/frdgen.h"
 
-/* A random permutation matrix: the implementations must agree on any. */
-static inline void tu_perm_matrix(struct frs_matrix *m, uint32_t w,
-    uint32_t h, uint64_t seed)
+/* The size fields of a generator's parameters (frdgen_params,
+ * vac_params): d 1 is a 2-D matrix. */
+#define TU_SIZES(pr, w_, h_, d_) ((pr)->dims = (d_) > 1 ? 3 : 2, \
+	(pr)->w = (w_), (pr)->h = (h_), (pr)->d = (d_))
+
+/* The generator's defaults for a w x h x d matrix with the candidate
+ * fraction p, the tolerance tol and the seed. */
+static inline void tu_frdgen_params(struct frdgen_params *pr, uint32_t w,
+    uint32_t h, uint32_t d, double p, double tol, uint64_t seed)
+{
+	frdgen_defaults(pr);
+	TU_SIZES(pr, w, h, d);
+	pr->p = p;
+	pr->tol = tol;
+	pr->seed = seed;
+}
+
+/* The values of an allocated matrix a random permutation of 0 .. n-1. */
+static inline void tu_perm_fill(struct frs_matrix *m, uint64_t seed)
 {
 	struct frs_rng r;
-	assert_int_equal(frd_alloc(m, 2, w, h, 1, ""), 0);
 	frs_rng_init(&r, seed, FRS_STREAM_TEST);
 	for (uint32_t i = 0; i < m->n; i++)
 		m->v[i] = i;
@@ -24,6 +40,14 @@ static inline void tu_perm_matrix(struct frs_matrix *m, uint32_t w,
 		m->v[i] = m->v[j];
 		m->v[j] = t;
 	}
+}
+
+/* A random permutation matrix: the implementations must agree on any. */
+static inline void tu_perm_matrix(struct frs_matrix *m, uint32_t w,
+    uint32_t h, uint64_t seed)
+{
+	assert_int_equal(frd_alloc(m, 2, w, h, 1, ""), 0);
+	tu_perm_fill(m, seed);
 }
 
 /* A map from a spec, file or procedural, at w x h. */
@@ -60,21 +84,27 @@ static inline int tu_elem_cmp(const void *a, const void *b)
 	return (int)x->step - (int)y->step;
 }
 
+/* The elements of a result, 2-D (struct frs_result) or 3-D (struct
+ * frs3_result), into e (room for r->count), in their order. */
+#define TU_GATHER(e, r) do {						\
+	uint64_t k_ = 0;						\
+	for (uint64_t c_ = 0; c_ < (r)->nchunk; c_++)			\
+		for (uint64_t i_ = 0; i_ < (r)->chunk[c_].n; i_++)	\
+			(e)[k_++] = (r)->chunk[c_].e[i_];		\
+	assert_true(k_ == (r)->count);					\
+} while (0)
+
 /* All elements of a result in one array: in their order, or sorted by
  * position (tu_elem_cmp). */
 static inline struct frs_elem *tu_elems(const struct frs_result *r,
     int sorted)
 {
 	struct frs_elem *e = malloc((r->count + 1) * sizeof *e);
-	uint64_t k = 0;
 
 	assert_non_null(e);
-	for (uint64_t c = 0; c < r->nchunk; c++)
-		for (uint64_t i = 0; i < r->chunk[c].n; i++)
-			e[k++] = r->chunk[c].e[i];
-	assert_true(k == r->count);
+	TU_GATHER(e, r);
 	if (sorted)
-		qsort(e, k, sizeof *e, tu_elem_cmp);
+		qsort(e, r->count, sizeof *e, tu_elem_cmp);
 	return e;
 }
 

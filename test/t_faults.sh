@@ -20,6 +20,19 @@ insane() {
 	grep -qE 'Sanitizer|runtime error' "$1"
 }
 
+# verdict WHAT ERR WHY: ok WHAT when WHY (what went wrong, "; ..." each)
+# is empty and ERR (its standard error) holds no sanitizer report, else
+# not ok with the reasons and the first lines of ERR.
+verdict() {
+	set -- "$1" "$2" "$3$(insane "$2" && echo "; sanitizer report")"
+	if [ -z "$3" ]; then
+		ok "$1"
+	else
+		nok "$1$3"
+		sed 's/^/# stderr: /' "$2" | head -n 5
+	fi
+}
+
 # alive PID: the process runs (a zombie does not).
 alive() {
 	kill -0 "$1" 2>/dev/null &&
@@ -130,13 +143,7 @@ interrupt() {
 	elif [ -e "$S/out" ]; then
 		why="$why; $S/out was created"
 	fi
-	insane "$T/err.$sig" && why="$why; sanitizer report"
-	if [ -z "$why" ]; then
-		ok "SIG$sig: $cmd"
-	else
-		nok "SIG$sig: $cmd$why"
-		sed 's/^/# stderr: /' "$T/err.$sig" | head -n 5
-	fi
+	verdict "SIG$sig: $cmd" "$T/err.$sig" "$why"
 }
 
 # SIGINT and SIGTERM runs of a row at the same time, in their own
@@ -231,13 +238,7 @@ full() {
 	grep -E -- "$name" "$T/err" | grep -q "No space left on device" ||
 	    why="$why; no message naming $name and the full disk"
 	[ -z "$(ls -A "$T/full")" ] || why="$why; left: $(ls -A "$T/full")"
-	insane "$T/err" && why="$why; sanitizer report"
-	if [ -z "$why" ]; then
-		ok "full disk: $cmd"
-	else
-		nok "full disk: $cmd$why"
-		sed 's/^/# stderr: /' "$T/err" | head -n 5
-	fi
+	verdict "full disk: $cmd" "$T/err" "$why"
 }
 
 echo "$full_rows" | while read -r cmd; do
@@ -304,13 +305,7 @@ closed() {
 	*.124) why="; hung" ;;
 	*) why="; exit status $rc" ;;
 	esac
-	insane "$err" && why="$why; sanitizer report"
-	if [ -z "$why" ]; then
-		ok "closed pipe, SIGPIPE $mode: $cmd"
-	else
-		nok "closed pipe, SIGPIPE $mode: $cmd$why"
-		sed 's/^/# stderr: /' "$err" | head -n 5
-	fi
+	verdict "closed pipe, SIGPIPE $mode: $cmd" "$err" "$why"
 }
 
 # Both dispositions at once; their reports in order.

@@ -123,6 +123,18 @@ refpts() {
 	    awk '!/^#/ { printf "%.17g %.17g\n", $1, $2 }'
 }
 refpts "$M" >"$T/ref.txt"
+# same_points OUT WHAT: OUT holds the reference points; else not ok WHAT
+# with the first lines of the standard error ($T/err) and of the
+# difference.
+same_points() {
+	if cmp -s "$1" "$T/ref.txt"; then
+		ok "$2"
+	else
+		nok "$2"
+		sed 's/^/# /' "$T/err" | head -n 5
+		diff "$1" "$T/ref.txt" | head -n 5 | sed 's/^/# /'
+	fi
+}
 [ "$(wc -l <"$T/ref.txt")" -gt 3000 ] && ok "frs-sample: $(wc -l <"$T/ref.txt") points" ||
     nok "frs-sample: $(wc -l <"$T/ref.txt") points"
 WARN="-std=c11 -Wall -Wextra -Wconversion -Werror"
@@ -148,19 +160,11 @@ if cc $WARN -o "$T/ex_dyn" "$TOP/test/api_example.c" $CFLAGS_FRS $LIBS_FRS \
 	    ok "it needs libfrs.so.1" || nok "it needs libfrs.so.1"
 	LD_LIBRARY_PATH="$U/lib" "$T/ex_dyn" "$T/map.exr" "$M" \
 	    >"$T/dyn.txt" 2>"$T/err"
-	cmp -s "$T/dyn.txt" "$T/ref.txt" && ok "dynamic: frs-sample's points" || {
-		nok "dynamic: frs-sample's points"
-		sed 's/^/# /' "$T/err" | head -n 5
-		diff "$T/dyn.txt" "$T/ref.txt" | head -n 5 | sed 's/^/# /'
-	}
+	same_points "$T/dyn.txt" "dynamic: frs-sample's points"
 	# The staged tree is not where it was built for (/usr): the
 	# default matrix found beside libfrs.so.
 	LD_LIBRARY_PATH="$U/lib" "$T/ex_dyn" "$T/map.exr" >"$T/dyn.txt" 2>"$T/err"
-	cmp -s "$T/dyn.txt" "$T/ref.txt" &&
-	    ok "dynamic: frs_default_matrix beside libfrs.so" || {
-		nok "dynamic: frs_default_matrix beside libfrs.so"
-		sed 's/^/# /' "$T/err" | head -n 5
-	}
+	same_points "$T/dyn.txt" "dynamic: frs_default_matrix beside libfrs.so"
 else
 	nok "api_example.c built against libfrs.so"
 	sed 's/^/# /' "$T/err" | head -n 10
@@ -175,16 +179,9 @@ if cc $WARN -o "$T/ex_st" "$TOP/test/api_example.c" $CFLAGS_FRS $ST \
 	readelf -d "$T/ex_st" | grep -q 'libfrs' && nok "it does not need libfrs.so" ||
 	    ok "it does not need libfrs.so"
 	"$T/ex_st" "$T/map.exr" "$M" >"$T/st.txt" 2>"$T/err"
-	cmp -s "$T/st.txt" "$T/ref.txt" && ok "static: frs-sample's points" || {
-		nok "static: frs-sample's points"
-		sed 's/^/# /' "$T/err" | head -n 5
-	}
+	same_points "$T/st.txt" "static: frs-sample's points"
 	FRS_DATA=$U/share/frs "$T/ex_st" "$T/map.exr" >"$T/st.txt" 2>"$T/err"
-	cmp -s "$T/st.txt" "$T/ref.txt" &&
-	    ok "static: frs_default_matrix in FRS_DATA" || {
-		nok "static: frs_default_matrix in FRS_DATA"
-		sed 's/^/# /' "$T/err" | head -n 5
-	}
+	same_points "$T/st.txt" "static: frs_default_matrix in FRS_DATA"
 else
 	nok "api_example.c built against libfrs.a: $ST"
 	sed 's/^/# /' "$T/err" | head -n 10
@@ -237,11 +234,8 @@ link_run() {
 	fi
 	ok "linked with pkg-config $_pc"
 	"$_exe" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
-	cmp -s "$T/p.txt" "$T/ref.txt" &&
-	    ok "$_pc.pc: frs-sample's points with the default matrix" || {
-		nok "$_pc.pc: frs-sample's points with the default matrix"
-		sed 's/^/# /' "$T/err" | head -n 5
-	}
+	same_points "$T/p.txt" \
+	    "$_pc.pc: frs-sample's points with the default matrix"
 }
 # frs.pc with its rpath: libfrs.so of the prefix, found without
 # LD_LIBRARY_PATH, and the shipped matrix beside it.
@@ -264,18 +258,12 @@ mv "$P" "$Q"
     nok "moved: frs-sample --data-dir: $("$Q/bin/frs-sample" --data-dir 2>&1)"
 "$Q/bin/frs-sample" -q -i "$T/map.exr" -n 4096 -S 1 -T 2>"$T/err" |
     awk '!/^#/ { printf "%.17g %.17g\n", $1, $2 }' >"$T/q.txt"
-cmp -s "$T/q.txt" "$T/ref.txt" && ok "moved: frs-sample without -m" || {
-	nok "moved: frs-sample without -m"
-	sed 's/^/# /' "$T/err" | head -n 5
-}
+same_points "$T/q.txt" "moved: frs-sample without -m"
 "$Q/bin/imap" convert -q -s 32x16 "$("$Q/bin/frs-sample" --data-dir)/sunset.exr" \
     "$T/env.exr" 2>"$T/err" && ok "moved: --data-dir names sunset.exr" ||
     nok "moved: --data-dir names sunset.exr"
 LD_LIBRARY_PATH="$Q/lib" "$T/p_dyn" "$T/map.exr" >"$T/p.txt" 2>"$T/err"
-cmp -s "$T/p.txt" "$T/ref.txt" && ok "moved: frs_default_matrix beside libfrs.so" || {
-	nok "moved: frs_default_matrix beside libfrs.so"
-	sed 's/^/# /' "$T/err" | head -n 5
-}
+same_points "$T/p.txt" "moved: frs_default_matrix beside libfrs.so"
 
 # FRS_DATA: another directory, the only one looked in.
 mkdir "$T/alt"

@@ -219,17 +219,24 @@ near "$(exact "$T/e1")" "$PI" 1e-7 && ok "env const: exact pi" ||
 near "$(col estimate_mean "$T/e1")" "$PI" 1e-3 &&
     ok "env const: 256x256 grid within 1e-3 of pi" ||
     nok "env const: estimate $(col estimate_mean "$T/e1")"
+# The midpoint sum of the env integrand over the rows of ramp:angle=90
+# (row j of ROWS holds (j + 1/2) / ROWS), STEPS steps a row:
+# 2 pi^2 int_0^1/2 L(v) cos sin dv.
+ramp_midsum() {
+	awk -v pi="$PI" -v rows="$1" -v per="$2" 'BEGIN { n = rows * per
+	h = 1 / n
+	for (k = 0; k < n / 2; k++) { v = (k + 0.5) * h
+		L = (int(v * rows) + 0.5) / rows
+		s += L * cos(pi * v) * sin(pi * v) }
+	printf "%.12g", s * h * 2 * pi * pi }'
+}
 # (2) ramp:angle=90 at 128x128: row j holds (j + 1/2) / 128.  The exact
 # value against a fine midpoint sum over v (4096 steps a row, so that no
 # step straddles a row) of the piecewise constant integrand, not the
 # closed form; both are near pi/4 = 2 pi^2 int_0^1/2 v cos sin dv.
 ref-sample -k regular -n 262144 -T -q -o "$T/g512.txt"
 mc-error -f env --env ramp:angle=90 "$T/g512.txt" >"$T/e2"
-orc=$(awk -v pi="$PI" 'BEGIN { n = 128 * 4096; h = 1 / n
-	for (k = 0; k < n / 2; k++) { v = (k + 0.5) * h
-		L = (int(v * 128) + 0.5) / 128
-		s += L * cos(pi * v) * sin(pi * v) }
-	printf "%.12g", s * h * 2 * pi * pi }')
+orc=$(ramp_midsum 128 4096)
 near "$(exact "$T/e2")" "$orc" 1e-8 && ok "env ramp: exact = midpoint sum $orc" ||
     nok "env ramp: exact $(exact "$T/e2"), midpoint sum $orc"
 near "$(col estimate_mean "$T/e2")" "$orc" 1e-3 &&
@@ -243,11 +250,7 @@ mc-error -f env --env "$T/c5.exr" "$T/grid.txt" >"$T/e5"
 near "$(exact "$T/e5")" "$PI" 1e-7 && ok "env 8x5 const: exact pi" ||
     nok "env 8x5 const: exact $(exact "$T/e5")"
 mc-error -f env --env "$T/r5.exr" "$T/grid.txt" >"$T/e6"
-orc=$(awk -v pi="$PI" 'BEGIN { n = 5 * 40000; h = 1 / n
-	for (k = 0; k < n / 2; k++) { v = (k + 0.5) * h
-		L = (int(v * 5) + 0.5) / 5
-		s += L * cos(pi * v) * sin(pi * v) }
-	printf "%.12g", s * h * 2 * pi * pi }')
+orc=$(ramp_midsum 5 40000)
 near "$(exact "$T/e6")" "$orc" 1e-7 && ok "env 8x5 ramp: exact = midpoint sum $orc" ||
     nok "env 8x5 ramp: exact $(exact "$T/e6"), midpoint sum $orc"
 # -f env alone uses data/sunset.exr; so does --env data/sunset.exr.

@@ -1,8 +1,10 @@
 /*
- * The public API (src/lib/frs.h) against its contract: the same samples
- * as the programs frs-sample and hsw-sample for the same map, seed and
- * options, bit for bit; every error code that bad arguments reach, with
- * and without an frs_error; one sampler used by several threads at once.
+ * The public API (src/lib/frs.h) against its contract: the samples of
+ * the library's stages run here without api.c (frs_setup, frs_sample,
+ * frs_point; frs3_*), and the same as the programs frs-sample and
+ * hsw-sample for the same map, seed and options, bit for bit; every error
+ * code that bad arguments reach, with and without an frs_error; one
+ * sampler used by several threads at once.
  * The programs come from $BIN (test/run.sh exports it); the current
  * directory is the source tree.
  */
@@ -22,11 +24,17 @@
 #include "maps/vol.h"
 #include "maps/exrio.h"
 #include "maps/mapload.h"
+#include "sample/frscore.h"
+#include "sample/frs3.h"
+#include "base/par.h"
 
 #define MATRIX "data/default.frd"
+#define MATRIX3 "data/default3.frd"
 
 static frs_mask *mask;		/* MATRIX, loaded once */
 static struct frs_imap blob;	/* "blob" as frs-sample reads it: doubles */
+static struct frs_matrix mat;	/* MATRIX, read for the oracle */
+static struct frs_matrix mat3;	/* MATRIX3, read when first needed */
 
 /* ---- helpers --------------------------------------------------------- */
 
@@ -187,29 +195,200 @@ static const char *step_list(const uint64_t *steps, unsigned nsteps)
 	return buf;
 }
 
-/*
- * frs-sample -m MATRIX ARGS with the same counts, seed and --pdf against
- * frs_draw_progressive of s: the same records, bit for bit.
- */
-static void compare(const frs_sampler *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, int pdf, const char *args)
+/* frs-sample -m matrix ARGS with the counts, seed and --pdf, into out. */
+static void frs_sample_prog(const char *matrix, const char *args,
+    const uint64_t *steps, unsigned nsteps, uint64_t seed, int pdf,
+    const char *out)
 {
-	const char *out = tu_path("frs.pts");
-	struct drawn d;
-	double *rec;
-
 	if (nsteps > 1)
 		prog("frs-sample -q -m %s %s --progressive %s -S %llu %s -o %s",
-		    MATRIX, args, step_list(steps, nsteps),
+		    matrix, args, step_list(steps, nsteps),
 		    (unsigned long long)seed, pdf ? "--pdf" : "", out);
 	else
-		prog("frs-sample -q -m %s %s -n %llu -S %llu %s -o %s", MATRIX,
+		prog("frs-sample -q -m %s %s -n %llu -S %llu %s -o %s", matrix,
 		    args, (unsigned long long)steps[0], (unsigned long long)seed,
 		    pdf ? "--pdf" : "", out);
+}
+
+/* ---- the oracle: the library's stages without api.c -------------- */
+
+/* The options as frs.h defines them, in the internal names. */
+static enum frs_algo algo_of(enum frs_algorithm a)
+{
+	return a == FRS_ALG_NAIVE ? FRS_NAIVE : a == FRS_ALG_STACK ? FRS_STACK :
+	    a == FRS_ALG_LEVEL1 ? FRS_LEVEL1 : a == FRS_ALG_LEVEL2 ? FRS_LEVEL2 :
+	    FRS_SORTED;
+}
+
+static enum frs_rule rule_of(const struct frs_options *o)
+{
+	return o->rule == FRS_RULE_THESIS ? FRS_THESIS : FRS_UNBIASED;
+}
+
+static enum frs_jitter jitter_of(const struct frs_options *o)
+{
+	return o->jitter == FRS_JIT_HALTON ? FRS_JITTER_HALTON :
+	    o->jitter == FRS_JIT_RANDOM ? FRS_JITTER_RANDOM : FRS_JITTER_NONE;
+}
+
+static enum frs_tiling tiling_of(const struct frs_options *o,
+    enum frs_tiling dflt)
+{
+	return o->tiling == FRS_TILING_PLAIN ? FRS_TILES_PLAIN :
+	    o->tiling == FRS_TILING_SHUFFLED ? FRS_TILES_SHUFFLE : dflt;
+}
+
+/* The matrix prepared with or without the minmap and with lists of
+ * block b (0: none), made on first use: the few kinds the tests use. */
+static struct prepared {
+	int minmap;
+	uint32_t block;
+	struct frs_prep p;
+} prepared[8];
+static size_t nprepared;
+
+static const struct frs_prep *oracle_prep(int minmap, uint32_t b)
+{
+	struct prepared *q;
+
+	for (q = prepared; q < prepared + nprepared; q++)
+		if (q->minmap == minmap && q->block == b)
+			return &q->p;
+	assert_true(nprepared < sizeof prepared / sizeof prepared[0]);
+	q = &prepared[nprepared++];
+	q->minmap = minmap;
+	q->block = b;
+	assert_int_equal(frs_prepare(&q->p, &mat, minmap, b), 0);
+	return &q->p;
+}
+
+/* Exact counts: Naive's count of the window at scale tau. */
+struct naive_count {
+	struct frs_setup su;
+	const struct frs_imap *map;
+	const struct frs_prep *p;
+};
+
+static int naive_count(void *ctx, double tau, uint64_t *count)
+{
+	struct naive_count *c = ctx;
+	struct frs_result r;
+
+	c->su.exact = (struct frs_xtau){ .n = 1, .steps = { c->su.n },
+	    .tau = { tau } };
+	if (frs_sample(&c->su, c->map, c->p, FRS_NAIVE, &c->su.n, 1, 1, &r) < 0)
+		return -1;
+	*count = r.count;
+	frs_result_free(&r);
+	return 0;
+}
+
+/* Listing 5.1 (frs_setup) with the options; under FRS_RULE_EXACT the
+ * taus at which Naive counts exactly each step. */
+static void oracle_setup(const struct frs_imap *map,
+    const struct frs_options *o, const uint64_t *steps, unsigned nsteps,
+    uint64_t seed, struct frs_setup *su)
+{
+	struct naive_count c;
+	double tau0[16];
+	unsigned passes;
+
+	assert_int_equal(frs_setup(su, map, &mat, steps[nsteps - 1], o->sigma,
+	    seed), 0);
+	su->rule = rule_of(o);
+	su->jitter = jitter_of(o);
+	su->tiles = tiling_of(o, frs_tiles_auto(su));
+	if (o->rule != FRS_RULE_EXACT)
+		return;
+	c.su = *su;
+	c.map = map;
+	c.p = oracle_prep(0, 0);
+	for (unsigned k = 0; k < nsteps; k++)
+		tau0[k] = frs_tau(su, steps[k]);
+	assert_int_equal(frs_exact_taus(steps, nsteps, tau0,
+	    frs_exact_most(map->v, (uint64_t)map->w * map->h, su->ns, 2),
+	    naive_count, &c, &su->exact, &passes), 0);
+	su->tau = frs_tau(su, su->n);
+}
+
+/* What frs_draw_progressive promises for map and o: the window
+ * thresholded by the same implementation (on lists prepared here), each
+ * element's point by frs_point, its density I / mean, in the order of
+ * frs.h: the steps in turn, each in row order. */
+static struct drawn oracle_draw(const struct frs_imap *map,
+    const struct frs_options *o, const uint64_t *steps, unsigned nsteps,
+    uint64_t seed)
+{
+	enum frs_algo a = algo_of(o->algorithm);
+	struct frs_setup su;
+	struct frs_result r;
+	struct drawn d = { 0, NULL, NULL, NULL };
+	uint32_t b = 0;
+	int minmap = a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2;
+
+	oracle_setup(map, o, steps, nsteps, seed, &su);
+	if (a == FRS_SORTED) {
+		/* blocks of n_s, as far as the matrix and its tiling keep
+		 * them whole; the minmap for the rest of each pixel */
+		uint32_t t = frs_tile_max_block(&su);
+		b = su.ns < mat.w ? su.ns : mat.w;
+		b = b < mat.h ? b : mat.h;
+		b = b < t ? b : t;
+		minmap = b < su.ns;
+	}
+	frs_set_threads(1);
+	assert_int_equal(frs_sample(&su, map, oracle_prep(minmap, b), a, steps,
+	    nsteps, 0, &r), 0);
+	d.xy = malloc(2 * (r.count + 1) * sizeof *d.xy);
+	d.pdf = malloc((r.count + 1) * sizeof *d.pdf);
+	d.step = malloc((r.count + 1) * sizeof *d.step);
+	assert_true(d.xy && d.pdf && d.step);
+	for (uint32_t k = 0; k < nsteps; k++)
+		for (uint64_t c = 0; c < r.nchunk; c++)
+			for (uint64_t i = 0; i < r.chunk[c].n; i++) {
+				const struct frs_elem *e = &r.chunk[c].e[i];
+				if (nsteps > 1 && e->step != k)
+					continue;
+				frs_point(&su, e, &d.xy[2 * d.n], &d.xy[2 * d.n + 1]);
+				d.pdf[d.n] = map->v[(size_t)(e->y / su.ns) * map->w +
+				    e->x / su.ns] / su.mean;
+				d.step[d.n++] = e->step;
+			}
+	assert_true(d.n == r.count);
+	frs_result_free(&r);
+	return d;
+}
+
+/*
+ * frs_draw_progressive of s, made from map with the options o (NULL: the
+ * defaults), against the oracle and against frs-sample -m MATRIX ARGS
+ * with the same counts, seed and --pdf: the same records, bit for bit.
+ */
+static void compare(const frs_sampler *s, const struct frs_imap *map,
+    const struct frs_options *o, const uint64_t *steps, unsigned nsteps,
+    uint64_t seed, int pdf, const char *args)
+{
+	const char *out = tu_path("frs.pts");
+	struct frs_options dflt;
+	struct drawn d, want;
+	double *rec, *ref;
+
+	o = o != NULL ? o : (frs_options_init(&dflt), &dflt);
+	frs_sample_prog(MATRIX, args, steps, nsteps, seed, pdf, out);
 	d = draw(s, steps, nsteps, seed, pdf);
 	rec = records(&d, pdf, nsteps > 1);
+	want = oracle_draw(map, o, steps, nsteps, seed);
+	ref = records(&want, pdf, nsteps > 1);
+	if (want.n != d.n)
+		print_error("%s: the API made %zu samples, the oracle %zu\n", args,
+		    d.n, want.n);
+	assert_int_equal(d.n, want.n);
+	assert_memory_equal(rec, ref, d.n * (2 + (size_t)pdf + (nsteps > 1)) *
+	    sizeof *rec);
 	same_as_file(out, rec, d.n, (unsigned)pdf + (nsteps > 1));
+	free(ref);
 	free(rec);
+	drawn_free(&want);
 	drawn_free(&d);
 }
 
@@ -232,11 +411,10 @@ static frs_sampler *sampler_f64(const frs_mask *mk, const struct frs_imap *m,
 static const char *write_exr(const char *name, const struct frs_imap *m)
 {
 	const char *path = tu_path(name);
-	FILE *fp = fopen(path, "wb");
+	FILE *fp = tu_create(path);
 
-	assert_non_null(fp);
 	assert_int_equal(imap_write_exr(fp, path, m), 0);
-	assert_int_equal(fclose(fp), 0);
+	tu_close(fp);
 	return path;
 }
 
@@ -245,14 +423,20 @@ static const char *write_exr(const char *name, const struct frs_imap *m)
 static void test_const_map(void **state)
 {
 	frs_sampler *s;
+	struct frs_imap one;
 	uint64_t n = 5000;
 
 	(void)state;
+	/* No map: importance 1 everywhere. */
+	assert_int_equal(imap_alloc(&one, 128, 128), 0);
+	for (size_t i = 0; i < (size_t)128 * 128; i++)
+		one.v[i] = 1.0;
 	assert_int_equal(frs_sampler_new(&s, mask, NULL, 128, 128, 0, NULL,
 	    NULL), FRS_OK);
-	compare(s, &n, 1, 7, 0, "-i const");
-	compare(s, &n, 1, 7, 1, "-i const");
+	compare(s, &one, NULL, &n, 1, 7, 0, "-i const");
+	compare(s, &one, NULL, &n, 1, 7, 1, "-i const");
 	frs_sampler_free(s);
+	imap_free(&one);
 }
 
 static void test_blob_defaults(void **state)
@@ -261,10 +445,10 @@ static void test_blob_defaults(void **state)
 	uint64_t n[] = { 5000, 1, 100000 };
 
 	(void)state;
-	compare(s, &n[0], 1, 7, 0, "-i blob");
-	compare(s, &n[0], 1, 1, 0, "-i blob");
-	compare(s, &n[1], 1, 3, 1, "-i blob");
-	compare(s, &n[2], 1, 9, 1, "-i blob");
+	compare(s, &blob, NULL, &n[0], 1, 7, 0, "-i blob");
+	compare(s, &blob, NULL, &n[0], 1, 1, 0, "-i blob");
+	compare(s, &blob, NULL, &n[1], 1, 3, 1, "-i blob");
+	compare(s, &blob, NULL, &n[2], 1, 9, 1, "-i blob");
 	frs_sampler_free(s);
 }
 
@@ -314,7 +498,7 @@ static void test_options(void **state)
 		/* Any thread count in the program: the same points. */
 		snprintf(args, sizeof args, "-i blob %s -j %d", c[i].args,
 		    1 + (int)(i % 2));
-		compare(s, &n, 1, 11 + i, c[i].pdf, args);
+		compare(s, &blob, &o, &n, 1, 11 + i, c[i].pdf, args);
 		frs_sampler_free(s);
 	}
 }
@@ -328,8 +512,8 @@ static void test_progressive(void **state)
 	struct drawn d;
 
 	(void)state;
-	compare(s, steps, 3, 7, 1, "-i blob");
-	compare(s, steps, 3, 8, 0, "-i blob");
+	compare(s, &blob, NULL, steps, 3, 7, 1, "-i blob");
+	compare(s, &blob, NULL, steps, 3, 8, 0, "-i blob");
 	/* The steps come in order. */
 	d = draw(s, steps, 3, 7, 0);
 	for (size_t i = 1; i < d.n; i++)
@@ -341,7 +525,8 @@ static void test_progressive(void **state)
 	o.jitter = FRS_JIT_RANDOM;
 	o.algorithm = FRS_ALG_STACK;
 	s = sampler_f64(mask, &blob, &o);
-	compare(s, one, 2, 2, 1, "-i blob -a stack --jitter random");
+	compare(s, &blob, &o, one, 2, 2, 1,
+	    "-i blob -a stack --jitter random");
 	frs_sampler_free(s);
 }
 
@@ -369,7 +554,7 @@ static void test_float_map(void **state)
 	{
 		char args[600];
 		snprintf(args, sizeof args, "-i %s", path);
-		compare(s, &n, 1, 4, 1, args);
+		compare(s, &f64, NULL, &n, 1, 4, 1, args);
 	}
 	frs_sampler_free(s);
 	frs_map_free(map);
@@ -425,7 +610,7 @@ static void test_stride(void **state)
 		}
 	assert_int_equal(frs_sampler_new_f64(&s, mask, wide, m.w, m.h, stride,
 	    NULL, NULL), FRS_OK);
-	compare(s, &n, 1, 6, 1, "-i blob -s 100x60");
+	compare(s, &m, NULL, &n, 1, 6, 1, "-i blob -s 100x60");
 	frs_sampler_free(s);
 	assert_int_equal(frs_sampler_new(&s, mask, wf, m.w, m.h, stride,
 	    NULL, NULL), FRS_OK);
@@ -1752,19 +1937,23 @@ static int setup(void **state)
 		fprintf(stderr, "%s: %s\n", MATRIX, e.message);
 		return -1;
 	}
+	if (frd_read(MATRIX, &mat) < 0)
+		return -1;
 	return imap_load("blob", 0, 0, 0, &blob);
 }
 
 static int teardown(void **state)
 {
 	frs_mask_free(mask);
+	while (nprepared > 0)
+		frs_prep_free(&prepared[--nprepared].p);
+	frd_free(&mat);
+	frd_free(&mat3);
 	imap_free(&blob);
 	return tu_teardown(state);
 }
 
 /* ---- three dimensions ------------------------------------------------ */
-
-#define MATRIX3 "data/default3.frd"
 
 /* frs_draw3_progressive sized by a call with no room; records in
  * frs-sample's layout (x, y, z [, pdf] [, step + 1]). */
@@ -1801,37 +1990,98 @@ static double *draw3(const frs_sampler3 *s, const uint64_t *steps,
 	return rec;
 }
 
-/* The API's samples are frs-sample's, bit for bit, for a 3-D mask. */
-static void compare3(const frs_sampler3 *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, int pdf, const char *args)
+/* One record of oracle3: frs3_point, the density I / mean, the step. */
+struct oracle3 {
+	const struct frs3_setup *su;
+	const struct frs_vol *vol;
+	double *rec;
+	size_t n, k;
+	int pdf, steps;
+};
+
+static int put3(void *ctx, const struct frs3_elem *e)
+{
+	struct oracle3 *o = ctx;
+	double *q = o->rec + o->n++ * o->k;
+	uint32_t ns = o->su->ns;
+
+	frs3_point(o->su, e, q);
+	if (o->pdf)
+		q[3] = o->vol->v[((size_t)(e->z / ns) * o->vol->h + e->y / ns) *
+		    o->vol->w + e->x / ns] / o->su->mean;
+	if (o->steps)
+		q[3 + o->pdf] = (double)(e->step + 1);
+	return 0;
+}
+
+/* oracle_draw in 3-D, as records in frs-sample's layout: frs3_setup with
+ * the options, the exact taus of frs3_exact, the same implementation's
+ * elements in the order of frs.h (frs3_each), each by put3. */
+static double *oracle3(const struct frs_vol *vol, const struct frs_options *o,
+    const uint64_t *steps, unsigned nsteps, uint64_t seed, int pdf, size_t *n)
+{
+	enum frs_algo a = o->algorithm == FRS_ALG_NAIVE ? FRS_NAIVE : FRS_SORTED;
+	size_t k = 3 + (size_t)pdf + (nsteps > 1);
+	struct frs3_setup su;
+	struct frs3_prep p;
+	struct frs3_result r;
+	struct oracle3 o3 = { &su, vol, NULL, 0, k, pdf, nsteps > 1 };
+
+	if (mat3.v == NULL)
+		assert_int_equal(frd_read(MATRIX3, &mat3), 0);
+	assert_int_equal(frs3_setup(&su, vol, &mat3, steps[nsteps - 1],
+	    o->sigma, seed), 0);
+	su.rule = rule_of(o);
+	su.jitter = jitter_of(o);
+	su.tiles = tiling_of(o, frs3_tiles_auto(&su));
+	assert_int_equal(frs3_prepare(&p, &mat3, a == FRS_SORTED ?
+	    frs3_block(&su) : 0), 0);
+	if (o->rule == FRS_RULE_EXACT)
+		assert_int_equal(frs3_exact(&su, vol, &p, steps, nsteps), 0);
+	frs_set_threads(1);
+	assert_int_equal(frs3_sample(&su, vol, &p, a, steps, nsteps, 0, &r), 0);
+	o3.rec = malloc((r.count + 1) * k * sizeof *o3.rec);
+	assert_non_null(o3.rec);
+	frs3_each(&r, nsteps, put3, &o3);
+	*n = o3.n;
+	assert_true(*n == r.count);
+	frs3_result_free(&r);
+	frs3_prep_free(&p);
+	return o3.rec;
+}
+
+/* The API's samples for a 3-D mask (s made from vol with the options o,
+ * NULL: the defaults) are the oracle's and frs-sample's, bit for bit. */
+static void compare3(const frs_sampler3 *s, const struct frs_vol *vol,
+    const struct frs_options *o, const uint64_t *steps, unsigned nsteps,
+    uint64_t seed, int pdf, const char *args)
 {
 	const char *out = tu_path("frs3.pts");
-	size_t n, k = 3 + (size_t)pdf + (nsteps > 1);
-	double *rec;
+	size_t n, nref, k = 3 + (size_t)pdf + (nsteps > 1);
+	double *rec, *ref;
 	struct frs_points p;
+	struct frs_options dflt;
 
-	if (nsteps > 1)
-		prog("frs-sample -q -m %s %s --progressive %s -S %llu %s -o %s",
-		    MATRIX3, args, step_list(steps, nsteps),
-		    (unsigned long long)seed, pdf ? "--pdf" : "", out);
-	else
-		prog("frs-sample -q -m %s %s -n %llu -S %llu %s -o %s", MATRIX3,
-		    args, (unsigned long long)steps[0], (unsigned long long)seed,
-		    pdf ? "--pdf" : "", out);
+	o = o != NULL ? o : (frs_options_init(&dflt), &dflt);
+	frs_sample_prog(MATRIX3, args, steps, nsteps, seed, pdf, out);
 	rec = draw3(s, steps, nsteps, seed, pdf, &n);
+	ref = oracle3(vol, o, steps, nsteps, seed, pdf, &nref);
+	assert_int_equal(n, nref);
+	assert_memory_equal(rec, ref, n * k * sizeof *rec);
 	assert_int_equal(pts_read(out, &p), 0);
 	assert_int_equal(p.dims, 3);
 	assert_int_equal(p.n, n);
 	assert_int_equal(p.dims + p.extra, k);
 	assert_memory_equal(p.x, rec, n * k * sizeof *rec);
 	pts_free(&p);
+	free(ref);
 	free(rec);
 }
 
 static void test_sampler3(void **state)
 {
 	static const uint64_t steps[] = { 300, 1200, 4000 };
-	struct frs_vol v;
+	struct frs_vol v, one;
 	struct frs_options o;
 	frs_mask *m3;
 	frs_sampler3 *s;
@@ -1851,8 +2101,8 @@ static void test_sampler3(void **state)
 	/* The default options, then each option as its flag. */
 	assert_int_equal(frs_sampler3_new_f64(&s, m3, v.v, 16, 16, 16, NULL,
 	    &e), FRS_OK);
-	compare3(s, &n, 1, 5, 1, "-i blob3:sigma=0.2 -s 16");
-	compare3(s, steps, 3, 2, 0, "-i blob3:sigma=0.2 -s 16");
+	compare3(s, &v, NULL, &n, 1, 5, 1, "-i blob3:sigma=0.2 -s 16");
+	compare3(s, &v, NULL, steps, 3, 2, 0, "-i blob3:sigma=0.2 -s 16");
 	assert_int_equal(frs_count3(s, n, 5, &c1, &e), FRS_OK);
 	frs_sampler3_free(s);
 	frs_options_init(&o);
@@ -1862,7 +2112,7 @@ static void test_sampler3(void **state)
 	o.threads = 2;
 	assert_int_equal(frs_sampler3_new_f64(&s, m3, v.v, 16, 16, 16, &o, &e),
 	    FRS_OK);
-	compare3(s, &n, 1, 5, 0, "-i blob3:sigma=0.2 -s 16 --sigma 4 "
+	compare3(s, &v, &o, &n, 1, 5, 0, "-i blob3:sigma=0.2 -s 16 --sigma 4 "
 	    "--jitter halton -a naive");
 	frs_sampler3_free(s);
 	/* A float volume and a constant one (NULL). */
@@ -1881,8 +2131,13 @@ static void test_sampler3(void **state)
 	assert_true(c1 > n * 9 / 10 && c1 < n * 11 / 10);
 	assert_int_equal(frs_sampler3_new(&s, m3, NULL, 8, 8, 8, NULL, &e),
 	    FRS_OK);
-	compare3(s, &n, 1, 3, 1, "-s 8");
+	/* No volume: importance 1 everywhere. */
+	assert_int_equal(vol_alloc(&one, 8, 8, 8), 0);
+	for (size_t i = 0; i < 8 * 8 * 8; i++)
+		one.v[i] = 1.0;
+	compare3(s, &one, NULL, &n, 1, 3, 1, "-s 8");
 	frs_sampler3_free(s);
+	vol_free(&one);
 	vol_free(&v);
 	frs_mask_free(m3);
 }
@@ -2158,11 +2413,15 @@ static void test_exact_same(void **state)
 	struct drawn d0, d;
 	double *a, *b;
 	frs_sampler *s;
+	struct frs_options xo;
 
 	(void)state;
+	frs_options_init(&xo);
+	xo.rule = FRS_RULE_EXACT;
 	s = exact_sampler(&blob, FRS_ALG_SORTED, 1, FRS_RULE_EXACT);
-	compare(s, &n, 1, 5, 1, "-i blob --exact-count");
-	compare(s, steps, 3, 6, 0, "-i blob --exact-count -j 2");
+	compare(s, &blob, &xo, &n, 1, 5, 1, "-i blob --exact-count");
+	compare(s, &blob, &xo, steps, 3, 6, 0,
+	    "-i blob --exact-count -j 2");
 	d0 = draw(s, &n, 1, 5, 0);
 	assert_int_equal(d0.n, n);
 	a = sorted_xy(&d0);
@@ -2330,8 +2589,10 @@ static void test_exact3(void **state)
 		assert_int_equal(frs_count3(s, n, seed, &c, &e), FRS_OK);
 		assert_int_equal(c, n);
 	}
-	compare3(s, &n, 1, 5, 1, "-i blob3:sigma=0.2 -s 16 --exact-count");
-	compare3(s, steps, 3, 2, 0, "-i blob3:sigma=0.2 -s 16 --exact-count");
+	compare3(s, &v, &o, &n, 1, 5, 1,
+	    "-i blob3:sigma=0.2 -s 16 --exact-count");
+	compare3(s, &v, &o, steps, 3, 2, 0,
+	    "-i blob3:sigma=0.2 -s 16 --exact-count");
 	o.algorithm = FRS_ALG_NAIVE;
 	o.threads = 2;
 	assert_int_equal(frs_sampler3_new_f64(&sn, m3, v.v, 16, 16, 16, &o,

@@ -666,16 +666,8 @@ static void lattice3(void **state)
 	(void)state;
 	assert_near(dens_spacing3(1000), 0.11224620483093730, 1e-16);
 	for (size_t m = 2; m <= 16; m *= 2) {
-		size_t n = m * m * m, p = 0;
-		double *x = malloc(3 * n * sizeof *x);
-		assert_non_null(x);
-		for (size_t i = 0; i < m; i++)
-		for (size_t j = 0; j < m; j++)
-		for (size_t l = 0; l < m; l++, p++) {
-			x[3 * p] = ((double)i + 0.5) / (double)m;
-			x[3 * p + 1] = ((double)j + 0.5) / (double)m;
-			x[3 * p + 2] = ((double)l + 0.5) / (double)m;
-		}
+		size_t n = m * m * m;
+		double *x = tu_grid_points3(m);
 		for (int torus = 0; torus < 2; torus++) {
 			double d = dmin3_of(x, n, torus, 1);
 			assert_near(d, 1.0 / (double)m, 1e-15);

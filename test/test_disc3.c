@@ -136,17 +136,9 @@ static void l2_product(void **state)
 {
 	(void)state;
 	for (size_t m = 1; m <= 16; m *= 2) {
-		size_t n = m * m * m, p = 0;
-		double *x = malloc(3 * n * sizeof *x);
+		size_t n = m * m * m;
+		double *x = tu_grid_points3(m);
 		long double a = 0, b = 0, want;
-		assert_non_null(x);
-		for (size_t i = 0; i < m; i++)
-		for (size_t j = 0; j < m; j++)
-		for (size_t l = 0; l < m; l++, p++) {
-			x[3 * p] = ((double)i + 0.5) / (double)m;
-			x[3 * p + 1] = ((double)j + 0.5) / (double)m;
-			x[3 * p + 2] = ((double)l + 0.5) / (double)m;
-		}
 		for (size_t i = 0; i < m; i++) {
 			long double u = ((long double)i + 0.5L) / m;
 			a += 1 - u * u;

@@ -11,14 +11,7 @@
 static void params(struct frdgen_params *pr, uint32_t w, uint32_t h,
     uint32_t d, double p, double tol)
 {
-	frdgen_defaults(pr);
-	pr->dims = d > 1 ? 3 : 2;
-	pr->w = w;
-	pr->h = h;
-	pr->d = d;
-	pr->p = p;
-	pr->tol = tol;
-	pr->seed = 42;
+	tu_frdgen_params(pr, w, h, d, p, tol, 42);
 }
 
 static void permutations(void **state)

@@ -2,25 +2,10 @@
  * generator, byte for byte, over sizes, seeds, candidate fractions,
  * tolerances, non-square and 3-D matrices; a permutation; checkpoints
  * and devices without fp64 refused with a message. */
-#include "testutil.h"
+#include "oclutil.h"
 #include "frsutil.h"
 #include "frd/frdgen.h"
 #include "frd/frdgencl.h"
-
-static struct ocl o;
-
-static int setup(void **state)
-{
-	(void)state;
-	return ocl_open(&o, -1) == 0 ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-	(void)state;
-	ocl_close(&o);
-	return 0;
-}
 
 /* CPU and OpenCL give the same values for these parameters. */
 static void same(const struct frdgen_params *pr)
@@ -28,7 +13,7 @@ static void same(const struct frdgen_params *pr)
 	struct frs_matrix a, b;
 
 	assert_int_equal(frdgen_run(pr, &a, NULL), 0);
-	if (frdgen_run_cl(pr, &o, &b, NULL) != 0)
+	if (frdgen_run_cl(pr, &tu_ocl, &b, NULL) != 0)
 		fail_msg("%s", frs_errmsg());
 	assert_int_equal(a.n, b.n);
 	if (memcmp(a.v, b.v, a.n * sizeof *a.v) != 0) {
@@ -148,15 +133,15 @@ static void refusals(void **state)
 	(void)state;
 	params(&pr, 16, 16, 0.5, 1);
 	pr.checkpoint = tu_path("ck");
-	assert_int_equal(frdgen_run_cl(&pr, &o, &m, NULL), -1);
+	assert_int_equal(frdgen_run_cl(&pr, &tu_ocl, &m, NULL), -1);
 	assert_non_null(strstr(frs_errmsg(), "checkpoint"));
 	pr.checkpoint = NULL;
-	no64 = o;
+	no64 = tu_ocl;
 	no64.fp64 = 0;
 	assert_int_equal(frdgen_run_cl(&pr, &no64, &m, NULL), -1);
 	assert_non_null(strstr(frs_errmsg(), "cl_khr_fp64"));
 	pr.p = 0.0;
-	assert_int_equal(frdgen_run_cl(&pr, &o, &m, NULL), -1);
+	assert_int_equal(frdgen_run_cl(&pr, &tu_ocl, &m, NULL), -1);
 	assert_non_null(strstr(frs_errmsg(), "-p"));
 }
 
@@ -170,5 +155,5 @@ int main(void)
 		cmocka_unit_test(three_d),
 		cmocka_unit_test(refusals),
 	};
-	return cmocka_run_group_tests(tests, setup, teardown);
+	return cmocka_run_group_tests(tests, tu_ocl_setup, tu_ocl_teardown);
 }

@@ -1,6 +1,7 @@
 /* 3-D Forced Random Sampling: setup against closed forms, sorted against
  * naive, and the statistics of what comes out against the volume. */
 #include "testutil.h"
+#include "frsutil.h"
 #include "formats/frdio.h"
 #include "sample/frs3.h"
 #include "base/par.h"
@@ -15,17 +16,8 @@
 static void perm3(struct frs_matrix *m, uint32_t w, uint32_t h, uint32_t d,
     uint64_t seed)
 {
-	struct frs_rng r;
-
 	assert_int_equal(frd_alloc(m, 3, w, h, d, ""), 0);
-	frs_rng_init(&r, seed, FRS_STREAM_TEST);
-	for (uint32_t i = 0; i < m->n; i++)
-		m->v[i] = i;
-	for (uint32_t i = (uint32_t)m->n - 1; i > 0; i--) {
-		uint32_t j = (uint32_t)frs_rng_below(&r, i + 1), t = m->v[i];
-		m->v[i] = m->v[j];
-		m->v[j] = t;
-	}
+	tu_perm_fill(m, seed);
 }
 
 static void vol_of(const char *spec, uint32_t w, uint32_t h, uint32_t d,
@@ -94,15 +86,11 @@ static int elem_cmp(const void *a, const void *b)
 static struct frs3_elem *flatten(const struct frs3_result *r, int sort)
 {
 	struct frs3_elem *e = malloc((r->count + 1) * sizeof *e);
-	uint64_t k = 0;
 
 	assert_non_null(e);
-	for (uint64_t c = 0; c < r->nchunk; c++)
-		for (uint64_t i = 0; i < r->chunk[c].n; i++)
-			e[k++] = r->chunk[c].e[i];
-	assert_true(k == r->count);
+	TU_GATHER(e, r);
 	if (sort)
-		qsort(e, k, sizeof *e, elem_cmp);
+		qsort(e, r->count, sizeof *e, elem_cmp);
 	return e;
 }
 

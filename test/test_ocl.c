@@ -1,23 +1,7 @@
 /* The OpenCL runtime on whatever device there is (PoCL in make check):
  * the kernels' Philox against rng.c, buffers filled before use, a build
  * failure with its log, a device that does not exist. */
-#include "testutil.h"
-#include "base/ocl.h"
-
-static struct ocl o;
-
-static int setup(void **state)
-{
-	(void)state;
-	return ocl_open(&o, -1) == 0 ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-	(void)state;
-	ocl_close(&o);
-	return 0;
-}
+#include "oclutil.h"
 
 static void philox_matches(void **state)
 {
@@ -28,15 +12,15 @@ static void philox_matches(void **state)
 	uint64_t out[1000], seed = 0x123456789abcdefULL, nn = n;
 	uint32_t stream = 5;
 	(void)state;
-	assert_int_equal(ocl_program(&o, "selftest", NULL, &prog), 0);
+	assert_int_equal(ocl_program(&tu_ocl, "selftest", NULL, &prog), 0);
 	assert_int_equal(ocl_kernel(prog, "rand64", &k), 0);
-	assert_int_equal(ocl_buffer(&o, CL_MEM_WRITE_ONLY, sizeof out, NULL,
-	    &b), 0);
-	assert_int_equal(ocl_fill32(&o, b, sizeof out, 0xdeadbeef), 0);
+	assert_int_equal(ocl_buffer(&tu_ocl, CL_MEM_WRITE_ONLY, sizeof out,
+	    NULL, &b), 0);
+	assert_int_equal(ocl_fill32(&tu_ocl, b, sizeof out, 0xdeadbeef), 0);
 	assert_int_equal(ocl_args(k, 4, sizeof seed, &seed, sizeof stream,
 	    &stream, sizeof nn, &nn, sizeof b, &b), 0);
-	assert_int_equal(ocl_run(&o, k, n, 64), 0);
-	assert_int_equal(ocl_read(&o, b, sizeof out, out), 0);
+	assert_int_equal(ocl_run(&tu_ocl, k, n, 64), 0);
+	assert_int_equal(ocl_read(&tu_ocl, b, sizeof out, out), 0);
 	for (size_t i = 0; i < n; i++)
 		assert_true(out[i] == frs_rand64x(seed, stream, i,
 		    (uint32_t)i & 7));
@@ -50,10 +34,10 @@ static void fill_is_visible(void **state)
 	cl_mem b;
 	uint32_t v[64];
 	(void)state;
-	assert_int_equal(ocl_buffer(&o, CL_MEM_READ_WRITE, sizeof v, NULL, &b),
-	    0);
-	assert_int_equal(ocl_fill32(&o, b, sizeof v, 0x01020304), 0);
-	assert_int_equal(ocl_read(&o, b, sizeof v, v), 0);
+	assert_int_equal(ocl_buffer(&tu_ocl, CL_MEM_READ_WRITE, sizeof v, NULL,
+	    &b), 0);
+	assert_int_equal(ocl_fill32(&tu_ocl, b, sizeof v, 0x01020304), 0);
+	assert_int_equal(ocl_read(&tu_ocl, b, sizeof v, v), 0);
 	for (int i = 0; i < 64; i++)
 		assert_true(v[i] == 0x01020304);
 	clReleaseMemObject(b);
@@ -63,12 +47,13 @@ static void build_failure(void **state)
 {
 	cl_program prog;
 	(void)state;
-	assert_int_equal(ocl_build(&o, "broken",
+	assert_int_equal(ocl_build(&tu_ocl, "broken",
 	    "__kernel void f(__global int *p) { p[0] = undefined_name; }\n",
 	    NULL, &prog), -1);
 	assert_err_has("building cl/broken.cl");
 	assert_err_has("undefined_name");
-	assert_int_equal(ocl_program(&o, "no-such-kernel", NULL, &prog), -1);
+	assert_int_equal(ocl_program(&tu_ocl, "no-such-kernel", NULL, &prog),
+	    -1);
 	assert_err_has("no kernel source 'no-such-kernel'");
 }
 
@@ -104,5 +89,5 @@ int main(void)
 		cmocka_unit_test(build_failure),
 		cmocka_unit_test(devices),
 	};
-	return cmocka_run_group_tests(tests, setup, teardown);
+	return cmocka_run_group_tests(tests, tu_ocl_setup, tu_ocl_teardown);
 }

@@ -1,7 +1,7 @@
 /* Reference samplers against closed forms and independent checks:
  * classical Halton/Hammersley/Sobol' values, the (0,2)-net property of
  * scrambled Sobol', strata, Poisson-disk distance and density. */
-#include "testutil.h"
+#include "refsamputil.h"
 #include "maps/imap.h"
 #include "sample/refsamp.h"
 #include "base/rng.h"
@@ -233,20 +233,7 @@ static void random_uniform(void **state)
 static void deterministic(void **state)
 {
 	(void)state;
-	for (int k = REFSAMP_RANDOM; k <= REFSAMP_DART; k++) {
-		uint64_t ma, mb, mc;
-		double *a = gen((enum refsamp_kind)k, 500, 9, &ma);
-		double *b = gen((enum refsamp_kind)k, 500, 9, &mb);
-		double *c = gen((enum refsamp_kind)k, 500, 10, &mc);
-		assert_int_equal(ma, mb);
-		assert_memory_equal(a, b, 2 * ma * sizeof *a);
-		if (k != REFSAMP_REGULAR)
-			assert_true(ma != mc ||
-			    memcmp(a, c, 2 * ma * sizeof *a) != 0);
-		free(a);
-		free(b);
-		free(c);
-	}
+	tu_refsamp_deterministic(gen, 2);
 }
 
 static void names(void **state)

@@ -4,7 +4,7 @@
  * inverses, Joe and Kuo's published Sobol' points, the (1,m,3)-net
  * property of (scrambled) Sobol', the Poisson-disk distance by brute
  * force and the uniformity of random points. */
-#include "testutil.h"
+#include "refsamputil.h"
 #include "sample/refsamp.h"
 #include "base/rng.h"
 
@@ -398,23 +398,17 @@ static void random_uniform(void **state)
 	free(p);
 }
 
+/* gen3 with room for 100000 dart failures. */
+static double *gen3_darts(enum refsamp_kind k, uint64_t n, uint64_t seed,
+    uint64_t *placed)
+{
+	return gen3(k, n, seed, 100000, placed);
+}
+
 static void deterministic(void **state)
 {
 	(void)state;
-	for (int k = REFSAMP_RANDOM; k <= REFSAMP_DART; k++) {
-		uint64_t ma, mb, mc;
-		double *a = gen3((enum refsamp_kind)k, 500, 9, 100000, &ma);
-		double *b = gen3((enum refsamp_kind)k, 500, 9, 100000, &mb);
-		double *c = gen3((enum refsamp_kind)k, 500, 10, 100000, &mc);
-		assert_int_equal(ma, mb);
-		assert_memory_equal(a, b, 3 * ma * sizeof *a);
-		if (k != REFSAMP_REGULAR)
-			assert_true(ma != mc ||
-			    memcmp(a, c, 3 * ma * sizeof *a) != 0);
-		free(a);
-		free(b);
-		free(c);
-	}
+	tu_refsamp_deterministic(gen3_darts, 3);
 }
 
 /* dims 2 is refsamp_gen, byte for byte; bad dims and 3-D relaxed dart

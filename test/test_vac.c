@@ -11,10 +11,7 @@ static void params(struct vac_params *pr, uint32_t w, uint32_t h,
     uint32_t d, double sigma, double tol)
 {
 	vac_defaults(pr);
-	pr->dims = d > 1 ? 3 : 2;
-	pr->w = w;
-	pr->h = h;
-	pr->d = d;
+	TU_SIZES(pr, w, h, d);
 	pr->sigma = sigma;
 	pr->tol = tol;
 	pr->seed = 42;

@@ -41,6 +41,24 @@ static inline double *tu_grid_points(size_t m)
 	return xy;
 }
 
+/* The m x m x m grid of cell centres, point (i m + j) m + l at
+ * ((i + 1/2)/m, (j + 1/2)/m, (l + 1/2)/m). */
+static inline double *tu_grid_points3(size_t m)
+{
+	double *x = malloc(3 * m * m * m * sizeof *x);
+	size_t p = 0;
+
+	assert_non_null(x);
+	for (size_t i = 0; i < m; i++)
+		for (size_t j = 0; j < m; j++)
+			for (size_t l = 0; l < m; l++, p++) {
+				x[3 * p] = ((double)i + 0.5) / (double)m;
+				x[3 * p + 1] = ((double)j + 0.5) / (double)m;
+				x[3 * p + 2] = ((double)l + 0.5) / (double)m;
+			}
+	return x;
+}
+
 /* A fresh temporary directory per test binary. */
 static inline const char *tu_dir(void)
 {
@@ -60,6 +78,19 @@ static inline const char *tu_path(const char *name)
 	k = (k + 1) % 8;
 	snprintf(buf[k], sizeof buf[k], "%s/%s", tu_dir(), name);
 	return buf[k];
+}
+
+/* A file opened for writing, and its closing checked. */
+static inline FILE *tu_create(const char *path)
+{
+	FILE *fp = fopen(path, "wb");
+	assert_non_null(fp);
+	return fp;
+}
+
+static inline void tu_close(FILE *fp)
+{
+	assert_int_equal(fclose(fp), 0);
 }
 
 static inline void tu_write(const char *path, const void *data, size_t n)

@@ -30,14 +30,7 @@ static void perm_ok(const struct frs_matrix *m)
 static void params(struct frdgen_params *pr, uint32_t w, uint32_t h,
     uint32_t d, double p, double tol, uint64_t seed)
 {
-	frdgen_defaults(pr);
-	pr->dims = d > 1 ? 3 : 2;
-	pr->w = w;
-	pr->h = h;
-	pr->d = d;
-	pr->p = p;
-	pr->tol = tol;
-	pr->seed = seed;
+	tu_frdgen_params(pr, w, h, d, p, tol, seed);
 	/* The thesis's force, which least_force_ok sums. */
 	pr->force = FRDGEN_FORCE_EXP;
 	pr->s = pr->q = 0.5;

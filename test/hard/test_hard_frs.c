@@ -491,6 +491,29 @@ static void negatives(void **state)
 	frd_free(&m);
 }
 
+/* 8000 samples of the w x h strip of values v (summing to 8), with the
+ * seed: the count, each pixel's share v / 8; the counts per pixel. */
+static double *strip(const struct frs_matrix *m, uint32_t w, uint32_t h,
+    const double *v, uint64_t seed)
+{
+	struct frs_imap map;
+	struct frs_setup s;
+	uint64_t count;
+	double *in;
+	char what[2][32];
+
+	snprintf(what[0], sizeof what[0], "%ux%u: count", w, h);
+	snprintf(what[1], sizeof what[1], "%ux%u: pixel", w, h);
+	assert_int_equal(imap_alloc(&map, w, h), 0);
+	memcpy(map.v, v, (size_t)w * h * sizeof *v);
+	in = sample_counts(&map, m, 8000, seed, &s, &count);
+	total_ok(what[0], count, 8000);
+	for (uint32_t k = 0; k < w * h; k++)
+		hd_binom(what[1], in[k], (double)count, v[k] / 8);
+	imap_free(&map);
+	return in;
+}
+
 /*
  * 1x1: n = 1000 needs w_min = 253, n_s = 256, one whole tile of the 256^2
  * matrix with T = 1000: exactly 1000.  Strips 1x3 (1, 2, 5) and 5x1 (1, 0,
@@ -514,24 +537,10 @@ static void tiny_maps(void **state)
 	free(in);
 	imap_free(&map);
 
-	assert_int_equal(imap_alloc(&map, 1, 3), 0);
-	memcpy(map.v, col, sizeof col);
-	in = sample_counts(&map, &m, 8000, 25, &s, &count);
-	total_ok("1x3: count", count, 8000);
-	for (int k = 0; k < 3; k++)
-		hd_binom("1x3: pixel", in[k], (double)count, col[k] / 8);
-	free(in);
-	imap_free(&map);
-
-	assert_int_equal(imap_alloc(&map, 5, 1), 0);
-	memcpy(map.v, row, sizeof row);
-	in = sample_counts(&map, &m, 8000, 26, &s, &count);
-	total_ok("5x1: count", count, 8000);
-	for (int k = 0; k < 5; k++)
-		hd_binom("5x1: pixel", in[k], (double)count, row[k] / 8);
+	free(strip(&m, 1, 3, col, 25));
+	in = strip(&m, 5, 1, row, 26);
 	assert_true(in[1] == 0 && in[3] == 0);
 	free(in);
-	imap_free(&map);
 	frd_free(&m);
 }
 
