@@ -23,7 +23,7 @@ CC ?= cc
 CXX ?= c++
 PKG_CONFIG ?= pkg-config
 OPT ?= -O2 -g
-WARN = -Wall -Wextra -Wshadow -Wconversion
+WARN = -Wall -Wextra -Wshadow -Wconversion -Werror=implicit-function-declaration
 CSTD = -std=c11
 
 # Recursive (=) so that a sub-make started after scripts/deps.sh sees the

@@ -4,6 +4,7 @@
 #include "testutil.h"
 #include "frsutil.h"
 #include "base/io.h"
+#include "sample/frpio.h"
 
 #define W 32u
 #define H 16u

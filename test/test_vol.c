@@ -3,6 +3,7 @@
  * validation of values and the loader's choices. */
 #include "testutil.h"
 #include "base/io.h"
+#include "maps/mapload.h"
 #include "maps/vol.h"
 
 /* A w x h x d volume of value(x, y, z) = 1 + x + 10 y + 100 z + 1/4:
