@@ -1415,7 +1415,7 @@ int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
 		tau[k] = frs_tau(s, steps[k]);
 	if (!count_only && (s->sw > UINT32_MAX || s->sh > UINT32_MAX))
 		return frs_fail("the window of %llux%llu elements is too large to "
-		    "store samples (--count-only counts them)",
+		    "store samples (a count-only run counts them)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh);
 	if (algo != FRS_NAIVE && algo != FRS_SORTED && p->nlev < 2)
 		return frs_fail("%s: the matrix has no minmap", name);

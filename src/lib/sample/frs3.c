@@ -463,7 +463,7 @@ static int check(const struct frs3_setup *s, const struct frs3_prep *p,
 	if (!count_only && (s->sw > UINT32_MAX || s->sh > UINT32_MAX ||
 	    s->sd > UINT32_MAX))
 		return frs_fail("the window of %llux%llux%llu elements is too large "
-		    "to store samples (--count-only counts them)",
+		    "to store samples (a count-only run counts them)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh,
 		    (unsigned long long)s->sd);
 	if (algo != FRS_NAIVE && algo != FRS_SORTED)
