@@ -111,7 +111,7 @@ int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
 {
 	const uint32_t msize[3] = { mat->w, mat->h, mat->d };
 	uint32_t small = side[0];
-	double vol, cube, a, x, wmin, imax;
+	double vol, cube, a, x, wmin, imax = 0.0;
 	uint64_t ns = 1;
 
 	memset(w, 0, sizeof *w);
