@@ -11,6 +11,7 @@
 
 #include "analysis/density.h"
 #include "base/err.h"
+#include "base/num.h"
 #include "maps/imap.h"
 #include "base/par.h"
 
@@ -49,7 +50,8 @@ static size_t pixel_of(double x, uint32_t w)
 int dens_scales(const double *xy, size_t n, const struct frs_imap *map,
     double *f)
 {
-	double sum = 0, c = 0, mean;
+	struct num_sum sum = { 0.0, 0.0 };
+	double mean;
 	size_t np;
 
 	if (n > 0 && (xy == NULL || f == NULL))
@@ -65,15 +67,14 @@ int dens_scales(const double *xy, size_t n, const struct frs_imap *map,
 	if (map->w == 0 || map->h == 0 || map->v == NULL)
 		return frs_fail("importance map is empty");
 	np = (size_t)map->w * map->h;
-	for (size_t k = 0; k < np; k++) {	/* Neumaier */
-		double v = map->v[k], t = sum + v;
+	for (size_t k = 0; k < np; k++) {
+		double v = map->v[k];
 		if (!isfinite(v))
 			return frs_fail("importance map: pixel (%zu, %zu) is "
 			    "%g", k % map->w, k / map->w, v);
-		c += fabs(sum) >= fabs(v) ? (sum - t) + v : (v - t) + sum;
-		sum = t;
+		num_add(&sum, v);
 	}
-	mean = (sum + c) / (double)np;
+	mean = num_total(&sum) / (double)np;
 	if (!(mean > 0) || !isfinite(mean))
 		return frs_fail("importance map: mean importance %g is not "
 		    "positive and finite", mean);

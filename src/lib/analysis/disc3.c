@@ -15,6 +15,7 @@
 #include "analysis/disc.h"
 #include "analysis/discint.h"
 #include "base/err.h"
+#include "base/num.h"
 #include "base/geom.h"
 #include "base/mem.h"
 
@@ -810,7 +811,7 @@ struct grid3 {
 
 /* Sum of d^2 (Neumaier) and max |d| over the boxes of plane i. */
 static void grid3_plane(const struct grid3 *c, const uint32_t *H,
-    uint32_t *acc, uint32_t i, double sq[2], double *best)
+    uint32_t *acc, uint32_t i, struct num_sum *sq, double *best)
 {
 	uint32_t s = c->s;
 
@@ -820,15 +821,11 @@ static void grid3_plane(const struct grid3 *c, const uint32_t *H,
 		double gij = c->g[i] * c->g[j];
 		uint32_t run = 0;
 		for (uint32_t l = 1; l <= s; l++) {
-			double d, dd, t;
+			double d;
 			run += row[l - 1];
 			acc[l - 1] += run;
 			d = (double)acc[l - 1] / c->n - gij * c->g[l];
-			dd = d * d;
-			t = sq[0] + dd;
-			sq[1] += fabs(sq[0]) >= dd ? (sq[0] - t) + dd :
-			    (dd - t) + sq[0];
-			sq[0] = t;
+			num_add(sq, d * d);
 			d = fabs(d);
 			*best = d > *best ? d : *best;
 		}
@@ -842,7 +839,8 @@ static int grid3_chunk(void *ctx, uint64_t b, uint64_t e)
 	size_t s = c->s;
 	uint32_t *H = mem_calloc("the 3-D grid", (uint64_t)s * s + s,
 	    sizeof *H);
-	double sq[2] = { 0, 0 }, best = 0.0;
+	struct num_sum sq = { 0.0, 0.0 };
+	double best = 0.0;
 
 	if (H == NULL)
 		return -1;
@@ -856,9 +854,9 @@ static int grid3_chunk(void *ctx, uint64_t b, uint64_t e)
 			const uint32_t *k = c->bin + 3 * (size_t)c->rows.idx[q];
 			H[k[1] * s + k[2]]++;
 		}
-		grid3_plane(c, H, H + s * s, (uint32_t)p + 1, sq, &best);
+		grid3_plane(c, H, H + s * s, (uint32_t)p + 1, &sq, &best);
 	}
-	c->sq[b / GRID_PLANES] = sq[0] + sq[1];
+	c->sq[b / GRID_PLANES] = num_total(&sq);
 	c->best[b / GRID_PLANES] = best;
 	free(H);
 	return 0;
@@ -896,7 +894,7 @@ int disc3_star_grid(const double *xyz, size_t n, uint32_t s, int par,
 		disc_rows_free(&c.rows);
 	}
 	if (rc == 0) {
-		r->d2 = sqrt(disc_sum(c.sq, nch) / (ds * ds * ds));
+		r->d2 = sqrt(num_sum(c.sq, nch) / (ds * ds * ds));
 		r->dinf = 0.0;
 		for (size_t q = 0; q < nch; q++)
 			r->dinf = c.best[q] > r->dinf ? c.best[q] : r->dinf;

@@ -23,6 +23,7 @@
 #include "analysis/disc.h"
 #include "analysis/discint.h"
 #include "base/err.h"
+#include "base/num.h"
 #include "base/geom.h"
 
 double disc_half_pos(uint32_t i, uint32_t s)
@@ -79,7 +80,8 @@ static int half_one(struct half *h, uint64_t e, uint32_t *hist,
 	const double *fx = h->bx + (size_t)(a + 1) * s;
 	const double *fy = h->by + (size_t)(a + 1) * s;
 	double ex = h->bx[e], ey = h->by[e], n = (double)h->n;
-	double sum = 0.0, comp = 0.0, best = 0.0;
+	struct num_sum sum = { 0.0, 0.0 };
+	double best = 0.0;
 	uint64_t eq = 0, above = 0;
 
 	for (uint32_t j = 0; j <= m; j++)
@@ -104,7 +106,7 @@ static int half_one(struct half *h, uint64_t e, uint32_t *hist,
 	}
 	for (uint32_t j = m; j-- > 0;) {
 		uint64_t cnt;
-		double v, t;
+		double v;
 		above += hist[j + 1];
 		cnt = above;
 		if (geom_edge_closed(ex, ey, fx[j], fy[j]))
@@ -112,12 +114,9 @@ static int half_one(struct half *h, uint64_t e, uint32_t *hist,
 		v = fabs((double)cnt / n - disc_half_area((int)a, ex, ey,
 		    (int)(a + 1 + j / s), fx[j], fy[j]));
 		best = v > best ? v : best;
-		v *= v;
-		t = sum + v;
-		comp += fabs(sum) >= v ? (sum - t) + v : (v - t) + sum;
-		sum = t;
+		num_add(&sum, v * v);
 	}
-	h->sum[e] = sum + comp;
+	h->sum[e] = num_total(&sum);
 	h->best[e] = best;
 	return 0;
 }
@@ -159,7 +158,7 @@ int disc_half(const double *xy, size_t n, uint32_t s, int par,
 		double best = 0.0;
 		for (size_t k = 0; k < ne; k++)
 			best = h.best[k] > best ? h.best[k] : best;
-		r->d2 = sqrt(disc_sum(h.sum, ne) / (6.0 * s * s));
+		r->d2 = sqrt(num_sum(h.sum, ne) / (6.0 * s * s));
 		r->dinf = best;
 	}
 	free(h.bx), free(h.sum);

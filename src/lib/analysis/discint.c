@@ -39,19 +39,6 @@ int disc_run_chunks(uint64_t n, uint64_t chunk,
 	return 0;
 }
 
-/* Neumaier's compensated sum of v[0..k-1], in order. */
-double disc_sum(const double *v, size_t k)
-{
-	double s = 0.0, c = 0.0;
-
-	for (size_t i = 0; i < k; i++) {
-		double t = s + v[i];
-		c += fabs(s) >= fabs(v[i]) ? (s - t) + v[i] : (v[i] - t) + s;
-		s = t;
-	}
-	return s + c;
-}
-
 /* ---- sorting -------------------------------------------------------- */
 
 /* A key whose unsigned order is the order of the doubles: the sign bit

@@ -14,8 +14,6 @@ void disc_set_progress(struct progress *pr);
 /* Chunks of [0, n) in order, on the thread team when par is set. */
 int disc_run_chunks(uint64_t n, uint64_t chunk,
     int (*fn)(void *, uint64_t, uint64_t), void *ctx, int par);
-/* Compensated sum of v[0..k-1], in order. */
-double disc_sum(const double *v, size_t k);
 /* ord[0..n-1]: the indices of v[i * stride], i < n, in ascending order
  * of the values, equal values by index (a stable radix sort, O(n)). */
 int disc_order(const double *v, size_t n, size_t stride, uint32_t *ord);

@@ -19,6 +19,7 @@
 #include "analysis/discint.h"
 #include "analysis/discshape.h"
 #include "base/err.h"
+#include "base/num.h"
 #include "base/geom.h"
 #include "base/rng.h"
 
@@ -365,11 +366,12 @@ struct shaperun {
 static int shape_chunk(void *ctx, uint64_t b, uint64_t e)
 {
 	struct shaperun *r = ctx;
-	double sum = 0.0, comp = 0.0, best = 0.0, q[8];
+	struct num_sum sum = { 0.0, 0.0 };
+	double best = 0.0, q[8];
 
 	for (uint64_t k = b; k < e; k++) {
 		uint64_t cnt;
-		double area, v, t;
+		double area, v;
 		shape_get(r->sh, k, q);
 		if (r->sh->cls == DISC_QUAD) {
 			cnt = disc_count_quad(&r->cols, q);
@@ -380,12 +382,9 @@ static int shape_chunk(void *ctx, uint64_t b, uint64_t e)
 		}
 		v = fabs((double)cnt / r->n - area);
 		best = v > best ? v : best;
-		v *= v;
-		t = sum + v;
-		comp += fabs(sum) >= v ? (sum - t) + v : (v - t) + sum;
-		sum = t;
+		num_add(&sum, v * v);
 	}
-	r->sum[b / SHAPE_CHUNK] = sum + comp;
+	r->sum[b / SHAPE_CHUNK] = num_total(&sum);
 	r->best[b / SHAPE_CHUNK] = best;
 	return 0;
 }
@@ -410,7 +409,7 @@ int disc_shapes_run(const struct disc_shapes *sh, const double *xy, size_t n,
 		double best = 0.0;
 		for (size_t i = 0; i < nch; i++)
 			best = r.best[i] > best ? r.best[i] : best;
-		res->d2 = sqrt(disc_sum(r.sum, nch) / (double)sh->k);
+		res->d2 = sqrt(num_sum(r.sum, nch) / (double)sh->k);
 		res->dinf = best;
 	}
 	disc_cols_free(&r.cols);

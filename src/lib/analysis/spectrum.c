@@ -7,6 +7,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "analysis/spectrum.h"
 #include "base/err.h"
+#include "base/num.h"
 #include "base/mem.h"
 #include "base/fft.h"
 #include "base/par.h"
@@ -518,14 +519,6 @@ out:
 
 /* ---- radial statistics -------------------------------------------- */
 
-/* Neumaier's compensated sum: add v to (s, comp). */
-static void nsum(double *s, double *comp, double v)
-{
-	double t = *s + v;
-	*comp += fabs(*s) >= fabs(v) ? (*s - t) + v : (v - t) + *s;
-	*s = t;
-}
-
 void spec_radial_free(struct spec_radial *r)
 {
 	free(r->lo);
@@ -554,7 +547,8 @@ static size_t annulus(double d, double bin, size_t nb)
 int spec_radial(const struct spec_img *im, double bin, struct spec_radial *r)
 {
 	size_t side, nb;
-	double rmax, *s = NULL, *comp = NULL;
+	double rmax;
+	struct num_sum *s = NULL;
 	int rc = 0;
 
 	memset(r, 0, sizeof *r);
@@ -586,9 +580,8 @@ int spec_radial(const struct spec_img *im, double bin, struct spec_radial *r)
 	r->aniso = malloc(nb * sizeof *r->aniso);
 	r->count = calloc(nb, sizeof *r->count);
 	s = calloc(nb, sizeof *s);
-	comp = calloc(nb, sizeof *comp);
 	if (r->lo == NULL || r->mean == NULL || r->aniso == NULL ||
-	    r->count == NULL || s == NULL || comp == NULL) {
+	    r->count == NULL || s == NULL) {
 		rc = frs_fail("radial statistics: no memory for %zu annuli",
 		    nb);
 		spec_radial_free(r);
@@ -607,10 +600,10 @@ int spec_radial(const struct spec_img *im, double bin, struct spec_radial *r)
 					continue;
 				if (pass == 0) {
 					r->count[i]++;
-					nsum(&s[i], &comp[i], v);
+					num_add(&s[i], v);
 				} else {
 					double dv = v - r->mean[i];
-					nsum(&s[i], &comp[i], dv * dv);
+					num_add(&s[i], dv * dv);
 				}
 			}
 		}
@@ -618,8 +611,8 @@ int spec_radial(const struct spec_img *im, double bin, struct spec_radial *r)
 			break;
 		for (size_t i = 0; i < nb; i++) {
 			r->mean[i] = r->count[i] ?
-			    (s[i] + comp[i]) / (double)r->count[i] : 0.0;
-			s[i] = comp[i] = 0.0;
+			    num_total(&s[i]) / (double)r->count[i] : 0.0;
+			s[i] = (struct num_sum){ 0.0, 0.0 };
 		}
 	}
 	for (size_t i = 0; i < nb; i++) {
@@ -630,13 +623,12 @@ int spec_radial(const struct spec_img *im, double bin, struct spec_radial *r)
 			r->mean[i] = r->aniso[i] = 0.0;
 			continue;
 		}
-		var = (s[i] + comp[i]) / (double)(r->count[i] - 1);
+		var = num_total(&s[i]) / (double)(r->count[i] - 1);
 		r->aniso[i] = var > 0.0 ? 10.0 * log10(var) -
 		    20.0 * log10(fabs(r->mean[i])) : -INFINITY;
 	}
 out:
 	free(s);
-	free(comp);
 	return rc;
 }
 

@@ -2,6 +2,7 @@
 #include "sample/frscore.h"
 #include "base/err.h"
 #include "base/mem.h"
+#include "base/num.h"
 #include "base/par.h"
 #include "base/rng.h"
 #include "sample/tile.h"
@@ -33,7 +34,7 @@ int frs_algo_parse(const char *s, enum frs_algo *a)
 			*a = (enum frs_algo)i;
 			return 0;
 		}
-	return frs_fail("-a: unknown implementation '%s' (naive, stack, "
+	return frs_fail("unknown implementation '%s' (naive, stack, "
 	    "level1, level2, sorted)", s);
 }
 
@@ -52,87 +53,133 @@ static unsigned log2u64(uint64_t v)
 
 /* ---- setup (Listing 5.1) ------------------------------------------ */
 
-/* Mean and maximum of the map times the power of two iscale (exact for
- * every value that stays normal), compensated sum (Neumaier). */
-static void scaled_stats(const struct frs_imap *map, double iscale,
-    double *mean, double *max)
-{
-	uint64_t n = (uint64_t)map->w * map->h;
-	double sum = 0.0, c = 0.0, mx = 0.0;
+/* The largest log2 n_s per dimension: n_s stays a uint32_t in 2-D, and
+ * the (n_s s)^3 window elements of 3-D are past any run at 2^20. */
+static const unsigned max_lns[4] = { 0, 0, 31, 20 };
 
-	for (uint64_t i = 0; i < n; i++) {
-		double v = map->v[i] * iscale, t = sum + v;
-		c += fabs(sum) >= fabs(v) ? (sum - t) + v : (v - t) + sum;
-		sum = t;
-		mx = v > mx ? v : mx;
+/* The importance statistics of the cells into w, and in *imax the
+ * maximum of the cells times w->iscale.  Only ratios matter: an extreme
+ * map is scaled by a power of two (exact for every value that stays
+ * normal), so that tau and the mean stay finite; the thresholds of every
+ * other map are those of the map as it is. */
+static int cell_stats(struct frs_window *w, const struct frs_imap *cells,
+    double *imax)
+{
+	struct frs_imap_stats st;
+	uint64_t n = (uint64_t)cells->w * cells->h;
+
+	imap_stats(cells, &st);
+	if (!(st.max > 0.0) || st.nonfinite || st.negatives)
+		return frs_fail("importance must be finite, non-negative and not "
+		    "zero everywhere");
+	w->iscale = 1.0;
+	w->imean = st.mean;
+	w->mean = st.mean;
+	w->max = st.max;
+	*imax = st.max;
+	if (!(st.max >= 0x1p-900 && st.max <= 0x1p900)) {
+		int e = -ilogb(st.max);	/* 1074 for the smallest denormal */
+		struct num_sum sum = { 0.0, 0.0 };
+		double mx = 0.0;
+		w->iscale = ldexp(1.0, e < 1023 ? e : 1023);
+		for (uint64_t i = 0; i < n; i++) {
+			double v = cells->v[i] * w->iscale;
+			num_add(&sum, v);
+			mx = v > mx ? v : mx;
+		}
+		w->imean = num_total(&sum) / (double)n;
+		w->mean = w->imean / w->iscale;
+		*imax = mx;
 	}
-	*mean = (sum + c) / (double)n;
-	*max = mx;
+	return 0;
+}
+
+/* A random multiple of n_s on one axis, or of the matrix side m when n_s
+ * exceeds it (every offset is then the same). */
+static uint64_t window_offset(uint64_t seed, unsigned axis, uint64_t ns,
+    uint32_t m)
+{
+	uint64_t u = ns < m ? ns : m;
+
+	return (uint64_t)(frs_rand01(seed, FRS_STREAM_WINDOW, axis) *
+	    (double)(m / u)) * u;
+}
+
+int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
+    const struct frs_imap *cells, const struct frs_matrix *mat, uint64_t n,
+    double sigma, uint64_t seed)
+{
+	const uint32_t msize[3] = { mat->w, mat->h, mat->d };
+	uint32_t small = side[0];
+	double vol, cube, a, x, wmin, imax = 0.0;
+	uint64_t ns = 1;
+
+	memset(w, 0, sizeof *w);
+	if (mat->dims != k)
+		return frs_fail("a %u-D matrix cannot sample a %s", mat->dims,
+		    k == 2 ? "2-D map" : "volume");
+	if (n == 0)
+		return frs_fail("the count must be at least 1");
+	if (!(sigma >= 1.0 && isfinite(sigma)))
+		return frs_fail("sigma %g is below 1", sigma);
+	if (cell_stats(w, cells, &imax) < 0)
+		return -1;
+	for (unsigned i = 1; i < k; i++)
+		small = side[i] < small ? side[i] : small;
+	/* a = (cells) / small^k, the aspect ratio: the products are exact
+	 * (fewer than 2^53 cells fit in memory), so a is the rounded ratio
+	 * in any dimension, in 2-D that of large / small. */
+	vol = side[0];
+	cube = small;
+	for (unsigned i = 1; i < k; i++) {
+		vol *= side[i];
+		cube *= small;
+	}
+	a = vol / cube;
+	x = (double)n * imax / (w->imean * a);
+	wmin = ceil(sigma * (k == 2 ? sqrt(x) : cbrt(x)));
+	while ((double)small * (double)ns < wmin) {
+		ns <<= 1;
+		if (ns > ((uint64_t)1 << max_lns[k]))
+			return frs_fail("%llu samples: the window would need more "
+			    "than 2^%u elements per %s side", (unsigned long long)n,
+			    max_lns[k], k == 2 ? "pixel" : "voxel");
+	}
+	w->ns = ns;
+	for (unsigned i = 0; i < k; i++) {
+		w->size[i] = ns * side[i];
+		w->off[i] = window_offset(seed, i, ns, msize[i]);
+	}
+	return 0;
 }
 
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed)
 {
-	struct frs_imap_stats st;
-	uint32_t small, large;
-	double a, wmin, imax;
-	uint64_t ns = 1, ux, uy;
+	const uint32_t side[2] = { map->w, map->h };
+	struct frs_window w;
 
 	memset(s, 0, sizeof *s);
-	if (mat->dims != 2)
-		return frs_fail("a %u-D matrix cannot sample a 2-D map", mat->dims);
-	if (n == 0)
-		return frs_fail("-n: the count must be at least 1");
-	if (!(sigma >= 1.0 && isfinite(sigma)))
-		return frs_fail("--sigma: %g is below 1", sigma);
-	imap_stats(map, &st);
-	if (!(st.max > 0.0) || st.nonfinite || st.negatives)
-		return frs_fail("importance must be finite, non-negative and not "
-		    "zero everywhere");
-	/* Only ratios matter: scale an extreme map by a power of two, so
-	 * that tau and the mean stay finite; the thresholds of every other
-	 * map are those of the map as it is. */
-	s->iscale = 1.0;
-	s->imean = st.mean;
-	imax = st.max;
-	if (!(st.max >= 0x1p-900 && st.max <= 0x1p900)) {
-		int e = -ilogb(st.max);	/* 1074 for the smallest denormal */
-		s->iscale = ldexp(1.0, e < 1023 ? e : 1023);
-		scaled_stats(map, s->iscale, &s->imean, &imax);
-		st.mean = s->imean / s->iscale;
-	}
+	if (frs_window_setup(&w, 2, side, map, mat, n, sigma, seed) < 0)
+		return -1;
 	s->iw = map->w;
 	s->ih = map->h;
 	s->mw = mat->w;
 	s->mh = mat->h;
 	s->n = n;
 	s->sigma = sigma;
-	s->mean = st.mean;
-	s->max = st.max;
 	s->seed = seed;
-	small = map->w < map->h ? map->w : map->h;
-	large = map->w < map->h ? map->h : map->w;
-	a = (double)large / small;
-	wmin = ceil(sigma * sqrt((double)n * imax / (s->imean * a)));
-	while ((double)small * (double)ns < wmin) {
-		ns <<= 1;
-		if (ns > ((uint64_t)1 << 31))
-			return frs_fail("-n %llu: the window would need more than "
-			    "2^31 elements per pixel side", (unsigned long long)n);
-	}
-	s->ns = (uint32_t)ns;
-	s->sw = ns * map->w;
-	s->sh = ns * map->h;
-	/* A random multiple of n_s, or of the matrix when n_s exceeds it
-	 * (every offset is then the same). */
-	ux = ns < mat->w ? ns : mat->w;
-	uy = ns < mat->h ? ns : mat->h;
-	s->wx = (uint64_t)(frs_rand01(seed, FRS_STREAM_WINDOW, 0) *
-	    (double)(mat->w / ux)) * ux;
-	s->wy = (uint64_t)(frs_rand01(seed, FRS_STREAM_WINDOW, 1) *
-	    (double)(mat->h / uy)) * uy;
+	s->mean = w.mean;
+	s->max = w.max;
+	s->iscale = w.iscale;
+	s->imean = w.imean;
+	s->ns = (uint32_t)w.ns;
+	s->sw = w.size[0];
+	s->sh = w.size[1];
+	s->wx = w.off[0];
+	s->wy = w.off[1];
 	s->tau = frs_tau(s, n);
-	s->level0 = (unsigned)floor(log2(fmin((double)ns, sigma)));
+	s->level0 = (unsigned)floor(log2(fmin((double)w.ns, sigma)));
 	return 0;
 }
 
@@ -182,7 +229,7 @@ static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
 		double target, margin, mid;
 		int sd;
 		if (it == EXACT_PASSES)
-			return frs_fail("--exact-count: no threshold for exactly "
+			return frs_fail("exact count: no threshold for exactly "
 			    "%llu samples after %u count passes",
 			    (unsigned long long)n, it);
 		if (count(ctx, t, &c) < 0)
@@ -208,7 +255,7 @@ static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
 		if (!isfinite(hi)) {
 			t = clo > 0 ? lo * (target / (double)clo) : 2.0 * lo;
 			if (!(t > lo) || !isfinite(t))
-				return frs_fail("--exact-count: no threshold "
+				return frs_fail("exact count: no threshold "
 				    "reaches %llu samples", (unsigned long long)n);
 			continue;
 		}
@@ -219,7 +266,7 @@ static int exact_one(uint64_t n, double lo, uint64_t clo, double t,
 		    !(t > lo && t < hi))
 			t = mid;
 		if (!(t > lo && t < hi))
-			return frs_fail("--exact-count: %llu elements share the "
+			return frs_fail("exact count: %llu elements share the "
 			    "threshold %.17g of sample %llu: no set of exactly "
 			    "%llu", (unsigned long long)(chi - clo), hi,
 			    (unsigned long long)(clo + 1), (unsigned long long)n);
@@ -250,7 +297,7 @@ int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
 	if (frs_steps_check(steps, nsteps) < 0)
 		return -1;
 	if (steps[nsteps - 1] > most)
-		return frs_fail("--exact-count: the window has %llu elements of "
+		return frs_fail("exact count: the window has %llu elements of "
 		    "non-zero importance, fewer than %llu",
 		    (unsigned long long)most,
 		    (unsigned long long)steps[nsteps - 1]);
@@ -1005,6 +1052,13 @@ unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
 	return l;
 }
 
+unsigned frs_algo_level(const struct frs_setup *s, const struct frs_prep *p,
+    enum frs_algo algo)
+{
+	return frs_start_level(s, p, algo == FRS_LEVEL1 ? 1 :
+	    algo == FRS_LEVEL2 ? 2 : s->level0);
+}
+
 /* Listing 5.4: an explicit stack of minmap blocks. */
 struct blk {
 	uint64_t x, y;
@@ -1014,7 +1068,7 @@ struct blk {
 static void pix_stack(struct pix *px)
 {
 	const struct run *run = px->run;
-	unsigned L = frs_start_level(run->s, run->p, run->s->level0);
+	unsigned L = frs_algo_level(run->s, run->p, run->algo);
 	uint64_t b = (uint64_t)1 << L, nb = run->s->ns / b;
 	struct blk st[3 * 32 + 4];
 
@@ -1059,9 +1113,9 @@ static void level_block(struct pix *px, unsigned l, uint64_t x, uint64_t y)
 			level_block(px, l - 1, x + qx * h, y + qy * h);
 }
 
-static void pix_level(struct pix *px, unsigned n)
+static void pix_level(struct pix *px)
 {
-	unsigned L = frs_start_level(px->run->s, px->run->p, n);
+	unsigned L = frs_algo_level(px->run->s, px->run->p, px->run->algo);
 	uint64_t b = (uint64_t)1 << L, nb = px->run->s->ns / b;
 
 	for (uint64_t by = 0; by < nb; by++)
@@ -1288,8 +1342,8 @@ static void run_chunk(struct pix *px, uint64_t ci)
 		switch (run->algo) {
 		case FRS_NAIVE: pix_naive(px); break;
 		case FRS_STACK: pix_stack(px); break;
-		case FRS_LEVEL1: pix_level(px, 1); break;
-		case FRS_LEVEL2: pix_level(px, 2); break;
+		case FRS_LEVEL1:
+		case FRS_LEVEL2: pix_level(px); break;
 		default: pix_sorted(px); break;
 		}
 	}
@@ -1336,10 +1390,10 @@ static int chunks_task(void *ctx, uint64_t b, uint64_t e)
 int frs_steps_check(const uint64_t *steps, unsigned nsteps)
 {
 	if (nsteps < 1 || nsteps > 16)
-		return frs_fail("--progressive: 1 to 16 steps");
+		return frs_fail("progressive counts: 1 to 16 steps");
 	for (unsigned k = 1; k < nsteps; k++)
 		if (steps[k] <= steps[k - 1])
-			return frs_fail("--progressive: counts must increase");
+			return frs_fail("progressive counts: counts must increase");
 	return 0;
 }
 
@@ -1361,20 +1415,20 @@ int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
 		tau[k] = frs_tau(s, steps[k]);
 	if (!count_only && (s->sw > UINT32_MAX || s->sh > UINT32_MAX))
 		return frs_fail("the window of %llux%llu elements is too large to "
-		    "store samples (--count-only counts them)",
+		    "store samples (a count-only run counts them)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh);
 	if (algo != FRS_NAIVE && algo != FRS_SORTED && p->nlev < 2)
-		return frs_fail("-a %s: the matrix has no minmap", name);
+		return frs_fail("%s: the matrix has no minmap", name);
 	if (algo == FRS_SORTED && (p->block == 0 || p->block > s->ns ||
 	    s->ns % p->block))
-		return frs_fail("-a sorted: lists of blocks of %u do not fit "
+		return frs_fail("sorted: lists of blocks of %u do not fit "
 		    "n_s = %u", p->block, s->ns);
 	if (algo == FRS_SORTED && p->block > frs_tile_max_block(s))
-		return frs_fail("-a sorted: shuffled tiles keep blocks of at most "
+		return frs_fail("sorted: shuffled tiles keep blocks of at most "
 		    "%u whole, not %u", frs_tile_max_block(s), p->block);
 	if (algo == FRS_SORTED && p->below != FRS_ALL_VALUES &&
 	    frs_lim_most(s, tau[nsteps - 1]) > p->below)
-		return frs_fail("-a sorted: the lists hold the values below "
+		return frs_fail("sorted: the lists hold the values below "
 		    "%llu, the thresholds reach %llu",
 		    (unsigned long long)p->below, (unsigned long long)
 		    frs_lim_most(s, tau[nsteps - 1]));
@@ -1446,17 +1500,6 @@ void frs_result_free(struct frs_result *r)
 
 /* ---- points ------------------------------------------------------- */
 
-double frs_radical_inverse(uint64_t i, unsigned base)
-{
-	double inv = 1.0 / base, f = inv, r = 0.0;
-	while (i > 0) {
-		r += (double)(i % base) * f;
-		i /= base;
-		f *= inv;
-	}
-	return r;
-}
-
 double frs_below_one(double v)
 {
 	return v < 1.0 ? v : 0x1.fffffffffffffp-1;
@@ -1476,8 +1519,8 @@ void frs_point(const struct frs_setup *s, const struct frs_elem *e,
 		 * (Cranley-Patterson), so it depends on nothing but both. */
 		double rx = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX);
 		double ry = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX - 1);
-		jx = frs_radical_inverse(id + 1, 2) + rx;
-		jy = frs_radical_inverse(id + 1, 3) + ry;
+		jx = num_radical_inverse(id + 1, 2) + rx;
+		jy = num_radical_inverse(id + 1, 3) + ry;
 		jx -= floor(jx);
 		jy -= floor(jy);
 	}

@@ -2,6 +2,7 @@
 #include "sample/frs3.h"
 #include "base/err.h"
 #include "base/mem.h"
+#include "base/num.h"
 #include "base/par.h"
 #include "base/rng.h"
 #include "sample/tile.h"
@@ -23,64 +24,24 @@ static uint32_t min3(uint32_t a, uint32_t b, uint32_t c)
 
 /* ---- setup ---------------------------------------------------------- */
 
-/* The map statistics of the volume, scaled by a power of two when its
- * maximum is extreme (as frs_setup does for maps). */
-static int vol_stats(struct frs3_setup *s, const struct frs_vol *vol,
-    double *imax)
-{
-	struct frs_imap view = vol_as_map(vol);
-	struct frs_imap_stats st;
-	uint64_t n = (uint64_t)vol->w * vol->h * vol->d;
-
-	imap_stats(&view, &st);
-	if (!(st.max > 0.0) || st.nonfinite || st.negatives)
-		return frs_fail("importance must be finite, non-negative and not "
-		    "zero everywhere");
-	s->iscale = 1.0;
-	s->mean = st.mean;
-	s->max = st.max;
-	s->imean = st.mean;
-	*imax = st.max;
-	if (!(st.max >= 0x1p-900 && st.max <= 0x1p900)) {
-		double sum = 0.0, c = 0.0, mx = 0.0;
-		int e = -ilogb(st.max);
-		s->iscale = ldexp(1.0, e < 1023 ? e : 1023);
-		for (uint64_t i = 0; i < n; i++) {
-			double v = vol->v[i] * s->iscale, t = sum + v;
-			c += fabs(sum) >= fabs(v) ? (sum - t) + v : (v - t) + sum;
-			sum = t;
-			mx = v > mx ? v : mx;
-		}
-		s->imean = (sum + c) / (double)n;
-		s->mean = s->imean / s->iscale;
-		*imax = mx;
-	}
-	return 0;
-}
-
-static uint64_t offset(uint64_t seed, uint32_t axis, uint64_t ns, uint32_t m)
-{
-	uint64_t u = ns < m ? ns : m;
-	return (uint64_t)(frs_rand01(seed, FRS_STREAM_WINDOW, axis) *
-	    (double)(m / u)) * u;
-}
-
 int frs3_setup(struct frs3_setup *s, const struct frs_vol *vol,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed)
 {
-	uint32_t small = min3(vol->w, vol->h, vol->d);
-	double a, wmin, imax = 0.0;
-	uint64_t ns = 1;
+	const uint32_t side[3] = { vol->w, vol->h, vol->d };
+	struct frs_imap cells = vol_as_map(vol);
+	struct frs_window w;
+	uint64_t *size[3] = { &s->sw, &s->sh, &s->sd };
+	uint64_t *off[3] = { &s->wx, &s->wy, &s->wz };
 
 	memset(s, 0, sizeof *s);
-	if (mat->dims != 3)
-		return frs_fail("a %u-D matrix cannot sample a volume", mat->dims);
-	if (n == 0)
-		return frs_fail("-n: the count must be at least 1");
-	if (!(sigma >= 1.0 && isfinite(sigma)))
-		return frs_fail("--sigma: %g is below 1", sigma);
-	if (vol_stats(s, vol, &imax) < 0)
+	if (frs_window_setup(&w, 3, side, &cells, mat, n, sigma, seed) < 0)
 		return -1;
+	/* Element ids (z S_H + y) S_W + x must fit 64 bits. */
+	if ((double)w.size[0] * (double)w.size[1] * (double)w.size[2] >= 0x1p63)
+		return frs_fail("%llu samples: the window of %llux%llux%llu "
+		    "elements is too large", (unsigned long long)n,
+		    (unsigned long long)w.size[0], (unsigned long long)w.size[1],
+		    (unsigned long long)w.size[2]);
 	s->iw = vol->w;
 	s->ih = vol->h;
 	s->id = vol->d;
@@ -90,26 +51,15 @@ int frs3_setup(struct frs3_setup *s, const struct frs_vol *vol,
 	s->n = n;
 	s->sigma = sigma;
 	s->seed = seed;
-	a = (double)vol->w * vol->h * vol->d / ((double)small * small * small);
-	wmin = ceil(sigma * cbrt((double)n * imax / (s->imean * a)));
-	while ((double)small * (double)ns < wmin) {
-		ns <<= 1;
-		if (ns > ((uint64_t)1 << 20))
-			return frs_fail("-n %llu: the window would need more than "
-			    "2^20 elements per voxel side", (unsigned long long)n);
+	s->mean = w.mean;
+	s->max = w.max;
+	s->iscale = w.iscale;
+	s->imean = w.imean;
+	s->ns = (uint32_t)w.ns;
+	for (int i = 0; i < 3; i++) {
+		*size[i] = w.size[i];
+		*off[i] = w.off[i];
 	}
-	s->ns = (uint32_t)ns;
-	s->sw = ns * vol->w;
-	s->sh = ns * vol->h;
-	s->sd = ns * vol->d;
-	/* Element ids (z S_H + y) S_W + x must fit 64 bits. */
-	if ((double)s->sw * (double)s->sh * (double)s->sd >= 0x1p63)
-		return frs_fail("-n %llu: the window of %llux%llux%llu elements is "
-		    "too large", (unsigned long long)n, (unsigned long long)s->sw,
-		    (unsigned long long)s->sh, (unsigned long long)s->sd);
-	s->wx = offset(seed, 0, ns, mat->w);
-	s->wy = offset(seed, 1, ns, mat->h);
-	s->wz = offset(seed, 2, ns, mat->d);
 	s->tau = frs3_tau(s, n);
 	return 0;
 }
@@ -487,13 +437,13 @@ static int check_work(const struct frs3_setup *s, const struct frs3_prep *p,
 	double vox = (double)s->iw * s->ih * s->id, ns = s->ns;
 
 	if (algo == FRS_NAIVE && vox * ns * ns * ns > FRS3_MAX_NAIVE)
-		return frs_fail("-a naive: -n %llu would visit %.3g window "
-		    "elements (above 2^36, hours); use -a sorted",
+		return frs_fail("naive: %llu samples would visit %.3g window "
+		    "elements (above 2^36, hours); sorted would not",
 		    (unsigned long long)s->n, vox * ns * ns * ns);
 	if (algo == FRS_SORTED) {
 		double nb = ns / p->block, work = vox * nb * nb * nb;
 		if (work > FRS3_MAX_BLOCKS)
-			return frs_fail("-n %llu would visit %.3g blocks of the "
+			return frs_fail("%llu samples would visit %.3g blocks of the "
 			    "%ux%ux%u matrix (above 2^33, hours): %.6g samples "
 			    "repeat it %.3g times; use a larger matrix or fewer "
 			    "samples", (unsigned long long)s->n, work, s->mw, s->mh,
@@ -513,16 +463,16 @@ static int check(const struct frs3_setup *s, const struct frs3_prep *p,
 	if (!count_only && (s->sw > UINT32_MAX || s->sh > UINT32_MAX ||
 	    s->sd > UINT32_MAX))
 		return frs_fail("the window of %llux%llux%llu elements is too large "
-		    "to store samples (--count-only counts them)",
+		    "to store samples (a count-only run counts them)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh,
 		    (unsigned long long)s->sd);
 	if (algo != FRS_NAIVE && algo != FRS_SORTED)
-		return frs_fail("-a %s: 3-D sampling has naive and sorted",
+		return frs_fail("%s: 3-D sampling has naive and sorted",
 		    frs_algo_name(algo));
 	if (algo == FRS_SORTED && (p->block == 0 || s->ns % p->block ||
 	    p->block > min3(s->mw, s->mh, s->md) ||
 	    (s->tiles == FRS_TILES_SHUFFLE && p->block > frs3_block(s))))
-		return frs_fail("-a sorted: lists of blocks of %u do not fit "
+		return frs_fail("sorted: lists of blocks of %u do not fit "
 		    "n_s = %u", p->block, s->ns);
 	return check_work(s, p, algo);
 }
@@ -589,7 +539,7 @@ void frs3_point(const struct frs3_setup *s, const struct frs3_elem *e,
 			j = frs_rand01(s->seed, FRS_STREAM_JITTER, 3 * id + (uint64_t)a);
 		} else if (s->jitter == FRS_JITTER_HALTON) {
 			/* Halton (2, 3, 5) by element, rotated by the seed. */
-			j = frs_radical_inverse(id + 1, base[a]) +
+			j = num_radical_inverse(id + 1, base[a]) +
 			    frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX -
 			    (uint64_t)a);
 			j -= floor(j);
@@ -636,7 +586,7 @@ int frs3_exact(struct frs3_setup *s, const struct frs_vol *vol,
 	unsigned passes;
 
 	if (s->rule != FRS_UNBIASED)
-		return frs_fail("--exact-count needs the unbiased threshold rule");
+		return frs_fail("exact counts need the unbiased threshold rule");
 	if (frs_steps_check(steps, nsteps) < 0)
 		return -1;
 	for (unsigned k = 0; k < nsteps; k++)

@@ -80,6 +80,20 @@ struct frs_setup {
 	struct frs_xtau exact;	/* exact counts; n 0 unless asked */
 };
 
+/* Listing 5.1 in k = 2 or 3 dimensions, the one setup of frs_setup and
+ * frs3_setup: over the cells (map pixels or volume voxels) of sides
+ * side[0 .. k - 1], whose values cells holds (a volume as vol_as_map),
+ * the window of a matrix of k dimensions (see frs3.h for k = 3). */
+struct frs_window {
+	uint64_t ns;		/* window elements per cell side, 2^l */
+	uint64_t size[3];	/* the window: ns * side */
+	uint64_t off[3];	/* its offset in the tiled matrix */
+	double mean, max;	/* of the cells */
+	double iscale, imean;	/* as in struct frs_setup */
+};
+int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
+    const struct frs_imap *cells, const struct frs_matrix *mat, uint64_t n,
+    double sigma, uint64_t seed);
 /* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
@@ -158,6 +172,10 @@ void frs_prep_free(struct frs_prep *p);
  * wanted level: at most log2 n_s, the top level and the tiling's block. */
 unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
     unsigned want);
+/* The start level of algo: Stack's (and Flat 1's) log2 min(n_s, sigma),
+ * Level N's N. */
+unsigned frs_algo_level(const struct frs_setup *s, const struct frs_prep *p,
+    enum frs_algo algo);
 
 /* One accepted window element; (x, y) window coordinates (windows of
  * 2^32 or more elements a side can only be counted). */
@@ -239,8 +257,7 @@ void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule);
 /* Whether value v passes; id numbers the window element for its coin. */
 int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
     uint64_t seed, uint64_t id);
-/* Radical inverse of i in the base; v, or the double below 1 if v is 1. */
-double frs_radical_inverse(uint64_t i, unsigned base);
+/* v, or the double below 1 if v is 1. */
 double frs_below_one(double v);
 
 /* The point of an element, in [0, 1)^2, with the setup's jitter. */

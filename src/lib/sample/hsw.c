@@ -9,6 +9,7 @@
 #include "base/err.h"
 #include "sample/frscore.h"
 #include "base/mem.h"
+#include "base/num.h"
 #include "sample/hsw.h"
 #include "base/par.h"
 #include "base/rng.h"
@@ -125,11 +126,10 @@ uint64_t hsw_warp(const struct hsw_tree *t, double *x, double *y)
  * for the first-level cache. */
 #define PIECE 256
 
-/* frs_radical_inverse (frscore.h), the one loop for both samplers, kept
- * below 1. */
+/* num_radical_inverse (num.h), kept below 1. */
 double hsw_radical_inverse(uint64_t i, unsigned b)
 {
-	return frs_below_one(frs_radical_inverse(i, b));
+	return frs_below_one(num_radical_inverse(i, b));
 }
 
 static uint64_t bit_reverse(uint64_t x)

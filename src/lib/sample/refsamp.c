@@ -13,6 +13,7 @@
 #include "base/err.h"
 #include "maps/imap.h"
 #include "base/mem.h"
+#include "base/num.h"
 #include "base/rng.h"
 
 static const char *const names[] = { "random", "regular", "jittered",
@@ -83,32 +84,6 @@ double refsamp_dart_radius3(uint64_t n)
 	 * per volume d^3 / sqrt 2; n of them fill the cube at
 	 * d = cbrt(sqrt(2) / n).  0.7 as in 2-D. */
 	return 0.7 * cbrt(sqrt(2.0) / (double)n);
-}
-
-double refsamp_radical_inverse(uint64_t i, unsigned b)
-{
-	uint64_t num = 0, den = 1;
-
-	/* Digits reversed as an integer over b^m: one rounding only, while
-	 * b^m fits; past that fall back to the sum. */
-	while (i > 0 && den <= UINT64_MAX / b / b) {
-		num = num * b + i % b;
-		den *= b;
-		i /= b;
-	}
-	if (i == 0)
-		return (double)num / (double)den;
-	{
-		double v = 0, f = 1.0 / (double)den, inv = 1.0 / b;
-		double r = (double)num / (double)den;
-		while (i > 0) {
-			f *= inv;
-			v += (double)(i % b) * f;
-			i /= b;
-		}
-		r += v;
-		return r < 1.0 ? r : nextafter(1.0, 0.0);
-	}
 }
 
 static uint32_t reverse32(uint32_t x)
@@ -544,15 +519,15 @@ int refsamp_gen(enum refsamp_kind k, uint64_t n, uint64_t seed,
 		return 0;
 	case REFSAMP_HALTON:
 		for (uint64_t i = 0; i < n; i++) {
-			xy[2 * i] = wrap(refsamp_radical_inverse(i + 1, 2) + u[0]);
-			xy[2 * i + 1] = wrap(refsamp_radical_inverse(i + 1, 3) +
+			xy[2 * i] = wrap(num_radical_inverse(i + 1, 2) + u[0]);
+			xy[2 * i + 1] = wrap(num_radical_inverse(i + 1, 3) +
 			    u[1]);
 		}
 		return 0;
 	case REFSAMP_HAMMERSLEY:
 		for (uint64_t i = 0; i < n; i++) {
 			xy[2 * i] = wrap(((double)i + 0.5) / (double)n + u[0]);
-			xy[2 * i + 1] = wrap(refsamp_radical_inverse(i, 2) + u[1]);
+			xy[2 * i + 1] = wrap(num_radical_inverse(i, 2) + u[1]);
 		}
 		return 0;
 	case REFSAMP_SOBOL: {
@@ -747,14 +722,14 @@ static int gen3(enum refsamp_kind k, uint64_t n, uint64_t seed,
 	case REFSAMP_HALTON:
 		for (uint64_t i = 0; i < n; i++)
 			for (unsigned a = 0; a < 3; a++)
-				xyz[3 * i + a] = wrap(refsamp_radical_inverse(i +
+				xyz[3 * i + a] = wrap(num_radical_inverse(i +
 				    1, base[a]) + u[a]);
 		return 0;
 	case REFSAMP_HAMMERSLEY:
 		for (uint64_t i = 0; i < n; i++) {
 			xyz[3 * i] = wrap(((double)i + 0.5) / (double)n + u[0]);
 			for (unsigned a = 1; a < 3; a++)
-				xyz[3 * i + a] = wrap(refsamp_radical_inverse(i,
+				xyz[3 * i + a] = wrap(num_radical_inverse(i,
 				    base[a - 1]) + u[a]);
 		}
 		return 0;

@@ -55,8 +55,6 @@ uint64_t refsamp_cube_side(uint64_t n);
  * densest (FCC) packing distance cbrt(sqrt(2) / n). */
 double refsamp_dart_radius3(uint64_t n);
 
-/* Radical inverse of i in base b (2 <= b), correctly rounded. */
-double refsamp_radical_inverse(uint64_t i, unsigned b);
 /* 2-D Sobol' point i (Gray-code order) as 32-bit integers, Owen
  * scrambled by hashing with the given per-dimension keys (0, 0: none). */
 void refsamp_sobol32(uint32_t i, uint32_t key_x, uint32_t key_y,
