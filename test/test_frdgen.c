@@ -405,7 +405,7 @@ static void bad_params(void **state)
 	assert_err_has("at least 2");
 	params(&pr, 16, 16, 1, 0.0, 1e-4);
 	assert_int_equal(frdgen_check(&pr), -1);
-	assert_err_has("-p");
+	assert_err_has("share p");
 	pr.p = NAN;
 	assert_int_equal(frdgen_check(&pr), -1);
 	params(&pr, 65536, 65536, 1, 0.5, 1e-4);
@@ -413,7 +413,7 @@ static void bad_params(void **state)
 	assert_err_has("2^32");
 	params(&pr, 16, 16, 1, 0.5, 1.5);
 	assert_int_equal(frdgen_check(&pr), -1);
-	assert_err_has("--tol");
+	assert_err_has("force tolerance");
 }
 
 int main(void)

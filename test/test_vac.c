@@ -420,19 +420,19 @@ static void bad_params(void **state)
 	assert_null(m.v);
 	params(&pr, 16, 16, 1, 0.0, 1e-4);
 	assert_int_equal(vac_check(&pr), -1);
-	assert_err_has("--vac-sigma");
+	assert_err_has("void-and-cluster sigma");
 	pr.sigma = NAN;
 	assert_int_equal(vac_check(&pr), -1);
 	params(&pr, 16, 16, 1, 1.5, 1.0);
 	assert_int_equal(vac_check(&pr), -1);
-	assert_err_has("--tol");
+	assert_err_has("filter tolerance");
 	params(&pr, 65536, 65536, 1, 1.5, 1e-4);
 	assert_int_equal(vac_check(&pr), -1);
 	assert_err_has("2^32");
 	params(&pr, 16, 16, 4, 1.5, 1e-4);
 	pr.dims = 4;
 	assert_int_equal(vac_check(&pr), -1);
-	assert_err_has("-k");
+	assert_err_has("dimensions");
 	/* The memory ceiling refuses before anything is allocated. */
 	params(&pr, 512, 512, 1, 1.5, 1e-4);
 	assert_int_equal(setenv("FRS_MAX_MEM", "1M", 1), 0);

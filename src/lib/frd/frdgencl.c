@@ -379,7 +379,7 @@ int frdgen_run_cl(const struct frdgen_params *par, struct ocl *o,
 	if (frdgen_check(par) < 0)
 		return -1;
 	if (par->checkpoint != NULL)
-		return frs_fail("--checkpoint: not available with OpenCL");
+		return frs_fail("checkpoints are not available with OpenCL");
 	if (!o->fp64)
 		return frs_fail("OpenCL: %s has no double precision "
 		    "(cl_khr_fp64), which frd-gen needs to give the same "

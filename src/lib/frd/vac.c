@@ -64,10 +64,10 @@ int vac_check(const struct vac_params *pr)
 	if (frdgen_check_size(pr->dims, pr->w, pr->h, pr->d) < 0)
 		return -1;
 	if (!(pr->sigma > 0.0 && isfinite(pr->sigma)))
-		return frs_fail("--vac-sigma: %g is not a positive number",
+		return frs_fail("the void-and-cluster sigma %g is not a positive number",
 		    pr->sigma);
 	if (!(pr->tol >= 0.0 && pr->tol < 1.0))
-		return frs_fail("--tol: %g is outside [0, 1)", pr->tol);
+		return frs_fail("the filter tolerance %g is outside [0, 1)", pr->tol);
 	return 0;
 }
 
