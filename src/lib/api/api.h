@@ -1,19 +1,23 @@
 /*
- * Inside the public API (src/lib/frs.h): the handles' contents and the
- * pieces the programs share with it.  The programs use the public API
- * for everything it covers; what it does not cover (OpenCL devices, the
- * -v report) reaches these.  frs-sample's 3-D path calls frs3.h itself:
- * it writes each set as it comes, which the 3-D draws (whole buffers,
- * no callback form) would make it compute twice; test_api checks that
- * both give the same bytes.
+ * Inside the public API (src/lib/frs.h): the handles' contents, the
+ * pieces the files of api/ share, and what the programs reach beyond the
+ * public API (OpenCL devices, the 3-D callback form, the -v report).
+ *
+ * api.c: errors, options and the enum tables; mask.c: masks and their
+ * prepared lists; map.c: maps, volumes and the samplers made of them;
+ * draw.c, draw3.c: the 2-D and 3-D draws; store.c: a run's samples to
+ * the caller (both); hsw.c: HSW; sets.c: frs-sample's sets.
  */
 #ifndef FRS_API_H
 #define FRS_API_H
 
 #include <pthread.h>
+#include <stdio.h>
 
 #include "frs.h"
+#include "base/ocl.h"
 #include "sample/frs3.h"
+#include "sample/frscl.h"
 #include "sample/frscore.h"
 #include "sample/hsw.h"
 
@@ -43,6 +47,8 @@ struct frs_sampler {
 	const frs_mask *mask;
 	struct frs_imap map;
 	struct frs_options opt;
+	int algo;		/* enum frs_algo, or FRSCL_FLAT1 on a device */
+	struct ocl *ocl;	/* the device of api_sampler_device, or NULL */
 };
 
 struct frs_sampler3 {
@@ -56,10 +62,147 @@ struct frs_hsw {
 	struct frs_imap map;
 };
 
+/* ---- errors and options (api.c) ------------------------------------ */
+
+/* The caller's frs_error (when not NULL) set to code and msg; code. */
+int api_set_err(frs_error *err, enum frs_code code, const char *msg);
+/* FRS_E_ARG with a message of our own. */
+int api_arg_err(frs_error *err, const char *what);
+/* The library's last message as code (NOMEM when the memory ceiling or
+ * an allocation failed, MAP for a bad map, whatever code the caller
+ * expected else). */
+int api_lib_err(frs_error *err, enum frs_code code);
+int api_ok(frs_error *err);
+int api_nomem(frs_error *err);
+/* FRS_E_IO when path cannot be opened for reading, else FRS_OK. */
+int api_readable(const char *path, frs_error *err);
+/* The caller's options (NULL: the defaults) into o, checked.  A code. */
+int api_options(struct frs_options *o, const struct frs_options *opt,
+    frs_error *err);
+/* The options' rule, jitter and tiling as the setups take them; the
+ * tiling automatic stands for FRS_TILING_AUTO. */
+enum frs_rule api_rule(const struct frs_options *o);
+enum frs_jitter api_jitter(const struct frs_options *o);
+enum frs_tiling api_tiling(const struct frs_options *o,
+    enum frs_tiling automatic);
+/* What every run checks first: a sampler (have_s), 1 to 16 increasing
+ * counts, at most 2^40; then the sampler's threads are set.  A code. */
+int api_run_begin(int have_s, int threads, const uint64_t *steps,
+    unsigned nsteps, frs_error *err);
+/* frs_sampler_info's and the draws' limit. */
+#define API_MAX_N ((uint64_t)1 << 40)
+
+/*
+ * The programs' algorithms: an enum frs_algorithm, or API_ALG_FLAT1
+ * (Flat 1, on OpenCL only).  api_algo_parse reads "naive" ... "sorted",
+ * "flat1" (-1 after frs_fail); api_algo gives the enum frs_algo (or
+ * FRSCL_FLAT1) that the implementations take, api_algo_name its name.
+ */
+#define API_ALG_FLAT1 ((int)FRS_ALG_LEVEL2 + 1)
+/* The words for enum frs_jitter_mode, frs_rule_mode (but EXACT) and
+ * frs_tiling_mode, in their order; NULL after the last. */
+extern const char *const api_jitter_words[], *const api_rule_words[],
+    *const api_tiling_words[];
+int api_algo_parse(const char *s, int *alg);
+int api_algo(int alg);
+const char *api_algo_name(int alg);
+
+/* ---- masks (mask.c) ------------------------------------------------ */
+
+/* A view of the mask prepared for an implementation: the minmap and the
+ * sorted lists of block (0: none) holding at least the values below
+ * below (FRS_ALL_VALUES: all), made on first use and kept. */
+int api_mask_prep(const frs_mask *mk, int minmap, uint32_t block,
+    uint64_t below, struct frs_prep *view);
+/* The 3-D sorted lists of block size b (0: none), made on first use and
+ * kept in the mask. */
+int api_mask_prep3(const frs_mask *mk, uint32_t b, struct frs3_prep *view);
+/* Whether lists of the values below `below` are read from a .frp that
+ * has them (frs_prepare_below makes fewer faster). */
+int api_lists_from_frp(const struct frs_matrix *m, uint64_t below);
+/* The default matrix of dims 2 or 3 (frs_default_matrix): $FRS_MATRIX
+ * or $FRS_MATRIX3 when set and not empty, as it is; else default.frd or
+ * default3.frd where datadir.h finds it.  Its path into path (cap
+ * bytes): 0; -1 after frs_fail ("looked for ..." or "... too long"). */
+int api_default_matrix(unsigned dims, char *path, size_t cap);
+
+/* ---- maps and volumes (map.c) -------------------------------------- */
+
+/* The caller's map (floats f, doubles d, or constant 1 when both are
+ * NULL) as the library's, validated with imap_validate's flags. */
+int api_copy_map(struct frs_imap *m, const float *f, const double *d,
+    uint32_t w, uint32_t h, size_t stride, int flags, frs_error *err);
+/* The caller's values for a sampler: floats f or doubles d (both NULL:
+ * constant 1) of a w x h map, rows stride apart (0: w), or with depth
+ * not 0 a w x h x depth volume, x fastest. */
+struct api_values {
+	const float *f;
+	const double *d;
+	uint32_t w, h, depth;
+	size_t stride;
+};
+/* frs_sampler_new (dims 2, into *s2) and frs_sampler3_new (3, *s3): the
+ * checks, the values copied and validated.  A code; the sampler NULL on
+ * failure. */
+int api_sampler_make(unsigned dims, const frs_mask *mask,
+    const struct api_values *v, const struct frs_options *opt,
+    frs_sampler **s2, frs_sampler3 **s3, frs_error *err);
+/* frs_sampler_free and frs_sampler3_free. */
+void api_sampler_free(frs_sampler *s2, frs_sampler3 *s3);
+
+/* ---- a run's samples to the caller (store.c) ----------------------- */
+
+/* One run of a 2-D or 3-D sampler: its setup and stored elements. */
+struct api_store {
+	unsigned dims, nsteps;
+	uint64_t nchunk, count;
+	union {
+		struct {
+			struct frs_setup su;
+			struct frs_result r;
+			const struct frs_imap *map;
+		} d2;
+		struct {
+			struct frs3_setup su;
+			struct frs3_result r;
+			const struct frs_vol *vol;
+		} d3;
+	} u;
+};
+
+/* The rest of st once the run of u.d2 or u.d3 (as dims says) is made. */
+void api_store_set(struct api_store *st, unsigned dims, unsigned nsteps);
+/* Run sampler s (a frs_sampler or frs_sampler3) for steps with this
+ * seed into st.  A code. */
+typedef int (*api_run_fn)(const void *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int count_only, struct api_store *st,
+    frs_error *err);
+
+/* The draws of a sampler by its run function, named fn in messages:
+ * frs_draw_progressive's buffers (and frs_draw3_progressive's),
+ * frs_count's count, and frs_draw_each's batches (points of st->dims
+ * coordinates each). */
+int api_draw(api_run_fn run, const void *s, const char *fn,
+    const uint64_t *steps, unsigned nsteps, uint64_t seed, double *p,
+    double *pdf, uint32_t *step, size_t cap, size_t *count, frs_error *err);
+int api_count(api_run_fn run, const void *s, const char *fn, uint64_t n,
+    uint64_t seed, uint64_t *count, frs_error *err);
+int api_each(api_run_fn run, const void *s, const char *fn,
+    const uint64_t *steps, unsigned nsteps, uint64_t seed, int want_pdf,
+    frs_point_fn cb, void *ctx, frs_error *err);
+/* The most samples of one call of frs_draw_each's callback. */
+#define API_BATCH 4096
+/* frs_draw's checks of its arguments, and its FRS_E_BUFFER. */
+int api_draw_args(const char *fn, const double *p, size_t cap,
+    size_t *count, frs_error *err);
+int api_too_small(const char *fn, frs_error *err);
+
 /* Samples per wave of frs_draw_each with Sorted and one step (a wave:
  * the chunks thresholded in parallel before the callback takes them);
  * tests lower it to cross wave boundaries. */
 extern uint64_t api_wave;
+
+/* ---- 2-D sampling (draw.c) ----------------------------------------- */
 
 /* The setup of n samples with this seed, options applied; -1 after
  * frs_fail. */
@@ -73,39 +216,109 @@ int api_setup_steps(const frs_sampler *s, const uint64_t *steps,
  * lists it makes in the mask; su->tau the last step's. */
 int api_exact(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
     struct frs_setup *su);
-/* A view of the mask prepared for an implementation: the minmap and the
- * sorted lists of block (0: none) holding at least the values below
- * below (FRS_ALL_VALUES: all), made on first use and kept. */
-int api_mask_prep(const frs_mask *mk, int minmap, uint32_t block,
-    uint64_t below, struct frs_prep *view);
-/* Whether lists of the values below `below` are read from a .frp that
- * has them (frs_prepare_below makes fewer faster). */
-int api_lists_from_frp(const struct frs_matrix *m, uint64_t below);
+/* The mask prepared for the sampler's runs of su (minmap, sorted lists):
+ * what a run prepares first.  -1 after frs_fail (naming the matrix). */
+int api_sampler_prep(const frs_sampler *s, const struct frs_setup *su,
+    const uint64_t *steps, unsigned nsteps, struct frs_prep *view);
+/* Draw on OpenCL device ocl (kept open by the caller) with algorithm alg
+ * (an enum frs_algorithm or API_ALG_FLAT1), the same samples as on the
+ * CPU; frscl_last_times has the last run's phases. */
+void api_sampler_device(frs_sampler *s, struct ocl *ocl, int alg);
 /* The values Sorted's lists need for the last of steps: frs_lim_most. */
 uint64_t api_lists_below(const struct frs_setup *su, const uint64_t *steps,
     unsigned nsteps);
-const struct frs_matrix *api_mask_matrix(const frs_mask *mk);
 /* The block of the sorted lists that a setup uses. */
 uint32_t api_sorted_block(const struct frs_setup *su);
 /* Whether Sorted wants the minmap too: its blocks are smaller than a
  * pixel (shuffled tiles), and the minmap skips dark pixels and blocks. */
 int api_sorted_minmap(const struct frs_setup *su);
 /* A sample's density I / mean I. */
-/* A result's samples to fn in frs_draw_each's batches and order (the
- * steps in turn, each in map order); FRS_OK, FRS_E_NOMEM, or
- * FRS_E_CALLBACK when fn returned non-zero. */
-int api_result_each(const struct frs_setup *su, const struct frs_imap *map,
-    const struct frs_result *r, unsigned nsteps, int want_pdf,
-    frs_point_fn fn, void *ctx);
 double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
     const struct frs_elem *e);
-/* The default matrix of dims 2 or 3 (frs_default_matrix): $FRS_MATRIX
- * or $FRS_MATRIX3 when set and not empty, as it is; else default.frd or
- * default3.frd where datadir.h finds it.  Its path into path (cap
- * bytes): 0; -1 after frs_fail ("looked for ..." or "... too long"). */
-int api_default_matrix(unsigned dims, char *path, size_t cap);
+
+/* ---- 3-D sampling (draw3.c) ---------------------------------------- */
+
+/* The setup of the steps with this seed, options applied (with
+ * FRS_RULE_EXACT its exact taus when view is not NULL); -1 after
+ * frs_fail. */
+int api_setup3(const frs_sampler3 *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, const struct frs3_prep *view,
+    struct frs3_setup *su);
+/* The mask's lists for the sampler's runs of su. */
+int api_sampler3_prep(const frs_sampler3 *s, const struct frs3_setup *su,
+    struct frs3_prep *view);
+/* frs_draw_each for a 3-D sampler: (x, y, z) triples in xy. */
+int api_draw3_each(const frs_sampler3 *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int want_pdf, frs_point_fn fn,
+    void *ctx, frs_error *err);
+
+/* ---- HSW (hsw.c) --------------------------------------------------- */
+
 /* The densities of n warped points. */
 void api_hsw_pdf(const struct hsw_tree *t, const struct frs_imap *map,
     const double *xy, double *pdf, size_t n);
+
+/* ---- frs-sample's sets (sets.c) ------------------------------------ */
+
+/* What frs-sample asks for: M sets of a 2-D map or 3-D volume, set i
+ * with seed + i, written to one file. */
+#define API_SETS_MAX ((uint64_t)1 << 56)	/* samples of all M sets:
+						 * far inside a 64-bit file
+						 * offset at 32 bytes each */
+struct api_sets {
+	unsigned dims;		/* the matrix's: 2 or 3 */
+	const char *matrix, *imp;	/* imp NULL: constant */
+	uint32_t size[3];	/* -s: the map's or volume's size */
+	unsigned nsize;		/* sides given: 0, 1 (N), 2 or 3 */
+	int flags;		/* imap_load's, vol_load's */
+	struct frs_options opt;	/* its algorithm is alg's */
+	int alg;		/* an enum frs_algorithm or API_ALG_FLAT1 */
+	int cl, device;		/* OpenCL, its index (-1: the first) */
+	uint64_t steps[16];
+	unsigned nsteps;
+	uint64_t seed, sets;
+	int pdf, count_only, text, verbose;
+	const char *out;	/* NULL or "-": standard output */
+};
+
+/* What came of them, for the -v report and the warnings. */
+struct api_sets_run {
+	unsigned dims;
+	struct frs_setup s0;	/* set 0's setup (2-D) */
+	struct frs3_setup s3;	/* (3-D) */
+	double tau0;		/* with FRS_RULE_EXACT: set 0's tau without */
+	const char *made_in;	/* a .frp that lacked lists made here */
+	uint32_t made;		/* their block, 0 when none */
+	double reused;		/* of set 0's samples: the share whose
+				 * matrix element another shows too, or -1 */
+	uint64_t total;
+	double tsetup, tthr, tout, tnote;	/* seconds */
+	struct frscl_times ct;	/* OpenCL phases over the sets */
+	const char *device;	/* the OpenCL device's name */
+	const char *note;	/* frs_mask_note at load */
+	/* inside */
+	struct frs_options opt;	/* the sampler's */
+	frs_mask *mask;
+	frs_sampler *smp;
+	frs_sampler3 *smp3;
+	struct ocl *ocl;
+};
+
+/*
+ * Load the matrix, the map or volume and the device, make the sampler
+ * and set 0's setup, with the mask prepared for it (so that -v counts
+ * that in the setup); with FRS_RULE_EXACT the exact taus of set 0 only
+ * with verbose (each set's run finds its own).  Warns of a stale twin
+ * .frp and of patterns that repeat.  0; -1 after frs_fail; -2 when the
+ * device could not be opened.
+ */
+int api_sets_open(const struct api_sets *a, struct api_sets_run *run);
+/* Draw the sets and write them (--count-only: their counts, a line
+ * each).  0; -1 after frs_fail. */
+int api_sets_write(const struct api_sets *a, struct api_sets_run *run);
+/* frs-sample -v's report of them to fp. */
+void api_sets_report(FILE *fp, const struct api_sets *a,
+    const struct api_sets_run *run);
+void api_sets_close(struct api_sets_run *run);
 
 #endif

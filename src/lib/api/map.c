@@ -1,0 +1,164 @@
+/*
+ * Importance maps and volumes: frs_map_load, and the caller's values as
+ * the library's (doubles, validated) in new samplers, 2-D and 3-D, and
+ * in HSW's quadtree.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "frs.h"
+
+#include <stdlib.h>
+
+#include "api/api.h"
+#include "base/err.h"
+#include "maps/imap.h"
+#include "maps/mapload.h"
+#include "maps/spec.h"
+#include "maps/vol.h"
+
+int frs_map_load(const char *src, uint32_t width, uint32_t height,
+    float **map, uint32_t *width_out, uint32_t *height_out, frs_error *err)
+{
+	struct frs_imap m;
+	float *f;
+
+	if (src == NULL || map == NULL || width_out == NULL ||
+	    height_out == NULL)
+		return api_arg_err(err, "frs_map_load: NULL argument");
+	*map = NULL;
+	if ((width == 0) != (height == 0))
+		return api_arg_err(err, "frs_map_load: width and height are both "
+		    "0 or both set");
+	if (!imap_is_spec(src) && api_readable(src, err) != FRS_OK)
+		return err ? (int)err->code : FRS_E_IO;
+	/* Negative values (lossy EXR) become zero, as in frs-sample(1). */
+	if (imap_load(src, width, height, 0, &m) < 0)
+		return api_lib_err(err, imap_is_spec(src) ? FRS_E_ARG :
+		    FRS_E_FORMAT);
+	f = malloc((size_t)m.w * m.h * sizeof *f);
+	if (f == NULL) {
+		imap_free(&m);
+		return api_nomem(err);
+	}
+	for (size_t i = 0; i < (size_t)m.w * m.h; i++)
+		f[i] = (float)m.v[i];
+	*map = f;
+	*width_out = m.w;
+	*height_out = m.h;
+	imap_free(&m);
+	return api_ok(err);
+}
+
+void frs_map_free(float *map)
+{
+	free(map);
+}
+
+/* The caller's map as the library's (doubles, validated: no NaN, no
+ * infinity, no negative value, not all zero).  map NULL: constant 1. */
+int api_copy_map(struct frs_imap *m, const float *f, const double *d,
+    uint32_t w, uint32_t h, size_t stride, int flags, frs_error *err)
+{
+	if (w == 0 || h == 0)
+		return api_arg_err(err, "map: width and height must not be 0");
+	if (stride == 0)
+		stride = w;
+	if (stride < w)
+		return api_arg_err(err, "map: stride is less than the width");
+	if (imap_alloc(m, w, h) < 0)
+		return api_lib_err(err, FRS_E_LIMIT);
+	for (uint32_t y = 0; y < h; y++)
+		for (uint32_t x = 0; x < w; x++)
+			m->v[(size_t)y * w + x] = f ? (double)f[y * stride + x] :
+			    d ? d[y * stride + x] : 1.0;
+	if (imap_validate(m, "map", flags) < 0) {
+		imap_free(m);
+		return api_lib_err(err, FRS_E_MAP);
+	}
+	return FRS_OK;
+}
+
+/* The caller's volume, x fastest, validated like a map; NULL: constant. */
+static int copy_vol(struct frs_vol *v, const float *f, const double *d,
+    uint32_t w, uint32_t h, uint32_t dd, frs_error *err)
+{
+	if (w == 0 || h == 0 || dd == 0)
+		return api_arg_err(err, "volume: width, height and depth must not "
+		    "be 0");
+	if (vol_alloc(v, w, h, dd) < 0)
+		return api_lib_err(err, FRS_E_LIMIT);
+	for (uint64_t i = 0; i < (uint64_t)w * h * dd; i++)
+		v->v[i] = f ? (double)f[i] : d ? d[i] : 1.0;
+	if (vol_validate(v, "volume", IMAP_STRICT) < 0) {
+		vol_free(v);
+		return api_lib_err(err, FRS_E_MAP);
+	}
+	return FRS_OK;
+}
+
+/* The checks of frs_sampler_new (dims 2) and frs_sampler3_new (3): a
+ * place for the sampler (have_sp), a mask of dims, options opt that fit
+ * it, into o.  A code. */
+static int sampler_check(int have_sp, const frs_mask *mask, unsigned dims,
+    const struct frs_options *opt, struct frs_options *o, frs_error *err)
+{
+	int rc;
+
+	if (!have_sp || mask == NULL)
+		return api_arg_err(err, dims == 2 ? "frs_sampler_new: NULL "
+		    "argument" : "frs_sampler3_new: NULL argument");
+	if (mask->m.dims != dims)
+		return api_arg_err(err, dims == 2 ? "frs_sampler_new: a 3-D mask "
+		    "samples volumes (frs_sampler3_new)" : "frs_sampler3_new: a "
+		    "2-D mask samples maps (frs_sampler_new)");
+	if ((rc = api_options(o, opt, err)) != FRS_OK)
+		return rc;
+	if (dims == 3 && o->algorithm != FRS_ALG_SORTED &&
+	    o->algorithm != FRS_ALG_NAIVE)
+		return api_arg_err(err, "options: 3-D sampling has the naive and "
+		    "sorted algorithms");
+	return FRS_OK;
+}
+
+void api_sampler_free(frs_sampler *s2, frs_sampler3 *s3)
+{
+	if (s2 != NULL)
+		imap_free(&s2->map);
+	if (s3 != NULL)
+		vol_free(&s3->vol);
+	free(s2);
+	free(s3);
+}
+
+int api_sampler_make(unsigned dims, const frs_mask *mask,
+    const struct api_values *v, const struct frs_options *opt,
+    frs_sampler **s2, frs_sampler3 **s3, frs_error *err)
+{
+	struct frs_imap map = { 0 };
+	struct frs_vol vol = { 0 };
+	struct frs_options o;
+	int rc;
+
+	if (s2 != NULL)
+		*s2 = NULL;
+	if (s3 != NULL)
+		*s3 = NULL;
+	rc = sampler_check(dims == 2 ? s2 != NULL : s3 != NULL, mask, dims, opt,
+	    &o, err);
+	if (rc == FRS_OK)
+		rc = dims == 2 ? api_copy_map(&map, v->f, v->d, v->w, v->h,
+		    v->stride, IMAP_STRICT, err) : copy_vol(&vol, v->f, v->d,
+		    v->w, v->h, v->depth, err);
+	if (rc != FRS_OK)
+		return rc;
+	if (dims == 2 && (*s2 = malloc(sizeof **s2)) != NULL)
+		**s2 = (struct frs_sampler){ mask, map, o, api_algo(o.algorithm),
+		    NULL };
+	else if (dims == 3 && (*s3 = malloc(sizeof **s3)) != NULL)
+		**s3 = (struct frs_sampler3){ mask, vol, o };
+	else {
+		imap_free(&map);
+		vol_free(&vol);
+		return api_nomem(err);
+	}
+	return api_ok(err);
+}

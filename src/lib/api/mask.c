@@ -1,0 +1,422 @@
+/*
+ * Masks (frs.h's threshold matrices): loading a .frd with its prepared
+ * twin or a .frp, wrapping the caller's values, and the parts made on
+ * first use (minmap, sorted lists in 2-D and 3-D) under the mask's lock.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "frs.h"
+
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "api/api.h"
+#include "base/datadir.h"
+#include "base/err.h"
+#include "formats/frdio.h"
+#include "sample/frpio.h"
+
+static int is_pow2(uint32_t v)
+{
+	return v != 0 && (v & (v - 1)) == 0;
+}
+
+static unsigned log2u(uint32_t v)
+{
+	unsigned l = 0;
+
+	while ((1u << l) < v)
+		l++;
+	return l;
+}
+
+static void mask_free_parts(frs_mask *mk)
+{
+	for (unsigned l = 1; l < mk->nlev; l++)
+		free(mk->lev[l]);
+	for (unsigned b = 0; b < 32; b++) {
+		frs_prep_free(&mk->lists[b]);
+		frs3_prep_free(&mk->p3[b]);
+	}
+	while (mk->old != NULL) {
+		struct old_lists *o = mk->old;
+		mk->old = o->next;
+		frs_prep_free(&o->p);
+		free(o);
+	}
+	if (!mk->wrapped)
+		frd_free(&mk->m);
+	free(mk->frp);
+	free(mk->name);
+}
+
+void frs_mask_free(frs_mask *mk)
+{
+	if (mk == NULL)
+		return;
+	mask_free_parts(mk);
+	pthread_mutex_destroy(&mk->lock);
+	free(mk);
+}
+
+static frs_mask *mask_new(void)
+{
+	frs_mask *mk = calloc(1, sizeof *mk);
+
+	if (mk != NULL && pthread_mutex_init(&mk->lock, NULL) != 0) {
+		free(mk);
+		return NULL;
+	}
+	return mk;
+}
+
+/* Take the minmap levels of a prepared matrix read from a .frp. */
+static void take_minmap(frs_mask *mk, struct frs_prep *p)
+{
+	mk->nlev = p->nlev;
+	mk->lev[0] = mk->m.v;
+	for (unsigned l = 1; l < p->nlev; l++) {
+		mk->lev[l] = p->lev[l];
+		p->lev[l] = NULL;
+	}
+	p->nlev = 1;
+}
+
+/* A .frp: the matrix and its minmap now, its sorted lists when asked. */
+static int load_frp(frs_mask *mk, const char *path)
+{
+	struct frs_prep p;
+
+	if (frp_read(path, &mk->m, &p, 0) < 0)
+		return -1;
+	take_minmap(mk, &p);
+	frs_prep_free(&p);
+	if ((mk->frp = strdup(path)) == NULL)
+		return frs_fail("%s: out of memory", path);
+	return 0;
+}
+
+/* NAME.frp for NAME.frd (the last dot after the last slash). */
+static char *sibling_frp(const char *path)
+{
+	const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+	size_t len = dot && (!slash || dot > slash) ? (size_t)(dot - path) :
+	    strlen(path);
+	char *s = malloc(len + 5);
+
+	if (s != NULL) {
+		memcpy(s, path, len);
+		strcpy(s + len, ".frp");
+	}
+	return s;
+}
+
+/* A .frd, and the prepared twin beside it when it was made from it. */
+static int load_frd(frs_mask *mk, const char *path)
+{
+	char *sib;
+	uint32_t w, h;
+	uint64_t sum;
+	struct frs_matrix tm;
+	struct frs_prep tp;
+
+	if (frd_read(path, &mk->m) < 0)
+		return -1;
+	if (mk->m.dims != 2)
+		return 0;	/* prepared files are 2-D */
+	sib = sibling_frp(path);
+	if (sib == NULL || strcmp(sib, path) == 0 || frp_is(sib) != 1 ||
+	    frp_info(sib, &w, &h, &sum) < 0) {
+		free(sib);
+		frs_clearerr();
+		return 0;
+	}
+	if (sum != frd_checksum(&mk->m)) {
+		snprintf(mk->note, sizeof mk->note, "%s is stale (made from "
+		    "another matrix than %s); ignored", sib, path);
+		free(sib);
+		return 0;
+	}
+	/* Read it whole once: a damaged twin is noted and ignored. */
+	if (frp_read(sib, &tm, &tp, 0) < 0) {
+		snprintf(mk->note, sizeof mk->note, "%s; ignored", frs_errmsg());
+		frs_clearerr();
+		free(sib);
+		return 0;
+	}
+	take_minmap(mk, &tp);
+	mk->lev[0] = mk->m.v;
+	frs_prep_free(&tp);
+	frd_free(&tm);
+	mk->frp = sib;
+	mk->twin = 1;
+	return 0;
+}
+
+int frs_mask_load(frs_mask **mask, const char *path, frs_error *err)
+{
+	frs_mask *mk;
+	int rc;
+
+	if (mask == NULL || path == NULL)
+		return api_arg_err(err, "frs_mask_load: NULL argument");
+	*mask = NULL;
+	if (api_readable(path, err) != FRS_OK)
+		return err ? (int)err->code : FRS_E_IO;
+	if ((mk = mask_new()) == NULL)
+		return api_nomem(err);
+	if ((mk->name = strdup(path)) == NULL) {
+		frs_mask_free(mk);
+		return api_nomem(err);
+	}
+	rc = frp_is(path) == 1 ? load_frp(mk, path) : load_frd(mk, path);
+	if (rc == 0 && frd_check_permutation(&mk->m, path) < 0)
+		rc = -1;
+	if (rc < 0) {
+		int code = api_lib_err(err, FRS_E_FORMAT);
+		frs_mask_free(mk);
+		return code;
+	}
+	if (mk->nlev == 0) {
+		mk->nlev = 1;
+		mk->lev[0] = mk->m.v;
+	}
+	*mask = mk;
+	return api_ok(err);
+}
+
+int api_default_matrix(unsigned dims, char *path, size_t cap)
+{
+	const char *env = getenv(dims == 3 ? "FRS_MATRIX3" : "FRS_MATRIX");
+	int len;
+
+	if (env == NULL || *env == '\0')
+		return data_find(dims == 3 ? "default3.frd" : "default.frd",
+		    path, cap);
+	len = snprintf(path, cap, "%s", env);
+	if (len < 0 || (size_t)len >= cap)
+		return frs_fail("%s: %s: path too long for %zu bytes",
+		    dims == 3 ? "FRS_MATRIX3" : "FRS_MATRIX", env, cap);
+	return 0;
+}
+
+int frs_default_matrix(frs_mask **mask, unsigned dims, char *path,
+    size_t cap, frs_error *err)
+{
+	char found[DATA_PATH_MAX];
+	size_t len;
+
+	if (mask != NULL)
+		*mask = NULL;
+	if (dims != 2 && dims != 3)
+		return api_arg_err(err, "frs_default_matrix: dims is not 2 or 3");
+	if (path != NULL && cap == 0)
+		return api_arg_err(err, "frs_default_matrix: cap is 0");
+	if (path != NULL)
+		path[0] = '\0';
+	if (api_default_matrix(dims, found, sizeof found) < 0) {
+		char msg[sizeof err->message];
+
+		snprintf(msg, sizeof msg, "no default %smatrix (%s)",
+		    dims == 3 ? "3-D " : "", frs_errmsg());
+		return api_set_err(err, FRS_E_IO, msg);
+	}
+	if (path != NULL) {
+		if ((len = strlen(found)) >= cap) {
+			char msg[sizeof err->message];
+
+			snprintf(msg, sizeof msg, "%.400s: needs %zu bytes, "
+			    "cap is %zu", found, len + 1, cap);
+			return api_set_err(err, FRS_E_BUFFER, msg);
+		}
+		memcpy(path, found, len + 1);
+	}
+	if (mask != NULL)
+		return frs_mask_load(mask, found, err);
+	return api_ok(err);
+}
+
+int frs_mask_wrap(frs_mask **mask, const uint32_t *values, uint32_t width,
+    uint32_t height, frs_error *err)
+{
+	frs_mask *mk;
+
+	if (mask == NULL || values == NULL)
+		return api_arg_err(err, "frs_mask_wrap: NULL argument");
+	*mask = NULL;
+	if (!is_pow2(width) || !is_pow2(height) ||
+	    (uint64_t)width * height > FRD_MAX_ELEMS / 2)
+		return api_arg_err(err, "frs_mask_wrap: the sides must be powers of "
+		    "two, below 2^31 elements in all");
+	if ((mk = mask_new()) == NULL)
+		return api_nomem(err);
+	mk->wrapped = 1;
+	mk->m = (struct frs_matrix){ 2, width, height, 1,
+	    (size_t)width * height, NULL, (uint32_t *)values };
+	if (frd_check_permutation(&mk->m, "frs_mask_wrap") < 0) {
+		frs_mask_free(mk);
+		return api_lib_err(err, FRS_E_ARG);
+	}
+	mk->nlev = 1;
+	mk->lev[0] = mk->m.v;
+	*mask = mk;
+	return api_ok(err);
+}
+
+unsigned frs_mask_dims(const frs_mask *mk)
+{
+	return mk != NULL ? mk->m.dims : 0;
+}
+
+void frs_mask_size3(const frs_mask *mk, uint32_t *width, uint32_t *height,
+    uint32_t *depth)
+{
+	frs_mask_size(mk, width, height);
+	if (depth != NULL)
+		*depth = mk ? mk->m.d : 0;
+}
+
+void frs_mask_size(const frs_mask *mk, uint32_t *width, uint32_t *height)
+{
+	if (width != NULL)
+		*width = mk ? mk->m.w : 0;
+	if (height != NULL)
+		*height = mk ? mk->m.h : 0;
+}
+
+const char *frs_mask_note(const frs_mask *mk)
+{
+	return mk != NULL && mk->note[0] ? mk->note : NULL;
+}
+
+/* Keep the lists p in slot l; the lists there before (too short for
+ * this run) stay until the mask is freed. */
+static int keep_lists(frs_mask *mk, unsigned l, struct frs_prep *p)
+{
+	if (mk->lists[l].sval != NULL) {
+		struct old_lists *o = malloc(sizeof *o);
+		if (o == NULL) {
+			frs_prep_free(p);
+			return frs_fail("out of memory");
+		}
+		o->p = mk->lists[l];
+		o->next = mk->old;
+		mk->old = o;
+	}
+	mk->lists[l] = *p;
+	mk->lists[l].m = &mk->m;
+	mk->lists[l].nlev = 0;
+	mk->lists[l].lev[0] = NULL;
+	return 0;
+}
+
+/* Sorted lists of block size b holding the values below `below`: from
+ * the .frp when it has them and the run needs half the values or more
+ * (reading and checking complete lists costs more than making the few a
+ * smaller run needs), made here otherwise.  Damaged lists are an error
+ * in a .frp loaded as such; in the twin of a .frd they are noted and the
+ * twin is dropped.  Called with the lock held.  0; -1 with a message, 1
+ * with one that names the .frp already. */
+static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
+{
+	unsigned l = log2u(b);
+	struct frs_prep p;
+
+	if (mk->frp != NULL && api_lists_from_frp(&mk->m, below)) {
+		struct frs_matrix tm;
+		if (frp_read(mk->frp, &tm, &p, b) == 0) {
+			frd_free(&tm);
+			if (p.block == b) {
+				for (unsigned k = 1; k < p.nlev; k++)
+					free(p.lev[k]);
+				return keep_lists(mk, l, &p);
+			}
+			frs_prep_free(&p);
+			mk->made = b;
+		} else if (!mk->twin) {
+			return 1;	/* the message names the .frp */
+		} else {
+			snprintf(mk->note, sizeof mk->note, "%s; ignored",
+			    frs_errmsg());
+			free(mk->frp);
+			mk->frp = NULL;
+		}
+		frs_clearerr();		/* make them instead */
+	}
+	if (frs_prepare_below(&p, &mk->m, 0, b, below) < 0)
+		return -1;
+	return keep_lists(mk, l, &p);
+}
+
+static int make_minmap(frs_mask *mk)
+{
+	struct frs_prep p;
+
+	if (frs_prepare(&p, &mk->m, 1, 0) < 0)
+		return -1;
+	take_minmap(mk, &p);
+	frs_prep_free(&p);
+	return 0;
+}
+
+int api_mask_prep(const frs_mask *cmk, int minmap, uint32_t block,
+    uint64_t below, struct frs_prep *view)
+{
+	frs_mask *mk = (frs_mask *)cmk;	/* only the lazy parts change */
+	const struct frs_prep *have = block ? &mk->lists[log2u(block)] : NULL;
+	int rc = 0;
+
+	pthread_mutex_lock(&mk->lock);
+	if (minmap && mk->nlev <= 1)
+		rc = make_minmap(mk);
+	if (rc == 0 && block && (have->sval == NULL || have->below < below))
+		rc = make_lists(mk, block, below);
+	/* Every message names the matrix, once (a .frp's own do). */
+	if (rc < 0 && mk->name != NULL)
+		frs_fail_context(mk->name);
+	if (rc != 0)
+		rc = -1;
+	memset(view, 0, sizeof *view);
+	view->m = &mk->m;
+	view->nlev = minmap ? mk->nlev : 1;
+	for (unsigned l = 0; l < view->nlev; l++)
+		view->lev[l] = mk->lev[l];
+	if (block && rc == 0) {
+		view->block = block;
+		view->sval = have->sval;
+		view->sidx = have->sidx;
+		view->soff = have->soff;
+		view->below = have->below;
+	}
+	pthread_mutex_unlock(&mk->lock);
+	return rc;
+}
+
+int api_lists_from_frp(const struct frs_matrix *m, uint64_t below)
+{
+	return below >= m->n / 2;
+}
+
+/* The 3-D sorted lists of block size b (0: none), made on first use and
+ * kept in the mask. */
+int api_mask_prep3(const frs_mask *cmk, uint32_t b, struct frs3_prep *view)
+{
+	frs_mask *mk = (frs_mask *)cmk;	/* only the lazy parts change */
+	unsigned l = log2u(b);
+	int rc = 0;
+
+	memset(view, 0, sizeof *view);
+	view->m = &mk->m;
+	if (b == 0)
+		return 0;
+	pthread_mutex_lock(&mk->lock);
+	if (mk->p3[l].block == 0)
+		rc = frs3_prepare(&mk->p3[l], &mk->m, b);
+	if (rc == 0)
+		*view = mk->p3[l];
+	else if (mk->name != NULL)
+		frs_fail_context(mk->name);
+	pthread_mutex_unlock(&mk->lock);
+	return rc;
+}
