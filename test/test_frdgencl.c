@@ -142,7 +142,7 @@ static void refusals(void **state)
 	assert_non_null(strstr(frs_errmsg(), "cl_khr_fp64"));
 	pr.p = 0.0;
 	assert_int_equal(frdgen_run_cl(&pr, &tu_ocl, &m, NULL), -1);
-	assert_non_null(strstr(frs_errmsg(), "-p"));
+	assert_non_null(strstr(frs_errmsg(), "share p"));
 }
 
 int main(void)
