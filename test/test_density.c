@@ -277,6 +277,20 @@ static void invariance(void **state)
 
 /* ---- Wei-Wang scales ---------------------------------------------------- */
 
+/* dens_scales of the 4 points xy on a w x h map m of two pixels,
+ * importance 1 and 4 (mean 2.5): point i's scale from pixel pix[i]. */
+static void two_pixels_ok(const double *xy, struct frs_imap *m, uint32_t w,
+    uint32_t h, const int *pix)
+{
+	double f[4];
+	assert_int_equal(imap_alloc(m, w, h), 0);
+	m->v[0] = 1;
+	m->v[1] = 4;
+	assert_int_equal(dens_scales(xy, 4, m, f), 0);
+	for (int i = 0; i < 4; i++)
+		assert_near(f[i], sqrt(m->v[pix[i]] / 2.5), 1e-15);
+}
+
 static void scales(void **state)
 {
 	struct frs_imap m;
@@ -292,25 +306,11 @@ static void scales(void **state)
 	for (int i = 0; i < 4; i++)
 		assert_near(f[i], 1.0, 1e-15);
 	imap_free(&m);
-	/* two pixels side by side, importance 1 and 4, mean 2.5 */
-	assert_int_equal(imap_alloc(&m, 2, 1), 0);
-	m.v[0] = 1;
-	m.v[1] = 4;
-	assert_int_equal(dens_scales(xy, 4, &m, f), 0);
-	assert_near(f[0], sqrt(1 / 2.5), 1e-15);
-	assert_near(f[1], sqrt(4 / 2.5), 1e-15);
-	assert_near(f[2], sqrt(4 / 2.5), 1e-15);	/* x = 0.5: right pixel */
-	assert_near(f[3], sqrt(1 / 2.5), 1e-15);
+	/* two pixels side by side: point 2 (x = 0.5) in the right one */
+	two_pixels_ok(xy, &m, 2, 1, (const int[]){ 0, 1, 1, 0 });
 	imap_free(&m);
 	/* one column, two rows: row 0 (y < 1/2) is at the top */
-	assert_int_equal(imap_alloc(&m, 1, 2), 0);
-	m.v[0] = 1;
-	m.v[1] = 4;
-	assert_int_equal(dens_scales(xy, 4, &m, f), 0);
-	assert_near(f[0], sqrt(1 / 2.5), 1e-15);
-	assert_near(f[1], sqrt(4 / 2.5), 1e-15);
-	assert_near(f[2], sqrt(1 / 2.5), 1e-15);
-	assert_near(f[3], sqrt(4 / 2.5), 1e-15);
+	two_pixels_ok(xy, &m, 1, 2, (const int[]){ 0, 1, 0, 1 });
 	/* a point on a zero pixel */
 	m.v[1] = 0;
 	assert_int_equal(dens_scales(xy, 4, &m, f), -1);
