@@ -42,15 +42,9 @@ for s in $(echo $SIZES | tr ' ' '\n' | sort -rn); do
 done | par_run
 
 # 2. the sets: FRS and jittered FRS per size and seed, dart throwing
-pts() { echo "$C/frs-m$1-sig$SIG-map$MAP-n$N-$2-S$3.pts"; }
+pts() { fig4_pts $1 $SIG $2 $3; }	# pts S_M JIT SEED (set_points)
 {
-	for s in $SIZES; do
-		for jit in none random; do
-			for seed in $(seq 1 $SETS); do
-				echo "$J $(pts $s $jit $seed) frs-sample -q -j 1 -m $(matrix $s) -i const -s ${MAP}x$MAP --sigma $SIG --jitter $jit -n $N -S $seed"
-			done
-		done
-	done
+	for s in $SIZES; do fig4_jobs $s $SIG "$(matrix $s)"; done
 	echo "$J $C/dart-n$N-sets$SETS.pts ref-sample -q -k dart -n $N --sets $SETS -S 1"
 } | par_run
 

@@ -38,15 +38,9 @@ mkdir -p "$C" "$CACHE/frd" "$OUT/img"
 echo "$J $M frd-gen -q -s $SM -p 0.5 -S 1" | par_run
 
 # 2. the sets (names shared with fig4.4) and the references
-pts() { echo "$C/frs-m$SM-sig$1-map$((32 * $1))-n$N-$2-S$3.pts"; }
+pts() { fig4_pts $SM $1 $2 $3; }	# pts SIG JIT SEED (set_points)
 {
-	for sig in $SIGMAS; do
-		for jit in none random; do
-			for seed in $(seq 1 $SETS); do
-				echo "$J $(pts $sig $jit $seed) frs-sample -q -j 1 -m $M -i const -s $((32 * sig))x$((32 * sig)) --sigma $sig --jitter $jit -n $N -S $seed"
-			done
-		done
-	done
+	for sig in $SIGMAS; do fig4_jobs $SM $sig "$M"; done
 	echo "$J $C/regular-n$N.pts ref-sample -q -k regular -n $N"
 	echo "$J $C/jittered-n$N-sets$SETS.pts ref-sample -q -k jittered -n $N --sets $SETS -S 1"
 	echo "$J $C/dart-n$N-sets$SETS.pts ref-sample -q -k dart -n $N --sets $SETS -S 1"

@@ -395,6 +395,20 @@ dda_line() {
 # jit_name JITTER: the sampler's name in the fig4 tables (none: frs).
 jit_name() { [ "$1" = none ] && echo frs || echo frs-jitter; }
 
+# The uniform FRS sets of Sec. 4.7, shared by Figs. 4.4 to 4.6: N points
+# at sparsity SIG on a constant map of 32 SIG pixels a side.
+# fig4_pts SM SIG JIT SEED: the file of a set with the S_M matrix.
+fig4_pts() { echo "$CACHE/fig4/frs-m$1-sig$2-map$((32 * $2))-n$N-$3-S$4.pts"; }
+# fig4_jobs SM SIG MATRIX: par_run's lines for SETS sets, FRS and
+# jittered FRS, from the S_M matrix in the file MATRIX.
+fig4_jobs() {
+	for _jit in none random; do
+		for _seed in $(seq 1 $SETS); do
+			echo "$J $(fig4_pts $1 $2 $_jit $_seed) frs-sample -q -j 1 -m $3 -i const -s $((32 * $2))x$((32 * $2)) --sigma $2 --jitter $_jit -n $N -S $_seed"
+		done
+	done
+}
+
 # rad SAMPLER PARAM FILE: the rows of radial.tsv (sampler param dist
 # power aniso_db) from a DDA's radial statistics.
 rad() {

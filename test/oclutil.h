@@ -12,7 +12,11 @@ static struct ocl tu_ocl;
 static inline int tu_ocl_setup(void **state)
 {
 	(void)state;
-	return ocl_open(&tu_ocl, -1) == 0 ? 0 : -1;
+	if (ocl_open(&tu_ocl, -1) != 0) {
+		fprintf(stderr, "%s\n", frs_errmsg());
+		return -1;
+	}
+	return 0;
 }
 
 static inline int tu_ocl_teardown(void **state)

@@ -30,4 +30,33 @@ static inline void tu_refsamp_deterministic(tu_gen_fn gen, unsigned dims)
 	}
 }
 
+/* The squared distance of a and b on the unit torus of dims dimensions. */
+static inline double tu_torus_d2(const double *a, const double *b,
+    unsigned dims)
+{
+	double d2 = 0;
+	for (unsigned k = 0; k < dims; k++) {
+		double d = fabs(a[k] - b[k]);
+		if (d > 0.5)
+			d = 1 - d;
+		d2 += d * d;
+	}
+	return d2;
+}
+
+/* The smallest squared torus distance between m points (1e9 for none):
+ * brute force over all pairs, independent of the samplers' grids. */
+static inline double tu_torus_min_d2(const double *p, uint64_t m,
+    unsigned dims)
+{
+	double d2 = 1e9;
+	for (uint64_t i = 0; i < m; i++)
+		for (uint64_t j = i + 1; j < m; j++) {
+			double d = tu_torus_d2(p + dims * i, p + dims * j, dims);
+			if (d < d2)
+				d2 = d;
+		}
+	return d2;
+}
+
 #endif

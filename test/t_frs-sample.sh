@@ -1,13 +1,14 @@
 #!/bin/sh
 # frs-sample: output, determinism, options, hard cases and bad input.
 . "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/ptsutil.sh"
 
 # A small matrix keeps the tests fast; the default one is tried once.
 frd-gen -s 256 --tol 1e-2 -o "$T/m.frd"
 M=$T/m.frd
 
 check "blob, 2000 samples" frs-sample -m "$M" -i blob -n 2000 -o "$T/a.pts"
-cnt=$(od -A n -t u8 -j 24 -N 8 "$T/a.pts" | tr -d ' ')
+cnt=$(pts_count "$T/a.pts")
 [ "$cnt" -gt 1900 ] && [ "$cnt" -lt 2100 ] && ok "about n samples ($cnt)" ||
     nok "about n samples ($cnt)"
 [ "$(wc -c <"$T/a.pts")" -eq $((32 + 16 * cnt)) ] && ok "binary .pts layout" ||
@@ -18,13 +19,8 @@ frs-sample -m "$M" -i blob -n 3000 -j 1 -T -o "$T/j1.txt"
 frs-sample -m "$M" -i blob -n 3000 -j 2 -T -o "$T/j2.txt"
 cmp -s "$T/j1.txt" "$T/j2.txt" && ok "-j 1 and -j 2 give the same bytes" ||
     nok "-j 1 and -j 2 give the same bytes"
-for a in naive stack level1 level2; do
-	frs-sample -m "$M" -i blob -n 3000 -a $a -T | grep -v '^#' | sort >"$T/$a.s"
-done
-grep -v '^#' "$T/j1.txt" | sort >"$T/sorted.s"
-same=1
-for a in naive stack level1 level2; do cmp -s "$T/$a.s" "$T/sorted.s" || same=0; done
-[ $same = 1 ] && ok "all implementations give the same points" ||
+impls_same "$T/j1.txt" -m "$M" -i blob -n 3000 &&
+    ok "all implementations give the same points" ||
     nok "all implementations give the same points"
 frs-sample -m "$M" -i blob -n 3000 -S 2 -T -o "$T/s2.txt"
 cmp -s "$T/j1.txt" "$T/s2.txt" && nok "another seed moves the window" ||
@@ -74,7 +70,6 @@ grep -q 'stale' "$T/warn" && ok "a stale .frp beside the matrix is refused" ||
 
 # --sets M: set i is the set of -S S+i, each record followed by its set
 # (the column named set, pts(5) version 2); one header counts them all.
-cnt() { od -A n -t u8 -j 24 -N 8 "$1" | tr -d ' '; }
 u32() { od -A n -t u4 -j "$2" -N 4 "$1" | tr -d ' '; }
 # recs FILE SKIP NCOL: the records after SKIP bytes, one per line in hex
 recs() { tail -c +$(($2 + 1)) "$1" | od -A n -t x8 -v -w$((8 * $3)); }
@@ -92,10 +87,10 @@ for opts in "-i blob" "-i blob --pdf --jitter random -a level1" "-m $T/m.frp -i 
 		h=$(sethex $((s - 5)))
 		recs "$T/one.pts" $((32 + 8 * (nc - 2))) $nc |
 		    sed "s/\$/ $h/" >>"$T/cat.hex"
-		tot=$((tot + $(cnt "$T/one.pts")))
+		tot=$((tot + $(pts_count "$T/one.pts")))
 	done
 	if recs "$T/sets.pts" 40 $((nc + 1)) | cmp -s - "$T/cat.hex" &&
-	    [ "$(cnt "$T/sets.pts")" = "$tot" ] &&
+	    [ "$(pts_count "$T/sets.pts")" = "$tot" ] &&
 	    [ "$(u32 "$T/sets.pts" 8) $(u32 "$T/sets.pts" 16) $(u32 "$T/sets.pts" 20)" = "2 $((nc - 1)) 8" ] &&
 	    [ "$(head -c 40 "$T/sets.pts" | tail -c 8 | tr '\0' ' ')" = "$names" ]; then
 		ok "$opts --sets 3 -S 5: the sets of -S 5, 6, 7 and their set column, count $tot"
@@ -163,7 +158,7 @@ allexact=1
 for map in blob ramp sky const; do
 	for s in 1 2 3; do
 		c=$(frs-sample -m "$M" -i $map -n 1024 -S $s --exact-count -q -o "$T/x.pts" &&
-		    cnt "$T/x.pts")
+		    pts_count "$T/x.pts")
 		c2=$(frs-sample -m "$M" -i $map -n 1024 -S $s --exact-count --count-only -q)
 		[ "$c" = 1024 ] && [ "$c2" = 1024 ] || { allexact=0; echo "# $map -S $s: $c, $c2"; }
 	done
@@ -171,8 +166,8 @@ done
 [ $allexact = 1 ] && ok "--exact-count: 1024 for blob, ramp, sky, const, seeds 1-3" ||
     nok "--exact-count: 1024 for blob, ramp, sky, const, seeds 1-3"
 frs-sample -m "$M" -i blob -n 1024 --sets 10 --exact-count -q -o "$T/x10.pts"
-[ "$(cnt "$T/x10.pts")" = 10240 ] && ok "--exact-count --sets 10: 10 x 1024" ||
-    nok "--exact-count --sets 10: 10 x 1024 ($(cnt "$T/x10.pts"))"
+[ "$(pts_count "$T/x10.pts")" = 10240 ] && ok "--exact-count --sets 10: 10 x 1024" ||
+    nok "--exact-count --sets 10: 10 x 1024 ($(pts_count "$T/x10.pts"))"
 nest=1
 for s in 1 2 3 4 5 6; do
 	frs-sample -m "$M" -i sky -n 700 -S $s -T -q | grep -v '^#' | sort >"$T/d.s"
@@ -186,14 +181,9 @@ done
     nok "--exact-count nests with the default set"
 frs-sample -m "$M" -i blob -n 3000 -S 4 --exact-count -q -j 1 -T -o "$T/xj1.txt"
 frs-sample -m "$M" -i blob -n 3000 -S 4 --exact-count -q -j 2 -T -o "$T/xj2.txt"
-grep -v '^#' "$T/xj1.txt" | sort >"$T/xs.s"
-same=1
-cmp -s "$T/xj1.txt" "$T/xj2.txt" || same=0
-for a in naive stack level1 level2; do
-	frs-sample -m "$M" -i blob -n 3000 -S 4 --exact-count -q -a $a -T |
-	    grep -v '^#' | sort | cmp -s - "$T/xs.s" || same=0
-done
-[ $same = 1 ] && ok "--exact-count: the same points for -j 1, 2 and every algorithm" ||
+cmp -s "$T/xj1.txt" "$T/xj2.txt" &&
+    impls_same "$T/xj1.txt" -m "$M" -i blob -n 3000 -S 4 --exact-count -q &&
+    ok "--exact-count: the same points for -j 1, 2 and every algorithm" ||
     nok "--exact-count: the same points for -j 1, 2 and every algorithm"
 frs-sample -m "$M" -i ramp --progressive 100,400,1500 --exact-count -q -T -o "$T/xp.txt"
 awk '!/^#/ { c[$3]++ } END { exit !(c[1] == 100 && c[2] == 300 && c[3] == 1100) }' \

@@ -438,6 +438,15 @@ static void threads_order(void **state)
 
 static void bad_input(void **state)
 {
+	static const struct {
+		double v;
+		const char *frag;
+	} bad_x[] = {
+		{ 1.0, "point 1" }, { -0.1, "outside" }, { NAN, "outside" },
+	}, bad_f[] = {
+		{ 0, "scale of point 2" }, { -1, "positive" },
+		{ INFINITY, "positive" },
+	};
 	double xy[6] = { 0.1, 0.2, 0.3, 0.4, 0.5, 0.6 }, f[3] = { 1, 1, 1 };
 	double *a = image(4), *zero = image(4);
 	size_t bytes = 9 * 9 * sizeof *a;
@@ -460,19 +469,16 @@ static void bad_input(void **state)
 	BAD(dda_add(xy, 3, NULL, 12, 4, NAN, 0, a), "sigma");
 	BAD(dda_add(NULL, 3, NULL, 12, 4, 1, 0, a), "no points");
 	BAD(dda_add(xy, 3, NULL, 12, 4, 1, 0, NULL), "no image");
-	xy[2] = 1.0;
-	BAD(dda_add(xy, 3, NULL, 12, 4, 1, 0, a), "point 1");
-	xy[2] = -0.1;
-	BAD(dda_add(xy, 3, NULL, 12, 4, 1, 0, a), "outside");
-	xy[2] = NAN;
-	BAD(dda_add(xy, 3, NULL, 12, 4, 1, 0, a), "outside");
+	/* a bad coordinate of point 1, then a bad scale of point 2 */
+	for (size_t i = 0; i < sizeof bad_x / sizeof *bad_x; i++) {
+		xy[2] = bad_x[i].v;
+		BAD(dda_add(xy, 3, NULL, 12, 4, 1, 0, a), bad_x[i].frag);
+	}
 	xy[2] = 0.3;
-	f[2] = 0;
-	BAD(dda_add(xy, 3, f, 12, 4, 1, 0, a), "scale of point 2");
-	f[2] = -1;
-	BAD(dda_add(xy, 3, f, 12, 4, 1, 0, a), "positive");
-	f[2] = INFINITY;
-	BAD(dda_add(xy, 3, f, 12, 4, 1, 0, a), "positive");
+	for (size_t i = 0; i < sizeof bad_f / sizeof *bad_f; i++) {
+		f[2] = bad_f[i].v;
+		BAD(dda_add(xy, 3, f, 12, 4, 1, 0, a), bad_f[i].frag);
+	}
 	f[2] = 1;
 	/* the smallest valid cases */
 	assert_int_equal(dda_add(xy, 2, NULL, 12, 1, 0, 0, a), 0);

@@ -277,6 +277,20 @@ static void invariance(void **state)
 
 /* ---- Wei-Wang scales ---------------------------------------------------- */
 
+/* dens_scales of the 4 points xy on a w x h map m of two pixels,
+ * importance 1 and 4 (mean 2.5): point i's scale from pixel pix[i]. */
+static void two_pixels_ok(const double *xy, struct frs_imap *m, uint32_t w,
+    uint32_t h, const int *pix)
+{
+	double f[4];
+	assert_int_equal(imap_alloc(m, w, h), 0);
+	m->v[0] = 1;
+	m->v[1] = 4;
+	assert_int_equal(dens_scales(xy, 4, m, f), 0);
+	for (int i = 0; i < 4; i++)
+		assert_near(f[i], sqrt(m->v[pix[i]] / 2.5), 1e-15);
+}
+
 static void scales(void **state)
 {
 	struct frs_imap m;
@@ -292,25 +306,11 @@ static void scales(void **state)
 	for (int i = 0; i < 4; i++)
 		assert_near(f[i], 1.0, 1e-15);
 	imap_free(&m);
-	/* two pixels side by side, importance 1 and 4, mean 2.5 */
-	assert_int_equal(imap_alloc(&m, 2, 1), 0);
-	m.v[0] = 1;
-	m.v[1] = 4;
-	assert_int_equal(dens_scales(xy, 4, &m, f), 0);
-	assert_near(f[0], sqrt(1 / 2.5), 1e-15);
-	assert_near(f[1], sqrt(4 / 2.5), 1e-15);
-	assert_near(f[2], sqrt(4 / 2.5), 1e-15);	/* x = 0.5: right pixel */
-	assert_near(f[3], sqrt(1 / 2.5), 1e-15);
+	/* two pixels side by side: point 2 (x = 0.5) in the right one */
+	two_pixels_ok(xy, &m, 2, 1, (const int[]){ 0, 1, 1, 0 });
 	imap_free(&m);
 	/* one column, two rows: row 0 (y < 1/2) is at the top */
-	assert_int_equal(imap_alloc(&m, 1, 2), 0);
-	m.v[0] = 1;
-	m.v[1] = 4;
-	assert_int_equal(dens_scales(xy, 4, &m, f), 0);
-	assert_near(f[0], sqrt(1 / 2.5), 1e-15);
-	assert_near(f[1], sqrt(4 / 2.5), 1e-15);
-	assert_near(f[2], sqrt(1 / 2.5), 1e-15);
-	assert_near(f[3], sqrt(4 / 2.5), 1e-15);
+	two_pixels_ok(xy, &m, 1, 2, (const int[]){ 0, 1, 0, 1 });
 	/* a point on a zero pixel */
 	m.v[1] = 0;
 	assert_int_equal(dens_scales(xy, 4, &m, f), -1);
@@ -331,14 +331,30 @@ static void scales(void **state)
 
 /* ---- the pair-distance distribution of uniform points ------------------ */
 
+/* g(r, x), or with arc g(r, r sin(x)) r cos(x): the integrand over
+ * u = r sin(t), smooth where the chord's length goes to 0. */
+static double at(double (*g)(double, double), double r, double x, int arc)
+{
+	return arc ? g(r, r * sin(x)) * r * cos(x) : g(r, x);
+}
+
 /* Simpson's rule on [a, b] with k (even) intervals. */
 static double simpson(double (*g)(double, double), double r, double a,
-    double b, int k)
+    double b, int k, int arc)
 {
-	double h = (b - a) / k, s = g(r, a) + g(r, b);
+	double h = (b - a) / k, s = at(g, r, a, arc) + at(g, r, b, arc);
 	for (int i = 1; i < k; i++)
-		s += (i % 2 ? 4 : 2) * g(r, a + i * h);
+		s += (i % 2 ? 4 : 2) * at(g, r, a + i * h, arc);
 	return s * h / 3;
+}
+
+/* The integral of inner over u in [0, min(c, r)]: in u up to where the
+ * disc of radius r leaves the square of side c, in t beyond. */
+static double quad(double (*inner)(double, double), double r, double c)
+{
+	double s = sqrt(fmax(0, r * r - c * c)), e = fmin(c, r);
+	return simpson(inner, r, 0, s, 2000, 0) +
+	    simpson(inner, r, asin(s / r), asin(e / r), 2000, 1);
 }
 
 /* Plain: the differences (u, v) have density 4 (1-u)(1-v); v integrated
@@ -349,35 +365,10 @@ static double plain_inner(double r, double u)
 	return 4 * (1 - u) * (w - w * w / 2);
 }
 
-/* The same over u = r sin(t), smooth where w -> 0. */
-static double plain_inner_t(double r, double t)
-{
-	return plain_inner(r, r * sin(t)) * r * cos(t);
-}
-
-static double quad_plain(double r)
-{
-	double s = sqrt(fmax(0, r * r - 1)), e = fmin(1, r);
-	return simpson(plain_inner, r, 0, s, 2000) +
-	    simpson(plain_inner_t, r, asin(s / r), asin(e / r), 2000);
-}
-
 /* Torus: area of the disc inside [-1/2, 1/2]^2, 4 int min(1/2, ...) du. */
 static double torus_inner(double r, double u)
 {
 	return 4 * fmin(0.5, sqrt(fmax(0, r * r - u * u)));
-}
-
-static double torus_inner_t(double r, double t)
-{
-	return torus_inner(r, r * sin(t)) * r * cos(t);
-}
-
-static double quad_torus(double r)
-{
-	double s = sqrt(fmax(0, r * r - 0.25)), e = fmin(0.5, r);
-	return simpson(torus_inner, r, 0, s, 2000) +
-	    simpson(torus_inner_t, r, asin(s / r), asin(e / r), 2000);
 }
 
 static void pair_cdf(void **state)
@@ -385,8 +376,10 @@ static void pair_cdf(void **state)
 	(void)state;
 	for (int k = 1; k <= 200; k++) {
 		double r = sqrt(2.0) * k / 200, rt = r / 2;
-		assert_near(dens_pair_cdf(r, 0), quad_plain(r), 1e-12);
-		assert_near(dens_pair_cdf(rt, 1), quad_torus(rt), 1e-12);
+		assert_near(dens_pair_cdf(r, 0), quad(plain_inner, r, 1),
+		    1e-12);
+		assert_near(dens_pair_cdf(rt, 1), quad(torus_inner, rt, 0.5),
+		    1e-12);
 		if (r < 1 - 1e-4) {	/* the density of the brief */
 			double h = 1e-5, d = (dens_pair_cdf(r + h, 0) -
 			    dens_pair_cdf(r - h, 0)) / (2 * h);

@@ -4,6 +4,7 @@
  * math past 32 bits. */
 #include "testutil.h"
 #include "frsutil.h"
+#include "oclutil.h"
 #include "formats/frdio.h"
 #include "sample/frscore.h"
 #include "sample/frscl.h"
@@ -11,24 +12,10 @@
 #include "base/par.h"
 #include "base/rng.h"
 
-static struct ocl o;
-
-static int setup(void **state)
-{
-	(void)state;
-	if (ocl_open(&o, -1) != 0) {
-		fprintf(stderr, "%s\n", frs_errmsg());
-		return -1;
-	}
-	return 0;
-}
-
 static int teardown(void **state)
 {
-	(void)state;
-	frscl_release(&o);
-	ocl_close(&o);
-	return 0;
+	frscl_release(&tu_ocl);
+	return tu_ocl_teardown(state);
 }
 
 static void same(const struct frs_result *a, const struct frs_result *b,
@@ -101,7 +88,7 @@ static void implementations_match_cpu(void **state)
 				    "%s", frscl_algo_name(a), maps[mi],
 				    (unsigned long long)steps[nsteps - 1], nsteps,
 				    s.rule == FRS_THESIS ? "thesis" : "unbiased");
-				if (frs_sample_cl(&o, &s, &map, a == FRS_SORTED ? &ps :
+				if (frs_sample_cl(&tu_ocl, &s, &map, a == FRS_SORTED ? &ps :
 				    &pm, a, steps, nsteps, 0, &r) != 0)
 					print_error("%s: %s\n", what, frs_errmsg());
 				assert_non_null(r.chunk);
@@ -120,7 +107,7 @@ static void implementations_match_cpu(void **state)
 				}
 				frs_result_free(&r);
 				/* Counting alone gives the same count. */
-				assert_int_equal(frs_sample_cl(&o, &s, &map,
+				assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map,
 				    a == FRS_SORTED ? &ps : &pm, a, steps, nsteps, 1,
 				    &r), 0);
 				assert_true(r.count == cpu[ref].count);
@@ -156,7 +143,7 @@ static void large_counts(void **state)
 	assert_true(s.sw * s.sh > UINT32_MAX);
 	assert_int_equal(frs_prepare(&ps, &m, 0, s.ns < m.w ? s.ns : m.w), 0);
 	assert_int_equal(frs_sample(&s, &map, &ps, FRS_SORTED, &n, 1, 1, &a), 0);
-	assert_int_equal(frs_sample_cl(&o, &s, &map, &ps, FRS_SORTED, &n, 1, 1,
+	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &ps, FRS_SORTED, &n, 1, 1,
 	    &b), 0);
 	assert_true(a.count == b.count);
 	assert_true(a.count > n - n / 100 && a.count < n + n / 100);
@@ -169,7 +156,7 @@ static void large_counts(void **state)
 	assert_int_equal(frs_prepare(&pm, &m, 1, 0), 0);
 	assert_int_equal(frs_sample(&s, &map, &ps, FRS_SORTED, &n2, 1, 1, &a),
 	    0);
-	assert_int_equal(frs_sample_cl(&o, &s, &map, &pm, FRSCL_FLAT1, &n2, 1, 1,
+	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &pm, FRSCL_FLAT1, &n2, 1, 1,
 	    &b), 0);
 	assert_true(a.count == b.count);
 	frs_result_free(&a);
@@ -196,13 +183,13 @@ static void refusals(void **state)
 	tu_map_of("blob", 16, 16, &map);
 	assert_int_equal(frs_setup(&s, &map, &m, n, 8.0, 1), 0);
 	assert_int_equal(frs_prepare(&p, &m, 0, 0), 0);
-	assert_int_equal(frs_sample_cl(&o, &s, &map, &p, FRSCL_FLAT1, &n, 1, 0,
+	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRSCL_FLAT1, &n, 1, 0,
 	    &r), -1);
 	assert_err_has("no minmap");
-	assert_int_equal(frs_sample_cl(&o, &s, &map, &p, FRS_SORTED, &n, 1, 0,
+	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRS_SORTED, &n, 1, 0,
 	    &r), -1);
 	assert_err_has("do not fit");
-	assert_int_equal(frs_sample_cl(&o, &s, &map, &p, FRS_NAIVE, bad, 2, 0,
+	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRS_NAIVE, bad, 2, 0,
 	    &r), -1);
 	assert_err_has("increase");
 	assert_int_equal(frscl_algo_parse("flat1", &a), 0);
@@ -223,5 +210,5 @@ int main(void)
 		cmocka_unit_test(large_counts),
 		cmocka_unit_test(refusals),
 	};
-	return cmocka_run_group_tests(tests, setup, teardown);
+	return cmocka_run_group_tests(tests, tu_ocl_setup, teardown);
 }

@@ -4,14 +4,13 @@
  * a sparse map with zeros, halton, random and dart input, n = 1, 1000,
  * 100000, in place and in chunks; a device without fp64 is refused. */
 #include "testutil.h"
+#include "oclutil.h"
 #include "sample/hsw.h"
 #include "sample/hswcl.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "sample/refsamp.h"
 #include "base/progress.h"
-
-static struct ocl o;
 
 #define NMAX 100000
 static const uint64_t counts[] = { 1, 1000, NMAX };
@@ -39,11 +38,8 @@ static void edge_points(double *p, uint64_t n)
 static int setup(void **state)
 {
 	uint64_t placed = 0;
-	(void)state;
-	if (ocl_open(&o, -1) < 0) {
-		fprintf(stderr, "%s\n", frs_errmsg());
+	if (tu_ocl_setup(state) != 0)
 		return -1;
-	}
 	for (int k = 0; k < NIN; k++) {
 		inputs[k] = malloc(2 * NMAX * sizeof(double));
 		if (inputs[k] == NULL)
@@ -62,11 +58,9 @@ static int setup(void **state)
 
 static int teardown(void **state)
 {
-	(void)state;
 	for (int k = 0; k < NIN; k++)
 		free(inputs[k]);
-	ocl_close(&o);
-	return 0;
+	return tu_ocl_teardown(state);
 }
 
 /* The first differing coordinate of two arrays of 2n doubles, or -1. */
@@ -91,7 +85,7 @@ static void same_points(const struct frs_imap *m, const char *what)
 	assert_non_null(cpu);
 	assert_non_null(dev);
 	assert_int_equal(hsw_build(&t, m), 0);
-	assert_int_equal(hswcl_init(&h, &o, &t), 0);
+	assert_int_equal(hswcl_init(&h, &tu_ocl, &t), 0);
 	for (int k = 0; k < NIN; k++)
 		for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
 			uint64_t n = counts[c] < in_n[k] ? counts[c] : in_n[k];
@@ -170,7 +164,7 @@ static void test_in_place_chunks(void **state)
 	hsw_input_make(HSW_JITTERED, n, 9, a);
 	memcpy(b, a, 2 * n * sizeof *a);
 	assert_int_equal(hsw_warp_points(&t, a, a, n), 0);
-	assert_int_equal(hswcl_init(&h, &o, &t), 0);
+	assert_int_equal(hswcl_init(&h, &tu_ocl, &t), 0);
 	h.max_chunk = 333;
 	whole = progress_now();
 	assert_int_equal(hswcl_warp_points(&h, b, b, n), 0);
@@ -183,7 +177,7 @@ static void test_in_place_chunks(void **state)
 	hswcl_free(&h);
 	/* The one-shot form. */
 	hsw_input_make(HSW_JITTERED, n, 9, b);
-	assert_int_equal(hswcl_warp(&o, &t, b, b, n), 0);
+	assert_int_equal(hswcl_warp(&tu_ocl, &t, b, b, n), 0);
 	assert_true(first_diff(a, b, n) < 0);
 	hsw_free(&t);
 	imap_free(&m);
@@ -196,7 +190,7 @@ static void test_no_fp64(void **state)
 	struct frs_imap m;
 	struct hsw_tree t;
 	struct hswcl h;
-	struct ocl x = o;
+	struct ocl x = tu_ocl;
 	(void)state;
 	x.fp64 = 0;
 	assert_int_equal(imap_load("blob", 16, 16, 0, &m), 0);

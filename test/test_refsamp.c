@@ -170,16 +170,6 @@ static void strata(void **state)
 		}
 }
 
-static double torus_d2(const double *a, const double *b)
-{
-	double dx = fabs(a[0] - b[0]), dy = fabs(a[1] - b[1]);
-	if (dx > 0.5)
-		dx = 1 - dx;
-	if (dy > 0.5)
-		dy = 1 - dy;
-	return dx * dx + dy * dy;
-}
-
 static void dart(void **state)
 {
 	const uint64_t n = 1024;
@@ -188,16 +178,10 @@ static void dart(void **state)
 	assert_near(r, 0.7 * sqrt(2 / (sqrt(3.0) * 1024)), 1e-15);
 	for (uint64_t set = 0; set < 10; set++) {
 		uint64_t m;
-		double *xy = gen(REFSAMP_DART, n, 100 + set, &m), d2 = 1e9;
+		double *xy = gen(REFSAMP_DART, n, 100 + set, &m), d2;
 		assert_int_equal(m, n);
 		in_unit(xy, m);
-		/* Brute force over all pairs, independent of the grid. */
-		for (uint64_t i = 0; i < m; i++)
-			for (uint64_t j = i + 1; j < m; j++) {
-				double d = torus_d2(xy + 2 * i, xy + 2 * j);
-				if (d < d2)
-					d2 = d;
-			}
+		d2 = tu_torus_min_d2(xy, m, 2);
 		assert_true(d2 >= r * r);
 		mean += sqrt(d2) / sqrt(2 / (sqrt(3.0) * (double)n));
 		free(xy);

@@ -322,18 +322,6 @@ static void sobol_net(void **state)
 	}
 }
 
-static double torus_d2(const double *a, const double *b)
-{
-	double d2 = 0;
-	for (int k = 0; k < 3; k++) {
-		double d = fabs(a[k] - b[k]);
-		if (d > 0.5)
-			d = 1 - d;
-		d2 += d * d;
-	}
-	return d2;
-}
-
 static void dart(void **state)
 {
 	const uint64_t n = 1000;
@@ -345,16 +333,10 @@ static void dart(void **state)
 	for (uint64_t set = 0; set < 5; set++) {
 		uint64_t m;
 		double *p = gen3(REFSAMP_DART, n, 100 + set,
-		    REFSAMP_DART_FAILURES, &m), d2 = 1e9;
+		    REFSAMP_DART_FAILURES, &m), d2;
 		assert_int_equal(m, n);
 		in_cube(p, m);
-		/* Brute force over all pairs, independent of the grid. */
-		for (uint64_t i = 0; i < m; i++)
-			for (uint64_t j = i + 1; j < m; j++) {
-				double d = torus_d2(p + 3 * i, p + 3 * j);
-				if (d < d2)
-					d2 = d;
-			}
+		d2 = tu_torus_min_d2(p, m, 3);
 		assert_true(d2 >= r * r);
 		mean += sqrt(d2) / cbrt(sqrt(2.0) / (double)n);
 		free(p);
@@ -369,7 +351,8 @@ static void dart(void **state)
 		double rk = refsamp_dart_radius3(k);
 		for (uint64_t i = 0; i < m; i++)
 			for (uint64_t j = i + 1; j < m; j++)
-				assert_true(torus_d2(p + 3 * i, p + 3 * j) >= rk * rk);
+				assert_true(tu_torus_d2(p + 3 * i, p + 3 * j, 3) >=
+				    rk * rk);
 		assert_int_equal(m, k);
 		free(p);
 	}

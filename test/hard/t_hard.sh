@@ -4,6 +4,7 @@
 # matrices, discrepancy and density closed forms at the edges of the unit
 # square.  Every check compares a value with an oracle given beside it.
 . "$(dirname "$0")/../lib.sh"
+. "$(dirname "$0")/../ptsutil.sh"
 
 # within COUNT N: |COUNT - N| <= 5 sqrt(N) + 2 (binomial, 5 sd)
 within() {
@@ -156,13 +157,8 @@ n=$(grep -vc '^#' "$T/t2a.txt")
 cmp -s "$T/t2a.txt" "$T/t2b.txt" && within "$n" 3000 && in_unit "$T/t2a.txt" &&
     ok "2x2 matrix: $n samples of 3000, the same from the .frp" ||
     nok "2x2 matrix: $n samples"
-for a in naive stack level1 level2; do
-	frs-sample -m "$T/t2.frp" -a $a -i blob -n 3000 -q -T | grep -v '^#' | sort >"$T/$a.s"
-done
-grep -v '^#' "$T/t2a.txt" | sort >"$T/sorted.s"
-same=1
-for a in naive stack level1 level2; do cmp -s "$T/$a.s" "$T/sorted.s" || same=0; done
-[ $same = 1 ] && ok "2x2 matrix: every implementation, the same points" ||
+impls_same "$T/t2a.txt" -m "$T/t2.frp" -i blob -n 3000 -q &&
+    ok "2x2 matrix: every implementation, the same points" ||
     nok "2x2 matrix: implementations differ"
 frd-gen -s 3 -q -o "$T/t3.frd"
 expect_fail "frd-prep -a all on 3x3" 1 "power-of-two" "$T/t3.frp" \

@@ -293,6 +293,24 @@ static void degenerate(void **state)
  * 0, 4) to 8x8, 1x1024 (a ramp) to 1024x1024: each pixel's share, no
  * point in the padding (warp checks that every point lies on the map).
  */
+/* Each pixel's share of n points on the w x h map of values v. */
+static void pixel_shares_ok(const char *what, uint32_t w, uint32_t h,
+    const double *v, uint64_t n)
+{
+	struct frs_imap m;
+	unsigned char *mask = calloc((size_t)w * h, 1);
+	assert_non_null(mask);
+	assert_int_equal(imap_alloc(&m, w, h), 0);
+	memcpy(m.v, v, (size_t)w * h * sizeof *v);
+	for (size_t k = 0; k < (size_t)w * h; k++) {
+		mask[k] = 1;
+		shares_ok(what, &m, mask, n);
+		mask[k] = 0;
+	}
+	imap_free(&m);
+	free(mask);
+}
+
 static void tiny_maps(void **state)
 {
 	static const double col[3] = { 1, 2, 5 }, row[5] = { 1, 0, 3, 0, 4 };
@@ -304,22 +322,8 @@ static void tiny_maps(void **state)
 	hd_map(&m, 1, 1, 0.3);
 	identity_ok(&m, 3000);
 	imap_free(&m);
-	assert_int_equal(imap_alloc(&m, 1, 3), 0);
-	memcpy(m.v, col, sizeof col);
-	for (int k = 0; k < 3; k++) {
-		memset(mask, 0, sizeof mask);
-		mask[k] = 1;
-		shares_ok("1x3: pixel", &m, mask, n);
-	}
-	imap_free(&m);
-	assert_int_equal(imap_alloc(&m, 5, 1), 0);
-	memcpy(m.v, row, sizeof row);
-	for (int k = 0; k < 5; k++) {
-		memset(mask, 0, sizeof mask);
-		mask[k] = 1;
-		shares_ok("5x1: pixel", &m, mask, n);
-	}
-	imap_free(&m);
+	pixel_shares_ok("1x3: pixel", 1, 3, col, n);
+	pixel_shares_ok("5x1: pixel", 5, 1, row, n);
 	assert_int_equal(imap_alloc(&m, 1, 1024), 0);
 	for (int k = 0; k < 1024; k++) {
 		m.v[k] = 1.0 + k;
