@@ -190,6 +190,22 @@ static void group_rows(FILE *fp, const struct disc_opts *o, enum pt_group g,
 	free(v);
 }
 
+/* The options that mend what disc_check refused of a set (its messages
+ * name none), taken in disc_check's order. */
+static const char *check_fix(const struct disc_opts *o, const struct pt_set *s)
+{
+	if (s->dims != 3 || s->n == 0)
+		return "";
+	if (o->cls != DISC_STAR)
+		return " (-c star)";
+	if (o->exact_d2 && !o->no_d2 && s->n > DISC3_MAX_EXACT_D2)
+		return "";
+	if (o->exact_dinf && !o->no_dinf && s->n > DISC3_MAX_EXACT_N)
+		return "; use --grid S (with --exact: exact D2, Dinf on the "
+		    "grid) or --d2-only";
+	return "; set it with --grid S";
+}
+
 /* Every set before any work: a 3-D set with another class than star, or
  * beyond the limits of the 3-D methods, stops the run naming its file. */
 static void check_sets(const struct disc_opts *o, const struct pt_set *sets,
@@ -198,7 +214,7 @@ static void check_sets(const struct disc_opts *o, const struct pt_set *sets,
 	for (size_t i = 0; i < nsets; i++)
 		if (disc_check(o, sets[i].dims, sets[i].n) < 0) {
 			frs_fail_context(sets[i].file);
-			cli_die_lib();
+			cli_die("%s%s", frs_errmsg(), check_fix(o, &sets[i]));
 		}
 }
 

@@ -481,7 +481,11 @@ int main(int argc, char **argv)
 	cli_options_done();
 	/* The device before the output: a missing one fails at once. */
 	if (use_cl && ocl_open(&o, dev) < 0)
-		cli_die_lib();
+		cli_die_device();
+	if (use_cl && !o.fp64)
+		cli_die("--device: OpenCL: %s has no double precision "
+		    "(cl_khr_fp64), which frd-gen needs to give the same matrix "
+		    "as --device cpu", o.name);
 	/* Open the output first: a bad path fails before hours of work. */
 	cli_out_open(&of, cli.out, 1);
 	t0 = progress_now();

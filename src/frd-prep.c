@@ -206,6 +206,17 @@ static int read_frd(const char *path, struct frs_matrix *m, int check,
 	return rc;
 }
 
+/* The option that mends an import the library refused (its messages
+ * name none). */
+static const char *import_fix(void)
+{
+	if (frs_errkind() == FRS_ERRKIND_SIZE)
+		return "; give the size with -s WxH";
+	if (frs_errkind() == FRS_ERRKIND_RANKS)
+		return " (--rank turns any values into ranks)";
+	return "";
+}
+
 int main(int argc, char **argv)
 {
 	const char *fmt = "frd", *algo = "none", *in, *src, *imp = "const";
@@ -260,7 +271,7 @@ int main(int argc, char **argv)
 		cli_usage_error("--import: '%s' is not frd, raw32, png16 or text",
 		    fmt);
 	if (rc < 0)
-		cli_die_lib();
+		cli_die("%s%s", frs_errmsg(), import_fix());
 	if ((check || strcmp(fmt, "frd") != 0) &&
 	    frd_check_permutation(&m, src) < 0)
 		cli_die_lib();

@@ -156,7 +156,7 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 		case 'm': o->matrix = optarg; break;
 		case 'a':
 			if (api_algo_parse(optarg, &o->alg) < 0)
-				cli_usage_error("%s", frs_errmsg());
+				cli_usage_error("-a: %s", frs_errmsg());
 			break;
 		case 's':
 			o->nsize = (unsigned)cli_size3("-s", optarg, IMAP_MAX_SIDE,
@@ -288,7 +288,8 @@ int main(int argc, char **argv)
 	cli_options_done();
 	check_matrix(&o);
 	if ((rc = api_sets_open(&o, &run)) < 0)
-		cli_die("%s%s", rc == -2 ? "--device: " : "", frs_errmsg());
+		rc == -2 ? cli_die_device() : cli_die_lib();
+	cli_out_check(o.out, !o.count_only && !o.text);
 	if (api_sets_write(&o, &run) < 0)
 		cli_die_lib();
 	if (o.verbose)

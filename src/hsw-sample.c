@@ -261,12 +261,13 @@ int main(int argc, char **argv)
 	struct hsw_run r;
 	struct output u = { .t_out = 0 };
 	double *pts = NULL, t0, t_input;
+	int rc;
 
 	cli_init("hsw-sample", usage);
 	parse_opts(argc, argv, &o);
 	cli_options_done();
-	if (hsw_run_open(&r, o.imp, o.w, o.h, o.cl, o.cl_index) < 0)
-		cli_die_lib();
+	if ((rc = hsw_run_open(&r, o.imp, o.w, o.h, o.cl, o.cl_index)) < 0)
+		rc == -2 ? cli_die_device() : cli_die_lib();
 	/* The sets are made on the fly, round by round, except for the
 	 * device, which is handed them all. */
 	t0 = progress_now();

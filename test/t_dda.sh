@@ -253,6 +253,6 @@ dda --fourier --size 16 -o "$T/sc" "$T/rand.pts"
 dda --fourier --size 16 --sets 512 -o "$T/sd" "$T/rand.pts"
 cmp -s "$T/sc" "$T/sd" && ok "--sets 512 agreeing with the set column" || nok "--sets 512, set column"
 expect_fail "--sets 256 disagreeing with the set column" 1 \
-    "rand.pts: --sets 256: set 0 of the file's set column has 512 points" "$T/o3" \
+    "rand.pts: set 0 of the file's set column has 512 points, not 256" "$T/o3" \
     dda --sets 256 -o "$T/o3" "$T/rand.pts"
 done_testing

@@ -325,7 +325,7 @@ awk -F '\t' 'NR > 1 { s += $4 * $4; k++ } END {
 
 # 3-D errors: exit 1, the file and the problem named, no output.
 for c in rect quad half circle; do
-	expect_fail "3-D -c $c" 1 "c64.txt: class $c is 2-D only; 3-D sets take -c star" \
+	expect_fail "3-D -c $c" 1 "c64.txt: class $c is 2-D only; 3-D sets take the star class (-c star)" \
 	    "$T/o3d" discrepancy -c $c -o "$T/o3d" "$T/c64.txt"
 done
 expect_fail "2-D then 3-D" 1 "c64.txt: 3-dimensional points after 2-dimensional" \
@@ -348,7 +348,8 @@ discrepancy --exact --dinf-only "$T/c64.txt" >"$T/o3i"
 [ "$(col Dinf "$T/o3i")" = "$(col Dinf "$T/e3")" ] && [ "$(col D2 "$T/o3i")" = nan ] &&
     ok "3-D --exact --dinf-only" || nok "3-D --dinf-only: $(sed -n 2p "$T/o3i")"
 check "3-D 4097 points, --exact --grid" discrepancy --exact --grid 20 -o "$T/o3g" "$T/c4097.txt"
-expect_fail "3-D --grid 1001" 1 "c64.txt: --grid 1001" "$T/o3d" \
+expect_fail "3-D --grid 1001" 1 \
+    "c64.txt: grid 1001: a 3-D grid has s^3 boxes and takes O(s^3) time; 2 to 1000 allowed; set it with --grid S" "$T/o3d" \
     discrepancy --grid 1001 -o "$T/o3d" "$T/c64.txt"
 # a failure in a later set leaves no output either
 expect_fail "3-D bad set among good" 1 "c4097.txt" "$T/o3d" \
@@ -380,7 +381,7 @@ discrepancy -c star --exact --per-set --sets 64 "$T/rs.pts" >"$T/rs2"
 cmp -s "$T/rs1" "$T/rs2" && [ "$(wc -l <"$T/rs1")" = 5 ] &&
     ok "--sets 64 agreeing with the set column" || nok "--sets 64 with a set column"
 expect_fail "--sets 32 disagreeing with the set column" 1 \
-    "rs.pts: --sets 32: set 0 of the file's set column has 64 points" "$T/o9" \
+    "rs.pts: set 0 of the file's set column has 64 points, not 32" "$T/o9" \
     discrepancy --sets 32 -o "$T/o9" "$T/rs.pts"
 # Old files (pts(5) version 1, no set column) still read: the same sets
 # cut by --sets 64 give the same rows; a binary file of version 1 too.

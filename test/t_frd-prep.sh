@@ -45,7 +45,7 @@ expect_fail "damaged .frp" 1 "checksum" "$T/o.pts" frs-sample -m "$T/bad.frp" -n
 # Bad input.
 expect_fail "raw32 of the wrong length" 1 "not a whole number" "$T/o.frd" \
     sh -c "printf 'abc' >'$T/x.raw'; frd-prep --import raw32 '$T/x.raw' -o '$T/o.frd'"
-expect_fail "raw32 not square" 1 "not a square" "$T/o.frd" \
+expect_fail "raw32 not square" 1 "3 values are not a square; give the size with -s WxH" "$T/o.frd" \
     sh -c "head -c 12 /dev/zero >'$T/y.raw'; frd-prep --import raw32 '$T/y.raw' -o '$T/o.frd'"
 expect_fail "raw32 with repeats" 1 "not a permutation" "$T/o.frd" \
     sh -c "head -c 16 /dev/zero >'$T/z.raw'; frd-prep --import raw32 '$T/z.raw' -o '$T/o.frd'"

@@ -276,7 +276,7 @@ for d in cl:64 cl:99 cl:99999999999999999999; do
 	expect_fail "--device $d: no such device" 1 "OpenCL: no" "$T/o.pts" \
 	    cl_run frs-sample -m "$M" -n 10 --device $d -o "$T/o.pts"
 done
-grep -q 'device; see --list-devices\|devices; see --list-devices\|no platform' "$T/err" &&
+grep -q 'device); see --list-devices\|devices); see --list-devices\|no platform' "$T/err" &&
     ok "--device cl:N: how many devices there are" || nok "--device cl:N: $(cat "$T/err")"
 for d in cl: cl:-1 cl:1x; do
 	expect_fail "--device $d: a usage error" 2 "is not cpu, cl or cl:N" "$T/o.pts" \

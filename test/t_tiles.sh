@@ -110,7 +110,7 @@ frs-sample -m "$T/m.frd" -n 4000 --tiles auto -v -o /dev/null 2>"$T/v.txt"
 grep -q 'tiles ([0-9]*x[0-9]*), plain' "$T/v.txt" && ok "auto: plain past S_M^2/sigma^2" ||
     nok "auto: plain past S_M^2/sigma^2"
 frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles plain -o /dev/null 2>"$T/w.txt"
-grep -q 'tiles plain: the window' "$T/w.txt" && ok "--tiles plain warns of the lattice" ||
+grep -q 'plain tiles: the window' "$T/w.txt" && ok "--tiles plain warns of the lattice" ||
     nok "--tiles plain warns of the lattice"
 frs-sample -q -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles plain -o /dev/null 2>"$T/w.txt"
 [ ! -s "$T/w.txt" ] && ok "-q silences it" || nok "-q silences it"

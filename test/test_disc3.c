@@ -551,6 +551,7 @@ static void limits(void **state)
 	assert_int_equal(disc_check(&o, 2, 10), 0);
 	assert_int_equal(disc_check(&o, 3, 10), -1);
 	assert_non_null(strstr(frs_errmsg(), "class rect is 2-D only"));
+	assert_null(strstr(frs_errmsg(), "-c"));	/* the program's flag */
 	o.cls = DISC_CIRCLE;
 	assert_int_equal(disc_check(&o, 3, 10), -1);
 	assert_non_null(strstr(frs_errmsg(), "circle"));
@@ -559,12 +560,14 @@ static void limits(void **state)
 	assert_int_equal(disc_check(&o, 4, 10), -1);
 	o.grid = DISC3_MAX_GRID + 1;
 	assert_int_equal(disc_check(&o, 3, 10), -1);
-	assert_non_null(strstr(frs_errmsg(), "--grid"));
+	assert_non_null(strstr(frs_errmsg(), "grid 1001: a 3-D grid"));
+	assert_null(strstr(frs_errmsg(), "--"));
 	assert_int_equal(disc_check(&o, 2, 10), 0);
 	o.exact_d2 = o.exact_dinf = 1;
 	assert_int_equal(disc_check(&o, 3, DISC3_MAX_EXACT_N), 0);
 	assert_int_equal(disc_check(&o, 3, DISC3_MAX_EXACT_N + 1), -1);
-	assert_non_null(strstr(frs_errmsg(), "use --grid"));
+	assert_non_null(strstr(frs_errmsg(), "limited to 4096 points"));
+	assert_null(strstr(frs_errmsg(), "--"));
 	assert_int_equal(disc3_star_dinf_exact(p, DISC3_MAX_EXACT_N + 1, 0,
 	    &v), -1);
 	o.exact_dinf = 0, o.grid = 100;

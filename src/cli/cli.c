@@ -292,6 +292,14 @@ const char *cli_outname(const char *opt, const char *s)
 	return s;
 }
 
+void cli_out_check(const char *path, int binary)
+{
+	if (binary && (path == NULL || strcmp(path, "-") == 0) &&
+	    isatty(STDOUT_FILENO))
+		cli_die("<stdout>: refusing to write binary data to a terminal "
+		    "(use -o FILE or a pipe)");
+}
+
 long long cli_ll(const char *opt, const char *s, long long min, long long max)
 {
 	long long v;
@@ -351,6 +359,12 @@ int cli_device(const char *arg, int *index)
 	if (cl < 0)
 		cli_usage_error("--device: %s", frs_errmsg());
 	return cl;
+}
+
+noreturn void cli_die_device(void)
+{
+	cli_die("--device: %s; see --list-devices, or use --device cpu",
+	    frs_errmsg());
 }
 
 noreturn void cli_list_devices(void)

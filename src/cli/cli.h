@@ -74,6 +74,10 @@ void cli_note(const char *fmt, ...) FRS_PRINTF(1, 2);	/* unless -q */
 
 /* The file name of an output option: an empty one is a usage error. */
 const char *cli_outname(const char *opt, const char *s);
+/* Binary output (path NULL or "-": standard output) to a terminal: exit 1
+ * naming -o, before the library's own refusal (cli_out_open calls it;
+ * programs whose output the library opens call it themselves). */
+void cli_out_check(const char *path, int binary);
 /* Option values; a bad value is a usage error naming the option. */
 long long cli_ll(const char *opt, const char *s, long long min, long long max);
 uint64_t cli_u64(const char *opt, const char *s, uint64_t min, uint64_t max);
@@ -90,6 +94,9 @@ int cli_device(const char *arg, int *index);
 /* --list-devices: print the OpenCL devices and exit 0, or exit 1 with
  * the reason (no platform, no writable PoCL cache). */
 noreturn void cli_list_devices(void);
+/* The OpenCL device of --device failed (to open, or to take the work):
+ * "prog: --device: <library message>" and where to turn, exit 1. */
+noreturn void cli_die_device(void);
 
 /* Called by every program when its options are parsed and checked,
  * before any file is opened or work begins.  Normally it does nothing.

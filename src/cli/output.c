@@ -4,6 +4,7 @@
 
 void cli_out_open(struct outfile *of, const char *path, int binary)
 {
+	cli_out_check(path, binary);
 	if (outfile_open(of, path, binary) < 0)
 		cli_die_lib();
 }

@@ -354,7 +354,7 @@ int disc_check(const struct disc_opts *o, unsigned dims, size_t n)
 		return frs_fail("%u-dimensional points; 2 or 3 are needed",
 		    dims);
 	if (o->cls != DISC_STAR)
-		return frs_fail("class %s is 2-D only; 3-D sets take -c star",
+		return frs_fail("class %s is 2-D only; 3-D sets take the star class",
 		    disc_class_name(o->cls));
 	if (o->exact_d2 && !o->no_d2 && n > DISC3_MAX_EXACT_D2)
 		return frs_fail("%zu points: the closed-form 3-D D2 uses "
@@ -362,11 +362,9 @@ int disc_check(const struct disc_opts *o, unsigned dims, size_t n)
 		    DISC3_MAX_EXACT_D2);
 	if (o->exact_dinf && !o->no_dinf && n > DISC3_MAX_EXACT_N)
 		return frs_fail("%zu points: the exact 3-D Dinf takes O(n^3) "
-		    "time and is limited to %d points; use --grid S (with "
-		    "--exact: exact D2, Dinf on the grid) or --d2-only", n,
-		    DISC3_MAX_EXACT_N);
+		    "time and is limited to %d points", n, DISC3_MAX_EXACT_N);
 	if (grid3_needed(o) && (o->grid < 2 || o->grid > DISC3_MAX_GRID))
-		return frs_fail("--grid %u: a 3-D grid has s^3 boxes and takes "
+		return frs_fail("grid %u: a 3-D grid has s^3 boxes and takes "
 		    "O(s^3) time; 2 to %d allowed", o->grid, DISC3_MAX_GRID);
 	return 0;
 }

@@ -768,9 +768,8 @@ int disc3_star_dinf_exact(const double *xyz, size_t n, int par,
 
 	if (n > DISC3_MAX_EXACT_N)
 		return frs_fail("%zu points: the exact 3-D Dinf takes O(n^3) "
-		    "time and is limited to %d points; use --grid S (with "
-		    "--exact: exact D2, Dinf on the grid)", n,
-		    DISC3_MAX_EXACT_N);
+		    "time and is limited to %d points (Dinf on a grid is not)",
+		    n, DISC3_MAX_EXACT_N);
 	if (dinf3_init(&d, xyz, n) < 0) {
 		dinf3_free(&d);
 		return -1;

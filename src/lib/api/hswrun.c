@@ -20,12 +20,12 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 	struct frs_imap map;
 	frs_error err;
 	double t0;
-	int rc;
+	int rc, bad = -1;	/* -2 when it is the device that fails */
 
 	memset(r, 0, sizeof *r);
 	r->cl = cl;
 	if (cl && ocl_open(&r->dev, cl_index) < 0)
-		return -1;
+		return -2;
 	if (imap_load(src, w, h, 0, &map) < 0)
 		goto fail;
 	t0 = progress_now();
@@ -36,15 +36,17 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 		frs_fail_context(src);
 		goto fail;
 	}
-	if (cl && hswcl_init(&r->hc, &r->dev, &r->hw->t) < 0)
+	if (cl && hswcl_init(&r->hc, &r->dev, &r->hw->t) < 0) {
+		bad = -2;
 		goto fail;
+	}
 	r->t_tree = progress_now() - t0;
 	return 0;
 fail:
 	frs_hsw_free(r->hw);
 	if (cl)
 		ocl_close(&r->dev);
-	return -1;
+	return bad;
 }
 
 void hsw_run_close(struct hsw_run *r)

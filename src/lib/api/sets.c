@@ -158,9 +158,9 @@ static void warn(const struct api_sets_run *r)
 		    s->sigma, frs_unique(s));
 	else if (r->dims == 2 && s->tiles == FRS_TILES_PLAIN &&
 	    (s->sw > s->mw || s->sh > s->mh))
-		frs_warn("--tiles plain: the window of %llux%llu repeats the "
+		frs_warn("plain tiles: the window of %llux%llu repeats the "
 		    "%ux%u matrix as it is, a lattice of the tile's period where "
-		    "few samples fall (--tiles shuffled breaks it)",
+		    "few samples fall (shuffled tiles break it)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh, s->mw,
 		    s->mh);
 	else if (r->dims == 3 && (double)t->n > frs3_unique(t))
@@ -170,7 +170,7 @@ static void warn(const struct api_sets_run *r)
 		    frs3_unique(t));
 	else if (r->dims == 3 && t->tiles == FRS_TILES_PLAIN &&
 	    frs3_tiles(t) > 1)
-		frs_warn("--tiles plain: the window of %llux%llux%llu repeats the "
+		frs_warn("plain tiles: the window of %llux%llux%llu repeats the "
 		    "%ux%ux%u matrix as it is", (unsigned long long)t->sw,
 		    (unsigned long long)t->sh, (unsigned long long)t->sd, t->mw,
 		    t->mh, t->md);

@@ -29,8 +29,14 @@ int frs_fail_context(const char *context);
 const char *frs_errmsg(void);
 void frs_clearerr(void);
 /* What the last failure was about: every frs_fail sets OTHER; the memory
- * ceiling (mem.c) then sets MEM, imap_validate MAP. */
-enum { FRS_ERRKIND_OTHER, FRS_ERRKIND_MEM, FRS_ERRKIND_MAP };
+ * ceiling (mem.c) then sets MEM, imap_validate MAP, the importers
+ * (frdimport.c) SIZE for a count that is no square and RANKS for values
+ * that are no permutation, where a program names its options that mend
+ * them. */
+enum {
+	FRS_ERRKIND_OTHER, FRS_ERRKIND_MEM, FRS_ERRKIND_MAP,
+	FRS_ERRKIND_SIZE, FRS_ERRKIND_RANKS
+};
 void frs_set_errkind(int kind);
 int frs_errkind(void);
 

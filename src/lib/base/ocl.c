@@ -190,10 +190,10 @@ int ocl_open(struct ocl *o, int index)
 	k = index < 0 ? 0 : (unsigned)index;
 	if (k >= n && index == INT_MAX)
 		return frs_fail("OpenCL: no device of so large a number (%u "
-		    "device%s; see --list-devices)", n, n == 1 ? "" : "s");
+		    "device%s)", n, n == 1 ? "" : "s");
 	if (k >= n)
-		return frs_fail("OpenCL: no device cl:%u (%u device%s; see "
-		    "--list-devices)", k, n, n == 1 ? "" : "s");
+		return frs_fail("OpenCL: no device cl:%u (%u device%s)", k, n,
+		    n == 1 ? "" : "s");
 	o->device = ids[k];
 	o->platform = plat[k];
 	clGetDeviceInfo(o->device, CL_DEVICE_NAME, sizeof o->name, o->name,

@@ -82,7 +82,7 @@ static int open_stdout(struct outfile *o, int binary)
 {
 	if (binary && isatty(STDOUT_FILENO))
 		return frs_fail("<stdout>: refusing to write binary data to a "
-		    "terminal (use -o FILE or a pipe)");
+		    "terminal (write to a file or a pipe)");
 	o->fp = stdout;
 	o->name = "<stdout>";
 	return 0;

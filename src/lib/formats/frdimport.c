@@ -45,9 +45,8 @@ static int finish(struct frs_matrix *m, const char *name, int rank)
 	if (rank)
 		return frd_rank(m);
 	if (frd_check_permutation(m, name) < 0) {
-		char msg[512];
-		snprintf(msg, sizeof msg, "%s", frs_errmsg());
-		return frs_fail("%s (--rank turns any values into ranks)", msg);
+		frs_set_errkind(FRS_ERRKIND_RANKS);	/* rank would mend it */
+		return -1;
 	}
 	return 0;
 }
@@ -74,8 +73,10 @@ int frd_import_raw32(const char *path, uint32_t w, uint32_t h, int rank,
 		uint64_t n = len / 4, s = (uint64_t)llround(sqrt((double)n));
 		if (s * s != n) {
 			free(buf);
-			return frs_fail("%s: %llu values are not a square; give "
-			    "the size with -s WxH", name, (unsigned long long)n);
+			frs_fail("%s: %llu values are not a square", name,
+			    (unsigned long long)n);
+			frs_set_errkind(FRS_ERRKIND_SIZE);
+			return -1;
 		}
 		w = h = (uint32_t)s;
 	}

@@ -88,9 +88,9 @@ int pt_split(const struct frs_points *p, const char *path, size_t per,
 			}
 			t.n = i - t.first;
 			if (per && t.n != per) {
-				frs_fail("%s: --sets %zu: set %llu of the file's set "
-				    "column has %zu points", path, per,
-				    (unsigned long long)id, t.n);
+				frs_fail("%s: set %llu of the file's set column "
+				    "has %zu points, not %zu", path,
+				    (unsigned long long)id, t.n, per);
 				goto fail;
 			}
 		} else {

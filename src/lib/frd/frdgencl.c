@@ -281,7 +281,7 @@ static int gen_init(struct clgen *g, const struct frdgen_params *pr,
 		return ocl_fail(err, "frd_add: work-group size");
 	if (wg < g->ts / g->ts3[0])
 		return frs_fail("OpenCL: %s runs at most %zu work-items per "
-		    "group, frd-gen needs %zu", o->name, wg, g->ts / g->ts3[0]);
+		    "group, the generator needs %zu", o->name, wg, g->ts / g->ts3[0]);
 	if (ocl_buffer(o, CL_MEM_READ_WRITE, cells * sizeof(double), g->cache,
 	    &g->field) < 0 ||
 	    ocl_buffer(o, CL_MEM_READ_ONLY, g->ntab * sizeof(double), g->table,
@@ -382,8 +382,8 @@ int frdgen_run_cl(const struct frdgen_params *par, struct ocl *o,
 		return frs_fail("checkpoints are not available with OpenCL");
 	if (!o->fp64)
 		return frs_fail("OpenCL: %s has no double precision "
-		    "(cl_khr_fp64), which frd-gen needs to give the same "
-		    "matrix as --device cpu", o->name);
+		    "(cl_khr_fp64), which the generator needs to give the "
+		    "CPU's matrix", o->name);
 	if (gen_init(&g, par, o, out) < 0)
 		goto fail;
 	memset(out->v, 0xff, g.sz.n * sizeof *out->v);

@@ -32,7 +32,7 @@ int frscl_algo_parse(const char *s, int *algo)
 		return 0;
 	}
 	if (frs_algo_parse(s, &a) < 0)
-		return frs_fail("-a: unknown implementation '%s' (naive, stack, "
+		return frs_fail("unknown implementation '%s' (naive, stack, "
 		    "level1, level2, sorted, flat1)", s);
 	*algo = (int)a;
 	return 0;
@@ -465,7 +465,7 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 	c.o = o;
 	c.t = progress_now();
 	if (algo < 0 || algo >= FRSCL_NALGO)
-		return frs_fail("-a: no implementation %d", algo);
+		return frs_fail("no implementation %d", algo);
 	if (frs_sample_check(s, p, algo, frscl_algo_name(algo), steps, nsteps,
 	    count_only, tau) < 0)
 		return -1;

@@ -32,8 +32,7 @@ int hswcl_init(struct hswcl *h, struct ocl *o, const struct hsw_tree *t)
 	if (!o->fp64)
 		return frs_fail("OpenCL: %s has no double precision "
 		    "(cl_khr_fp64), which hierarchical sample warping on the "
-		    "device needs to give the CPU's points; use --device cpu",
-		    o->name);
+		    "device needs to give the CPU's points", o->name);
 	if (clGetDeviceInfo(o->device, CL_DEVICE_MAX_MEM_ALLOC_SIZE,
 	    sizeof maxalloc, &maxalloc, NULL) != CL_SUCCESS || maxalloc < 4096)
 		maxalloc = (cl_ulong)1 << 27;	/* the minimum OpenCL allows */
