@@ -214,6 +214,31 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
 void frs_result_free(struct frs_result *r);
 
 /*
+ * What frs_sample and frs3_sample share, whatever their element: the
+ * kind of chunk (its size, and where its element array and its count
+ * lie: offsetof), and a run over nchunk zeroed chunks, task(ctx, chunk,
+ * c0, c1) thresholding chunks [c0, c1) of the array in parallel.  The
+ * array comes back with *count the total of the chunks' counts; on
+ * failure NULL, all released, *count 0.
+ */
+struct frs_chunk_kind {
+	size_t size;
+	size_t elems, count;
+};
+typedef int (*frs_chunks_task)(void *ctx, void *chunk, uint64_t c0,
+    uint64_t c1);
+void *frs_chunks_run(const struct frs_chunk_kind *k, uint64_t nchunk,
+    frs_chunks_task task, void *ctx, uint64_t *count);
+/* Free the element arrays of the chunks and the array. */
+void frs_chunks_free(const struct frs_chunk_kind *k, void *chunk,
+    uint64_t nchunk);
+/* Room for need elements of size bytes in e, which has room for *cap:
+ * doubled from 1024 until it fits.  The array (e itself when it fits
+ * already), or e untouched and *failed set when out of memory. */
+void *frs_elems_grow(void *e, size_t size, uint64_t need, uint64_t *cap,
+    int *failed);
+
+/*
  * One step without a result: the chunks c0 .. c1 - 1 of the window (map
  * rows in chunks), each in the caller's store, from store + at[c - c0]
  * with room for at[c - c0 + 1] - at[c - c0] elements (the counts of a
