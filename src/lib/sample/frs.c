@@ -1471,8 +1471,8 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
 	return frs_parallel(c1 - c0, 1, each_task, &run, NULL);
 }
 
-static const struct frs_chunk_kind chunk_kind = { sizeof(struct frs_chunk),
-	offsetof(struct frs_chunk, e), offsetof(struct frs_chunk, count) };
+static const struct frs_chunk_kind chunk_kind =
+    FRS_CHUNK_KIND(struct frs_chunk);
 
 int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,

@@ -465,8 +465,8 @@ static int check(const struct frs3_setup *s, const struct frs3_prep *p,
 	return check_work(s, p, algo);
 }
 
-static const struct frs_chunk_kind chunk_kind = { sizeof(struct frs3_chunk),
-	offsetof(struct frs3_chunk, e), offsetof(struct frs3_chunk, count) };
+static const struct frs_chunk_kind chunk_kind =
+    FRS_CHUNK_KIND(struct frs3_chunk);
 
 int frs3_sample(const struct frs3_setup *s, const struct frs_vol *vol,
     const struct frs3_prep *p, enum frs_algo algo, const uint64_t *steps,

@@ -225,6 +225,8 @@ struct frs_chunk_kind {
 	size_t size;
 	size_t elems, count;
 };
+#define FRS_CHUNK_KIND(type) \
+	{ sizeof(type), offsetof(type, e), offsetof(type, count) }
 typedef int (*frs_chunks_task)(void *ctx, void *chunk, uint64_t c0,
     uint64_t c1);
 void *frs_chunks_run(const struct frs_chunk_kind *k, uint64_t nchunk,
