@@ -166,14 +166,7 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 	s->ih = map->h;
 	s->mw = mat->w;
 	s->mh = mat->h;
-	s->n = n;
-	s->sigma = sigma;
-	s->seed = seed;
-	s->mean = w.mean;
-	s->max = w.max;
-	s->iscale = w.iscale;
-	s->imean = w.imean;
-	s->ns = (uint32_t)w.ns;
+	FRS_SETUP_TAKE(s, w, n, sigma, seed);
 	s->sw = w.size[0];
 	s->sh = w.size[1];
 	s->wx = w.off[0];

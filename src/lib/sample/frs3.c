@@ -48,14 +48,7 @@ int frs3_setup(struct frs3_setup *s, const struct frs_vol *vol,
 	s->mw = mat->w;
 	s->mh = mat->h;
 	s->md = mat->d;
-	s->n = n;
-	s->sigma = sigma;
-	s->seed = seed;
-	s->mean = w.mean;
-	s->max = w.max;
-	s->iscale = w.iscale;
-	s->imean = w.imean;
-	s->ns = (uint32_t)w.ns;
+	FRS_SETUP_TAKE(s, w, n, sigma, seed);
 	for (int i = 0; i < 3; i++) {
 		*size[i] = w.size[i];
 		*off[i] = w.off[i];

@@ -94,6 +94,18 @@ struct frs_window {
 int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
     const struct frs_imap *cells, const struct frs_matrix *mat, uint64_t n,
     double sigma, uint64_t seed);
+/* What frs_setup and frs3_setup take alike from their arguments and
+ * their window w: a macro, as the two setups are of two types. */
+#define FRS_SETUP_TAKE(s, w, n_, sigma_, seed_) do {			\
+	(s)->n = (n_);							\
+	(s)->sigma = (sigma_);						\
+	(s)->seed = (seed_);						\
+	(s)->mean = (w).mean;						\
+	(s)->max = (w).max;						\
+	(s)->iscale = (w).iscale;					\
+	(s)->imean = (w).imean;						\
+	(s)->ns = (uint32_t)(w).ns;					\
+} while (0)
 /* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
