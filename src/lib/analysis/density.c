@@ -347,6 +347,42 @@ static int run_chunks(uint64_t n, int (*fn)(void *, uint64_t, uint64_t),
 	return 0;
 }
 
+/* dens_min_distance's and dens_min_distance3's arguments. */
+static int min_args(size_t n, const double *dmin)
+{
+	if (n < 2)
+		return frs_fail("minimum distance: %zu point%s, at least 2 "
+		    "needed", n, n == 1 ? "" : "s");
+	if (dmin == NULL)
+		return frs_fail("minimum distance: no output");
+	return 0;
+}
+
+/* The minimum distance, 2-D or 3-D: fn leaves the least key of chunk
+ * b / CHUNK in (*best)[b / CHUNK], an array made here; start bounds
+ * them all.  *dmin the square root of the least. */
+static int min_chunks(size_t n, int (*fn)(void *, uint64_t, uint64_t),
+    void *job, double **best, double start, int par, double *dmin)
+{
+	size_t nchunks = (n + CHUNK - 1) / CHUNK;
+	double m = start;
+	int rc;
+
+	if ((*best = malloc(nchunks * sizeof **best)) == NULL)
+		return frs_fail("no memory for %zu chunks", nchunks);
+	for (size_t c = 0; c < nchunks; c++)
+		(*best)[c] = start;
+	rc = run_chunks(n, fn, job, par);
+	for (size_t c = 0; rc == 0 && c < nchunks; c++)
+		m = (*best)[c] < m ? (*best)[c] : m;
+	free(*best);
+	*best = NULL;
+	if (rc < 0)
+		return -1;
+	*dmin = sqrt(m);
+	return 0;
+}
+
 /* ---- minimum distance -------------------------------------------------- */
 
 struct min_job {
@@ -371,15 +407,10 @@ int dens_min_distance(const double *xy, size_t n, const double *f, int torus,
 {
 	struct grid gr;
 	struct min_job j;
-	size_t nchunks;
-	double best;
 	int rc;
 
-	if (n < 2)
-		return frs_fail("minimum distance: %zu point%s, at least 2 "
-		    "needed", n, n == 1 ? "" : "s");
-	if (dmin == NULL)
-		return frs_fail("minimum distance: no output");
+	if (min_args(n, dmin) < 0)
+		return -1;
 	if (grid_build(&gr, xy, n, f, torus) < 0)
 		return -1;
 	/* Start from the smallest key of neighbours in cell order: any
@@ -391,25 +422,9 @@ int dens_min_distance(const double *xy, size_t n, const double *f, int torus,
 		if (k < j.start)
 			j.start = k;
 	}
-	nchunks = (n + CHUNK - 1) / CHUNK;
-	j.best = malloc(nchunks * sizeof *j.best);
-	if (j.best == NULL) {
-		grid_free(&gr);
-		return frs_fail("no memory for %zu chunks", nchunks);
-	}
-	for (size_t c = 0; c < nchunks; c++)
-		j.best[c] = j.start;
-	rc = run_chunks(n, min_chunk, &j, par);
-	best = j.start;
-	for (size_t c = 0; c < nchunks; c++)
-		if (j.best[c] < best)
-			best = j.best[c];
-	free(j.best);
+	rc = min_chunks(n, min_chunk, &j, &j.best, j.start, par, dmin);
 	grid_free(&gr);
-	if (rc < 0)
-		return -1;
-	*dmin = sqrt(best);
-	return 0;
+	return rc;
 }
 
 /* ---- 3-D sets: minimum distance ----------------------------------------- */
@@ -602,15 +617,10 @@ int dens_min_distance3(const double *xyz, size_t n, int torus, int par,
 {
 	struct cells3 gr;
 	struct min3_job j;
-	size_t nchunks;
-	double best;
 	int rc;
 
-	if (n < 2)
-		return frs_fail("minimum distance: %zu point%s, at least 2 "
-		    "needed", n, n == 1 ? "" : "s");
-	if (dmin == NULL)
-		return frs_fail("minimum distance: no output");
+	if (min_args(n, dmin) < 0)
+		return -1;
 	if (cells3_build(&gr, xyz, n, torus) < 0)
 		return -1;
 	/* neighbours in cell order: an upper bound to start from */
@@ -620,21 +630,9 @@ int dens_min_distance3(const double *xyz, size_t n, int torus, int par,
 		double k = pair_key3(&gr.p[s - 1], &gr.p[s], gr.torus);
 		j.start = k < j.start ? k : j.start;
 	}
-	nchunks = (n + CHUNK - 1) / CHUNK;
-	if ((j.best = malloc(nchunks * sizeof *j.best)) == NULL) {
-		cells3_free(&gr);
-		return frs_fail("no memory for %zu chunks", nchunks);
-	}
-	rc = run_chunks(n, min3_chunk, &j, par);
-	best = j.start;
-	for (size_t c = 0; rc == 0 && c < nchunks; c++)
-		best = j.best[c] < best ? j.best[c] : best;
-	free(j.best);
+	rc = min_chunks(n, min3_chunk, &j, &j.best, j.start, par, dmin);
 	cells3_free(&gr);
-	if (rc < 0)
-		return -1;
-	*dmin = sqrt(best);
-	return 0;
+	return rc;
 }
 
 /* ---- pair distance distribution of uniform points ---------------------- */

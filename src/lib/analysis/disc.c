@@ -138,46 +138,57 @@ static double l2_combine(struct dd pairs, struct dd single, struct dd cnst,
 	return v > 0.0 ? sqrt(v) : 0.0;
 }
 
-double disc_star_l2_exact(const double *xy, size_t n)
+/* Point (x, y)'s corner values of the pair sums into u[0..3], and its
+ * single term: the star's and the rectangles' closed forms. */
+static struct dd star_corners(double x, double y, double *u)
+{
+	u[0] = 1.0, u[1] = 1.0 - x;
+	u[2] = 1.0, u[3] = 1.0 - y;
+	return dd_mul_d(dd_prod(1.0 - x * x, 1.0 - y * y), 0.25);
+}
+
+static struct dd rect_corners(double x, double y, double *u)
+{
+	u[0] = 2.0 * x, u[1] = 1.0 - x;
+	u[2] = 2.0 * y, u[3] = 1.0 - y;
+	return dd_prod(x * (1.0 - x), y * (1.0 - y));
+}
+
+/* The pair and single sums of an exact L2 discrepancy, corners giving
+ * each point's terms. */
+static int l2_sums(const double *xy, size_t n,
+    struct dd (*corners)(double x, double y, double *u), struct dd *pairs,
+    struct dd *single)
 {
 	double *u = malloc(4 * n * sizeof *u);
-	struct dd pairs, single = dd_from(0.0);
+	int rc;
 
 	if (u == NULL)
-		return frs_fail("no memory for %zu points", n), -1.0;
-	for (size_t i = 0; i < n; i++) {
-		double x = xy[2 * i], y = xy[2 * i + 1];
-		u[4 * i] = 1.0, u[4 * i + 1] = 1.0 - x;
-		u[4 * i + 2] = 1.0, u[4 * i + 3] = 1.0 - y;
-		single = dd_add(single, dd_mul_d(dd_prod(1.0 - x * x,
-		    1.0 - y * y), 0.25));
-	}
-	if (pair_sum(xy, n, u, &pairs) < 0) {
-		free(u);
-		return -1.0;
-	}
+		return frs_fail("no memory for %zu points", n);
+	*single = dd_from(0.0);
+	for (size_t i = 0; i < n; i++)
+		*single = dd_add(*single, corners(xy[2 * i], xy[2 * i + 1],
+		    u + 4 * i));
+	rc = pair_sum(xy, n, u, pairs);
 	free(u);
+	return rc;
+}
+
+double disc_star_l2_exact(const double *xy, size_t n)
+{
+	struct dd pairs, single;
+
+	if (l2_sums(xy, n, star_corners, &pairs, &single) < 0)
+		return -1.0;
 	return l2_combine(pairs, single, dd_div_d(dd_from(1.0), 9.0), 1.0, n);
 }
 
 double disc_rect_l2_exact(const double *xy, size_t n)
 {
-	double *u = malloc(4 * n * sizeof *u);
-	struct dd pairs, single = dd_from(0.0);
+	struct dd pairs, single;
 
-	if (u == NULL)
-		return frs_fail("no memory for %zu points", n), -1.0;
-	for (size_t i = 0; i < n; i++) {
-		double x = xy[2 * i], y = xy[2 * i + 1];
-		u[4 * i] = 2.0 * x, u[4 * i + 1] = 1.0 - x;
-		u[4 * i + 2] = 2.0 * y, u[4 * i + 3] = 1.0 - y;
-		single = dd_add(single, dd_prod(x * (1.0 - x), y * (1.0 - y)));
-	}
-	if (pair_sum(xy, n, u, &pairs) < 0) {
-		free(u);
+	if (l2_sums(xy, n, rect_corners, &pairs, &single) < 0)
 		return -1.0;
-	}
-	free(u);
 	/* E[area^2] = (E|u - v|^2)^2 = 1/36 */
 	return l2_combine(pairs, single, dd_div_d(dd_from(1.0), 36.0), 1.0, n);
 }

@@ -2,10 +2,9 @@
 #include "analysis/raster.h"
 #include "base/err.h"
 #include "base/mem.h"
+#include "maps/pngio.h"
 
-#include <errno.h>
 #include <math.h>
-#include <png.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -396,64 +395,22 @@ void raster_ramp(uint64_t k, uint64_t n, uint8_t rgb[3])
 
 /* ---- PNG output -------------------------------------------------------- */
 
-/* libpng reports errors through a callback that must not return: keep
- * the message for ours and jump back. */
-struct raster_pngerr {
-	char msg[256];
-};
-
-static void png_on_error(png_structp png, png_const_charp msg)
+/* Row y of the raster, in place. */
+static const unsigned char *raster_row(const void *ctx, uint32_t y,
+    unsigned char *buf)
 {
-	struct raster_pngerr *e = png_get_error_ptr(png);
+	const struct frs_raster *r = ctx;
 
-	snprintf(e->msg, sizeof e->msg, "%s", msg);
-	png_longjmp(png, 1);
-}
-
-static void png_on_warning(png_structp png, png_const_charp msg)
-{
-	(void)png;
-	(void)msg;
+	(void)buf;
+	return r->px + (size_t)y * r->w * r->channels;
 }
 
 int raster_write_png(FILE *fp, const char *name, const struct frs_raster *r)
 {
-	struct raster_pngerr err = { "" };
-	png_structp png;
-	png_infop info = NULL;
-	size_t stride = (size_t)r->w * r->channels;
-
 	if (r->px == NULL || (r->channels != 1 && r->channels != 3))
 		return frs_fail("%s: internal error: no raster to write", name);
-	png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &err,
-	    png_on_error, png_on_warning);
-	if (png == NULL || (info = png_create_info_struct(png)) == NULL) {
-		png_destroy_write_struct(&png, NULL);
-		return frs_fail("%s: out of memory", name);
-	}
-	errno = 0;
-	if (setjmp(png_jmpbuf(png))) {
-		int saved = errno;
-
-		png_destroy_write_struct(&png, &info);
-		if (ferror(fp)) {
-			errno = saved;
-			return frs_fail_errno("%s: write error", name);
-		}
-		return frs_fail("%s: cannot write PNG: %s", name, err.msg);
-	}
-	png_init_io(png, fp);
-	png_set_IHDR(png, info, r->w, r->h, 8, r->channels == 1 ?
-	    PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-	    PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-	png_write_info(png, info);
-	for (uint32_t y = 0; y < r->h; y++)
-		png_write_row(png, r->px + (size_t)y * stride);
-	png_write_end(png, NULL);
-	png_destroy_write_struct(&png, &info);
-	if (ferror(fp))
-		return frs_fail_errno("%s: write error", name);
-	return 0;
+	return pngio_write(fp, name, r->w, r->h, 8, (int)r->channels,
+	    raster_row, r);
 }
 
 int raster_write_pnm(FILE *fp, const char *name, const struct frs_raster *r)

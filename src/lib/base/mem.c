@@ -96,6 +96,15 @@ int mem_check(const char *what, uint64_t nmemb, uint64_t size)
 	return 0;
 }
 
+static void out_of_memory(const char *what, uint64_t nmemb, uint64_t size)
+{
+	char need[32];
+
+	frs_fail("%s: out of memory (needed %s)", what,
+	    mem_human(nmemb * size, need));
+	frs_set_errkind(FRS_ERRKIND_MEM);
+}
+
 void *mem_calloc(const char *what, uint64_t nmemb, uint64_t size)
 {
 	void *p;
@@ -103,12 +112,8 @@ void *mem_calloc(const char *what, uint64_t nmemb, uint64_t size)
 	if (mem_check(what, nmemb, size) < 0)
 		return NULL;
 	p = calloc(nmemb ? (size_t)nmemb : 1, size ? (size_t)size : 1);
-	if (p == NULL) {
-		char need[32];
-		frs_fail("%s: out of memory (needed %s)", what,
-		    mem_human(nmemb * size, need));
-		frs_set_errkind(FRS_ERRKIND_MEM);
-	}
+	if (p == NULL)
+		out_of_memory(what, nmemb, size);
 	return p;
 }
 
@@ -119,12 +124,8 @@ void *mem_realloc(const char *what, void *p, uint64_t nmemb, uint64_t size)
 	if (mem_check(what, nmemb, size) < 0)
 		return NULL;
 	q = realloc(p, nmemb != 0 && size != 0 ? (size_t)(nmemb * size) : 1);
-	if (q == NULL) {
-		char need[32];
-		frs_fail("%s: out of memory (needed %s)", what,
-		    mem_human(nmemb * size, need));
-		frs_set_errkind(FRS_ERRKIND_MEM);
-	}
+	if (q == NULL)
+		out_of_memory(what, nmemb, size);
 	return q;
 }
 

@@ -270,6 +270,27 @@ int ocl_kernel(cl_program prog, const char *name, cl_kernel *k)
 	return 0;
 }
 
+void ocl_release_mem(cl_mem *b)
+{
+	if (*b != NULL)
+		clReleaseMemObject(*b);
+	*b = NULL;
+}
+
+void ocl_release_kernel(cl_kernel *k)
+{
+	if (*k != NULL)
+		clReleaseKernel(*k);
+	*k = NULL;
+}
+
+void ocl_release_program(cl_program *prog)
+{
+	if (*prog != NULL)
+		clReleaseProgram(*prog);
+	*prog = NULL;
+}
+
 int ocl_buffer(struct ocl *o, cl_mem_flags flags, size_t size,
     const void *host, cl_mem *b)
 {

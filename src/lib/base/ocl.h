@@ -66,6 +66,12 @@ int ocl_buffer(struct ocl *o, cl_mem_flags flags, size_t size,
     const void *host, cl_mem *b);
 int ocl_read(struct ocl *o, cl_mem b, size_t size, void *host);
 int ocl_write(struct ocl *o, cl_mem b, size_t size, const void *host);
+
+/* Release what *x holds, if anything, and leave it NULL: for teardown of
+ * objects that a failed setup may not have made. */
+void ocl_release_mem(cl_mem *b);
+void ocl_release_kernel(cl_kernel *k);
+void ocl_release_program(cl_program *prog);
 /* Fill a buffer with a 32-bit pattern (device buffers are never used
  * uninitialised: the authors' code was caught doing that on PoCL). */
 int ocl_fill32(struct ocl *o, cl_mem b, size_t size, uint32_t value);

@@ -262,6 +262,21 @@ static int finish_stream(struct outfile *o)
 	return 0;
 }
 
+/* Drop o's names; its temporary file (if any) removed when unlink_tmp
+ * is set (not renamed into place). */
+static void forget(struct outfile *o, int unlink_tmp)
+{
+	if (o->tmp != NULL) {
+		if (unlink_tmp)
+			unlink(o->tmp);
+		track(o->tmp, 0);
+		free(o->tmp);
+		o->tmp = NULL;
+	}
+	free(o->path);
+	o->path = NULL;
+}
+
 int outfile_commit(struct outfile *o)
 {
 	int rc;
@@ -271,15 +286,7 @@ int outfile_commit(struct outfile *o)
 	rc = finish_stream(o);
 	if (rc == 0 && o->tmp != NULL && rename(o->tmp, o->path) != 0)
 		rc = frs_fail_errno("%s: cannot rename temporary file", o->path);
-	if (o->tmp != NULL) {
-		if (rc != 0)
-			unlink(o->tmp);
-		track(o->tmp, 0);
-		free(o->tmp);
-		o->tmp = NULL;
-	}
-	free(o->path);
-	o->path = NULL;
+	forget(o, rc != 0);
 	return rc;
 }
 
@@ -290,12 +297,5 @@ void outfile_abort(struct outfile *o)
 	else if (o->fp == stdout)
 		fflush(stdout);
 	o->fp = NULL;
-	if (o->tmp != NULL) {
-		unlink(o->tmp);
-		track(o->tmp, 0);
-		free(o->tmp);
-		o->tmp = NULL;
-	}
-	free(o->path);
-	o->path = NULL;
+	forget(o, 1);
 }

@@ -193,16 +193,11 @@ static int select_cell(struct clgen *g, uint64_t k, uint32_t *c)
 
 static void gen_free(struct clgen *g)
 {
-	if (g->k != NULL)
-		clReleaseKernel(g->k);
-	if (g->prog != NULL)
-		clReleaseProgram(g->prog);
-	if (g->field != NULL)
-		clReleaseMemObject(g->field);
-	if (g->tab != NULL)
-		clReleaseMemObject(g->tab);
-	if (g->out != NULL)
-		clReleaseMemObject(g->out);
+	ocl_release_kernel(&g->k);
+	ocl_release_program(&g->prog);
+	ocl_release_mem(&g->field);
+	ocl_release_mem(&g->tab);
+	ocl_release_mem(&g->out);
 	free(g->table);
 	free(g->cache);
 	free(g->zc);

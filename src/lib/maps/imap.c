@@ -84,33 +84,40 @@ void imap_stats(const struct frs_imap *m, struct frs_imap_stats *s)
 		s->min = s->max = 0.0;
 }
 
+int imap_clamp(struct frs_imap *m, struct frs_imap_stats *s,
+    const char *name, const char *what, int flags)
+{
+	uint64_t n = (uint64_t)m->w * m->h;
+
+	if (s->negatives) {
+		frs_warn("%s: %llu negative %s clamped to zero (smallest "
+		    "%.6g)", name, (unsigned long long)s->negatives, what,
+		    s->min_negative);
+		for (uint64_t i = 0; i < n; i++)
+			if (m->v[i] < 0.0)
+				m->v[i] = 0.0;
+		imap_stats(m, s);
+	}
+	if (!(flags & IMAP_ALLOW_ZERO) && s->max <= 0.0)
+		return frs_fail("%s: importance is zero everywhere", name);
+	return 0;
+}
+
 static int validate(struct frs_imap *m, const char *name, int flags)
 {
 	struct frs_imap_stats s;
-	uint64_t n = (uint64_t)m->w * m->h;
 
 	imap_stats(m, &s);
 	if (s.nonfinite)
 		return frs_fail("%s: pixel (%u, %u) is %s (%llu non-finite "
 		    "pixels)", name, s.bad_x, s.bad_y, isnan(s.bad_value) ? "NaN" :
 		    "infinite", (unsigned long long)s.nonfinite);
-	if (s.negatives) {
-		if (flags & IMAP_STRICT)
-			return frs_fail("%s: pixel (%u, %u) is negative (%.6g); "
-			    "%llu negative pixels, smallest %.6g", name, s.neg_x,
-			    s.neg_y, m->v[(size_t)s.neg_y * m->w + s.neg_x],
-			    (unsigned long long)s.negatives, s.min_negative);
-		frs_warn("%s: %llu negative pixels clamped to zero (smallest "
-		    "%.6g)", name, (unsigned long long)s.negatives,
-		    s.min_negative);
-		for (uint64_t i = 0; i < n; i++)
-			if (m->v[i] < 0.0)
-				m->v[i] = 0.0;
-		imap_stats(m, &s);
-	}
-	if (!(flags & IMAP_ALLOW_ZERO) && s.max <= 0.0)
-		return frs_fail("%s: importance is zero everywhere", name);
-	return 0;
+	if (s.negatives && (flags & IMAP_STRICT))
+		return frs_fail("%s: pixel (%u, %u) is negative (%.6g); "
+		    "%llu negative pixels, smallest %.6g", name, s.neg_x,
+		    s.neg_y, m->v[(size_t)s.neg_y * m->w + s.neg_x],
+		    (unsigned long long)s.negatives, s.min_negative);
+	return imap_clamp(m, &s, name, "pixels", flags);
 }
 
 int imap_validate(struct frs_imap *m, const char *name, int flags)

@@ -48,6 +48,13 @@ enum {
  * their count and the smallest value, or fail under IMAP_STRICT.
  */
 int imap_validate(struct frs_imap *m, const char *name, int flags);
+/* imap_validate's and vol_validate's last part, on m's values (a
+ * volume's through vol_as_map) with their stats s, once the non-finite
+ * and the strict cases are refused: negatives clamped (the warning
+ * counting them as what: "pixels", "voxels"), s made again, then the
+ * all-zero check. */
+int imap_clamp(struct frs_imap *m, struct frs_imap_stats *s,
+    const char *name, const char *what, int flags);
 
 /* Area-weighted resampling to w x h (box filter, exact overlaps). */
 int imap_resample(const struct frs_imap *in, uint32_t w, uint32_t h,

@@ -150,40 +150,13 @@ int imap_read_png_mem(const unsigned char *buf, size_t len, const char *name,
 	return 0;
 }
 
-static double max_value(const struct frs_imap *m)
-{
-	double maxv = 0.0;
-
-	for (size_t i = 0; i < (size_t)m->w * m->h; i++)
-		if (m->v[i] > maxv)
-			maxv = m->v[i];
-	return maxv;
-}
-
-/* Rows of 16-bit grey, scaled so that the maximum is 65535. */
-static void write_rows(png_structp png, const struct frs_imap *m,
-    png_bytep row)
-{
-	const double maxv = max_value(m);
-
-	for (uint32_t y = 0; y < m->h; y++) {
-		for (uint32_t x = 0; x < m->w; x++) {
-			double v = m->v[(size_t)y * m->w + x];
-			unsigned q = maxv > 0.0 && v > 0.0 ?
-			    (unsigned)lround(v / maxv * 65535.0) : 0;
-			row[2 * x] = (png_byte)(q >> 8);
-			row[2 * x + 1] = (png_byte)q;
-		}
-		png_write_row(png, row);
-	}
-}
-
-int imap_write_png16(FILE *fp, const char *name, const struct frs_imap *m)
+int pngio_write(FILE *fp, const char *name, uint32_t w, uint32_t h,
+    int depth, int channels, pngio_row_fn row, const void *rctx)
 {
 	struct pngctx ctx = { NULL, 0, 0, "", "", 0 };
 	png_structp png;
 	png_infop info = NULL;
-	png_bytep volatile row = NULL;
+	png_bytep volatile buf = NULL;
 
 	png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &ctx, on_error,
 	    on_warning);
@@ -198,7 +171,7 @@ int imap_write_png16(FILE *fp, const char *name, const struct frs_imap *m)
 		int saved = errno;
 
 		png_destroy_write_struct(&png, &info);
-		free(row);
+		free(buf);
 		if (ferror(fp)) {
 			errno = saved;
 			return frs_fail_errno("%s: write error", name);
@@ -206,18 +179,58 @@ int imap_write_png16(FILE *fp, const char *name, const struct frs_imap *m)
 		return frs_fail("%s: cannot write PNG: %s", name, ctx.msg);
 	}
 	png_init_io(png, fp);
-	png_set_IHDR(png, info, m->w, m->h, 16, PNG_COLOR_TYPE_GRAY,
-	    PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-	    PNG_FILTER_TYPE_DEFAULT);
+	png_set_IHDR(png, info, w, h, depth, channels == 1 ?
+	    PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+	    PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
 	png_write_info(png, info);
-	row = malloc((size_t)m->w * 2);
-	if (row == NULL)
+	buf = malloc((size_t)w * (size_t)channels * (depth == 16 ? 2 : 1));
+	if (buf == NULL)
 		png_error(png, "out of memory");
-	write_rows(png, m, row);
+	for (uint32_t y = 0; y < h; y++)
+		png_write_row(png, row(rctx, y, buf));
 	png_write_end(png, NULL);
 	png_destroy_write_struct(&png, &info);
-	free(row);
+	free(buf);
 	if (ferror(fp))
 		return frs_fail_errno("%s: write error", name);
 	return 0;
+}
+
+struct grey16 {
+	const struct frs_imap *m;
+	double maxv;
+};
+
+/* Row y of 16-bit grey, scaled so that the maximum is 65535. */
+static const unsigned char *grey16_row(const void *ctx, uint32_t y,
+    unsigned char *row)
+{
+	const struct grey16 *g = ctx;
+	const struct frs_imap *m = g->m;
+
+	for (uint32_t x = 0; x < m->w; x++) {
+		double v = m->v[(size_t)y * m->w + x];
+		unsigned q = g->maxv > 0.0 && v > 0.0 ?
+		    (unsigned)lround(v / g->maxv * 65535.0) : 0;
+		row[2 * x] = (unsigned char)(q >> 8);
+		row[2 * x + 1] = (unsigned char)q;
+	}
+	return row;
+}
+
+static double max_value(const struct frs_imap *m)
+{
+	double maxv = 0.0;
+
+	for (size_t i = 0; i < (size_t)m->w * m->h; i++)
+		if (m->v[i] > maxv)
+			maxv = m->v[i];
+	return maxv;
+}
+
+int imap_write_png16(FILE *fp, const char *name, const struct frs_imap *m)
+{
+	struct grey16 g = { m, max_value(m) };
+
+	return pngio_write(fp, name, m->w, m->h, 16, 1, grey16_row, &g);
 }

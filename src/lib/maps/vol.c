@@ -177,7 +177,6 @@ static int validate(struct frs_vol *m, const char *name, int flags)
 {
 	struct frs_imap view = vol_as_map(m);
 	struct frs_imap_stats s;
-	uint64_t n = (uint64_t)m->w * m->h * m->d;
 	uint32_t c[3];
 
 	imap_stats(&view, &s);
@@ -187,23 +186,13 @@ static int validate(struct frs_vol *m, const char *name, int flags)
 		    "voxels)", name, c[0], c[1], c[2], isnan(s.bad_value) ?
 		    "NaN" : "infinite", (unsigned long long)s.nonfinite);
 	}
-	if (s.negatives) {
+	if (s.negatives && (flags & IMAP_STRICT)) {
 		voxel_of(m, s.neg_x, s.neg_y, c);
-		if (flags & IMAP_STRICT)
-			return frs_fail("%s: voxel (%u, %u, %u) is negative; %llu "
-			    "negative voxels, smallest %.6g", name, c[0], c[1], c[2],
-			    (unsigned long long)s.negatives, s.min_negative);
-		frs_warn("%s: %llu negative voxels clamped to zero (smallest "
-		    "%.6g)", name, (unsigned long long)s.negatives,
-		    s.min_negative);
-		for (uint64_t i = 0; i < n; i++)
-			if (m->v[i] < 0.0)
-				m->v[i] = 0.0;
-		imap_stats(&view, &s);
+		return frs_fail("%s: voxel (%u, %u, %u) is negative; %llu "
+		    "negative voxels, smallest %.6g", name, c[0], c[1], c[2],
+		    (unsigned long long)s.negatives, s.min_negative);
 	}
-	if (!(flags & IMAP_ALLOW_ZERO) && s.max <= 0.0)
-		return frs_fail("%s: importance is zero everywhere", name);
-	return 0;
+	return imap_clamp(&view, &s, name, "voxels", flags);
 }
 
 int vol_validate(struct frs_vol *m, const char *name, int flags)

@@ -166,14 +166,7 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 	s->ih = map->h;
 	s->mw = mat->w;
 	s->mh = mat->h;
-	s->n = n;
-	s->sigma = sigma;
-	s->seed = seed;
-	s->mean = w.mean;
-	s->max = w.max;
-	s->iscale = w.iscale;
-	s->imean = w.imean;
-	s->ns = (uint32_t)w.ns;
+	FRS_SETUP_TAKE(s, w, n, sigma, seed);
 	s->sw = w.size[0];
 	s->sh = w.size[1];
 	s->wx = w.off[0];
@@ -937,8 +930,7 @@ struct run {
 	const double *tau;	/* per step */
 	unsigned nsteps;
 	int count_only;
-	struct frs_result *r;
-	/* frs_sample_each: chunks from c0, handed to fn, not kept in r */
+	/* frs_sample_each: chunks from c0, handed to fn, not kept */
 	uint64_t c0;
 	const uint64_t *at;
 	struct frs_elem *store;
@@ -958,6 +950,18 @@ struct pix {
 	struct tcache tc;
 };
 
+/* Room for k more elements in c; a chunk in a caller's store
+ * (frs_sample_each) is never grown: overflowing it fails. */
+static int grow(struct frs_chunk *c, uint64_t k)
+{
+	if (c->fixed)
+		c->failed = 1;
+	else
+		c->e = frs_elems_grow(c->e, sizeof *c->e, c->n + k, &c->cap,
+		    &c->failed);
+	return c->failed ? -1 : 0;
+}
+
 static void emit(struct pix *px, uint64_t x, uint64_t y, uint32_t v)
 {
 	const struct run *run = px->run;
@@ -970,17 +974,8 @@ static void emit(struct pix *px, uint64_t x, uint64_t y, uint32_t v)
 	px->c->count++;
 	if (run->count_only)
 		return;
-	if (px->c->n == px->c->cap) {
-		uint64_t ncap = px->c->cap ? 2 * px->c->cap : 1024;
-		struct frs_elem *ne = px->c->fixed ? NULL :
-		    realloc(px->c->e, ncap * sizeof *ne);
-		if (ne == NULL) {
-			px->c->failed = 1;
-			return;
-		}
-		px->c->e = ne;
-		px->c->cap = ncap;
-	}
+	if (px->c->n == px->c->cap && grow(px->c, 1) < 0)
+		return;
 	px->c->e[px->c->n++] = (struct frs_elem){ (uint32_t)x, (uint32_t)y, k };
 }
 
@@ -1201,19 +1196,8 @@ static void take_block(struct pix *px, const struct frs_tile *t,
 		take_points(px, t, idx, b, lb, x, y, k);
 		return;
 	}
-	if (c->n + k > c->cap) {
-		uint64_t ncap = c->cap ? 2 * c->cap : 1024;
-		struct frs_elem *ne;
-		while (ncap < c->n + k)
-			ncap *= 2;
-		ne = c->fixed ? NULL : realloc(c->e, ncap * sizeof *ne);
-		if (ne == NULL) {
-			c->failed = 1;
-			return;
-		}
-		c->e = ne;
-		c->cap = ncap;
-	}
+	if (c->n + k > c->cap && grow(c, k) < 0)
+		return;
 	if (t->flip == 0 && t->perm[0] == 0) {	/* plain: the fast path */
 		for (uint64_t j = 0; j < k; j++)
 			c->e[c->n + j] = (struct frs_elem){
@@ -1349,25 +1333,40 @@ static void run_chunk(struct pix *px, uint64_t ci)
 	}
 }
 
-static int chunks_task(void *ctx, uint64_t b, uint64_t e)
+static void pix_start(struct pix *px, const struct run *run)
+{
+	px->run = run;
+	for (unsigned k = 0; k < TCACHE; k++)
+		px->tc.e[k].valid = 0;
+}
+
+/* frs_sample: chunks [b, e) of the result's array. */
+static int result_task(void *ctx, void *chunk, uint64_t b, uint64_t e)
+{
+	struct frs_chunk *c = chunk;
+	struct pix px;
+
+	pix_start(&px, ctx);
+	for (uint64_t ci = b; ci < e; ci++) {
+		px.c = &c[ci];
+		run_chunk(&px, ci);
+		if (px.c->failed)
+			return frs_fail("out of memory for the samples");
+	}
+	return 0;
+}
+
+/* frs_sample_each: chunks c0 + [b, e), each in its place in the caller's
+ * store, handed to fn. */
+static int each_task(void *ctx, uint64_t b, uint64_t e)
 {
 	const struct run *run = ctx;
 	struct pix px;
 
-	px.run = run;
-	for (unsigned k = 0; k < TCACHE; k++)
-		px.tc.e[k].valid = 0;
+	pix_start(&px, run);
 	for (uint64_t ci = b; ci < e; ci++) {
 		struct frs_chunk c = { 0 };
 		int rc = 0;
-		if (run->fn == NULL) {
-			px.c = &run->r->chunk[ci];
-			run_chunk(&px, ci);
-			if (px.c->failed)
-				return frs_fail("out of memory for the samples");
-			continue;
-		}
-		/* frs_sample_each: the chunk's place in the caller's store. */
 		c.e = run->store + run->at[ci];
 		c.cap = run->at[ci + 1] - run->at[ci];
 		c.fixed = 1;
@@ -1447,8 +1446,8 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
     frs_chunk_fn fn, void *ctx)
 {
 	double tau;
-	struct run run = { s, map, p, algo, &tau, 1, 0, NULL, c0, at, store,
-	    NULL, NULL, fn, ctx };
+	struct run run = { s, map, p, algo, &tau, 1, 0, c0, at, store, NULL,
+	    NULL, fn, ctx };
 
 	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), &s->n, 1, 0,
 	    &tau) < 0)
@@ -1462,40 +1461,112 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
 		return frs_fail("frs_sample_each: chunks %llu to %llu of %llu",
 		    (unsigned long long)c0, (unsigned long long)c1,
 		    (unsigned long long)frs_nchunks(s));
-	return frs_parallel(c1 - c0, 1, chunks_task, &run, NULL);
+	return frs_parallel(c1 - c0, 1, each_task, &run, NULL);
 }
+
+static const struct frs_chunk_kind chunk_kind =
+    FRS_CHUNK_KIND(struct frs_chunk);
 
 int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs_result *r)
 {
 	double tau[16];
-	struct run run = { s, map, p, algo, tau, nsteps, count_only, r, 0,
+	struct run run = { s, map, p, algo, tau, nsteps, count_only, 0,
 	    NULL, NULL, NULL, NULL, NULL, NULL };
-	int rc;
 
 	memset(r, 0, sizeof *r);
 	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), steps,
 	    nsteps, count_only, tau) < 0)
 		return -1;
-	r->nchunk = frs_nchunks(s);
-	r->chunk = calloc(r->nchunk, sizeof *r->chunk);
-	if (r->chunk == NULL)
-		return frs_fail("out of memory");
-	rc = frs_parallel(r->nchunk, 1, chunks_task, &run, NULL);
-	for (uint64_t i = 0; i < r->nchunk; i++)
-		r->count += r->chunk[i].count;
-	if (rc < 0)
-		frs_result_free(r);
-	return rc;
+	r->chunk = frs_chunks_run(&chunk_kind, frs_nchunks(s), result_task,
+	    &run, &r->count);
+	r->nchunk = r->chunk != NULL ? frs_nchunks(s) : 0;
+	return r->chunk != NULL ? 0 : -1;
 }
 
 void frs_result_free(struct frs_result *r)
 {
-	for (uint64_t i = 0; i < r->nchunk; i++)
-		free(r->chunk[i].e);
-	free(r->chunk);
+	frs_chunks_free(&chunk_kind, r->chunk, r->nchunk);
 	memset(r, 0, sizeof *r);
+}
+
+/* ---- chunks of any element ------------------------------------------ */
+
+struct chunks_job {
+	frs_chunks_task task;
+	void *ctx;
+	void *chunk;
+};
+
+static int chunks_job(void *ctx, uint64_t b, uint64_t e)
+{
+	struct chunks_job *j = ctx;
+
+	return j->task(j->ctx, j->chunk, b, e);
+}
+
+/* The chunks' fields are read by their offsets: memcpy, as the kind's
+ * struct is not known here. */
+static char *chunk_at(const struct frs_chunk_kind *k, void *chunk,
+    uint64_t i, size_t field)
+{
+	return (char *)chunk + i * k->size + field;
+}
+
+void *frs_chunks_run(const struct frs_chunk_kind *k, uint64_t nchunk,
+    frs_chunks_task task, void *ctx, uint64_t *count)
+{
+	struct chunks_job j = { task, ctx, calloc(nchunk, k->size) };
+	int rc;
+
+	*count = 0;
+	if (j.chunk == NULL) {
+		frs_fail("out of memory");
+		return NULL;
+	}
+	rc = frs_parallel(nchunk, 1, chunks_job, &j, NULL);
+	for (uint64_t i = 0; i < nchunk; i++) {
+		uint64_t n;
+		memcpy(&n, chunk_at(k, j.chunk, i, k->count), sizeof n);
+		*count += n;
+	}
+	if (rc < 0) {
+		frs_chunks_free(k, j.chunk, nchunk);
+		*count = 0;
+		return NULL;
+	}
+	return j.chunk;
+}
+
+void frs_chunks_free(const struct frs_chunk_kind *k, void *chunk,
+    uint64_t nchunk)
+{
+	for (uint64_t i = 0; i < nchunk; i++) {
+		void *e;
+		memcpy(&e, chunk_at(k, chunk, i, k->elems), sizeof e);
+		free(e);
+	}
+	free(chunk);
+}
+
+void *frs_elems_grow(void *e, size_t size, uint64_t need, uint64_t *cap,
+    int *failed)
+{
+	uint64_t ncap = *cap ? 2 * *cap : 1024;
+	void *ne;
+
+	if (need <= *cap)
+		return e;
+	while (ncap < need)
+		ncap *= 2;
+	ne = realloc(e, ncap * size);
+	if (ne == NULL) {
+		*failed = 1;
+		return e;
+	}
+	*cap = ncap;
+	return ne;
 }
 
 /* ---- points ------------------------------------------------------- */

@@ -48,14 +48,7 @@ int frs3_setup(struct frs3_setup *s, const struct frs_vol *vol,
 	s->mw = mat->w;
 	s->mh = mat->h;
 	s->md = mat->d;
-	s->n = n;
-	s->sigma = sigma;
-	s->seed = seed;
-	s->mean = w.mean;
-	s->max = w.max;
-	s->iscale = w.iscale;
-	s->imean = w.imean;
-	s->ns = (uint32_t)w.ns;
+	FRS_SETUP_TAKE(s, w, n, sigma, seed);
 	for (int i = 0; i < 3; i++) {
 		*size[i] = w.size[i];
 		*off[i] = w.off[i];
@@ -191,7 +184,6 @@ struct run {
 	const double *tau;
 	unsigned nsteps;
 	int count_only;
-	struct frs3_result *r;
 };
 
 struct vox {
@@ -213,21 +205,9 @@ static uint64_t elem_id(const struct frs3_setup *s, uint64_t x, uint64_t y,
 
 static int grow(struct frs3_chunk *c, uint64_t k)
 {
-	uint64_t ncap = c->cap ? 2 * c->cap : 1024;
-	struct frs3_elem *ne;
-
-	if (c->n + k <= c->cap)
-		return 0;
-	while (ncap < c->n + k)
-		ncap *= 2;
-	ne = realloc(c->e, ncap * sizeof *ne);
-	if (ne == NULL) {
-		c->failed = 1;
-		return -1;
-	}
-	c->e = ne;
-	c->cap = ncap;
-	return 0;
+	c->e = frs_elems_grow(c->e, sizeof *c->e, c->n + k, &c->cap,
+	    &c->failed);
+	return c->failed ? -1 : 0;
 }
 
 /* Test value v of element (x, y, z) against every step; keep it with the
@@ -390,16 +370,17 @@ static void vox_sorted(struct vox *vx)
 }
 
 /* Slices [z0, z1) of voxels, each its own chunk. */
-static int slices_task(void *ctx, uint64_t z0, uint64_t z1)
+static int slices_task(void *ctx, void *chunk, uint64_t z0, uint64_t z1)
 {
 	const struct run *run = ctx;
 	const struct frs3_setup *s = run->s;
+	struct frs3_chunk *c = chunk;
 	struct vox vx;
 
 	vx.run = run;
 	vx.tvalid = 0;
 	for (uint64_t vz = z0; vz < z1; vz++) {
-		vx.c = &run->r->chunk[vz];
+		vx.c = &c[vz];
 		for (uint64_t i = vz * s->ih * s->iw; i < (vz + 1) * s->ih * s->iw;
 		    i++) {
 			double imp = run->vol->v[i];
@@ -477,34 +458,28 @@ static int check(const struct frs3_setup *s, const struct frs3_prep *p,
 	return check_work(s, p, algo);
 }
 
+static const struct frs_chunk_kind chunk_kind =
+    FRS_CHUNK_KIND(struct frs3_chunk);
+
 int frs3_sample(const struct frs3_setup *s, const struct frs_vol *vol,
     const struct frs3_prep *p, enum frs_algo algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs3_result *r)
 {
 	double tau[16];
-	struct run run = { s, vol, p, algo, tau, nsteps, count_only, r };
-	int rc;
+	struct run run = { s, vol, p, algo, tau, nsteps, count_only };
 
 	memset(r, 0, sizeof *r);
 	if (check(s, p, algo, steps, nsteps, count_only, tau) < 0)
 		return -1;
-	r->nchunk = s->id;
-	r->chunk = calloc(r->nchunk, sizeof *r->chunk);
-	if (r->chunk == NULL)
-		return frs_fail("out of memory");
-	rc = frs_parallel(r->nchunk, 1, slices_task, &run, NULL);
-	for (uint64_t i = 0; i < r->nchunk; i++)
-		r->count += r->chunk[i].count;
-	if (rc < 0)
-		frs3_result_free(r);
-	return rc;
+	r->chunk = frs_chunks_run(&chunk_kind, s->id, slices_task, &run,
+	    &r->count);
+	r->nchunk = r->chunk != NULL ? s->id : 0;
+	return r->chunk != NULL ? 0 : -1;
 }
 
 void frs3_result_free(struct frs3_result *r)
 {
-	for (uint64_t i = 0; i < r->nchunk; i++)
-		free(r->chunk[i].e);
-	free(r->chunk);
+	frs_chunks_free(&chunk_kind, r->chunk, r->nchunk);
 	memset(r, 0, sizeof *r);
 }
 

@@ -94,6 +94,18 @@ struct frs_window {
 int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
     const struct frs_imap *cells, const struct frs_matrix *mat, uint64_t n,
     double sigma, uint64_t seed);
+/* What frs_setup and frs3_setup take alike from their arguments and
+ * their window w: a macro, as the two setups are of two types. */
+#define FRS_SETUP_TAKE(s, w, n_, sigma_, seed_) do {			\
+	(s)->n = (n_);							\
+	(s)->sigma = (sigma_);						\
+	(s)->seed = (seed_);						\
+	(s)->mean = (w).mean;						\
+	(s)->max = (w).max;						\
+	(s)->iscale = (w).iscale;					\
+	(s)->imean = (w).imean;						\
+	(s)->ns = (uint32_t)(w).ns;					\
+} while (0)
 /* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
@@ -212,6 +224,33 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
     const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs_result *r);
 void frs_result_free(struct frs_result *r);
+
+/*
+ * What frs_sample and frs3_sample share, whatever their element: the
+ * kind of chunk (its size, and where its element array and its count
+ * lie: offsetof), and a run over nchunk zeroed chunks, task(ctx, chunk,
+ * c0, c1) thresholding chunks [c0, c1) of the array in parallel.  The
+ * array comes back with *count the total of the chunks' counts; on
+ * failure NULL, all released, *count 0.
+ */
+struct frs_chunk_kind {
+	size_t size;
+	size_t elems, count;
+};
+#define FRS_CHUNK_KIND(type) \
+	{ sizeof(type), offsetof(type, e), offsetof(type, count) }
+typedef int (*frs_chunks_task)(void *ctx, void *chunk, uint64_t c0,
+    uint64_t c1);
+void *frs_chunks_run(const struct frs_chunk_kind *k, uint64_t nchunk,
+    frs_chunks_task task, void *ctx, uint64_t *count);
+/* Free the element arrays of the chunks and the array. */
+void frs_chunks_free(const struct frs_chunk_kind *k, void *chunk,
+    uint64_t nchunk);
+/* Room for need elements of size bytes in e, which has room for *cap:
+ * doubled from 1024 until it fits.  The array (e itself when it fits
+ * already), or e untouched and *failed set when out of memory. */
+void *frs_elems_grow(void *e, size_t size, uint64_t need, uint64_t *cap,
+    int *failed);
 
 /*
  * One step without a result: the chunks c0 .. c1 - 1 of the window (map

@@ -63,17 +63,10 @@ fail:
 
 void hswcl_free(struct hswcl *h)
 {
-	if (h->pts != NULL)
-		clReleaseMemObject(h->pts);
-	if (h->sum != NULL)
-		clReleaseMemObject(h->sum);
-	if (h->k != NULL)
-		clReleaseKernel(h->k);
-	if (h->prog != NULL)
-		clReleaseProgram(h->prog);
-	h->pts = h->sum = NULL;
-	h->k = NULL;
-	h->prog = NULL;
+	ocl_release_mem(&h->pts);
+	ocl_release_mem(&h->sum);
+	ocl_release_kernel(&h->k);
+	ocl_release_program(&h->prog);
 	h->cap = 0;
 }
 
