@@ -213,7 +213,7 @@ static void frs_sample_prog(const char *matrix, const char *args,
 /* ---- the oracle: the library's stages without api.c -------------- */
 
 /* The options as frs.h defines them, in the internal names. */
-static enum frs_algo algo_of(enum frs_algorithm a)
+static enum frs_impl algo_of(enum frs_algorithm a)
 {
 	return a == FRS_ALG_NAIVE ? FRS_NAIVE : a == FRS_ALG_STACK ? FRS_STACK :
 	    a == FRS_ALG_LEVEL1 ? FRS_LEVEL1 : a == FRS_ALG_LEVEL2 ? FRS_LEVEL2 :
@@ -225,10 +225,10 @@ static enum frs_rule rule_of(const struct frs_options *o)
 	return o->rule == FRS_RULE_THESIS ? FRS_THESIS : FRS_UNBIASED;
 }
 
-static enum frs_jitter jitter_of(const struct frs_options *o)
+static enum frs_place jitter_of(const struct frs_options *o)
 {
-	return o->jitter == FRS_JIT_HALTON ? FRS_JITTER_HALTON :
-	    o->jitter == FRS_JIT_RANDOM ? FRS_JITTER_RANDOM : FRS_JITTER_NONE;
+	return o->jitter == FRS_JIT_HALTON ? FRS_PLACE_HALTON :
+	    o->jitter == FRS_JIT_RANDOM ? FRS_PLACE_RANDOM : FRS_PLACE_CENTRE;
 }
 
 static enum frs_tiling tiling_of(const struct frs_options *o,
@@ -319,7 +319,7 @@ static struct drawn oracle_draw(const struct frs_imap *map,
     const struct frs_options *o, const uint64_t *steps, unsigned nsteps,
     uint64_t seed)
 {
-	enum frs_algo a = algo_of(o->algorithm);
+	enum frs_impl a = algo_of(o->algorithm);
 	struct frs_setup su;
 	struct frs_result r;
 	struct drawn d = { 0, NULL, NULL, NULL };
@@ -2020,7 +2020,7 @@ static int put3(void *ctx, const struct frs3_elem *e)
 static double *oracle3(const struct frs_vol *vol, const struct frs_options *o,
     const uint64_t *steps, unsigned nsteps, uint64_t seed, int pdf, size_t *n)
 {
-	enum frs_algo a = o->algorithm == FRS_ALG_NAIVE ? FRS_NAIVE : FRS_SORTED;
+	enum frs_impl a = o->algorithm == FRS_ALG_NAIVE ? FRS_NAIVE : FRS_SORTED;
 	size_t k = 3 + (size_t)pdf + (nsteps > 1);
 	struct frs3_setup su;
 	struct frs3_prep p;

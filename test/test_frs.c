@@ -52,7 +52,7 @@ static void setup_closed_form(void **state)
 }
 
 static void run(const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_matrix *m, enum frs_algo a, const uint64_t *steps,
+    const struct frs_matrix *m, enum frs_impl a, const uint64_t *steps,
     unsigned nsteps, struct frs_result *r)
 {
 	struct frs_prep p;
@@ -116,10 +116,10 @@ static void implementations_agree(void **state)
 				struct frs_result r;
 				struct frs_elem *e;
 				frs_set_threads(1 + a % 3);
-				run(&s, &map, &m, (enum frs_algo)a, &n, 1, &r);
+				run(&s, &map, &m, (enum frs_impl)a, &n, 1, &r);
 				if (r.count != ref.count)
 					print_error("%s %s n=%llu: %llu vs naive %llu\n",
-					    frs_algo_name((enum frs_algo)a), maps[mi],
+					    frs_impl_name((enum frs_impl)a), maps[mi],
 					    (unsigned long long)n,
 					    (unsigned long long)r.count,
 					    (unsigned long long)ref.count);

@@ -112,7 +112,7 @@ static void same_elems(struct frs3_result *a, struct frs3_result *b,
 }
 
 static void sample(const struct frs3_setup *s, const struct frs_vol *v,
-    const struct frs_matrix *m, enum frs_algo a, const uint64_t *steps,
+    const struct frs_matrix *m, enum frs_impl a, const uint64_t *steps,
     unsigned nsteps, struct frs3_result *r)
 {
 	struct frs3_prep p;
@@ -245,8 +245,8 @@ static void density_follows_importance(void **state)
 {
 	static const char *specs[] = { "blob3:x=0.35,y=0.6,z=0.45,sigma=0.12",
 	    "ramp3:from=0.1,to=2", "ramp3:axis=0", "shell3" };
-	static const enum frs_jitter jit[] = { FRS_JITTER_NONE,
-	    FRS_JITTER_RANDOM, FRS_JITTER_HALTON, FRS_JITTER_RANDOM };
+	static const enum frs_place jit[] = { FRS_PLACE_CENTRE,
+	    FRS_PLACE_RANDOM, FRS_PLACE_HALTON, FRS_PLACE_RANDOM };
 	struct frs_matrix m;
 	(void)state;
 
@@ -303,7 +303,7 @@ static void zero_voxels_and_jitter(void **state)
 		struct frs3_setup s;
 		struct frs3_result r;
 		assert_int_equal(frs3_setup(&s, &v, &m, n, 8.0, 9), 0);
-		s.jitter = (enum frs_jitter)j;
+		s.jitter = (enum frs_place)j;
 		sample(&s, &v, &m, FRS_SORTED, &n, 1, &r);
 		assert_true(r.count > n / 2);
 		for (uint64_t c = 0; c < r.nchunk; c++)

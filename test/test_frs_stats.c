@@ -47,7 +47,7 @@ static const struct frs_prep *prep_for(uint32_t block)
 }
 
 static void sample(const struct frs_imap *map, uint64_t n, enum frs_rule rule,
-    uint64_t seed, enum frs_algo a, struct frs_setup *s, struct frs_result *r)
+    uint64_t seed, enum frs_impl a, struct frs_setup *s, struct frs_result *r)
 {
 	struct frs_prep p;
 	assert_int_equal(frs_setup(s, map, &M, n, 8.0, seed), 0);
@@ -79,7 +79,7 @@ static void moments(const char *spec)
 
 	assert_int_equal(imap_load(spec, 128, 128, 0, &map), 0);
 	sample(&map, 100000, FRS_UNBIASED, 5, FRS_SORTED, &s, &r);
-	s.jitter = FRS_JITTER_RANDOM;
+	s.jitter = FRS_PLACE_RANDOM;
 	for (uint64_t c = 0; c < r.nchunk; c++)
 		for (uint64_t i = 0; i < r.chunk[c].n; i++) {
 			double x, y;

@@ -71,7 +71,7 @@ static void implementations_match_cpu(void **state)
 			assert_int_equal(frs_setup(&s, &map, &m, steps[nsteps - 1],
 			    mi == 3 ? 4.0 : 8.0, 11 + 3 * mi + v), 0);
 			s.rule = (mi + v) % 2 ? FRS_THESIS : FRS_UNBIASED;
-			s.jitter = (enum frs_jitter)((mi + v) % 3);
+			s.jitter = (enum frs_place)((mi + v) % 3);
 			s.tiles = v % 2 ? FRS_TILES_SHUFFLE : FRS_TILES_PLAIN;
 			b = s.ns < m.w ? s.ns : m.w;
 			b = b < frs_tile_max_block(&s) ? b : frs_tile_max_block(&s);
@@ -79,7 +79,7 @@ static void implementations_match_cpu(void **state)
 			frs_set_threads(1 + v % 2);
 			for (int a = 0; a < FRS_NALGO; a++)
 				assert_int_equal(frs_sample(&s, &map, a == FRS_SORTED ?
-				    &ps : &pm, (enum frs_algo)a, steps, nsteps, 0,
+				    &ps : &pm, (enum frs_impl)a, steps, nsteps, 0,
 				    &cpu[a]), 0);
 			for (int a = 0; a < FRSCL_NALGO; a++) {
 				struct frs_result r;

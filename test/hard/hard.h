@@ -67,7 +67,7 @@ static inline double hd_share(const struct frs_imap *m,
  */
 static inline void hd_frs(const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, uint64_t seed,
-    enum frs_algo algo, int count_only, struct frs_setup *s,
+    enum frs_impl algo, int count_only, struct frs_setup *s,
     struct frs_result *r)
 {
 	struct frs_prep p;
@@ -102,7 +102,7 @@ static inline void hd_points(struct frs_setup *s, const struct frs_imap *map,
 			uint64_t px = e->x / s->ns, py = e->y / s->ns;
 			for (int j = 0; j < 2; j++) {
 				double x, y;
-				s->jitter = j ? FRS_JITTER_RANDOM : FRS_JITTER_NONE;
+				s->jitter = j ? FRS_PLACE_RANDOM : FRS_PLACE_CENTRE;
 				frs_point(s, e, &x, &y);
 				assert_true(isfinite(x) && isfinite(y));
 				assert_true(x >= 0 && x < 1 && y >= 0 && y < 1);
@@ -114,7 +114,7 @@ static inline void hd_points(struct frs_setup *s, const struct frs_imap *map,
 			if (in != NULL)
 				in[py * map->w + px] += 1;
 		}
-	s->jitter = FRS_JITTER_NONE;
+	s->jitter = FRS_PLACE_CENTRE;
 	assert_true(k == r->count);
 }
 

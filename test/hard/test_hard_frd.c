@@ -268,7 +268,7 @@ static void all_agree(const struct frs_imap *map, const struct frs_matrix *m,
 	for (int a = 0; pow2 && a < FRS_SORTED; a++) {
 		struct frs_result r;
 		struct frs_elem *e;
-		hd_frs(map, m, n, seed, (enum frs_algo)a, 0, &s, &r);
+		hd_frs(map, m, n, seed, (enum frs_impl)a, 0, &s, &r);
 		assert_true(r.count == ref.count);
 		e = elems(&r);
 		assert_memory_equal(e, re, r.count * sizeof *e);

@@ -188,10 +188,10 @@ enum frs_rule api_rule(const struct frs_options *o)
 	return o->rule == FRS_RULE_THESIS ? FRS_THESIS : FRS_UNBIASED;
 }
 
-enum frs_jitter api_jitter(const struct frs_options *o)
+enum frs_place api_jitter(const struct frs_options *o)
 {
-	return o->jitter == FRS_JIT_HALTON ? FRS_JITTER_HALTON :
-	    o->jitter == FRS_JIT_RANDOM ? FRS_JITTER_RANDOM : FRS_JITTER_NONE;
+	return o->jitter == FRS_JIT_HALTON ? FRS_PLACE_HALTON :
+	    o->jitter == FRS_JIT_RANDOM ? FRS_PLACE_RANDOM : FRS_PLACE_CENTRE;
 }
 
 enum frs_tiling api_tiling(const struct frs_options *o,

@@ -47,7 +47,7 @@ struct frs_sampler {
 	const frs_mask *mask;
 	struct frs_imap map;
 	struct frs_options opt;
-	int algo;		/* enum frs_algo, or FRSCL_FLAT1 on a device */
+	int algo;		/* enum frs_impl, or FRSCL_FLAT1 on a device */
 	struct ocl *ocl;	/* the device of api_sampler_device, or NULL */
 };
 
@@ -82,7 +82,7 @@ int api_options(struct frs_options *o, const struct frs_options *opt,
 /* The options' rule, jitter and tiling as the setups take them; the
  * tiling automatic stands for FRS_TILING_AUTO. */
 enum frs_rule api_rule(const struct frs_options *o);
-enum frs_jitter api_jitter(const struct frs_options *o);
+enum frs_place api_jitter(const struct frs_options *o);
 enum frs_tiling api_tiling(const struct frs_options *o,
     enum frs_tiling automatic);
 /* What every run checks first: a sampler (have_s), 1 to 16 increasing
@@ -95,7 +95,7 @@ int api_run_begin(int have_s, int threads, const uint64_t *steps,
 /*
  * The programs' algorithms: an enum frs_algorithm, or API_ALG_FLAT1
  * (Flat 1, on OpenCL only).  api_algo_parse reads "naive" ... "sorted",
- * "flat1" (-1 after frs_fail); api_algo gives the enum frs_algo (or
+ * "flat1" (-1 after frs_fail); api_algo gives the enum frs_impl (or
  * FRSCL_FLAT1) that the implementations take, api_algo_name its name.
  */
 #define API_ALG_FLAT1 ((int)FRS_ALG_LEVEL2 + 1)

@@ -162,7 +162,7 @@ static int run(const void *vs, const uint64_t *steps, unsigned nsteps,
 		return rc;
 	if ((s->ocl != NULL ? frs_sample_cl(s->ocl, su, &s->map, &view,
 	    s->algo, steps, nsteps, count_only, r) : frs_sample(su, &s->map,
-	    &view, (enum frs_algo)s->algo, steps, nsteps, count_only, r)) < 0)
+	    &view, (enum frs_impl)s->algo, steps, nsteps, count_only, r)) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
 	st->u.d2.map = &s->map;
 	api_store_set(st, 2, nsteps);

@@ -22,16 +22,16 @@ static const char *const algo_names[FRS_NALGO] = {
 	"naive", "stack", "level1", "level2", "sorted"
 };
 
-const char *frs_algo_name(enum frs_algo a)
+const char *frs_impl_name(enum frs_impl a)
 {
 	return a < FRS_NALGO ? algo_names[a] : "?";
 }
 
-int frs_algo_parse(const char *s, enum frs_algo *a)
+int frs_impl_parse(const char *s, enum frs_impl *a)
 {
 	for (int i = 0; i < FRS_NALGO; i++)
 		if (strcmp(s, algo_names[i]) == 0) {
-			*a = (enum frs_algo)i;
+			*a = (enum frs_impl)i;
 			return 0;
 		}
 	return frs_fail("unknown implementation '%s' (naive, stack, "
@@ -926,7 +926,7 @@ struct run {
 	const struct frs_setup *s;
 	const struct frs_imap *map;
 	const struct frs_prep *p;
-	enum frs_algo algo;
+	enum frs_impl algo;
 	const double *tau;	/* per step */
 	unsigned nsteps;
 	int count_only;
@@ -1047,8 +1047,8 @@ unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
 	return l;
 }
 
-unsigned frs_algo_level(const struct frs_setup *s, const struct frs_prep *p,
-    enum frs_algo algo)
+unsigned frs_impl_level(const struct frs_setup *s, const struct frs_prep *p,
+    enum frs_impl algo)
 {
 	return frs_start_level(s, p, algo == FRS_LEVEL1 ? 1 :
 	    algo == FRS_LEVEL2 ? 2 : s->level0);
@@ -1063,7 +1063,7 @@ struct blk {
 static void pix_stack(struct pix *px)
 {
 	const struct run *run = px->run;
-	unsigned L = frs_algo_level(run->s, run->p, run->algo);
+	unsigned L = frs_impl_level(run->s, run->p, run->algo);
 	uint64_t b = (uint64_t)1 << L, nb = run->s->ns / b;
 	struct blk st[3 * 32 + 4];
 
@@ -1110,7 +1110,7 @@ static void level_block(struct pix *px, unsigned l, uint64_t x, uint64_t y)
 
 static void pix_level(struct pix *px)
 {
-	unsigned L = frs_algo_level(px->run->s, px->run->p, px->run->algo);
+	unsigned L = frs_impl_level(px->run->s, px->run->p, px->run->algo);
 	uint64_t b = (uint64_t)1 << L, nb = px->run->s->ns / b;
 
 	for (uint64_t by = 0; by < nb; by++)
@@ -1441,7 +1441,7 @@ uint64_t frs_nchunks(const struct frs_setup *s)
 }
 
 int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_prep *p, enum frs_algo algo, uint64_t c0, uint64_t c1,
+    const struct frs_prep *p, enum frs_impl algo, uint64_t c0, uint64_t c1,
     const uint64_t *at, struct frs_elem *store, double *xy, double *pdf,
     frs_chunk_fn fn, void *ctx)
 {
@@ -1449,11 +1449,11 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
 	struct run run = { s, map, p, algo, &tau, 1, 0, c0, at, store, NULL,
 	    NULL, fn, ctx };
 
-	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), &s->n, 1, 0,
+	if (frs_sample_check(s, p, (int)algo, frs_impl_name(algo), &s->n, 1, 0,
 	    &tau) < 0)
 		return -1;
 	/* Points in place need Sorted without jitter (take_points). */
-	if (xy != NULL && algo == FRS_SORTED && s->jitter == FRS_JITTER_NONE) {
+	if (xy != NULL && algo == FRS_SORTED && s->jitter == FRS_PLACE_CENTRE) {
 		run.xy = xy;
 		run.pdf = pdf;
 	}
@@ -1468,7 +1468,7 @@ static const struct frs_chunk_kind chunk_kind =
     FRS_CHUNK_KIND(struct frs_chunk);
 
 int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
+    const struct frs_prep *p, enum frs_impl algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs_result *r)
 {
 	double tau[16];
@@ -1476,7 +1476,7 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
 	    NULL, NULL, NULL, NULL, NULL, NULL };
 
 	memset(r, 0, sizeof *r);
-	if (frs_sample_check(s, p, (int)algo, frs_algo_name(algo), steps,
+	if (frs_sample_check(s, p, (int)algo, frs_impl_name(algo), steps,
 	    nsteps, count_only, tau) < 0)
 		return -1;
 	r->chunk = frs_chunks_run(&chunk_kind, frs_nchunks(s), result_task,
@@ -1582,10 +1582,10 @@ void frs_point(const struct frs_setup *s, const struct frs_elem *e,
 	uint64_t id = (uint64_t)e->y * s->sw + e->x;
 	double jx = 0.5, jy = 0.5;
 
-	if (s->jitter == FRS_JITTER_RANDOM) {
+	if (s->jitter == FRS_PLACE_RANDOM) {
 		jx = frs_rand01(s->seed, FRS_STREAM_JITTER, 2 * id);
 		jy = frs_rand01(s->seed, FRS_STREAM_JITTER, 2 * id + 1);
-	} else if (s->jitter == FRS_JITTER_HALTON) {
+	} else if (s->jitter == FRS_PLACE_HALTON) {
 		/* Halton (2, 3) by element, rotated by the seed
 		 * (Cranley-Patterson), so it depends on nothing but both. */
 		double rx = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX);
@@ -1604,7 +1604,7 @@ void frs_points(const struct frs_setup *s, const struct frs_elem *e,
 {
 	double sw = (double)s->sw, sh = (double)s->sh;
 
-	if (s->jitter != FRS_JITTER_NONE) {
+	if (s->jitter != FRS_PLACE_CENTRE) {
 		for (size_t i = 0; i < n; i++)
 			frs_point(s, &e[i], &xy[2 * i], &xy[2 * i + 1]);
 		return;

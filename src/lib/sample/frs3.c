@@ -180,7 +180,7 @@ struct run {
 	const struct frs3_setup *s;
 	const struct frs_vol *vol;
 	const struct frs3_prep *p;
-	enum frs_algo algo;
+	enum frs_impl algo;
 	const double *tau;
 	unsigned nsteps;
 	int count_only;
@@ -413,7 +413,7 @@ static int slices_task(void *ctx, void *chunk, uint64_t z0, uint64_t z1)
 #define FRS3_MAX_BLOCKS ((double)((uint64_t)1 << 33))
 
 static int check_work(const struct frs3_setup *s, const struct frs3_prep *p,
-    enum frs_algo algo)
+    enum frs_impl algo)
 {
 	double vox = (double)s->iw * s->ih * s->id, ns = s->ns;
 
@@ -434,7 +434,7 @@ static int check_work(const struct frs3_setup *s, const struct frs3_prep *p,
 }
 
 static int check(const struct frs3_setup *s, const struct frs3_prep *p,
-    enum frs_algo algo, const uint64_t *steps, unsigned nsteps,
+    enum frs_impl algo, const uint64_t *steps, unsigned nsteps,
     int count_only, double *tau)
 {
 	if (frs_steps_check(steps, nsteps) < 0)
@@ -449,7 +449,7 @@ static int check(const struct frs3_setup *s, const struct frs3_prep *p,
 		    (unsigned long long)s->sd);
 	if (algo != FRS_NAIVE && algo != FRS_SORTED)
 		return frs_fail("%s: 3-D sampling has naive and sorted",
-		    frs_algo_name(algo));
+		    frs_impl_name(algo));
 	if (algo == FRS_SORTED && (p->block == 0 || s->ns % p->block ||
 	    p->block > min3(s->mw, s->mh, s->md) ||
 	    (s->tiles == FRS_TILES_SHUFFLE && p->block > frs3_block(s))))
@@ -462,7 +462,7 @@ static const struct frs_chunk_kind chunk_kind =
     FRS_CHUNK_KIND(struct frs3_chunk);
 
 int frs3_sample(const struct frs3_setup *s, const struct frs_vol *vol,
-    const struct frs3_prep *p, enum frs_algo algo, const uint64_t *steps,
+    const struct frs3_prep *p, enum frs_impl algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs3_result *r)
 {
 	double tau[16];
@@ -510,9 +510,9 @@ void frs3_point(const struct frs3_setup *s, const struct frs3_elem *e,
 
 	for (int a = 0; a < 3; a++) {
 		double j = 0.5;
-		if (s->jitter == FRS_JITTER_RANDOM) {
+		if (s->jitter == FRS_PLACE_RANDOM) {
 			j = frs_rand01(s->seed, FRS_STREAM_JITTER, 3 * id + (uint64_t)a);
-		} else if (s->jitter == FRS_JITTER_HALTON) {
+		} else if (s->jitter == FRS_PLACE_HALTON) {
 			/* Halton (2, 3, 5) by element, rotated by the seed. */
 			j = num_radical_inverse(id + 1, base[a]) +
 			    frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX -

@@ -42,7 +42,7 @@ struct frs3_setup {
 	double tau;
 	uint64_t seed;
 	enum frs_rule rule;
-	enum frs_jitter jitter;
+	enum frs_place jitter;
 	enum frs_tiling tiles;	/* shuffled: 48 symmetries of a cube */
 	double iscale, imean;	/* as in struct frs_setup */
 	struct frs_xtau exact;	/* as in struct frs_setup */
@@ -97,7 +97,7 @@ struct frs3_result {
 
 /* algo: FRS_NAIVE or FRS_SORTED (p->block must fit the setup). */
 int frs3_sample(const struct frs3_setup *s, const struct frs_vol *vol,
-    const struct frs3_prep *p, enum frs_algo algo, const uint64_t *steps,
+    const struct frs3_prep *p, enum frs_impl algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs3_result *r);
 void frs3_result_free(struct frs3_result *r);
 

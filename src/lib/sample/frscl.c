@@ -20,18 +20,18 @@ const char *frscl_algo_name(int algo)
 {
 	if (algo == FRSCL_FLAT1)
 		return "flat1";
-	return frs_algo_name((enum frs_algo)algo);
+	return frs_impl_name((enum frs_impl)algo);
 }
 
 int frscl_algo_parse(const char *s, int *algo)
 {
-	enum frs_algo a;
+	enum frs_impl a;
 
 	if (strcmp(s, "flat1") == 0) {
 		*algo = FRSCL_FLAT1;
 		return 0;
 	}
-	if (frs_algo_parse(s, &a) < 0)
+	if (frs_impl_parse(s, &a) < 0)
 		return frs_fail("unknown implementation '%s' (naive, stack, "
 		    "level1, level2, sorted, flat1)", s);
 	*algo = (int)a;

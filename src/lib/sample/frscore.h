@@ -32,10 +32,14 @@
 #include "formats/frdio.h"
 #include "maps/imap.h"
 
-enum frs_algo {
+/* The implementations of Chapter 5 (the public enum frs_algorithm of
+ * frs.h maps to these in api.c; Flat 1 is the device's alone). */
+enum frs_impl {
 	FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2, FRS_SORTED, FRS_NALGO
 };
-enum frs_jitter { FRS_JITTER_NONE, FRS_JITTER_HALTON, FRS_JITTER_RANDOM };
+/* Where a sample sits inside its element: the centre, or offset by
+ * Halton or random points (frs.h's enum frs_jitter_mode, FRS_JIT_*). */
+enum frs_place { FRS_PLACE_CENTRE, FRS_PLACE_HALTON, FRS_PLACE_RANDOM };
 enum frs_rule { FRS_UNBIASED, FRS_THESIS };
 /* How a window larger than the matrix tiles it: each tile through its
  * own transform of (seed, tile) (cl/tile.cl), or the thesis's plain
@@ -54,8 +58,8 @@ struct frs_xtau {
 	unsigned passes;	/* count passes the search made */
 };
 
-const char *frs_algo_name(enum frs_algo a);
-int frs_algo_parse(const char *s, enum frs_algo *a);
+const char *frs_impl_name(enum frs_impl a);
+int frs_impl_parse(const char *s, enum frs_impl *a);
 
 struct frs_setup {
 	uint32_t iw, ih;	/* importance map */
@@ -70,7 +74,7 @@ struct frs_setup {
 	unsigned level0;	/* first minmap level: log2 min(ns, sigma) */
 	uint64_t seed;
 	enum frs_rule rule;
-	enum frs_jitter jitter;
+	enum frs_place jitter;
 	enum frs_tiling tiles;
 	/* Thresholds are T = tau * (I * iscale): iscale is a power of two, 1
 	 * unless the map's maximum lies outside [2^-900, 2^900], where tau
@@ -186,8 +190,8 @@ unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
     unsigned want);
 /* The start level of algo: Stack's (and Flat 1's) log2 min(n_s, sigma),
  * Level N's N. */
-unsigned frs_algo_level(const struct frs_setup *s, const struct frs_prep *p,
-    enum frs_algo algo);
+unsigned frs_impl_level(const struct frs_setup *s, const struct frs_prep *p,
+    enum frs_impl algo);
 
 /* One accepted window element; (x, y) window coordinates (windows of
  * 2^32 or more elements a side can only be counted). */
@@ -221,7 +225,7 @@ struct frs_result {
  * order for any thread count.
  */
 int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_prep *p, enum frs_algo algo, const uint64_t *steps,
+    const struct frs_prep *p, enum frs_impl algo, const uint64_t *steps,
     unsigned nsteps, int count_only, struct frs_result *r);
 void frs_result_free(struct frs_result *r);
 
@@ -267,7 +271,7 @@ typedef int (*frs_chunk_fn)(void *ctx, uint64_t ci, const struct frs_chunk *c);
  * + at[c - c0]), frs_points and api_pdf as they would give them, and
  * the chunk handed to fn has xy set and no elements. */
 int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
-    const struct frs_prep *p, enum frs_algo algo, uint64_t c0, uint64_t c1,
+    const struct frs_prep *p, enum frs_impl algo, uint64_t c0, uint64_t c1,
     const uint64_t *at, struct frs_elem *store, double *xy, double *pdf,
     frs_chunk_fn fn, void *ctx);
 /* The number of chunks of map pixels (about 16384 samples each). */
