@@ -165,15 +165,21 @@ noreturn void cli_usage(int status)
 	cli_exit(status);
 }
 
+/* "prog: message\n" on standard error, the message escaped. */
+static void say(const char *fmt, va_list ap)
+{
+	fprintf(stderr, "%s: ", cli_prog);
+	frs_vprint_escaped(stderr, fmt, ap);
+	fputc('\n', stderr);
+}
+
 noreturn void cli_usage_error(const char *fmt, ...)
 {
 	va_list ap;
 
-	fprintf(stderr, "%s: ", cli_prog);
 	va_start(ap, fmt);
-	frs_vprint_escaped(stderr, fmt, ap);
+	say(fmt, ap);
 	va_end(ap);
-	fputc('\n', stderr);
 	cli_usage(2);
 }
 
@@ -199,11 +205,9 @@ noreturn void cli_die(const char *fmt, ...)
 {
 	va_list ap;
 
-	fprintf(stderr, "%s: ", cli_prog);
 	va_start(ap, fmt);
-	frs_vprint_escaped(stderr, fmt, ap);
+	say(fmt, ap);
 	va_end(ap);
-	fputc('\n', stderr);
 	outfile_cleanup_all();
 	reported = 1;
 	cli_exit(1);
@@ -220,11 +224,9 @@ void cli_note(const char *fmt, ...)
 
 	if (cli.quiet)
 		return;
-	fprintf(stderr, "%s: ", cli_prog);
 	va_start(ap, fmt);
-	frs_vprint_escaped(stderr, fmt, ap);
+	say(fmt, ap);
 	va_end(ap);
-	fputc('\n', stderr);
 }
 
 int cli_getopt(int argc, char **argv, const char *shortopts,
