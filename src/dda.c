@@ -68,36 +68,9 @@ static const char usage[] =
 
 enum mode { FOURIER, DDA, DENSITY, RDF };
 
-enum {
-	OPT_FOURIER = OPT_FIRST_PRIVATE, OPT_DDA, OPT_DENSITY, OPT_RDF,
-	OPT_SIZE, OPT_APPROX, OPT_EPS, OPT_SIGMA, OPT_BIN, OPT_TORUS,
-	OPT_RMAX, OPT_BINS, OPT_PNG, OPT_RADIAL, OPT_DB, OPT_SETS,
-	OPT_SUMMARY
-};
-
-static const struct option longopts[] = {
-	{ "fourier", no_argument, NULL, OPT_FOURIER },
-	{ "dda", no_argument, NULL, OPT_DDA },
-	{ "density", no_argument, NULL, OPT_DENSITY },
-	{ "rdf", no_argument, NULL, OPT_RDF },
-	{ "importance", required_argument, NULL, 'i' },
-	{ "size-map", required_argument, NULL, 's' },
-	{ "size", required_argument, NULL, OPT_SIZE },
-	{ "approx", no_argument, NULL, OPT_APPROX },
-	{ "eps", required_argument, NULL, OPT_EPS },
-	{ "sigma", required_argument, NULL, OPT_SIGMA },
-	{ "bin", required_argument, NULL, OPT_BIN },
-	{ "torus", no_argument, NULL, OPT_TORUS },
-	{ "rmax", required_argument, NULL, OPT_RMAX },
-	{ "bins", required_argument, NULL, OPT_BINS },
-	{ "png", required_argument, NULL, OPT_PNG },
-	{ "radial", required_argument, NULL, OPT_RADIAL },
-	{ "db", required_argument, NULL, OPT_DB },
-	{ "sets", required_argument, NULL, OPT_SETS },
-	{ "summary", no_argument, NULL, OPT_SUMMARY },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "fourier dda density rdf i=importance s=size-map size approx "
+    "eps sigma bin torus rmax bins png radial db sets summary";
 
 struct opts {
 	enum mode mode;
@@ -131,8 +104,7 @@ static void parse(int argc, char **argv, struct opts *o)
 {
 	int c;
 
-	while ((c = cli_getopt(argc, argv, "i:s:" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case OPT_FOURIER: set_mode(o, FOURIER); break;
 		case OPT_DDA: set_mode(o, DDA); break;

@@ -57,22 +57,9 @@ static const char usage[] =
     "  -q, --quiet       no notes;  --progress  a progress bar\n"
     "  -h, --help        this help;  --version  the version\n";
 
-enum { OPT_GRID = OPT_FIRST_PRIVATE, OPT_SHAPES, OPT_EXACT, OPT_SETS,
-    OPT_PER_SET, OPT_GROUP, OPT_D2_ONLY, OPT_DINF_ONLY };
-
-static const struct option longopts[] = {
-	{ "class", required_argument, NULL, 'c' },
-	{ "grid", required_argument, NULL, OPT_GRID },
-	{ "shapes", required_argument, NULL, OPT_SHAPES },
-	{ "exact", no_argument, NULL, OPT_EXACT },
-	{ "d2-only", no_argument, NULL, OPT_D2_ONLY },
-	{ "dinf-only", no_argument, NULL, OPT_DINF_ONLY },
-	{ "sets", required_argument, NULL, OPT_SETS },
-	{ "per-set", no_argument, NULL, OPT_PER_SET },
-	{ "group", required_argument, NULL, OPT_GROUP },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "c=class grid shapes exact d2-only dinf-only sets per-set "
+    "group";
 
 struct run {
 	struct disc_ctx *ctx;
@@ -248,8 +235,7 @@ int main(int argc, char **argv)
 	char meth[64];
 
 	cli_init("discrepancy", usage);
-	while ((c = cli_getopt(argc, argv, "c:" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 'c':
 			if (disc_parse_class(optarg, &o.cls) < 0)

@@ -74,36 +74,10 @@ static const char usage[] =
     "      --progress      progress bar even when standard error is no tty\n"
     "  -h, --help          this help;  --version  the version\n";
 
-enum {
-	OPT_TOL = OPT_FIRST_PRIVATE, OPT_EXACT, OPT_REACH, OPT_FS, OPT_FQ,
-	OPT_CKPT, OPT_CKPT_EVERY, OPT_QUALITY, OPT_DEVICE, OPT_LIST,
-	OPT_METHOD, OPT_VAC_SIGMA, OPT_FIELD, OPT_CAP, OPT_CUTOFF, OPT_FORCE
-};
-
-static const struct option longopts[] = {
-	{ "size", required_argument, NULL, 's' },
-	{ "dims", required_argument, NULL, 'k' },
-	{ "fraction", required_argument, NULL, 'p' },
-	{ "tol", required_argument, NULL, OPT_TOL },
-	{ "exact", no_argument, NULL, OPT_EXACT },
-	{ "reach", required_argument, NULL, OPT_REACH },
-	{ "force-s", required_argument, NULL, OPT_FS },
-	{ "force-q", required_argument, NULL, OPT_FQ },
-	{ "checkpoint", required_argument, NULL, OPT_CKPT },
-	{ "checkpoint-every", required_argument, NULL, OPT_CKPT_EVERY },
-	{ "quality", required_argument, NULL, OPT_QUALITY },
-	{ "device", required_argument, NULL, OPT_DEVICE },
-	{ "list-devices", no_argument, NULL, OPT_LIST },
-	{ "method", required_argument, NULL, OPT_METHOD },
-	{ "vac-sigma", required_argument, NULL, OPT_VAC_SIGMA },
-	{ "field", required_argument, NULL, OPT_FIELD },
-	{ "reach-cap", required_argument, NULL, OPT_CAP },
-	{ "cutoff", required_argument, NULL, OPT_CUTOFF },
-	{ "force", required_argument, NULL, OPT_FORCE },
-	{ "verbose", no_argument, NULL, 'v' },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "s=size k=dims p=fraction tol exact reach force-s force-q "
+    "checkpoint checkpoint-every quality device list-devices "
+    "method vac-sigma field reach-cap cutoff force v=verbose";
 
 /* "N", "WxH" or "WxHxD"; N means a cube for k = 3. */
 static void parse_dims(const char *s, struct frdgen_params *pr)
@@ -359,8 +333,7 @@ int main(int argc, char **argv)
 
 	cli_init("frd-gen", usage);
 	frdgen_defaults(&pr);
-	while ((c = cli_getopt(argc, argv, "s:k:p:v" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 's':
 			size = optarg;
@@ -391,7 +364,7 @@ int main(int argc, char **argv)
 			pr.reach = cli_double("--reach", optarg, 0.0, 1e6);
 			mo.frd_only = mo.dbl_only = "--reach";
 			break;
-		case OPT_CAP:
+		case OPT_REACH_CAP:
 			pr.cap = cli_double("--reach-cap", optarg, 0.0, 1e6);
 			mo.frd_only = mo.dbl_only = "--reach-cap";
 			break;
@@ -410,21 +383,21 @@ int main(int argc, char **argv)
 			    "int32") ? FRDGEN_FIELD_INT32 : FRDGEN_FIELD_DOUBLE;
 			mo.frd_only = "--field";
 			break;
-		case OPT_FS:
+		case OPT_FORCE_S:
 			pr.s = cli_double("--force-s", optarg, 1e-6, 1e6);
 			mo.frd_only = mo.dbl_only = "--force-s";
 			s_set = 1;
 			break;
-		case OPT_FQ:
+		case OPT_FORCE_Q:
 			pr.q = cli_double("--force-q", optarg, 1e-3, 100.0);
 			mo.frd_only = mo.dbl_only = "--force-q";
 			q_set = 1;
 			break;
-		case OPT_CKPT:
+		case OPT_CHECKPOINT:
 			pr.checkpoint = cli_outname("--checkpoint", optarg);
 			mo.frd_only = "--checkpoint";
 			break;
-		case OPT_CKPT_EVERY:
+		case OPT_CHECKPOINT_EVERY:
 			pr.checkpoint_every = cli_double("--checkpoint-every", optarg,
 			    0.0, 1e9);
 			mo.frd_only = "--checkpoint-every";
@@ -443,7 +416,7 @@ int main(int argc, char **argv)
 		case OPT_DEVICE:
 			use_cl = cli_device(optarg, &dev);
 			break;
-		case OPT_LIST:
+		case OPT_LIST_DEVICES:
 			cli_list_devices();
 
 		case 'v':

@@ -49,23 +49,9 @@ static const char usage[] =
     "  -q, --quiet        no warnings\n"
     "  -h, --help         this help;  --version  the version\n";
 
-enum { OPT_IMPORT = OPT_FIRST_PRIVATE, OPT_RANK, OPT_BLOCKS, OPT_CHECK,
-	OPT_FOR, OPT_SIGMA };
-
-static const struct option longopts[] = {
-	{ "algo", required_argument, NULL, 'a' },
-	{ "import", required_argument, NULL, OPT_IMPORT },
-	{ "rank", no_argument, NULL, OPT_RANK },
-	{ "size", required_argument, NULL, 's' },
-	{ "blocks", required_argument, NULL, OPT_BLOCKS },
-	{ "check", no_argument, NULL, OPT_CHECK },
-	{ "for", required_argument, NULL, OPT_FOR },
-	{ "importance", required_argument, NULL, 'i' },
-	{ "sigma", required_argument, NULL, OPT_SIGMA },
-	{ "verbose", no_argument, NULL, 'v' },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "a=algo import rank s=size blocks check for i=importance "
+    "sigma v=verbose";
 
 /* A comma-separated list of up to 32 integers in [min, max] for opt. */
 static unsigned parse_list(const char *opt, const char *s, uint64_t *out,
@@ -229,8 +215,7 @@ int main(int argc, char **argv)
 	struct outfile o;
 
 	cli_init("frd-prep", usage);
-	while ((c = cli_getopt(argc, argv, "a:i:s:v" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 'a': algo = optarg; break;
 		case 's': cli_size("-s", optarg, 1u << 16, &w, &h); break;

@@ -73,36 +73,10 @@ static const char usage[] =
     "  -q, --quiet          no warnings\n"
     "  -h, --help           this help;  --version  the version\n";
 
-enum {
-	OPT_SIGMA = OPT_FIRST_PRIVATE, OPT_JITTER, OPT_PDF, OPT_PROG,
-	OPT_THRESHOLD, OPT_COUNT_ONLY, OPT_EQUIRECT, OPT_STRICT, OPT_SETS,
-	OPT_DEVICE, OPT_LIST_DEVICES, OPT_TILES, OPT_DATA_DIR, OPT_EXACT
-};
-
-static const struct option longopts[] = {
-	{ "count", required_argument, NULL, 'n' },
-	{ "importance", required_argument, NULL, 'i' },
-	{ "matrix", required_argument, NULL, 'm' },
-	{ "algo", required_argument, NULL, 'a' },
-	{ "size", required_argument, NULL, 's' },
-	{ "sigma", required_argument, NULL, OPT_SIGMA },
-	{ "jitter", required_argument, NULL, OPT_JITTER },
-	{ "pdf", no_argument, NULL, OPT_PDF },
-	{ "progressive", required_argument, NULL, OPT_PROG },
-	{ "threshold", required_argument, NULL, OPT_THRESHOLD },
-	{ "count-only", no_argument, NULL, OPT_COUNT_ONLY },
-	{ "exact-count", no_argument, NULL, OPT_EXACT },
-	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
-	{ "strict", no_argument, NULL, OPT_STRICT },
-	{ "sets", required_argument, NULL, OPT_SETS },
-	{ "device", required_argument, NULL, OPT_DEVICE },
-	{ "list-devices", no_argument, NULL, OPT_LIST_DEVICES },
-	{ "data-dir", no_argument, NULL, OPT_DATA_DIR },
-	{ "tiles", required_argument, NULL, OPT_TILES },
-	{ "verbose", no_argument, NULL, 'v' },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "n=count i=importance m=matrix a=algo s=size sigma jitter pdf "
+    "progressive threshold count-only exact-count equirect strict "
+    "sets device list-devices data-dir tiles v=verbose";
 
 static void parse_steps(struct api_sets *o, const char *s)
 {
@@ -145,8 +119,7 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 	int c, have_n = 0, exact = 0;
 	uint64_t n = 0;
 
-	while ((c = cli_getopt(argc, argv, "n:i:m:a:s:v" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 'n':
 			n = cli_u64("-n", optarg, 1, (uint64_t)1 << 40);
@@ -170,13 +143,13 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 			    optarg, api_jitter_words);
 			break;
 		case OPT_PDF: o->pdf = 1; break;
-		case OPT_PROG: parse_steps(o, optarg); break;
+		case OPT_PROGRESSIVE: parse_steps(o, optarg); break;
 		case OPT_THRESHOLD:
 			o->opt.rule = (enum frs_rule_mode)cli_choice("--threshold",
 			    optarg, api_rule_words);
 			break;
 		case OPT_COUNT_ONLY: o->count_only = 1; break;
-		case OPT_EXACT: exact = 1; break;
+		case OPT_EXACT_COUNT: exact = 1; break;
 		case OPT_TILES:
 			o->opt.tiling = (enum frs_tiling_mode)cli_choice("--tiles",
 			    optarg, api_tiling_words);

@@ -48,20 +48,9 @@ static const char usage[] =
     "  -q, --quiet          no warnings\n"
     "  -h, --help           this help;  --version  the version\n";
 
-enum { OPT_INPUT = OPT_FIRST_PRIVATE, OPT_PDF, OPT_DEVICE, OPT_LIST };
-
-static const struct option longopts[] = {
-	{ "count", required_argument, NULL, 'n' },
-	{ "importance", required_argument, NULL, 'i' },
-	{ "size", required_argument, NULL, 's' },
-	{ "input", required_argument, NULL, OPT_INPUT },
-	{ "pdf", no_argument, NULL, OPT_PDF },
-	{ "device", required_argument, NULL, OPT_DEVICE },
-	{ "list-devices", no_argument, NULL, OPT_LIST },
-	{ "verbose", no_argument, NULL, 'v' },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "n=count i=importance s=size input pdf device list-devices "
+    "v=verbose";
 
 /* --input dart: not an enum hsw_input; ref-sample's dart throwing. */
 #define INPUT_DART 100
@@ -79,8 +68,7 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 {
 	int c;
 
-	while ((c = cli_getopt(argc, argv, "n:i:s:v" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 'n':
 			o->n = cli_u64("-n", optarg, 1, (uint64_t)1 << 36);
@@ -111,7 +99,7 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		case OPT_DEVICE:
 			o->cl = cli_device(optarg, &o->cl_index);
 			break;
-		case OPT_LIST: cli_list_devices();
+		case OPT_LIST_DEVICES: cli_list_devices();
 		case 'v': o->verbose = 1; break;
 		default:
 			cli_common_only(c, optarg);

@@ -47,21 +47,8 @@ static const char usage[] =
     "Procedural specs, NAME[:PARAM=VALUE,...] (the first parameter may\n"
     "omit its name, e.g. const:0.5); maps:\n";
 
-enum {
-	OPT_EQUIRECT = OPT_FIRST_PRIVATE, OPT_FORMAT, OPT_SRGB, OPT_STRICT,
-	OPT_LOG
-};
-
-static const struct option longopts[] = {
-	{ "size", required_argument, NULL, 's' },
-	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
-	{ "format", required_argument, NULL, OPT_FORMAT },
-	{ "srgb", no_argument, NULL, OPT_SRGB },
-	{ "strict", no_argument, NULL, OPT_STRICT },
-	{ "log", no_argument, NULL, OPT_LOG },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "s=size equirect format srgb strict log";
 
 enum fmt { FMT_NONE, FMT_PNG, FMT_EXR, FMT_FRV };
 
@@ -126,8 +113,7 @@ static int parse_opts(int argc, char **argv)
 {
 	int c;
 
-	while ((c = cli_getopt(argc, argv, "s:" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 's': {
 			uint32_t sz[3];

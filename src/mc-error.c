@@ -44,21 +44,8 @@ static const char usage[] =
     "  -q, --quiet       no notes\n"
     "  -h, --help        this help;  --version  the version\n";
 
-enum {
-	OPT_SETS = OPT_FIRST_PRIVATE, OPT_GROUP, OPT_WEIGHTS, OPT_NO_PDF,
-	OPT_ENV
-};
-
-static const struct option longopts[] = {
-	{ "function", required_argument, NULL, 'f' },
-	{ "sets", required_argument, NULL, OPT_SETS },
-	{ "group", required_argument, NULL, OPT_GROUP },
-	{ "weights", no_argument, NULL, OPT_WEIGHTS },
-	{ "no-pdf", no_argument, NULL, OPT_NO_PDF },
-	{ "env", required_argument, NULL, OPT_ENV },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "f=function sets group weights no-pdf env";
 
 /* env's map, when env is requested or --env given. */
 static struct frs_imap envmap;
@@ -192,8 +179,7 @@ int main(int argc, char **argv)
 	struct outfile of;
 
 	cli_init("mc-error", usage);
-	while ((c = cli_getopt(argc, argv, "f:" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 'f': parse_functions(optarg, &mask); break;
 		case OPT_SETS: per = cli_sets(optarg); break;

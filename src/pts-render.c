@@ -58,28 +58,9 @@ static const char usage[] =
     "  -q, --quiet         no warnings\n"
     "  -h, --help          this help;  --version  the version\n";
 
-enum {
-	OPT_LOG = OPT_FIRST_PRIVATE, OPT_COLOR, OPT_SRGB, OPT_EQUIRECT,
-	OPT_FORMAT, OPT_AXES, OPT_ALPHA, OPT_SET, OPT_SETS
-};
-
-static const struct option longopts[] = {
-	{ "size", required_argument, NULL, 's' },
-	{ "radius", required_argument, NULL, 'r' },
-	{ "importance", required_argument, NULL, 'i' },
-	{ "log", no_argument, NULL, OPT_LOG },
-	{ "color", no_argument, NULL, OPT_COLOR },
-	{ "colour", no_argument, NULL, OPT_COLOR },
-	{ "srgb", no_argument, NULL, OPT_SRGB },
-	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
-	{ "format", required_argument, NULL, OPT_FORMAT },
-	{ "axes", required_argument, NULL, OPT_AXES },
-	{ "alpha", required_argument, NULL, OPT_ALPHA },
-	{ "set", required_argument, NULL, OPT_SET },
-	{ "sets", required_argument, NULL, OPT_SETS },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "s=size r=radius i=importance log color colour srgb equirect "
+    "format axes alpha set sets";
 
 enum fmt { FMT_NONE, FMT_PNG, FMT_PNM };
 
@@ -161,8 +142,7 @@ int main(int argc, char **argv)
 	size_t per = 0, first = 0, count;
 
 	cli_init("pts-render", usage);
-	while ((c = cli_getopt(argc, argv, "s:r:i:" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 's':
 			cli_size("-s", optarg, IMAP_MAX_SIDE, &w, &h);

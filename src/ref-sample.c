@@ -51,29 +51,14 @@ static const char usage[] =
     "  -q, --quiet          no notes\n"
     "  -h, --help           this help;  --version  the version\n";
 
-enum {
-	OPT_MAX_FAILURES = OPT_FIRST_PRIVATE, OPT_STRICT, OPT_EQUIRECT,
-	OPT_SETS
-};
-
 /* Most points in all the sets of one file: M * count records of 16 or
  * 24 bytes (up to 4 columns of 8 bytes elsewhere) stay far inside a
  * 64-bit file offset. */
 #define SETS_MAX_TOTAL ((uint64_t)1 << 56)
 
-static const struct option longopts[] = {
-	{ "count", required_argument, NULL, 'n' },
-	{ "dims", required_argument, NULL, 'd' },
-	{ "kind", required_argument, NULL, 'k' },
-	{ "max-failures", required_argument, NULL, OPT_MAX_FAILURES },
-	{ "importance", required_argument, NULL, 'i' },
-	{ "size", required_argument, NULL, 's' },
-	{ "strict", no_argument, NULL, OPT_STRICT },
-	{ "equirect", no_argument, NULL, OPT_EQUIRECT },
-	{ "sets", required_argument, NULL, OPT_SETS },
-	CLI_COMMON_LONGOPTS,
-	{ NULL, 0, NULL, 0 }
-};
+static const char options[] =
+    "n=count d=dims k=kind max-failures i=importance s=size "
+    "strict equirect sets";
 
 /* One set with the given seed into xy; *placed gets its size. */
 static int make_set(enum refsamp_kind kind, unsigned dims, uint64_t n,
@@ -149,8 +134,7 @@ int main(int argc, char **argv)
 	static const char *const names[] = { PTS_COL_SET };
 
 	cli_init("ref-sample", usage);
-	while ((c = cli_getopt(argc, argv, "n:d:k:i:s:" CLI_COMMON_SHORTOPTS,
-	    longopts)) != -1) {
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 'n':
 			n = cli_u64("-n", optarg, 1, REFSAMP_MAX_N);

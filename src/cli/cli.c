@@ -7,6 +7,7 @@
 #include "base/parse.h"
 #include "base/progress.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -229,14 +230,110 @@ void cli_note(const char *fmt, ...)
 	va_end(ap);
 }
 
-int cli_getopt(int argc, char **argv, const char *shortopts,
-    const struct option *longopts)
+static const struct option common_options[] = {
+	{ "help", no_argument, NULL, 'h' },
+	{ "version", no_argument, NULL, OPT_VERSION },
+	{ "output", required_argument, NULL, 'o' },
+	{ "text", no_argument, NULL, 'T' },
+	{ "seed", required_argument, NULL, 'S' },
+	{ "threads", required_argument, NULL, 'j' },
+	{ "quiet", no_argument, NULL, 'q' },
+	{ "progress", no_argument, NULL, OPT_PROGRESS }
+};
+
+#define CLI_OPTION_ROW_(id, name, has_arg) { name, has_arg, NULL, OPT_##id },
+static const struct option all_options[] = { CLI_OPTIONS(CLI_OPTION_ROW_) };
+
+#define MAX_OPTIONS 48
+
+/* Other spellings of an option: the same value, so that getopt_long does
+ * not call their common prefix ambiguous. */
+static const struct {
+	const char *name, *same;
+} spellings[] = {
+	{ "colour", "color" }
+};
+
+static int token_is(const char *tok, size_t len, const char *name)
 {
+	return strlen(name) == len && memcmp(name, tok, len) == 0;
+}
+
+/* One option of a program's list: "name" or "x=name". */
+static struct option option_entry(const char *tok, size_t len)
+{
+	const char *spelling = NULL;
+	int letter = 0;
+
+	if (len > 2 && tok[1] == '=') {
+		letter = (unsigned char)tok[0];
+		tok += 2;
+		len -= 2;
+	}
+	for (size_t i = 0; i < sizeof spellings / sizeof *spellings; i++)
+		if (token_is(tok, len, spellings[i].name)) {
+			spelling = spellings[i].name;
+			tok = spellings[i].same;
+			len = strlen(tok);
+		}
+	for (size_t i = 0; i < sizeof all_options / sizeof *all_options; i++) {
+		struct option o = all_options[i];
+
+		if (token_is(tok, len, o.name)) {
+			if (letter != 0)
+				o.val = letter;
+			if (spelling != NULL)
+				o.name = spelling;
+			return o;
+		}
+	}
+	fprintf(stderr, "%s: internal error: no option '%.*s' in CLI_OPTIONS\n",
+	    cli_prog, (int)len, tok);
+	abort();
+}
+
+/* The getopt_long table and short options of a program's list and the
+ * common options.  Made again on every call: the fuzz target runs several
+ * programs in one process. */
+static void option_table(const char *options, struct option *table,
+    char *shortopts)
+{
+	size_t n = 0, ns = 0;
+
+	for (const char *p = options; *p != '\0'; ) {
+		size_t len = strcspn(p, " ");
+
+		if (len > 0) {
+			if (n == MAX_OPTIONS)
+				abort();
+			table[n++] = option_entry(p, len);
+		}
+		p += len + (p[len] == ' ');
+	}
+	for (size_t i = 0; i < sizeof common_options / sizeof *common_options; i++)
+		table[n++] = common_options[i];
+	table[n] = (struct option){ NULL, 0, NULL, 0 };
+	for (size_t i = 0; i < n; i++) {
+		if (table[i].val >= 128 || !isalnum(table[i].val))
+			continue;
+		shortopts[ns++] = (char)table[i].val;
+		if (table[i].has_arg == required_argument)
+			shortopts[ns++] = ':';
+	}
+	shortopts[ns] = '\0';
+}
+
+int cli_getopt(int argc, char **argv, const char *options)
+{
+	static struct option table[MAX_OPTIONS + 9];
+	static char shortopts[2 * (MAX_OPTIONS + 8) + 1];
+
+	option_table(options, table, shortopts);
 	/* getopt's own messages name argv[0]: the program's name instead of
 	 * the path it was run by (or a command's name, as imap's). */
 	if (argc > 0)
 		argv[0] = (char *)cli_prog;
-	return getopt_long(argc, argv, shortopts, longopts, NULL);
+	return getopt_long(argc, argv, shortopts, table, NULL);
 }
 
 int cli_common_opt(int c, const char *arg)

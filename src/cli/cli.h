@@ -16,24 +16,105 @@
 #include "api/version.h"
 #include "base/err.h"
 
+/*
+ * Every long option of the toolchain, once: its name and whether it takes
+ * a value are the same in every program that has it (DESIGN.md's core
+ * options).  A program lists the ones it takes in a string of names in
+ * the order of its usage text, "x=name" for one that also has the short
+ * option -x:
+ *
+ *	static const char options[] = "s=size k=dims tol exact v=verbose";
+ *
+ * cli_getopt returns the letter for an option that has one, else OPT_ID
+ * (OPT_TOL, OPT_EXACT).  The common options below are in every program.
+ */
+#define CLI_OPTIONS(X) \
+	X(ALGO, "algo", required_argument) \
+	X(ALPHA, "alpha", required_argument) \
+	X(APPROX, "approx", no_argument) \
+	X(AXES, "axes", required_argument) \
+	X(BIN, "bin", required_argument) \
+	X(BINS, "bins", required_argument) \
+	X(BLOCKS, "blocks", required_argument) \
+	X(CHECK, "check", no_argument) \
+	X(CHECKPOINT, "checkpoint", required_argument) \
+	X(CHECKPOINT_EVERY, "checkpoint-every", required_argument) \
+	X(CLASS, "class", required_argument) \
+	X(COLOR, "color", no_argument) \
+	X(COUNT, "count", required_argument) \
+	X(COUNT_ONLY, "count-only", no_argument) \
+	X(CUTOFF, "cutoff", required_argument) \
+	X(D2_ONLY, "d2-only", no_argument) \
+	X(DATA_DIR, "data-dir", no_argument) \
+	X(DB, "db", required_argument) \
+	X(DDA, "dda", no_argument) \
+	X(DENSITY, "density", no_argument) \
+	X(DEVICE, "device", required_argument) \
+	X(DIMS, "dims", required_argument) \
+	X(DINF_ONLY, "dinf-only", no_argument) \
+	X(ENV, "env", required_argument) \
+	X(EPS, "eps", required_argument) \
+	X(EQUIRECT, "equirect", no_argument) \
+	X(EXACT, "exact", no_argument) \
+	X(EXACT_COUNT, "exact-count", no_argument) \
+	X(FIELD, "field", required_argument) \
+	X(FOR, "for", required_argument) \
+	X(FORCE, "force", required_argument) \
+	X(FORCE_Q, "force-q", required_argument) \
+	X(FORCE_S, "force-s", required_argument) \
+	X(FORMAT, "format", required_argument) \
+	X(FOURIER, "fourier", no_argument) \
+	X(FRACTION, "fraction", required_argument) \
+	X(FUNCTION, "function", required_argument) \
+	X(GRID, "grid", required_argument) \
+	X(GROUP, "group", required_argument) \
+	X(IMPORT, "import", required_argument) \
+	X(IMPORTANCE, "importance", required_argument) \
+	X(INPUT, "input", required_argument) \
+	X(JITTER, "jitter", required_argument) \
+	X(KIND, "kind", required_argument) \
+	X(LIST_DEVICES, "list-devices", no_argument) \
+	X(LOG, "log", no_argument) \
+	X(MATRIX, "matrix", required_argument) \
+	X(MAX_FAILURES, "max-failures", required_argument) \
+	X(METHOD, "method", required_argument) \
+	X(NO_PDF, "no-pdf", no_argument) \
+	X(PDF, "pdf", no_argument) \
+	X(PER_SET, "per-set", no_argument) \
+	X(PNG, "png", required_argument) \
+	X(PROGRESSIVE, "progressive", required_argument) \
+	X(QUALITY, "quality", required_argument) \
+	X(RADIAL, "radial", required_argument) \
+	X(RADIUS, "radius", required_argument) \
+	X(RANK, "rank", no_argument) \
+	X(RDF, "rdf", no_argument) \
+	X(REACH, "reach", required_argument) \
+	X(REACH_CAP, "reach-cap", required_argument) \
+	X(RMAX, "rmax", required_argument) \
+	X(SET, "set", required_argument) \
+	X(SETS, "sets", required_argument) \
+	X(SHAPES, "shapes", required_argument) \
+	X(SIGMA, "sigma", required_argument) \
+	X(SIZE, "size", required_argument) \
+	X(SIZE_MAP, "size-map", required_argument) \
+	X(SRGB, "srgb", no_argument) \
+	X(STRICT, "strict", no_argument) \
+	X(SUMMARY, "summary", no_argument) \
+	X(THRESHOLD, "threshold", required_argument) \
+	X(TILES, "tiles", required_argument) \
+	X(TOL, "tol", required_argument) \
+	X(TORUS, "torus", no_argument) \
+	X(VAC_SIGMA, "vac-sigma", required_argument) \
+	X(VERBOSE, "verbose", no_argument) \
+	X(WEIGHTS, "weights", no_argument)
+
+#define CLI_OPTION_ID_(id, name, has_arg) OPT_##id,
 enum {
 	OPT_VERSION = 0x1000,
 	OPT_PROGRESS,
-	OPT_FIRST_PRIVATE	/* programs number their own long options from here */
+	CLI_OPTIONS(CLI_OPTION_ID_)
+	CLI_NOPTIONS_
 };
-
-/* The long options every program has; put at the end of its table,
- * before the terminating zero entry. */
-#define CLI_COMMON_LONGOPTS \
-	{ "help", no_argument, NULL, 'h' }, \
-	{ "version", no_argument, NULL, OPT_VERSION }, \
-	{ "output", required_argument, NULL, 'o' }, \
-	{ "text", no_argument, NULL, 'T' }, \
-	{ "seed", required_argument, NULL, 'S' }, \
-	{ "threads", required_argument, NULL, 'j' }, \
-	{ "quiet", no_argument, NULL, 'q' }, \
-	{ "progress", no_argument, NULL, OPT_PROGRESS }
-#define CLI_COMMON_SHORTOPTS "ho:TS:j:q"
 
 struct cli_common {
 	const char *out;	/* -o, NULL for standard output */
@@ -49,10 +130,10 @@ extern const char *cli_prog;
 /* Set the program name and the usage text printed by -h and on usage
  * errors (its first line is the synopsis). */
 void cli_init(const char *prog, const char *usage);
-/* getopt_long, with getopt's messages naming the program as cli_init
- * did (not argv[0], a path). */
-int cli_getopt(int argc, char **argv, const char *shortopts,
-    const struct option *longopts);
+/* getopt_long over the options named (see CLI_OPTIONS) and the common
+ * ones, with getopt's messages naming the program as cli_init did (not
+ * argv[0], a path).  A name that is not in CLI_OPTIONS aborts. */
+int cli_getopt(int argc, char **argv, const char *options);
 /* Handle a common option; returns 1 if c was one. */
 int cli_common_opt(int c, const char *arg);
 /* The default of a program's option switch: a common option, else a
