@@ -4,6 +4,7 @@
 #define FRS_TEST_FRSUTIL_H
 
 #include "testutil.h"
+#include "base/num.h"
 #include "formats/frdio.h"
 #include "sample/frscore.h"
 #include "maps/imap.h"
@@ -77,11 +78,9 @@ static inline void tu_assert_permutation(const struct frs_matrix *m)
 static inline int tu_elem_cmp(const void *a, const void *b)
 {
 	const struct frs_elem *x = a, *y = b;
-	if (x->y != y->y)
-		return x->y < y->y ? -1 : 1;
-	if (x->x != y->x)
-		return x->x < y->x ? -1 : 1;
-	return (int)x->step - (int)y->step;
+
+	return x->y != y->y ? NUM_CMP(x->y, y->y) :
+	    x->x != y->x ? NUM_CMP(x->x, y->x) : NUM_CMP(x->step, y->step);
 }
 
 /* The elements of a result, 2-D (struct frs_result) or 3-D (struct

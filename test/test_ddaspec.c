@@ -496,17 +496,12 @@ static void bad_input(void **state)
 	free(a), free(zero);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(uniform_poisson),
-		cmocka_unit_test(brute_force),
-		cmocka_unit_test(ones_is_uniform),
-		cmocka_unit_test(scale_invariance),
-		cmocka_unit_test(lattice),
-		cmocka_unit_test(symmetry),
-		cmocka_unit_test(threads_order),
-		cmocka_unit_test(bad_input),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(uniform_poisson),
+	cmocka_unit_test(brute_force),
+	cmocka_unit_test(ones_is_uniform),
+	cmocka_unit_test(scale_invariance),
+	cmocka_unit_test(lattice),
+	cmocka_unit_test(symmetry),
+	cmocka_unit_test(threads_order),
+	cmocka_unit_test(bad_input))

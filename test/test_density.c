@@ -808,25 +808,20 @@ static void huge(void **state)
 	free(xy);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(lattices),
-		cmocka_unit_test(brute_force),
-		cmocka_unit_test(far_pairs),
-		cmocka_unit_test(dart),
-		cmocka_unit_test(invariance),
-		cmocka_unit_test(scales),
-		cmocka_unit_test(pair_cdf),
-		cmocka_unit_test(rdf_brute),
-		cmocka_unit_test(rdf_uniform),
-		cmocka_unit_test(rdf_grid),
-		cmocka_unit_test(errors),
-		cmocka_unit_test(brute3),
-		cmocka_unit_test(lattice3),
-		cmocka_unit_test(uniform3),
-		cmocka_unit_test(errors3),
-		cmocka_unit_test(huge),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(lattices),
+	cmocka_unit_test(brute_force),
+	cmocka_unit_test(far_pairs),
+	cmocka_unit_test(dart),
+	cmocka_unit_test(invariance),
+	cmocka_unit_test(scales),
+	cmocka_unit_test(pair_cdf),
+	cmocka_unit_test(rdf_brute),
+	cmocka_unit_test(rdf_uniform),
+	cmocka_unit_test(rdf_grid),
+	cmocka_unit_test(errors),
+	cmocka_unit_test(brute3),
+	cmocka_unit_test(lattice3),
+	cmocka_unit_test(uniform3),
+	cmocka_unit_test(errors3),
+	cmocka_unit_test(huge))

@@ -777,28 +777,23 @@ static void huge(void **state)
 	free(xy);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(orient_exact),
-		cmocka_unit_test(circle_exact),
-		cmocka_unit_test(boundary_rule),
-		cmocka_unit_test(star_warnock),
-		cmocka_unit_test(star_l2_oracle),
-		cmocka_unit_test(order_stable),
-		cmocka_unit_test(star_regular),
-		cmocka_unit_test(rect_regular),
-		cmocka_unit_test(grids_brute),
-		cmocka_unit_test(grid_converges),
-		cmocka_unit_test(star_dinf),
-		cmocka_unit_test(rect_dinf),
-		cmocka_unit_test(half_brute),
-		cmocka_unit_test(quad_shapes),
-		cmocka_unit_test(shapes_brute),
-		cmocka_unit_test(expectations),
-		cmocka_unit_test(invariants),
-		cmocka_unit_test(hard_cases),
-		cmocka_unit_test(huge),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(orient_exact),
+	cmocka_unit_test(circle_exact),
+	cmocka_unit_test(boundary_rule),
+	cmocka_unit_test(star_warnock),
+	cmocka_unit_test(star_l2_oracle),
+	cmocka_unit_test(order_stable),
+	cmocka_unit_test(star_regular),
+	cmocka_unit_test(rect_regular),
+	cmocka_unit_test(grids_brute),
+	cmocka_unit_test(grid_converges),
+	cmocka_unit_test(star_dinf),
+	cmocka_unit_test(rect_dinf),
+	cmocka_unit_test(half_brute),
+	cmocka_unit_test(quad_shapes),
+	cmocka_unit_test(shapes_brute),
+	cmocka_unit_test(expectations),
+	cmocka_unit_test(invariants),
+	cmocka_unit_test(hard_cases),
+	cmocka_unit_test(huge))

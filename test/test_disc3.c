@@ -577,23 +577,18 @@ static void limits(void **state)
 	assert_int_equal(disc3_star_grid(p, 1, DISC3_MAX_GRID + 1, 0, &r), -1);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(l2_direct),
-		cmocka_unit_test(l2_cdq_oracle),
-		cmocka_unit_test(l2_cdq_ties),
-		cmocka_unit_test(l2_two_dims),
-		cmocka_unit_test(l2_product),
-		cmocka_unit_test(expectation),
-		cmocka_unit_test(grid_brute),
-		cmocka_unit_test(grid_converges),
-		cmocka_unit_test(dinf_brute_small),
-		cmocka_unit_test(dinf_sweep_sets),
-		cmocka_unit_test(dinf_many),
-		cmocka_unit_test(invariants),
-		cmocka_unit_test(driver),
-		cmocka_unit_test(limits),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(l2_direct),
+	cmocka_unit_test(l2_cdq_oracle),
+	cmocka_unit_test(l2_cdq_ties),
+	cmocka_unit_test(l2_two_dims),
+	cmocka_unit_test(l2_product),
+	cmocka_unit_test(expectation),
+	cmocka_unit_test(grid_brute),
+	cmocka_unit_test(grid_converges),
+	cmocka_unit_test(dinf_brute_small),
+	cmocka_unit_test(dinf_sweep_sets),
+	cmocka_unit_test(dinf_many),
+	cmocka_unit_test(invariants),
+	cmocka_unit_test(driver),
+	cmocka_unit_test(limits))

@@ -362,14 +362,9 @@ static void slow_path(void **state)
 	}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(form),
-		cmocka_unit_test(nearest),
-		cmocka_unit_test(roundtrip),
-		cmocka_unit_test(shortest),
-		cmocka_unit_test(slow_path),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(form),
+	cmocka_unit_test(nearest),
+	cmocka_unit_test(roundtrip),
+	cmocka_unit_test(shortest),
+	cmocka_unit_test(slow_path))

@@ -40,11 +40,6 @@ static void messages(void **state)
 	assert_string_equal(frs_errmsg(), "na\\x0dme: problem");
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(escape),
-		cmocka_unit_test(messages),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(escape),
+	cmocka_unit_test(messages))

@@ -217,15 +217,10 @@ static void non_powers_refused(void **state)
 	assert_true(x[3] == 1.5);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(fft1_is_dft),
-		cmocka_unit_test(fft1_closed_forms),
-		cmocka_unit_test(fft1_round_trip_parseval),
-		cmocka_unit_test(fft1_stride),
-		cmocka_unit_test(fft3_is_dft),
-		cmocka_unit_test(non_powers_refused),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(fft1_is_dft),
+	cmocka_unit_test(fft1_closed_forms),
+	cmocka_unit_test(fft1_round_trip_parseval),
+	cmocka_unit_test(fft1_stride),
+	cmocka_unit_test(fft3_is_dft),
+	cmocka_unit_test(non_powers_refused))

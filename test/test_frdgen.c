@@ -416,22 +416,17 @@ static void bad_params(void **state)
 	assert_err_has("force tolerance");
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(permutations),
-		cmocka_unit_test(exact_global_minimum),
-		cmocka_unit_test(windows_and_ranks),
-		cmocka_unit_test(zero_field),
-		cmocka_unit_test(int32_field),
-		cmocka_unit_test(hard_cutoff),
-		cmocka_unit_test(rank_law),
-		cmocka_unit_test(spread),
-		cmocka_unit_test(lowpass_measure),
-		cmocka_unit_test(fft_vs_dft),
-		cmocka_unit_test(level_bounds),
-		cmocka_unit_test(checkpoint_resume),
-		cmocka_unit_test(bad_params),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(permutations),
+	cmocka_unit_test(exact_global_minimum),
+	cmocka_unit_test(windows_and_ranks),
+	cmocka_unit_test(zero_field),
+	cmocka_unit_test(int32_field),
+	cmocka_unit_test(hard_cutoff),
+	cmocka_unit_test(rank_law),
+	cmocka_unit_test(spread),
+	cmocka_unit_test(lowpass_measure),
+	cmocka_unit_test(fft_vs_dft),
+	cmocka_unit_test(level_bounds),
+	cmocka_unit_test(checkpoint_resume),
+	cmocka_unit_test(bad_params))

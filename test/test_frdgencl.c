@@ -145,15 +145,10 @@ static void refusals(void **state)
 	assert_non_null(strstr(frs_errmsg(), "share p"));
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(square_sizes),
-		cmocka_unit_test(non_square),
-		cmocka_unit_test(radii),
-		cmocka_unit_test(int32_field),
-		cmocka_unit_test(three_d),
-		cmocka_unit_test(refusals),
-	};
-	return cmocka_run_group_tests(tests, tu_ocl_setup, tu_ocl_teardown);
-}
+TU_MAIN(tu_ocl_setup, tu_ocl_teardown,
+	cmocka_unit_test(square_sizes),
+	cmocka_unit_test(non_square),
+	cmocka_unit_test(radii),
+	cmocka_unit_test(int32_field),
+	cmocka_unit_test(three_d),
+	cmocka_unit_test(refusals))

@@ -185,14 +185,9 @@ static void missing_file(void **state)
 	assert_err_has("is a directory");
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(roundtrip),
-		cmocka_unit_test(permutation_and_checksum),
-		cmocka_unit_test(malformed),
-		cmocka_unit_test(truncated_stream),
-		cmocka_unit_test(missing_file),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(roundtrip),
+	cmocka_unit_test(permutation_and_checksum),
+	cmocka_unit_test(malformed),
+	cmocka_unit_test(truncated_stream),
+	cmocka_unit_test(missing_file))

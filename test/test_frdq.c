@@ -232,14 +232,9 @@ static void refusals(void **state)
 	frd_free(&m);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(spread_brute_force),
-		cmocka_unit_test(lattice),
-		cmocka_unit_test(strata_brute_force),
-		cmocka_unit_test(spectrum_brute_force),
-		cmocka_unit_test(refusals),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(spread_brute_force),
+	cmocka_unit_test(lattice),
+	cmocka_unit_test(strata_brute_force),
+	cmocka_unit_test(spectrum_brute_force),
+	cmocka_unit_test(refusals))

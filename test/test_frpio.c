@@ -316,13 +316,8 @@ static int teardown(void **state)
 	return tu_teardown(state);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(layout_and_round_trip),
-		cmocka_unit_test(matrix_only),
-		cmocka_unit_test(damaged_files_refused),
-		cmocka_unit_test(write_refusals),
-	};
-	return cmocka_run_group_tests(tests, setup, teardown);
-}
+TU_MAIN(setup, teardown,
+	cmocka_unit_test(layout_and_round_trip),
+	cmocka_unit_test(matrix_only),
+	cmocka_unit_test(damaged_files_refused),
+	cmocka_unit_test(write_refusals))

@@ -341,16 +341,11 @@ static void progressive(void **state)
 	frd_free(&m);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(setup_closed_form),
-		cmocka_unit_test(implementations_agree),
-		cmocka_unit_test(thread_order),
-		cmocka_unit_test(progressive),
-		cmocka_unit_test(sorted_lists),
-		cmocka_unit_test(lists_below),
-		cmocka_unit_test(sorted_below),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(setup_closed_form),
+	cmocka_unit_test(implementations_agree),
+	cmocka_unit_test(thread_order),
+	cmocka_unit_test(progressive),
+	cmocka_unit_test(sorted_lists),
+	cmocka_unit_test(lists_below),
+	cmocka_unit_test(sorted_below))

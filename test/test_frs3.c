@@ -1,6 +1,7 @@
 /* 3-D Forced Random Sampling: setup against closed forms, sorted against
  * naive, and the statistics of what comes out against the volume. */
 #include "testutil.h"
+#include "base/num.h"
 #include "frsutil.h"
 #include "formats/frdio.h"
 #include "sample/frs3.h"
@@ -73,13 +74,10 @@ static void setup_closed_form(void **state)
 static int elem_cmp(const void *a, const void *b)
 {
 	const struct frs3_elem *x = a, *y = b;
-	if (x->z != y->z)
-		return x->z < y->z ? -1 : 1;
-	if (x->y != y->y)
-		return x->y < y->y ? -1 : 1;
-	if (x->x != y->x)
-		return x->x < y->x ? -1 : 1;
-	return (int)x->step - (int)y->step;
+
+	return x->z != y->z ? NUM_CMP(x->z, y->z) :
+	    x->y != y->y ? NUM_CMP(x->y, y->y) :
+	    x->x != y->x ? NUM_CMP(x->x, y->x) : NUM_CMP(x->step, y->step);
 }
 
 /* The elements of a result, sorted by position when sort is set. */
@@ -438,17 +436,12 @@ static void bad_arguments(void **state)
 	frd_free(&m);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(setup_closed_form),
-		cmocka_unit_test(sorted_agrees),
-		cmocka_unit_test(threads_same_order),
-		cmocka_unit_test(density_follows_importance),
-		cmocka_unit_test(zero_voxels_and_jitter),
-		cmocka_unit_test(extreme_importance),
-		cmocka_unit_test(huge_count),
-		cmocka_unit_test(bad_arguments),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(setup_closed_form),
+	cmocka_unit_test(sorted_agrees),
+	cmocka_unit_test(threads_same_order),
+	cmocka_unit_test(density_follows_importance),
+	cmocka_unit_test(zero_voxels_and_jitter),
+	cmocka_unit_test(extreme_importance),
+	cmocka_unit_test(huge_count),
+	cmocka_unit_test(bad_arguments))

@@ -286,15 +286,10 @@ static void uniform_density(void **state)
 	assert_true(mean >= 0.6);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(blob_moments),
-		cmocka_unit_test(env_counts),
-		cmocka_unit_test(hot_pixel),
-		cmocka_unit_test(dynamic_range),
-		cmocka_unit_test(thin_maps),
-		cmocka_unit_test(uniform_density),
-	};
-	return cmocka_run_group_tests(tests, load_matrix, free_matrix);
-}
+TU_MAIN(load_matrix, free_matrix,
+	cmocka_unit_test(blob_moments),
+	cmocka_unit_test(env_counts),
+	cmocka_unit_test(hot_pixel),
+	cmocka_unit_test(dynamic_range),
+	cmocka_unit_test(thin_maps),
+	cmocka_unit_test(uniform_density))

@@ -203,12 +203,7 @@ static void refusals(void **state)
 	frd_free(&m);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(implementations_match_cpu),
-		cmocka_unit_test(large_counts),
-		cmocka_unit_test(refusals),
-	};
-	return cmocka_run_group_tests(tests, tu_ocl_setup, teardown);
-}
+TU_MAIN(tu_ocl_setup, teardown,
+	cmocka_unit_test(implementations_match_cpu),
+	cmocka_unit_test(large_counts),
+	cmocka_unit_test(refusals))

@@ -402,11 +402,6 @@ static void setup3_as_before(void **state)
 	each_input(shape, 8, msize, 6, one3);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(setup2_as_before),
-		cmocka_unit_test(setup3_as_before),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(setup2_as_before),
+	cmocka_unit_test(setup3_as_before))

@@ -267,15 +267,10 @@ static void dd_arithmetic(void **state)
 	}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(orient_signs),
-		cmocka_unit_test(incircle_signs),
-		cmocka_unit_test(orient_mixed_scales),
-		cmocka_unit_test(incircle_mixed_scales),
-		cmocka_unit_test(boundary_splits),
-		cmocka_unit_test(dd_arithmetic),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(orient_signs),
+	cmocka_unit_test(incircle_signs),
+	cmocka_unit_test(orient_mixed_scales),
+	cmocka_unit_test(incircle_mixed_scales),
+	cmocka_unit_test(boundary_splits),
+	cmocka_unit_test(dd_arithmetic))

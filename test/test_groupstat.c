@@ -69,11 +69,6 @@ static void stats(void **state)
 	assert_near(st.mean, 2.75, 1e-15);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(grouping),
-		cmocka_unit_test(stats),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(grouping),
+	cmocka_unit_test(stats))

@@ -359,20 +359,15 @@ static void test_all_zero(void **state)
 	imap_free(&m);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_identity),
-		cmocka_unit_test(test_moments_blob),
-		cmocka_unit_test(test_moments_ramp),
-		cmocka_unit_test(test_hot_pixel),
-		cmocka_unit_test(test_zero_regions),
-		cmocka_unit_test(test_padding),
-		cmocka_unit_test(test_count_and_threads),
-		cmocka_unit_test(test_inputs),
-		cmocka_unit_test(test_input_ranges),
-		cmocka_unit_test(test_sample_chunks),
-		cmocka_unit_test(test_all_zero),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(test_identity),
+	cmocka_unit_test(test_moments_blob),
+	cmocka_unit_test(test_moments_ramp),
+	cmocka_unit_test(test_hot_pixel),
+	cmocka_unit_test(test_zero_regions),
+	cmocka_unit_test(test_padding),
+	cmocka_unit_test(test_count_and_threads),
+	cmocka_unit_test(test_inputs),
+	cmocka_unit_test(test_input_ranges),
+	cmocka_unit_test(test_sample_chunks),
+	cmocka_unit_test(test_all_zero))

@@ -201,17 +201,12 @@ static void test_no_fp64(void **state)
 	imap_free(&m);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_const),
-		cmocka_unit_test(test_blob),
-		cmocka_unit_test(test_ramp),
-		cmocka_unit_test(test_sky),
-		cmocka_unit_test(test_odd_sizes),
-		cmocka_unit_test(test_sparse),
-		cmocka_unit_test(test_in_place_chunks),
-		cmocka_unit_test(test_no_fp64),
-	};
-	return cmocka_run_group_tests(tests, setup, teardown);
-}
+TU_MAIN(setup, teardown,
+	cmocka_unit_test(test_const),
+	cmocka_unit_test(test_blob),
+	cmocka_unit_test(test_ramp),
+	cmocka_unit_test(test_sky),
+	cmocka_unit_test(test_odd_sizes),
+	cmocka_unit_test(test_sparse),
+	cmocka_unit_test(test_in_place_chunks),
+	cmocka_unit_test(test_no_fp64))

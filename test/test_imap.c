@@ -198,15 +198,10 @@ static void load(void **state)
 	imap_free(&a);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(stats),
-		cmocka_unit_test(validate),
-		cmocka_unit_test(resample_blocks),
-		cmocka_unit_test(resample_mass),
-		cmocka_unit_test(equirect),
-		cmocka_unit_test(load),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(stats),
+	cmocka_unit_test(validate),
+	cmocka_unit_test(resample_blocks),
+	cmocka_unit_test(resample_mass),
+	cmocka_unit_test(equirect),
+	cmocka_unit_test(load))

@@ -118,14 +118,9 @@ static void map_alloc(void **state)
 	unsetenv("FRS_MAX_MEM");
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(limits),
-		cmocka_unit_test(checks),
-		cmocka_unit_test(allocs),
-		cmocka_unit_test(frd_header_from_pipe),
-		cmocka_unit_test(map_alloc),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(limits),
+	cmocka_unit_test(checks),
+	cmocka_unit_test(allocs),
+	cmocka_unit_test(frd_header_from_pipe),
+	cmocka_unit_test(map_alloc))

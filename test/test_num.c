@@ -144,12 +144,7 @@ static void radical_closed_form(void **state)
 	assert_true(num_radical_inverse(0, 3) == 0.0);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(sum_cancellations),
-		cmocka_unit_test(sum_exact),
-		cmocka_unit_test(radical_closed_form),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(sum_cancellations),
+	cmocka_unit_test(sum_exact),
+	cmocka_unit_test(radical_closed_form))

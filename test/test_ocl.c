@@ -81,13 +81,8 @@ static void devices(void **state)
 	fclose(fp);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(philox_matches),
-		cmocka_unit_test(fill_is_visible),
-		cmocka_unit_test(build_failure),
-		cmocka_unit_test(devices),
-	};
-	return cmocka_run_group_tests(tests, tu_ocl_setup, tu_ocl_teardown);
-}
+TU_MAIN(tu_ocl_setup, tu_ocl_teardown,
+	cmocka_unit_test(philox_matches),
+	cmocka_unit_test(fill_is_visible),
+	cmocka_unit_test(build_failure),
+	cmocka_unit_test(devices))

@@ -134,14 +134,9 @@ static void symlinks(void **state)
 	unlink(link), unlink(target), unlink(fdlink), unlink(sink);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(commit),
-		cmocka_unit_test(abort_keeps_old),
-		cmocka_unit_test(bad_targets),
-		cmocka_unit_test(full_disk),
-		cmocka_unit_test(symlinks),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(commit),
+	cmocka_unit_test(abort_keeps_old),
+	cmocka_unit_test(bad_targets),
+	cmocka_unit_test(full_disk),
+	cmocka_unit_test(symlinks))

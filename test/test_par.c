@@ -265,15 +265,10 @@ static void progress_draws(void **state)
 	frs_set_progress(NULL, NULL);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(every_index_once),
-		cmocka_unit_test(failure_stops),
-		cmocka_unit_test(per_thread),
-		cmocka_unit_test(team_jobs),
-		cmocka_unit_test(team_per_thread),
-		cmocka_unit_test(progress_draws),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(every_index_once),
+	cmocka_unit_test(failure_stops),
+	cmocka_unit_test(per_thread),
+	cmocka_unit_test(team_jobs),
+	cmocka_unit_test(team_per_thread),
+	cmocka_unit_test(progress_draws))

@@ -80,12 +80,7 @@ static void sizes(void **state)
 	assert_int_equal(parse_size("-s", "-4", 65536, &w, &h), -1);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(ints),
-		cmocka_unit_test(doubles),
-		cmocka_unit_test(sizes),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(ints),
+	cmocka_unit_test(doubles),
+	cmocka_unit_test(sizes))

@@ -138,14 +138,9 @@ static void axes(void **state)
 	raster_free(&r);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(text_width),
-		cmocka_unit_test(text_glyphs),
-		cmocka_unit_test(curve_box),
-		cmocka_unit_test(curve_nan),
-		cmocka_unit_test(axes),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(text_width),
+	cmocka_unit_test(text_glyphs),
+	cmocka_unit_test(curve_box),
+	cmocka_unit_test(curve_nan),
+	cmocka_unit_test(axes))

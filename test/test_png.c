@@ -240,14 +240,9 @@ static void broken(void **state)
 	free(mb.b);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(grey),
-		cmocka_unit_test(colour),
-		cmocka_unit_test(srgb),
-		cmocka_unit_test(write_read),
-		cmocka_unit_test(broken),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(grey),
+	cmocka_unit_test(colour),
+	cmocka_unit_test(srgb),
+	cmocka_unit_test(write_read),
+	cmocka_unit_test(broken))

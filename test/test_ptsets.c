@@ -262,14 +262,9 @@ static void grouping(void **state)
 	free(buf);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(whole_files),
-		cmocka_unit_test(fixed_size_sets),
-		cmocka_unit_test(set_column),
-		cmocka_unit_test(dimensions),
-		cmocka_unit_test(grouping),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(whole_files),
+	cmocka_unit_test(fixed_size_sets),
+	cmocka_unit_test(set_column),
+	cmocka_unit_test(dimensions),
+	cmocka_unit_test(grouping))

@@ -474,21 +474,16 @@ static void writer_checks(void **state)
 	    -1);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(roundtrip),
-		cmocka_unit_test(names_roundtrip),
-		cmocka_unit_test(version1),
-		cmocka_unit_test(bad_names),
-		cmocka_unit_test(text_form),
-		cmocka_unit_test(text_many),
-		cmocka_unit_test(put_cols),
-		cmocka_unit_test(plain_text),
-		cmocka_unit_test(unknown_count),
-		cmocka_unit_test(bad_text),
-		cmocka_unit_test(bad_binary),
-		cmocka_unit_test(writer_checks),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(roundtrip),
+	cmocka_unit_test(names_roundtrip),
+	cmocka_unit_test(version1),
+	cmocka_unit_test(bad_names),
+	cmocka_unit_test(text_form),
+	cmocka_unit_test(text_many),
+	cmocka_unit_test(put_cols),
+	cmocka_unit_test(plain_text),
+	cmocka_unit_test(unknown_count),
+	cmocka_unit_test(bad_text),
+	cmocka_unit_test(bad_binary),
+	cmocka_unit_test(writer_checks))

@@ -467,22 +467,17 @@ static void write_errors(void **state)
 	raster_free(&r);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(coverage_exact),
-		cmocka_unit_test(disc_area),
-		cmocka_unit_test(disc_symmetric),
-		cmocka_unit_test(disc_darkest_where_drawn),
-		cmocka_unit_test(disc_clipped),
-		cmocka_unit_test(disc_colour),
-		cmocka_unit_test(background),
-		cmocka_unit_test(alloc_limits),
-		cmocka_unit_test(spacing_radius),
-		cmocka_unit_test(disc_alpha),
-		cmocka_unit_test(png_round_trip),
-		cmocka_unit_test(pnm_round_trip),
-		cmocka_unit_test(write_errors),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(coverage_exact),
+	cmocka_unit_test(disc_area),
+	cmocka_unit_test(disc_symmetric),
+	cmocka_unit_test(disc_darkest_where_drawn),
+	cmocka_unit_test(disc_clipped),
+	cmocka_unit_test(disc_colour),
+	cmocka_unit_test(background),
+	cmocka_unit_test(alloc_limits),
+	cmocka_unit_test(spacing_radius),
+	cmocka_unit_test(disc_alpha),
+	cmocka_unit_test(png_round_trip),
+	cmocka_unit_test(pnm_round_trip),
+	cmocka_unit_test(write_errors))

@@ -312,19 +312,14 @@ static void relaxed_dart(void **state)
 	free(xy2);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(halton_classical),
-		cmocka_unit_test(hammersley_classical),
-		cmocka_unit_test(sobol_classical),
-		cmocka_unit_test(sobol_scrambled_net),
-		cmocka_unit_test(strata),
-		cmocka_unit_test(dart),
-		cmocka_unit_test(random_uniform),
-		cmocka_unit_test(deterministic),
-		cmocka_unit_test(names),
-		cmocka_unit_test(relaxed_dart),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(halton_classical),
+	cmocka_unit_test(hammersley_classical),
+	cmocka_unit_test(sobol_classical),
+	cmocka_unit_test(sobol_scrambled_net),
+	cmocka_unit_test(strata),
+	cmocka_unit_test(dart),
+	cmocka_unit_test(random_uniform),
+	cmocka_unit_test(deterministic),
+	cmocka_unit_test(names),
+	cmocka_unit_test(relaxed_dart))

@@ -441,21 +441,16 @@ static void dims_api(void **state)
 	    -1);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(count_and_range),
-		cmocka_unit_test(cube_side),
-		cmocka_unit_test(regular_grid),
-		cmocka_unit_test(jittered_cells),
-		cmocka_unit_test(halton_classical),
-		cmocka_unit_test(hammersley_classical),
-		cmocka_unit_test(sobol_classical),
-		cmocka_unit_test(sobol_net),
-		cmocka_unit_test(dart),
-		cmocka_unit_test(random_uniform),
-		cmocka_unit_test(deterministic),
-		cmocka_unit_test(dims_api),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(count_and_range),
+	cmocka_unit_test(cube_side),
+	cmocka_unit_test(regular_grid),
+	cmocka_unit_test(jittered_cells),
+	cmocka_unit_test(halton_classical),
+	cmocka_unit_test(hammersley_classical),
+	cmocka_unit_test(sobol_classical),
+	cmocka_unit_test(sobol_net),
+	cmocka_unit_test(dart),
+	cmocka_unit_test(random_uniform),
+	cmocka_unit_test(deterministic),
+	cmocka_unit_test(dims_api))

@@ -82,13 +82,8 @@ static void below(void **state)
 	assert_true(frs_rng_below(&r, UINT64_MAX) < UINT64_MAX);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(known_answers),
-		cmocka_unit_test(order_independent),
-		cmocka_unit_test(uniform01),
-		cmocka_unit_test(below),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(known_answers),
+	cmocka_unit_test(order_independent),
+	cmocka_unit_test(uniform01),
+	cmocka_unit_test(below))

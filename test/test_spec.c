@@ -169,16 +169,11 @@ static void bad_specs(void **state)
 	assert_false(imap_is_spec("skyline.png"));
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(constant),
-		cmocka_unit_test(blob_means),
-		cmocka_unit_test(blob_moments),
-		cmocka_unit_test(ramp),
-		cmocka_unit_test(aniso),
-		cmocka_unit_test(sky),
-		cmocka_unit_test(bad_specs),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(constant),
+	cmocka_unit_test(blob_means),
+	cmocka_unit_test(blob_moments),
+	cmocka_unit_test(ramp),
+	cmocka_unit_test(aniso),
+	cmocka_unit_test(sky),
+	cmocka_unit_test(bad_specs))

@@ -546,19 +546,14 @@ static void png(void **state)
 	spec_img_free(&im);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(regular_grid),
-		cmocka_unit_test(regular_grid_approx_worst),
-		cmocka_unit_test(exact_naive),
-		cmocka_unit_test(approx_vs_exact),
-		cmocka_unit_test(uniform_stats),
-		cmocka_unit_test(radial_hand),
-		cmocka_unit_test(threads_and_order),
-		cmocka_unit_test(translation),
-		cmocka_unit_test(errors),
-		cmocka_unit_test(png),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(regular_grid),
+	cmocka_unit_test(regular_grid_approx_worst),
+	cmocka_unit_test(exact_naive),
+	cmocka_unit_test(approx_vs_exact),
+	cmocka_unit_test(uniform_stats),
+	cmocka_unit_test(radial_hand),
+	cmocka_unit_test(threads_and_order),
+	cmocka_unit_test(translation),
+	cmocka_unit_test(errors),
+	cmocka_unit_test(png))

@@ -442,17 +442,12 @@ static void bad_params(void **state)
 	assert_null(m.v);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(permutations),
-		cmocka_unit_test(seeds),
-		cmocka_unit_test(oracle_exact),
-		cmocka_unit_test(oracle_truncated),
-		cmocka_unit_test(initial_stable),
-		cmocka_unit_test(blue_noise),
-		cmocka_unit_test(helpers),
-		cmocka_unit_test(bad_params),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(permutations),
+	cmocka_unit_test(seeds),
+	cmocka_unit_test(oracle_exact),
+	cmocka_unit_test(oracle_truncated),
+	cmocka_unit_test(initial_stable),
+	cmocka_unit_test(blue_noise),
+	cmocka_unit_test(helpers),
+	cmocka_unit_test(bad_params))

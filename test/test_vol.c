@@ -231,14 +231,9 @@ static void loading(void **state)
 	assert_err_has("missing.frv");
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(alloc_and_view),
-		cmocka_unit_test(layout_and_round_trip),
-		cmocka_unit_test(damaged_files_refused),
-		cmocka_unit_test(validation),
-		cmocka_unit_test(loading),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(alloc_and_view),
+	cmocka_unit_test(layout_and_round_trip),
+	cmocka_unit_test(damaged_files_refused),
+	cmocka_unit_test(validation),
+	cmocka_unit_test(loading))

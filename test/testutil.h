@@ -17,6 +17,15 @@
 #include "base/err.h"
 #include "base/rng.h"
 
+/* A test program's main(): the cmocka tests given, one group with its
+ * setup and teardown (NULL for none).  cmocka prints the summary. */
+#define TU_MAIN(setup, teardown, ...) \
+	int main(void) \
+	{ \
+		const struct CMUnitTest tests[] = { __VA_ARGS__ }; \
+		return cmocka_run_group_tests(tests, setup, teardown); \
+	}
+
 /* n uniform random points, x y packed, from (seed, FRS_STREAM_TEST). */
 static inline double *tu_rnd_points(size_t n, uint64_t seed)
 {

@@ -20,6 +20,15 @@
 #include "maps/imap.h"
 #include "base/par.h"
 
+/* The group setup of the suite: the samplers on 2 threads, whatever the
+ * machine, so that the parallel paths run. */
+static inline int hd_two_threads(void **state)
+{
+	(void)state;
+	frs_set_threads(2);
+	return 0;
+}
+
 /* A w x h map with every pixel v. */
 static inline void hd_map(struct frs_imap *m, uint32_t w, uint32_t h,
     double v)

@@ -197,14 +197,9 @@ static void rdf_duplicates(void **state)
 	assert_near(dens_spacing(2), sqrt(1.0 / sqrt(3.0)), 1e-15);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(duplicates),
-		cmocka_unit_test(two_points),
-		cmocka_unit_test(torus_wrap),
-		cmocka_unit_test(scales_at_edges),
-		cmocka_unit_test(rdf_duplicates),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(duplicates),
+	cmocka_unit_test(two_points),
+	cmocka_unit_test(torus_wrap),
+	cmocka_unit_test(scales_at_edges),
+	cmocka_unit_test(rdf_duplicates))

@@ -374,14 +374,9 @@ static void regular_grids(void **state)
 	}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(single_point),
-		cmocka_unit_test(identical_points),
-		cmocka_unit_test(collinear),
-		cmocka_unit_test(on_grid_lines),
-		cmocka_unit_test(regular_grids),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+TU_MAIN(NULL, NULL,
+	cmocka_unit_test(single_point),
+	cmocka_unit_test(identical_points),
+	cmocka_unit_test(collinear),
+	cmocka_unit_test(on_grid_lines),
+	cmocka_unit_test(regular_grids))

@@ -369,15 +369,10 @@ static void large_crop(void **state)
 	frd_free(&m);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(tiny_matrices),
-		cmocka_unit_test(too_small),
-		cmocka_unit_test(tiny_prep),
-		cmocka_unit_test(tiny_frp),
-		cmocka_unit_test(tiny_sampling),
-		cmocka_unit_test(large_crop),
-	};
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(NULL, tu_teardown,
+	cmocka_unit_test(tiny_matrices),
+	cmocka_unit_test(too_small),
+	cmocka_unit_test(tiny_prep),
+	cmocka_unit_test(tiny_frp),
+	cmocka_unit_test(tiny_sampling),
+	cmocka_unit_test(large_crop))

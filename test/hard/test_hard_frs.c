@@ -597,22 +597,16 @@ static void cli_bad_maps(void **state)
 	remove(out);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(extreme_range),
-		cmocka_unit_test(single_pixel_large_map),
-		cmocka_unit_test(almost_all_tiny),
-		cmocka_unit_test(denormals),
-		cmocka_unit_test(huge_values),
-		cmocka_unit_test(huge_setup),
-		cmocka_unit_test(huge_setup_limit),
-		cmocka_unit_test(huge_counts),
-		cmocka_unit_test(zero_and_nonfinite),
-		cmocka_unit_test(negatives),
-		cmocka_unit_test(tiny_maps),
-		cmocka_unit_test(cli_bad_maps),
-	};
-	frs_set_threads(2);
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(hd_two_threads, tu_teardown,
+	cmocka_unit_test(extreme_range),
+	cmocka_unit_test(single_pixel_large_map),
+	cmocka_unit_test(almost_all_tiny),
+	cmocka_unit_test(denormals),
+	cmocka_unit_test(huge_values),
+	cmocka_unit_test(huge_setup),
+	cmocka_unit_test(huge_setup_limit),
+	cmocka_unit_test(huge_counts),
+	cmocka_unit_test(zero_and_nonfinite),
+	cmocka_unit_test(negatives),
+	cmocka_unit_test(tiny_maps),
+	cmocka_unit_test(cli_bad_maps))

@@ -381,18 +381,12 @@ static void edge_inputs(void **state)
 		}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(extreme_range),
-		cmocka_unit_test(single_pixel_large_map),
-		cmocka_unit_test(almost_all_tiny),
-		cmocka_unit_test(denormals),
-		cmocka_unit_test(huge_values),
-		cmocka_unit_test(degenerate),
-		cmocka_unit_test(tiny_maps),
-		cmocka_unit_test(edge_inputs),
-	};
-	frs_set_threads(2);
-	return cmocka_run_group_tests(tests, NULL, tu_teardown);
-}
+TU_MAIN(hd_two_threads, tu_teardown,
+	cmocka_unit_test(extreme_range),
+	cmocka_unit_test(single_pixel_large_map),
+	cmocka_unit_test(almost_all_tiny),
+	cmocka_unit_test(denormals),
+	cmocka_unit_test(huge_values),
+	cmocka_unit_test(degenerate),
+	cmocka_unit_test(tiny_maps),
+	cmocka_unit_test(edge_inputs))

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 
 #include "frd/frdgen.h"
+#include "base/num.h"
 
 static uint32_t tdist(uint32_t a, uint32_t b, uint32_t n)
 {
@@ -89,11 +90,9 @@ struct cand {
 static int cand_cmp(const void *a, const void *b)
 {
 	const struct cand *x = a, *y = b;
-	if (x->f != y->f)
-		return x->f < y->f ? -1 : 1;
-	if (x->key != y->key)
-		return x->key < y->key ? -1 : 1;
-	return x->c < y->c ? -1 : x->c > y->c;
+
+	return x->f != y->f ? NUM_CMP(x->f, y->f) :
+	    x->key != y->key ? NUM_CMP(x->key, y->key) : NUM_CMP(x->c, y->c);
 }
 
 /* Sort every free cell by (force, tie key), take the K-th, add

@@ -28,6 +28,7 @@
 #include <string.h>
 
 #include "base/err.h"
+#include "base/num.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "formats/ptsio.h"
@@ -188,9 +189,8 @@ struct key {
 static int vec_cmp(const void *a, const void *b)
 {
 	const int64_t *x = a, *y = b;
-	if (x[0] != y[0])
-		return x[0] < y[0] ? -1 : 1;
-	return (x[1] > y[1]) - (x[1] < y[1]);
+
+	return x[0] != y[0] ? NUM_CMP(x[0], y[0]) : NUM_CMP(x[1], y[1]);
 }
 
 static int key_cmp(const void *a, const void *b)

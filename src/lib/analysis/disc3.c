@@ -437,9 +437,8 @@ struct vkey {
 static int vkey_cmp(const void *a, const void *b)
 {
 	const struct vkey *p = a, *q = b;
-	if (p->v != q->v)
-		return p->v < q->v ? -1 : 1;
-	return (p->i > q->i) - (p->i < q->i);
+
+	return p->v != q->v ? NUM_CMP(p->v, q->v) : NUM_CMP(p->i, q->i);
 }
 
 /* Distinct values of coordinate c, and the rank of every point. */

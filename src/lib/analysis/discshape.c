@@ -101,11 +101,9 @@ struct cpt {
 static int cpt_cmp(const void *a, const void *b)
 {
 	const struct cpt *p = a, *q = b;
-	if (p->cell != q->cell)
-		return p->cell < q->cell ? -1 : 1;
-	if (p->y != q->y)
-		return p->y < q->y ? -1 : 1;
-	return (p->x > q->x) - (p->x < q->x);
+
+	return p->cell != q->cell ? NUM_CMP(p->cell, q->cell) :
+	    p->y != q->y ? NUM_CMP(p->y, q->y) : NUM_CMP(p->x, q->x);
 }
 
 int disc_cols_make(struct disc_cols *c, const double *xy, size_t n)

@@ -508,12 +508,7 @@ int spec_fourier_approx(const double *xy, size_t n, int par,
 	if (rc == 0)
 		rc = run_chunks((uint64_t)c.K + 1, 4, nu_cols, &c, par);
 out:
-	free(c.start);
-	free(pos);
-	free(c.u);
-	free(c.grid);
-	free(c.h);
-	free(c.dec);
+	MEM_FREE(c.start, pos, c.u, c.grid, c.h, c.dec);
 	return rc;
 }
 
@@ -521,10 +516,7 @@ out:
 
 void spec_radial_free(struct spec_radial *r)
 {
-	free(r->lo);
-	free(r->mean);
-	free(r->aniso);
-	free(r->count);
+	MEM_FREE(r->lo, r->mean, r->aniso, r->count);
 	memset(r, 0, sizeof *r);
 }
 

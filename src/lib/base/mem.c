@@ -46,6 +46,12 @@ static uint64_t physical(void)
 	return (uint64_t)pages * (uint64_t)page;
 }
 
+void mem_free_n(void *const *p, size_t n)
+{
+	for (size_t i = 0; i < n; i++)
+		free(p[i]);
+}
+
 uint64_t mem_limit(void)
 {
 	const char *s = getenv("FRS_MAX_MEM");

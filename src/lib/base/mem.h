@@ -29,6 +29,12 @@ void *mem_realloc(const char *what, void *p, uint64_t nmemb, uint64_t size);
 /* malloc for large buffers, in huge pages where available; free() frees
  * it.  No ceiling check (the caller's). */
 void *mem_big(size_t bytes);
+/* free() of every pointer named: MEM_FREE(g->a, g->b, g->c), for the
+ * teardowns of structures that hold many buffers. */
+#define MEM_FREE(...) \
+	mem_free_n((void *[]){ __VA_ARGS__ }, \
+	    sizeof((void *[]){ __VA_ARGS__ }) / sizeof(void *))
+void mem_free_n(void *const *p, size_t n);
 /* "12.5 GiB": bytes in the largest binary unit that keeps it >= 1. */
 const char *mem_human(uint64_t bytes, char buf[32]);
 

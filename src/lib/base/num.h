@@ -32,6 +32,10 @@ static inline double num_total(const struct num_sum *a)
 	return a->s + a->c;
 }
 
+/* -1, 0 or 1 as a < b, a == b or a > b: the step of a qsort comparison
+ * (a subtraction overflows, and a double's is not an int). */
+#define NUM_CMP(a, b) (((a) > (b)) - ((a) < (b)))
+
 /* The compensated sum of v[0 .. n - 1], in order. */
 double num_sum(const double *v, size_t n);
 

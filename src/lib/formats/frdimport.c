@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "formats/frdimport.h"
+#include "base/num.h"
 #include "formats/frdio.h"
 #include "base/err.h"
 #include "maps/imap.h"
@@ -20,9 +21,8 @@ struct kv {
 static int kv_cmp(const void *a, const void *b)
 {
 	const struct kv *x = a, *y = b;
-	if (x->v != y->v)
-		return x->v < y->v ? -1 : 1;
-	return x->i < y->i ? -1 : x->i > y->i;
+
+	return x->v != y->v ? NUM_CMP(x->v, y->v) : NUM_CMP(x->i, y->i);
 }
 
 int frd_rank(struct frs_matrix *m)

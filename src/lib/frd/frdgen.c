@@ -343,16 +343,8 @@ static void gen_free(struct gen *g)
 		free(g->lev[i].stamp);
 		free(g->lev[i].arg);
 	}
-	free(g->dirty[0]);
-	free(g->dirty[1]);
-	for (int i = 0; i < 3; i++)
-		free(g->ax[i]);
-	free(g->tlist);
-	free(g->changed);
-	free(g->ext);
-	free(g->zc);
-	free(g->zf);
-	free(g->fen);
+	MEM_FREE(g->dirty[0], g->dirty[1], g->ax[0], g->ax[1], g->ax[2],
+	    g->tlist, g->changed, g->ext, g->zc, g->zf, g->fen);
 	frdgen_sel_free(&g->sel);
 }
 

@@ -22,6 +22,7 @@
 #include "frd/frdgencl.h"
 #include "frd/frdgenint.h"
 #include "base/err.h"
+#include "base/mem.h"
 #include "base/progress.h"
 
 #include <math.h>
@@ -198,12 +199,7 @@ static void gen_free(struct clgen *g)
 	ocl_release_mem(&g->field);
 	ocl_release_mem(&g->tab);
 	ocl_release_mem(&g->out);
-	free(g->table);
-	free(g->cache);
-	free(g->zc);
-	free(g->fen);
-	free(g->seg);
-	free(g->outh);
+	MEM_FREE(g->table, g->cache, g->zc, g->fen, g->seg, g->outh);
 	frdgen_sel_free(&g->sel);
 }
 

@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd/frdq.h"
+#include "base/mem.h"
 #include "base/err.h"
 #include "base/fft.h"
 
@@ -289,10 +290,7 @@ static int spectral(const struct frs_matrix *m, struct frdq_level *q)
 		radial_figures(&rd, q);
 		q->spectral = 1;
 	}
-	free(img);
-	free(rd.sum);
-	free(rd.sum2);
-	free(rd.cnt);
+	MEM_FREE(img, rd.sum, rd.sum2, rd.cnt);
 	return rc;
 }
 

@@ -216,13 +216,7 @@ static int make_table(struct vac *g, double *radius)
 
 static void vac_free(struct vac *g)
 {
-	free(g->e);
-	free(g->key);
-	free(g->bit);
-	free(g->one);
-	free(g->zero);
-	free(g->tab);
-	free(g->xext);
+	MEM_FREE(g->e, g->key, g->bit, g->one, g->zero, g->tab, g->xext);
 }
 
 static int vac_init(struct vac *g, const struct vac_params *pr,

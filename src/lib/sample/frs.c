@@ -419,9 +419,7 @@ void frs_prep_free(struct frs_prep *p)
 {
 	for (unsigned l = 1; l < p->nlev; l++)
 		free(p->lev[l]);
-	free(p->sval);
-	free(p->sidx);
-	free(p->soff);
+	MEM_FREE(p->sval, p->sidx, p->soff);
 	memset(p, 0, sizeof *p);
 }
 

@@ -425,10 +425,7 @@ int refsamp_relaxed_dart(uint64_t n, uint64_t seed, uint64_t max_failures,
 	s.next = malloc(n * sizeof *s.next);
 	s.head = malloc(cells * sizeof *s.head);
 	if (s.f == NULL || s.next == NULL || s.head == NULL) {
-		free(cdf);
-		free(s.f);
-		free(s.next);
-		free(s.head);
+		MEM_FREE(cdf, s.f, s.next, s.head);
 		return frs_fail("relaxed dart: no memory for %llu points",
 		    (unsigned long long)n);
 	}
@@ -479,10 +476,7 @@ int refsamp_relaxed_dart(uint64_t n, uint64_t seed, uint64_t max_failures,
 	}
 	if (r0_out != NULL)
 		*r0_out = r0;
-	free(cdf);
-	free(s.f);
-	free(s.next);
-	free(s.head);
+	MEM_FREE(cdf, s.f, s.next, s.head);
 	return 0;
 }
 
