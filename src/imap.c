@@ -136,15 +136,9 @@ static int parse_opts(int argc, char **argv)
 			opt_log = 1;
 			break;
 		case OPT_FORMAT:
-			if (strcmp(optarg, "png") == 0)
-				opt_format = FMT_PNG;
-			else if (strcmp(optarg, "exr") == 0)
-				opt_format = FMT_EXR;
-			else if (strcmp(optarg, "frv") == 0)
-				opt_format = FMT_FRV;
-			else
-				cli_usage_error("--format: '%s' is not png, exr or "
-				    "frv", optarg);
+			opt_format = (enum fmt)(FMT_PNG + cli_choice("--format",
+			    optarg, (const char *const[]){ "png", "exr", "frv",
+			    NULL }));
 			break;
 		default:
 			cli_common_only(c, optarg);

@@ -181,13 +181,8 @@ int main(int argc, char **argv)
 			per = cli_sets(optarg);
 			break;
 		case OPT_FORMAT:
-			if (strcmp(optarg, "png") == 0)
-				format = FMT_PNG;
-			else if (strcmp(optarg, "pnm") == 0)
-				format = FMT_PNM;
-			else
-				cli_usage_error("--format: '%s' is not png or pnm",
-				    optarg);
+			format = (enum fmt)(FMT_PNG + cli_choice("--format",
+			    optarg, (const char *const[]){ "png", "pnm", NULL }));
 			break;
 		default:
 			cli_common_only(c, optarg);

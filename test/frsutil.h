@@ -7,6 +7,7 @@
 #include "base/num.h"
 #include "formats/frdio.h"
 #include "sample/frscore.h"
+#include "sample/frs3.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "base/rng.h"
@@ -84,13 +85,51 @@ static inline int tu_elem_cmp(const void *a, const void *b)
 }
 
 /* The elements of a result, 2-D (struct frs_result) or 3-D (struct
- * frs3_result), into e (room for r->count), in their order. */
-#define TU_GATHER(e, r) do {						\
+ * frs3_result), into out (room for r->count), in their order. */
+#define TU_GATHER(out, r) do {						\
 	uint64_t k_ = 0;						\
 	for (uint64_t c_ = 0; c_ < (r)->nchunk; c_++)			\
 		for (uint64_t i_ = 0; i_ < (r)->chunk[c_].n; i_++)	\
-			(e)[k_++] = (r)->chunk[c_].e[i_];		\
+			(out)[k_++] = (r)->chunk[c_].e[i_];		\
 	assert_true(k_ == (r)->count);					\
+} while (0)
+
+/* 3-D elements by position: z, y, x, then step. */
+static inline int tu_elem3_cmp(const void *a, const void *b)
+{
+	const struct frs3_elem *x = a, *y = b;
+
+	return x->z != y->z ? NUM_CMP(x->z, y->z) :
+	    x->y != y->y ? NUM_CMP(x->y, y->y) :
+	    x->x != y->x ? NUM_CMP(x->x, y->x) : NUM_CMP(x->step, y->step);
+}
+
+static inline void tu_sort_elems(void *e, uint64_t n, size_t size,
+    int (*cmp)(const void *, const void *))
+{
+	if (cmp != NULL)
+		qsort(e, (size_t)n, size, cmp);
+}
+
+/* All elements of a result, 2-D or 3-D, in a new array e: in their
+ * order (cmp NULL), or sorted by cmp. */
+#define TU_ELEMS(e, r, cmp) do {					\
+	(e) = malloc(((r)->count + 1) * sizeof *(e));			\
+	assert_non_null(e);						\
+	TU_GATHER(e, r);						\
+	tu_sort_elems(e, (r)->count, sizeof *(e), cmp);			\
+} while (0)
+
+/* Results a and b, 2-D or 3-D with elements of type T, hold the same
+ * elements: in the same order (cmp NULL), or in any order. */
+#define TU_SAME_ELEMS(T, a, b, cmp) do {				\
+	T *ea_, *eb_;							\
+	assert_true((a)->count == (b)->count);				\
+	TU_ELEMS(ea_, a, cmp);						\
+	TU_ELEMS(eb_, b, cmp);						\
+	assert_memory_equal(ea_, eb_, (a)->count * sizeof *ea_);	\
+	free(ea_);							\
+	free(eb_);							\
 } while (0)
 
 /* All elements of a result in one array: in their order, or sorted by
@@ -98,12 +137,9 @@ static inline int tu_elem_cmp(const void *a, const void *b)
 static inline struct frs_elem *tu_elems(const struct frs_result *r,
     int sorted)
 {
-	struct frs_elem *e = malloc((r->count + 1) * sizeof *e);
+	struct frs_elem *e;
 
-	assert_non_null(e);
-	TU_GATHER(e, r);
-	if (sorted)
-		qsort(e, r->count, sizeof *e, tu_elem_cmp);
+	TU_ELEMS(e, r, sorted ? tu_elem_cmp : NULL);
 	return e;
 }
 
@@ -111,14 +147,7 @@ static inline struct frs_elem *tu_elems(const struct frs_result *r,
 static inline void tu_same_set(const struct frs_result *a,
     const struct frs_result *b)
 {
-	struct frs_elem *ea, *eb;
-
-	assert_true(a->count == b->count);
-	ea = tu_elems(a, 1);
-	eb = tu_elems(b, 1);
-	assert_memory_equal(ea, eb, a->count * sizeof *ea);
-	free(ea);
-	free(eb);
+	TU_SAME_ELEMS(struct frs_elem, a, b, tu_elem_cmp);
 }
 
 #endif

@@ -71,40 +71,12 @@ static void setup_closed_form(void **state)
 	vol_free(&v);
 }
 
-static int elem_cmp(const void *a, const void *b)
-{
-	const struct frs3_elem *x = a, *y = b;
-
-	return x->z != y->z ? NUM_CMP(x->z, y->z) :
-	    x->y != y->y ? NUM_CMP(x->y, y->y) :
-	    x->x != y->x ? NUM_CMP(x->x, y->x) : NUM_CMP(x->step, y->step);
-}
-
-/* The elements of a result, sorted by position when sort is set. */
-static struct frs3_elem *flatten(const struct frs3_result *r, int sort)
-{
-	struct frs3_elem *e = malloc((r->count + 1) * sizeof *e);
-
-	assert_non_null(e);
-	TU_GATHER(e, r);
-	if (sort)
-		qsort(e, r->count, sizeof *e, elem_cmp);
-	return e;
-}
-
 /* Two results hold the same elements (in the same order unless sort);
  * both are released. */
 static void same_elems(struct frs3_result *a, struct frs3_result *b,
     int sort)
 {
-	struct frs3_elem *ea, *eb;
-
-	assert_true(a->count == b->count);
-	ea = flatten(a, sort);
-	eb = flatten(b, sort);
-	assert_memory_equal(ea, eb, a->count * sizeof *ea);
-	free(ea);
-	free(eb);
+	TU_SAME_ELEMS(struct frs3_elem, a, b, sort ? tu_elem3_cmp : NULL);
 	frs3_result_free(a);
 	frs3_result_free(b);
 }
@@ -343,7 +315,7 @@ static void extreme_importance(void **state)
 		assert_int_equal(frs3_setup(&s, &v, &m, n, 8.0, 2), 0);
 		assert_true(isfinite(s.tau) && s.tau > 0.0);
 		sample(&s, &v, &m, FRS_SORTED, &n, 1, &r);
-		e = flatten(&r, 1);
+		TU_ELEMS(e, &r, tu_elem3_cmp);
 		if (k == 0) {
 			ref = e;
 			cref = r.count;

@@ -23,18 +23,13 @@ static void commit(void **state)
 {
 	struct outfile o;
 	const char *p = tu_path("c.txt");
-	size_t n;
-	unsigned char *b;
 	(void)state;
 
 	assert_int_equal(outfile_open(&o, p, 0), 0);
 	assert_true(access(p, F_OK) != 0);	/* not there before commit */
 	fputs("hello\n", o.fp);
 	assert_int_equal(outfile_commit(&o), 0);
-	b = tu_read(p, &n);
-	assert_int_equal(n, 6);
-	assert_memory_equal(b, "hello\n", 6);
-	free(b);
+	tu_assert_file_is(p, "hello\n");
 	assert_int_equal(count_entries(tu_dir()), 1);
 	unlink(p);
 }
@@ -43,18 +38,13 @@ static void abort_keeps_old(void **state)
 {
 	struct outfile o;
 	const char *p = tu_path("old.txt");
-	size_t n;
-	unsigned char *b;
 	(void)state;
 
 	tu_write(p, "old", 3);
 	assert_int_equal(outfile_open(&o, p, 1), 0);
 	fputs("half of the new conte", o.fp);
 	outfile_abort(&o);
-	b = tu_read(p, &n);
-	assert_int_equal(n, 3);
-	assert_memory_equal(b, "old", 3);
-	free(b);
+	tu_assert_file_is(p, "old");
 	assert_int_equal(count_entries(tu_dir()), 1);
 	unlink(p);
 }
@@ -99,8 +89,6 @@ static void symlinks(void **state)
 	const char *fdlink = tu_path("fd.txt"), *sink = tu_path("sink.txt");
 	char via[64];
 	struct stat st;
-	size_t n;
-	unsigned char *b;
 	FILE *fp;
 	(void)state;
 
@@ -111,10 +99,7 @@ static void symlinks(void **state)
 	assert_int_equal(outfile_commit(&o), 0);
 	assert_int_equal(lstat(link, &st), 0);
 	assert_true(S_ISLNK(st.st_mode));
-	b = tu_read(target, &n);
-	assert_int_equal(n, 4);
-	assert_memory_equal(b, "new\n", 4);
-	free(b);
+	tu_assert_file_is(target, "new\n");
 
 	/* a link to an open file descriptor: the bytes reach that file */
 	fp = fopen(sink, "wb");
@@ -127,10 +112,7 @@ static void symlinks(void **state)
 	assert_int_equal(lstat(fdlink, &st), 0);
 	assert_true(S_ISLNK(st.st_mode));
 	fclose(fp);
-	b = tu_read(sink, &n);
-	assert_int_equal(n, 8);
-	assert_memory_equal(b, "through\n", 8);
-	free(b);
+	tu_assert_file_is(sink, "through\n");
 	unlink(link), unlink(target), unlink(fdlink), unlink(sink);
 }
 

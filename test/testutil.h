@@ -128,6 +128,17 @@ static inline unsigned char *tu_read(const char *path, size_t *n)
 	return b;
 }
 
+/* The file at path holds exactly the string s. */
+static inline void tu_assert_file_is(const char *path, const char *s)
+{
+	size_t n;
+	unsigned char *b = tu_read(path, &n);
+
+	assert_int_equal(n, strlen(s));
+	assert_memory_equal(b, s, n);
+	free(b);
+}
+
 /* The last error message contains all the given fragments. */
 #define assert_err_has(...) tu_err_has(__FILE__, __LINE__, __VA_ARGS__, NULL)
 static inline void tu_err_has(const char *file, int line, ...)

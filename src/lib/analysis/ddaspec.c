@@ -71,17 +71,6 @@ static double scale(const struct dda *d, size_t i)
 	return d->f != NULL ? d->f[i] : 1.0;
 }
 
-static int run_chunks(uint64_t n, uint64_t chunk,
-    int (*fn)(void *, uint64_t, uint64_t), void *ctx, int par)
-{
-	if (par)
-		return frs_parallel(n, chunk, fn, ctx, NULL);
-	for (uint64_t b = 0; b < n; b += chunk)
-		if (fn(ctx, b, b + chunk < n ? b + chunk : n) < 0)
-			return -1;
-	return 0;
-}
-
 /* 1-D weights (3) around u (pixel units from the centre pixel), as
  * integers summing to 2^s; returns the first tap k (w[0] is tap k) and
  * the tap count in *len.  The Gaussian is evaluated from the nearest tap
@@ -420,7 +409,7 @@ int dda_add(const double *xy, size_t n, const double *f, double eps,
 	bound = (uint64_t)n * (uint64_t)(n - 1);
 	if (n > UINT32_MAX || bitlen(bound) > 62 - 2 * WBITS) {
 		d.splat = 0;
-		if (run_chunks(n, PT_CHUNK, pairs_chunk, &d, par) < 0)
+		if (frs_parallel_if(par, n, PT_CHUNK, pairs_chunk, &d) < 0)
 			goto out;
 		bound = atomic_load(&d.pairs);
 		atomic_store(&d.pairs, 0);
@@ -462,7 +451,7 @@ int dda_add(const double *xy, size_t n, const double *f, double eps,
 		sl->wy = (int64_t *)((char *)sl->scratch + 2 * tb);
 	}
 	d.splat = 1;
-	if (run_chunks(n, PT_CHUNK, pairs_chunk, &d, par) < 0)
+	if (frs_parallel_if(par, n, PT_CHUNK, pairs_chunk, &d) < 0)
 		goto out;
 
 	ecount = edge_counts(&d, h, ru);
@@ -472,7 +461,7 @@ int dda_add(const double *xy, size_t n, const double *f, double eps,
 	d.acc = acc;
 	/* (4) with E = (ecount(p) + ecount(mirror p)) / 2 */
 	d.k = ldexp(1.0, 1 - 2 * d.s) / ((nn - 1.0) * (h * ru) * (h * ru));
-	rc = run_chunks(side, ROW_CHUNK, norm_chunk, &d, par);
+	rc = frs_parallel_if(par, side, ROW_CHUNK, norm_chunk, &d);
 out:
 	if (d.slots != NULL)
 		for (int k = 0; k < d.nslots; k++) {

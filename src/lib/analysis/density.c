@@ -335,18 +335,6 @@ static void search(struct visit *v, size_t s)
 	}
 }
 
-/* Run fn over [0, n) in chunks of CHUNK, on threads when par. */
-static int run_chunks(uint64_t n, int (*fn)(void *, uint64_t, uint64_t),
-    void *ctx, int par)
-{
-	if (par)
-		return frs_parallel(n, CHUNK, fn, ctx, NULL);
-	for (uint64_t b = 0; b < n; b += CHUNK)
-		if (fn(ctx, b, b + CHUNK < n ? b + CHUNK : n) < 0)
-			return -1;
-	return 0;
-}
-
 /* dens_min_distance's and dens_min_distance3's arguments. */
 static int min_args(size_t n, const double *dmin)
 {
@@ -372,7 +360,7 @@ static int min_chunks(size_t n, int (*fn)(void *, uint64_t, uint64_t),
 		return frs_fail("no memory for %zu chunks", nchunks);
 	for (size_t c = 0; c < nchunks; c++)
 		(*best)[c] = start;
-	rc = run_chunks(n, fn, job, par);
+	rc = frs_parallel_if(par, n, CHUNK, fn, job);
 	for (size_t c = 0; rc == 0 && c < nchunks; c++)
 		m = (*best)[c] < m ? (*best)[c] : m;
 	free(*best);
@@ -750,7 +738,7 @@ int dens_rdf_add(const double *xy, size_t n, const double *f, int torus,
 	}
 	for (size_t k = 0; k < nbins; k++)
 		atomic_init(&j.count[k], 0);
-	rc = run_chunks(n, rdf_chunk, &j, par);
+	rc = frs_parallel_if(par, n, CHUNK, rdf_chunk, &j);
 	grid_free(&gr);
 	if (rc == 0) {
 		npairs = (double)n * (double)(n - 1) / 2;

@@ -245,11 +245,25 @@ static double max_of(const double *v, size_t k)
 	return m;
 }
 
+/* The grid bins of the points, new: b[i] of x_i, b[n + i] of y_i; NULL
+ * when out of memory. */
+static uint32_t *bin_points(const double *xy, size_t n, uint32_t s,
+    uint32_t (*bin)(double, uint32_t))
+{
+	uint32_t *b = malloc(2 * n * sizeof *b);
+
+	for (size_t i = 0; b != NULL && i < n; i++) {
+		b[i] = bin(xy[2 * i], s);
+		b[n + i] = bin(xy[2 * i + 1], s);
+	}
+	return b;
+}
+
 int disc_star_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
     double *dinf)
 {
 	struct sgrid c = { .s = s, .n = (double)n, .chunk = 256 };
-	uint32_t *kx = malloc(2 * n * sizeof *kx), *ky;
+	uint32_t *kx = bin_points(xy, n, s, disc_star_bin), *ky;
 	double *g = malloc(((size_t)s + 1) * sizeof *g);
 	size_t nch = (s + c.chunk - 1) / c.chunk;
 	int rc = -1;
@@ -260,10 +274,6 @@ int disc_star_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
 		return frs_fail("no memory for a %u grid", s);
 	}
 	ky = kx + n;
-	for (size_t i = 0; i < n; i++) {
-		kx[i] = disc_star_bin(xy[2 * i], s);
-		ky[i] = disc_star_bin(xy[2 * i + 1], s);
-	}
 	for (uint32_t i = 0; i <= s; i++)
 		g[i] = disc_star_line(i, s);
 	c.kx = kx, c.g = g;
@@ -377,7 +387,7 @@ int disc_rect_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
     double *dinf)
 {
 	struct rgrid c = { .s = s, .n = n };
-	uint32_t *bx = malloc(2 * n * sizeof *bx), *by;
+	uint32_t *bx = bin_points(xy, n, s, disc_rect_bin), *by;
 	double *g = malloc((size_t)s * sizeof *g);
 	int rc = -1;
 
@@ -387,10 +397,6 @@ int disc_rect_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
 		return frs_fail("no memory for a %u grid", s);
 	}
 	by = bx + n;
-	for (size_t i = 0; i < n; i++) {
-		bx[i] = disc_rect_bin(xy[2 * i], s);
-		by[i] = disc_rect_bin(xy[2 * i + 1], s);
-	}
 	for (uint32_t a = 0; a < s; a++)
 		g[a] = disc_rect_line(a, s);
 	c.bx = bx, c.g = g;

@@ -33,10 +33,7 @@ int disc_run_chunks(uint64_t n, uint64_t chunk,
 			progress_end(disc_pr);
 		return rc;
 	}
-	for (uint64_t b = 0; b < n; b += chunk)
-		if (fn(ctx, b, b + chunk < n ? b + chunk : n) < 0)
-			return -1;
-	return 0;
+	return frs_parallel_if(0, n, chunk, fn, ctx);
 }
 
 /* ---- sorting -------------------------------------------------------- */

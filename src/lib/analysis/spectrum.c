@@ -46,18 +46,6 @@ void spec_img_free(struct spec_img *im)
 	im->v = NULL;
 }
 
-/* fn over [0, n) in chunks: on the threads with par, else in order. */
-static int run_chunks(uint64_t n, uint64_t chunk,
-    int (*fn)(void *, uint64_t, uint64_t), void *ctx, int par)
-{
-	if (par)
-		return frs_parallel(n, chunk, fn, ctx, NULL);
-	for (uint64_t b = 0; b < n; b += chunk)
-		if (fn(ctx, b, n - b < chunk ? n : b + chunk) < 0)
-			return -1;
-	return 0;
-}
-
 static int check_input(const double *xy, size_t n,
     const struct spec_img *im, const char *what)
 {
@@ -293,12 +281,12 @@ int spec_fourier_exact(const double *xy, size_t n, int par,
 		c.n0 = n0;
 		c.nb = n - n0 < EX_NB ? n - n0 : EX_NB;
 		c.first = n0 == 0;
-		rc = run_chunks(c.nb, EX_PTS, exact_factors, &c, par);
+		rc = frs_parallel_if(par, c.nb, EX_PTS, exact_factors, &c);
 		if (rc == 0)
-			rc = run_chunks(c.mp, 2, exact_gemm, &c, par);
+			rc = frs_parallel_if(par, c.mp, 2, exact_gemm, &c);
 	}
 	if (rc == 0)
-		rc = run_chunks(c.rows, 16, exact_pixels, &c, par);
+		rc = frs_parallel_if(par, c.rows, 16, exact_pixels, &c);
 out:
 	free(c.xp);
 	free(c.yp);
@@ -502,11 +490,11 @@ int spec_fourier_approx(const double *xy, size_t n, int par,
 		c.dec[k] = exp(2.0 * PI * PI * c.s2 * t * t) /
 		    sqrt(2.0 * PI * c.s2);
 	}
-	rc = run_chunks(c.N, NU_STRIP, nu_spread, &c, par);
+	rc = frs_parallel_if(par, c.N, NU_STRIP, nu_spread, &c);
 	if (rc == 0)
-		rc = run_chunks(c.N / 2, 8, nu_rows, &c, par);
+		rc = frs_parallel_if(par, c.N / 2, 8, nu_rows, &c);
 	if (rc == 0)
-		rc = run_chunks((uint64_t)c.K + 1, 4, nu_cols, &c, par);
+		rc = frs_parallel_if(par, (uint64_t)c.K + 1, 4, nu_cols, &c);
 out:
 	MEM_FREE(c.start, pos, c.u, c.grid, c.h, c.dec);
 	return rc;

@@ -115,6 +115,20 @@ int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len)
 	return 0;
 }
 
+int io_read_path(const char *path,
+    int (*read)(FILE *fp, const char *name, void *obj), void *obj)
+{
+	const char *name;
+	FILE *fp = io_open_in(path, &name);
+	int rc;
+
+	if (fp == NULL)
+		return -1;
+	rc = read(fp, name, obj);
+	io_close_in(fp);
+	return rc;
+}
+
 int io_slurp_path(const char *path, const char **name, unsigned char **buf,
     size_t *len)
 {

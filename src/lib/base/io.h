@@ -24,6 +24,10 @@ int io_read_header(FILE *fp, const char *name, const unsigned char *pre,
     size_t npre, unsigned char *buf, size_t n);
 /* Read everything (for formats that need random access, e.g. EXR). */
 int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len);
+/* Open path ("-": standard input), read(fp, name for messages, obj),
+ * close it: read's result, or -1 when path does not open. */
+int io_read_path(const char *path,
+    int (*read)(FILE *fp, const char *name, void *obj), void *obj);
 /* Open path ("-": standard input), read it whole, close it. */
 int io_slurp_path(const char *path, const char **name, unsigned char **buf,
     size_t *len);

@@ -93,6 +93,17 @@ static void *worker(void *arg)
 	return NULL;
 }
 
+int frs_parallel_if(int par, uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx)
+{
+	if (par)
+		return frs_parallel(n, chunk, fn, ctx, NULL);
+	for (uint64_t b = 0; b < n; b += chunk)
+		if (fn(ctx, b, n - b < chunk ? n : b + chunk) < 0)
+			return -1;
+	return 0;
+}
+
 int frs_parallel(uint64_t n, uint64_t chunk,
     int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx,
     struct progress *pr)

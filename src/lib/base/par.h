@@ -22,6 +22,11 @@ int frs_threads(void);
 int frs_parallel(uint64_t n, uint64_t chunk,
     int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx,
     struct progress *pr);
+/* frs_parallel when par is set; else the same chunks, in order, on the
+ * calling thread (the analyses' results do not depend on par, their
+ * order of work does). */
+int frs_parallel_if(int par, uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx);
 
 /*
  * A team of threads kept spinning between many tiny parallel steps (one

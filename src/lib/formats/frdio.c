@@ -155,17 +155,14 @@ fail:
 	return -1;
 }
 
+static int read_matrix(FILE *fp, const char *name, void *m)
+{
+	return frd_read_fp(fp, name, m);
+}
+
 int frd_read(const char *path, struct frs_matrix *m)
 {
-	const char *name;
-	FILE *fp = io_open_in(path, &name);
-	int rc;
-
-	if (fp == NULL)
-		return -1;
-	rc = frd_read_fp(fp, name, m);
-	io_close_in(fp);
-	return rc;
+	return io_read_path(path, read_matrix, m);
 }
 
 int frd_peek_dims(const char *path)

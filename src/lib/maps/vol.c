@@ -83,8 +83,9 @@ static int read_header(FILE *fp, const char *name, uint32_t sz[3])
 	return 0;
 }
 
-static int read_fp(FILE *fp, const char *name, struct frs_vol *m)
+static int read_fp(FILE *fp, const char *name, void *vol)
 {
+	struct frs_vol *m = vol;
 	uint32_t sz[3] = { 0, 0, 0 };
 	unsigned char buf[4096];
 	uint64_t n, i = 0;
@@ -118,15 +119,7 @@ static int read_fp(FILE *fp, const char *name, struct frs_vol *m)
 
 int vol_read(const char *path, struct frs_vol *m)
 {
-	const char *name;
-	FILE *fp = io_open_in(path, &name);
-	int rc;
-
-	if (fp == NULL)
-		return -1;
-	rc = read_fp(fp, name, m);
-	io_close_in(fp);
-	return rc;
+	return io_read_path(path, read_fp, m);
 }
 
 int vol_write(FILE *fp, const char *name, const struct frs_vol *m)
