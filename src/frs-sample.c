@@ -8,6 +8,7 @@
 
 #include "api/api.h"
 #include "cli/cli.h"
+#include "cli/setsreport.h"
 #include "base/datadir.h"
 #include "base/mem.h"
 #include "formats/frdio.h"
@@ -266,7 +267,7 @@ int main(int argc, char **argv)
 	if (api_sets_write(&o, &run) < 0)
 		cli_die_lib();
 	if (o.verbose)
-		api_sets_report(stderr, &o, &run);
+		cli_sets_report(stderr, &o, &run);
 	api_sets_close(&run);
 	return 0;
 }

@@ -316,9 +316,6 @@ int api_sets_open(const struct api_sets *a, struct api_sets_run *run);
 /* Draw the sets and write them (--count-only: their counts, a line
  * each).  0; -1 after frs_fail. */
 int api_sets_write(const struct api_sets *a, struct api_sets_run *run);
-/* frs-sample -v's report of them to fp. */
-void api_sets_report(FILE *fp, const struct api_sets *a,
-    const struct api_sets_run *run);
 void api_sets_close(struct api_sets_run *run);
 
 #endif

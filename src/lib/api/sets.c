@@ -2,8 +2,8 @@
  * frs-sample's work (frs-sample(1)): the matrix, map or volume and
  * device loaded, set 0's setup, then M sets through the draws' callback
  * form (frs_draw_each, api_draw3_each) into one points file: x, y [, z]
- * [, pdf] [, step + 1] [, set].  The program keeps the options, the
- * warnings that name them and the -v report.
+ * [, pdf] [, step + 1] [, set].  The program keeps the options and the
+ * warnings that name them; its -v report is src/cli/setsreport.c.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
@@ -174,75 +174,6 @@ static void warn(const struct api_sets_run *r)
 		    "%ux%ux%u matrix as it is", (unsigned long long)t->sw,
 		    (unsigned long long)t->sh, (unsigned long long)t->sd, t->mw,
 		    t->mh, t->md);
-}
-
-/* -v: set 0's setup. */
-static void report_setup(FILE *fp, const struct api_sets *o,
-    const struct api_sets_run *r)
-{
-	const struct frs_setup *s = &r->s0;
-	const struct frs3_setup *t = &r->s3;
-
-	if (r->dims == 2)
-		fprintf(fp, "frs-sample: matrix %s %ux%u, map %ux%u, mean "
-		    "%.6g, max %.6g\nfrs-sample: n %llu, sigma %g, n_s %u, "
-		    "window %llux%llu at (%llu, %llu), tau %.9g, start level "
-		    "%u\n", o->matrix, s->mw, s->mh, s->iw, s->ih, s->mean,
-		    s->max, (unsigned long long)s->n, s->sigma, s->ns,
-		    (unsigned long long)s->sw, (unsigned long long)s->sh,
-		    (unsigned long long)s->wx, (unsigned long long)s->wy, s->tau,
-		    s->level0);
-	else
-		fprintf(fp, "frs-sample: matrix %s %ux%ux%u, volume "
-		    "%ux%ux%u, mean %.6g, max %.6g\nfrs-sample: n %llu, sigma "
-		    "%g, n_s %u, window %llux%llux%llu at (%llu, %llu, %llu), "
-		    "tau %.9g\n", o->matrix, t->mw, t->mh, t->md, t->iw, t->ih,
-		    t->id, t->mean, t->max, (unsigned long long)t->n, t->sigma,
-		    t->ns, (unsigned long long)t->sw, (unsigned long long)t->sh,
-		    (unsigned long long)t->sd, (unsigned long long)t->wx,
-		    (unsigned long long)t->wy, (unsigned long long)t->wz, t->tau);
-	if (o->opt.rule == FRS_RULE_EXACT)
-		fprintf(fp, "frs-sample: --exact-count: tau %.9g instead of "
-		    "%.9g after %u count passes\n", r->dims == 2 ? s->tau : t->tau,
-		    r->tau0, r->dims == 2 ? s->exact.passes : t->exact.passes);
-}
-
-void api_sets_report(FILE *fp, const struct api_sets *o,
-    const struct api_sets_run *r)
-{
-	uint64_t tx = 0, ty = 0;
-	uint64_t nt = r->dims == 2 ? frs_tiles(&r->s0, &tx, &ty) : 0;
-
-	report_setup(fp, o, r);
-	if (r->dims == 2 && r->made != 0)
-		fprintf(fp, "frs-sample: %s has no sorted lists of blocks of "
-		    "%u: made them here (frd-prep -a sorted --for N makes a .frp "
-		    "that has them)\n", r->made_in, r->made);
-	if (r->dims == 2)
-		fprintf(fp, "frs-sample: %llu tiles (%llux%llu), %s",
-		    (unsigned long long)nt, (unsigned long long)tx,
-		    (unsigned long long)ty, r->s0.tiles == FRS_TILES_PLAIN ?
-		    "plain" : "shuffled");
-	if (r->dims == 2 && r->reused >= 0.0)
-		fprintf(fp, "; %.1f %% of the samples show a matrix element "
-		    "that another one shows too", 100.0 * r->reused);
-	if (r->dims == 2)
-		fputc('\n', fp);
-	if (r->dims == 2 && o->sets > 1)
-		fprintf(fp, "frs-sample: %llu sets, seeds %llu to %llu\n",
-		    (unsigned long long)o->sets, (unsigned long long)o->seed,
-		    (unsigned long long)(o->seed + o->sets - 1));
-	fprintf(fp, "frs-sample: %llu samples (%s); setup %.6f s, "
-	    "thresholding %.6f s, output %.6f s", (unsigned long long)r->total,
-	    api_algo_name(o->alg), r->tsetup, r->tthr, r->tout);
-	if (r->tnote > 0.0)
-		fprintf(fp, " (and %.6f s for -v's share)", r->tnote);
-	fputc('\n', fp);
-	if (r->device != NULL)
-		fprintf(fp, "frs-sample: OpenCL device %s: build %.6f s, "
-		    "to the device %.6f s, kernels %.6f s, back and offsets "
-		    "%.6f s\n", r->device, r->ct.build, r->ct.upload,
-		    r->ct.kernel, r->ct.download);
 }
 
 /* The mask, its note (a stale twin .frp) as a warning. */
