@@ -68,10 +68,6 @@ static const char usage[] =
 
 enum mode { FOURIER, DDA, DENSITY, RDF };
 
-static const char options[] =
-    "fourier dda density rdf i=importance s=size-map size approx "
-    "eps sigma bin torus rmax bins png radial db sets summary";
-
 struct opts {
 	enum mode mode;
 	int nmodes, approx, torus, have_size, have_bin, summary;
@@ -99,6 +95,11 @@ static void parse_db(struct opts *o, const char *s)
 	    !isfinite(o->lo_db) || !isfinite(o->hi_db))
 		cli_usage_error("--db: '%s' is not LO:HI with LO < HI", s);
 }
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "fourier dda density rdf i=importance s=size-map size approx "
+    "eps sigma bin torus rmax bins png radial db sets summary";
 
 static void parse(int argc, char **argv, struct opts *o)
 {

@@ -57,10 +57,6 @@ static const char usage[] =
     "  -q, --quiet       no notes;  --progress  a progress bar\n"
     "  -h, --help        this help;  --version  the version\n";
 
-static const char options[] =
-    "c=class grid shapes exact d2-only dinf-only sets per-set "
-    "group";
-
 struct run {
 	struct disc_ctx *ctx;
 	const struct pt_set *sets;
@@ -218,6 +214,11 @@ static void only_checks(const struct disc_opts *o, int have_grid)
 		cli_usage_error("--dinf-only: --exact with --grid is the exact "
 		    "D2, which --dinf-only leaves out; drop --exact");
 }
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "c=class grid shapes exact d2-only dinf-only sets per-set "
+    "group";
 
 int main(int argc, char **argv)
 {

@@ -74,11 +74,6 @@ static const char usage[] =
     "      --progress      progress bar even when standard error is no tty\n"
     "  -h, --help          this help;  --version  the version\n";
 
-static const char options[] =
-    "s=size k=dims p=fraction tol exact reach force-s force-q "
-    "checkpoint checkpoint-every quality device list-devices "
-    "method vac-sigma field reach-cap cutoff force v=verbose";
-
 /* "N", "WxH" or "WxHxD"; N means a cube for k = 3. */
 static void parse_dims(const char *s, struct frdgen_params *pr)
 {
@@ -240,9 +235,6 @@ static int parse_choice(const char *opt, const char *s, const char *a,
 	return cli_choice(opt, s, w);
 }
 
-
-
-
 /* Options of the other method or field are refused, not silently
  * ignored. */
 static void check_method(const struct method_opts *mo,
@@ -318,6 +310,12 @@ static int run_vac(const struct frdgen_params *pr,
 	frd_free(&m);
 	return 0;
 }
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "s=size k=dims p=fraction tol exact reach force-s force-q "
+    "checkpoint checkpoint-every quality device list-devices "
+    "method vac-sigma field reach-cap cutoff force v=verbose";
 
 int main(int argc, char **argv)
 {

@@ -49,10 +49,6 @@ static const char usage[] =
     "  -q, --quiet        no warnings\n"
     "  -h, --help         this help;  --version  the version\n";
 
-static const char options[] =
-    "a=algo import rank s=size blocks check for i=importance "
-    "sigma v=verbose";
-
 /* A comma-separated list of up to 32 integers in [min, max] for opt. */
 static unsigned parse_list(const char *opt, const char *s, uint64_t *out,
     long long min, long long max)
@@ -202,6 +198,11 @@ static const char *import_fix(void)
 		return " (--rank turns any values into ranks)";
 	return "";
 }
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "a=algo import rank s=size blocks check for i=importance "
+    "sigma v=verbose";
 
 int main(int argc, char **argv)
 {

@@ -74,11 +74,6 @@ static const char usage[] =
     "  -q, --quiet          no warnings\n"
     "  -h, --help           this help;  --version  the version\n";
 
-static const char options[] =
-    "n=count i=importance m=matrix a=algo s=size sigma jitter pdf "
-    "progressive threshold count-only exact-count equirect strict "
-    "sets device list-devices data-dir tiles v=verbose";
-
 static void parse_steps(struct api_sets *o, const char *s)
 {
 	char buf[512], *tok, *save = NULL;
@@ -114,6 +109,12 @@ static noreturn void print_data_dir(void)
 		cli_die("<stdout>: write error");
 	exit(0);
 }
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "n=count i=importance m=matrix a=algo s=size sigma jitter pdf "
+    "progressive threshold count-only exact-count equirect strict "
+    "sets device list-devices data-dir tiles v=verbose";
 
 static void parse_opts(int argc, char **argv, struct api_sets *o)
 {

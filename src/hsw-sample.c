@@ -48,10 +48,6 @@ static const char usage[] =
     "  -q, --quiet          no warnings\n"
     "  -h, --help           this help;  --version  the version\n";
 
-static const char options[] =
-    "n=count i=importance s=size input pdf device list-devices "
-    "v=verbose";
-
 /* --input dart: not an enum hsw_input; ref-sample's dart throwing. */
 #define INPUT_DART 100
 
@@ -63,6 +59,11 @@ struct opts {
 	uint32_t w, h;
 	int cl, cl_index;	/* --device: OpenCL, and which (-1: first) */
 };
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "n=count i=importance s=size input pdf device list-devices "
+    "v=verbose";
 
 static void parse_opts(int argc, char **argv, struct opts *o)
 {

@@ -47,9 +47,6 @@ static const char usage[] =
     "Procedural specs, NAME[:PARAM=VALUE,...] (the first parameter may\n"
     "omit its name, e.g. const:0.5); maps:\n";
 
-static const char options[] =
-    "s=size equirect format srgb strict log";
-
 enum fmt { FMT_NONE, FMT_PNG, FMT_EXR, FMT_FRV };
 
 static uint32_t opt_w, opt_h, opt_d;
@@ -108,6 +105,10 @@ static void write_map(const char *path, struct frs_imap *m)
 	cli_out_commit(&o, f == FMT_PNG ? imap_write_png16(o.fp, o.name, m) :
 	    imap_write_exr(o.fp, o.name, m));
 }
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "s=size equirect format srgb strict log";
 
 static int parse_opts(int argc, char **argv)
 {

@@ -44,9 +44,6 @@ static const char usage[] =
     "  -q, --quiet       no notes\n"
     "  -h, --help        this help;  --version  the version\n";
 
-static const char options[] =
-    "f=function sets group weights no-pdf env";
-
 /* env's map, when env is requested or --env given. */
 static struct frs_imap envmap;
 
@@ -166,6 +163,10 @@ static void load_env(const char *src, unsigned mask)
 	if (imap_load(src, 0, 0, 0, &envmap) < 0)
 		cli_die_lib();
 }
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "f=function sets group weights no-pdf env";
 
 int main(int argc, char **argv)
 {

@@ -59,10 +59,6 @@ static const char usage[] =
     "  -q, --quiet         no warnings\n"
     "  -h, --help          this help;  --version  the version\n";
 
-static const char options[] =
-    "s=size r=radius i=importance log color colour srgb equirect "
-    "format axes alpha set sets";
-
 enum fmt { FMT_NONE, FMT_PNG, FMT_PNM };
 
 static int is_stdin(const char *path)
@@ -123,6 +119,11 @@ static void pick_set(const struct frs_points *p, const char *name,
 	cli_die("%s: --set %llu: the file has %zu sets of %zu points", name,
 	    (unsigned long long)set, k, per);
 }
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "s=size r=radius i=importance log color colour srgb equirect "
+    "format axes alpha set sets";
 
 int main(int argc, char **argv)
 {

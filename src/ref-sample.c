@@ -56,10 +56,6 @@ static const char usage[] =
  * 64-bit file offset. */
 #define SETS_MAX_TOTAL ((uint64_t)1 << 56)
 
-static const char options[] =
-    "n=count d=dims k=kind max-failures i=importance s=size "
-    "strict equirect sets";
-
 /* One set with the given seed into xy; *placed gets its size. */
 static int make_set(enum refsamp_kind kind, unsigned dims, uint64_t n,
     uint64_t seed, uint64_t maxf, const struct frs_imap *map, double *xy,
@@ -115,6 +111,11 @@ static void note_grid(enum refsamp_kind kind, unsigned dims, uint64_t n,
 		    "to %llu", refsamp_name(kind), (unsigned long long)count,
 		    s, s, (unsigned long long)n);
 }
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "n=count d=dims k=kind max-failures i=importance s=size "
+    "strict equirect sets";
 
 int main(int argc, char **argv)
 {

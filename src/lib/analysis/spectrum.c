@@ -259,15 +259,11 @@ int spec_fourier_exact(const double *xy, size_t n, int par,
 
 	if (check_input(xy, n, im, "exact Fourier spectrum") < 0)
 		return -1;
-	memset(&c, 0, sizeof c);
-	c.xy = xy;
-	c.K = im->half;
-	c.rows = 2 * (size_t)c.K + 1;
+	c = (struct exact){ .xy = xy, .K = im->half, .im = im,
+	    .inv_n = 1.0 / (double)n, .rows = 2 * (size_t)im->half + 1 };
 	c.mp = (c.rows + MR - 1) / MR;
 	c.np = (c.rows + NR - 1) / NR;
 	c.ldg = c.np * NR;
-	c.inv_n = 1.0 / (double)n;
-	c.im = im;
 	nbmax = n < EX_NB ? n : EX_NB;
 	c.xp = malloc(c.mp * MR * nbmax * sizeof *c.xp);
 	c.yp = malloc(c.np * NR * nbmax * sizeof *c.yp);
@@ -436,11 +432,8 @@ int spec_fourier_approx(const double *xy, size_t n, int par,
 
 	if (check_input(xy, n, im, "approximate Fourier spectrum") < 0)
 		return -1;
-	memset(&c, 0, sizeof c);
-	c.n = n;
-	c.K = im->half;
-	c.im = im;
-	c.inv_n = 1.0 / (double)n;
+	c = (struct nufft){ .n = n, .K = im->half, .im = im,
+	    .inv_n = 1.0 / (double)n };
 	for (c.N = 16; c.N < 4 * (size_t)c.K || c.N < 4 * NU_W; c.N *= 2)
 		;
 	rho = (double)c.K / (double)c.N;

@@ -447,8 +447,11 @@ int vac_run(const struct vac_params *pr, struct frs_matrix *out,
 	vac_describe(pr, params, sizeof params);
 	if (frd_alloc(out, pr->dims, pr->w, pr->h, pr->d, params) < 0)
 		return -1;
-	if (vac_init(&g, pr, &radius) < 0)
-		goto fail;
+	if (vac_init(&g, pr, &radius) < 0) {
+		vac_free(&g);
+		frd_free(out);
+		return -1;
+	}
 	ones = vac_ones(g.n);
 	/* The output holds the initial cells first, the ranks after. */
 	vac_initial_cells(pr, out->v);
@@ -471,8 +474,4 @@ int vac_run(const struct vac_params *pr, struct frs_matrix *out,
 	}
 	vac_free(&g);
 	return 0;
-fail:
-	vac_free(&g);
-	frd_free(out);
-	return -1;
 }
