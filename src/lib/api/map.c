@@ -151,8 +151,8 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
 	if (rc != FRS_OK)
 		return rc;
 	if (dims == 2 && (*s2 = malloc(sizeof **s2)) != NULL)
-		**s2 = (struct frs_sampler){ mask, map, o, api_algo(o.algorithm),
-		    NULL };
+		**s2 = (struct frs_sampler){ mask, map, o,
+		    api_algo((int)o.algorithm), NULL };
 	else if (dims == 3 && (*s3 = malloc(sizeof **s3)) != NULL)
 		**s3 = (struct frs_sampler3){ mask, vol, o };
 	else {
