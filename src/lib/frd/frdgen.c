@@ -1,3 +1,4 @@
+/* The CPU generator of Forced Random Dithering matrices (frdgen.h). */
 #define _POSIX_C_SOURCE 200809L
 #include "frd/frdgen.h"
 #include "frd/frdgenint.h"
@@ -18,9 +19,6 @@
 #include "../../../cl/frdgen.cl"
 
 #define MAXLEV 40
-#define DEFAULT_TOL 1e-2
-#define DEFAULT_REACH 3.0
-#define DEFAULT_CAP (1.0 / 3.0)
 
 /* One level of the min-pyramid: level 0 holds the minimum of each tile of
  * cells, level L+1 the minimum of 2x2x2 nodes of level L. */
@@ -65,227 +63,12 @@ struct gen {
 	uint64_t step;
 };
 
-/* ---- parameters --------------------------------------------------- */
-
-void frdgen_defaults(struct frdgen_params *pr)
-{
-	memset(pr, 0, sizeof *pr);
-	pr->dims = 2;
-	pr->p = 0.5;
-	pr->force = FRDGEN_FORCE_POWER;
-	pr->s = 1.0;
-	pr->q = 4.0;
-	pr->tol = DEFAULT_TOL;
-	pr->reach = DEFAULT_REACH;
-	pr->cap = DEFAULT_CAP;
-	pr->taper = 1;
-	pr->field = FRDGEN_FIELD_DOUBLE;
-	pr->seed = 1;
-	pr->checkpoint_every = 60.0;
-}
-
-int frdgen_check_size(unsigned dims, uint32_t w, uint32_t h, uint32_t d)
-{
-	uint64_t n = (uint64_t)w * h * d;
-
-	if (dims != 2 && dims != 3)
-		return frs_fail("%u dimensions: a matrix has 2 or 3", dims);
-	if (w < 2 || h < 2 || d < 1 || (dims == 3 && d < 2) ||
-	    (dims == 2 && d != 1))
-		return frs_fail("a matrix needs at least 2 cells per side");
-	if (n > UINT32_MAX)
-		return frs_fail("%llu cells are more than 2^32 - 1 values",
-		    (unsigned long long)n);
-	return 0;
-}
-
-int frdgen_check(const struct frdgen_params *pr)
-{
-	if (frdgen_check_size(pr->dims, pr->w, pr->h, pr->d) < 0)
-		return -1;
-	if (!(pr->p > 0.0 && pr->p <= 1.0))
-		return frs_fail("the share p = %g is outside (0, 1]", pr->p);
-	if (pr->force != FRDGEN_FORCE_EXP && pr->force != FRDGEN_FORCE_POWER)
-		return frs_fail("unknown force kind %d", (int)pr->force);
-	if (!(pr->s > 0.0 && isfinite(pr->s)) || !(pr->q > 0.0 &&
-	    isfinite(pr->q)))
-		return frs_fail("force parameters s and q must be positive");
-	if (!(pr->tol >= 0.0 && pr->tol < 1.0))
-		return frs_fail("the force tolerance %g is outside [0, 1)", pr->tol);
-	if (!(pr->reach >= 0.0 && isfinite(pr->reach)))
-		return frs_fail("the reach %g is negative", pr->reach);
-	if (!(pr->cap >= 0.0 && isfinite(pr->cap)))
-		return frs_fail("the reach cap %g is negative", pr->cap);
-	if (pr->field != FRDGEN_FIELD_DOUBLE && pr->field != FRDGEN_FIELD_INT32)
-		return frs_fail("unknown field kind %d", (int)pr->field);
-	return 0;
-}
-
-/* The shortest side: the authors' S. */
-static uint32_t shortest_side(const struct frdgen_params *pr)
-{
-	uint32_t m = pr->w < pr->h ? pr->w : pr->h;
-	return pr->dims == 3 && pr->d < m ? pr->d : m;
-}
-
-double frdgen_int_scale(const struct frdgen_params *pr)
-{
-	double half = (double)(shortest_side(pr) / 2);
-	return fmin((double)(INT_MAX / 20), 1.0 / exp(-sqrt(2.0 * half)));
-}
-
-double frdgen_force(const struct frdgen_params *pr, double r)
-{
-	if (pr->field == FRDGEN_FIELD_INT32)
-		return (double)(int32_t)(frdgen_int_scale(pr) *
-		    exp(-sqrt(2.0 * r)));
-	if (pr->force == FRDGEN_FORCE_POWER)
-		return pow(1.0 + r / pr->s, -pr->q);
-	return exp(-pow(r / pr->s, pr->q));
-}
-
-double frdgen_radius(const struct frdgen_params *pr)
-{
-	if (pr->field == FRDGEN_FIELD_INT32) {
-		/* scale exp(-sqrt(2 r)) >= 1 up to r = ln(scale)^2 / 2; the
-		 * margin only adds cells that get 0. */
-		double l = log(frdgen_int_scale(pr));
-		return l * l / 2.0 * (1.0 + 1e-9) + 1e-9;
-	}
-	if (pr->tol <= 0.0)
-		return INFINITY;
-	if (pr->force == FRDGEN_FORCE_POWER)
-		return pr->s * (pow(pr->tol, -1.0 / pr->q) - 1.0);
-	return pr->s * pow(log(1.0 / pr->tol), 1.0 / pr->q);
-}
-
-uint64_t frdgen_memory(const struct frdgen_params *pr)
-{
-	uint64_t n = (uint64_t)pr->w * pr->h * pr->d;
-	uint64_t t = ((uint64_t)pr->w / 2 + 1) * (pr->h / 2 + 1) *
-	    (pr->d / 2 + 1);
-	/* field (with the padding of partial tiles), values, table, tiles
-	 * and pyramid */
-	uint64_t pad = ((uint64_t)pr->w + 8) * (pr->h + 8) * (pr->d + 4);
-	return pad * 8 + n * 4 + t * 8 + n / 4 + (1 << 20);
-}
-
-void frdgen_describe(const struct frdgen_params *pr, char *buf, size_t n)
-{
-	if (pr->field == FRDGEN_FIELD_INT32) {
-		snprintf(buf, n, "generator=frd-gen\nk=%u\nsize=%ux%ux%u\n"
-		    "field=int32\np=%.17g\nscale=%.17g\nseed=%llu\n", pr->dims,
-		    pr->w, pr->h, pr->d, pr->p, frdgen_int_scale(pr),
-		    (unsigned long long)pr->seed);
-		return;
-	}
-	snprintf(buf, n, "generator=frd-gen\nk=%u\nsize=%ux%ux%u\n"
-	    "field=double\nforce=%s\np=%.17g\ns=%.17g\nq=%.17g\n"
-	    "tol=%.17g\nreach=%.17g\ncap=%.17g\ncutoff=%s\nseed=%llu\n",
-	    pr->dims, pr->w, pr->h, pr->d,
-	    pr->force == FRDGEN_FORCE_POWER ? "power" : "exp", pr->p, pr->s,
-	    pr->q, pr->tol, pr->reach, pr->cap, pr->taper ? "taper" : "hard",
-	    (unsigned long long)pr->seed);
-}
-
-uint64_t frdgen_rank(const struct frdgen_params *pr, uint64_t step,
-    uint64_t free)
-{
-	double u, lq, tail, k;
-
-	if (pr->p >= 1.0 || free <= 1)
-		return 1;
-	/* Inverse CDF of Geometric(p) conditioned on K <= free: the minimum
-	 * of a Bernoulli(p) subset, given that the subset is not empty. */
-	u = frs_rand01(pr->seed, FRS_STREAM_FRD_COIN, step);
-	lq = log1p(-pr->p);
-	tail = exp((double)free * lq);
-	k = 1.0 + floor(log1p(-u * (1.0 - tail)) / lq);
-	if (!(k >= 1.0))
-		return 1;
-	return k > (double)free ? free : (uint64_t)k;
-}
-
-uint64_t frdgen_tiekey(const struct frdgen_params *pr, uint64_t step,
-    uint32_t c)
-{
-	return frs_rand64x(pr->seed, FRS_STREAM_FRD_TIE, step, c);
-}
-
-uint64_t frdgen_zerorank(const struct frdgen_params *pr, uint64_t step,
-    uint64_t z)
-{
-	uint64_t r = (uint64_t)(frs_rand01(pr->seed, FRS_STREAM_FRD_DRAW, step) *
-	    (double)z);
-	return r < z ? r : z - 1;
-}
-
-void frdgen_tile_shape(unsigned dims, uint32_t t[3])
-{
-	/* Tile shapes measured fastest (16 x 8 beat 8x8, 32x4, 64x2 at
-	 * 512^2 and 1024^2): rows long enough for vector adds, few enough
-	 * rows for little loop overhead.  At most 256 cells (arg is a byte). */
-	t[0] = dims == 2 ? 16 : 8;
-	t[1] = dims == 2 ? 8 : 4;
-	t[2] = dims == 2 ? 1 : 4;
-}
-
-uint64_t frdgen_cellorder(const struct frdgen_params *pr, uint32_t c)
-{
-	uint32_t t[3], x = c % pr->w, y = c / pr->w % pr->h, z = c / pr->w / pr->h;
-	uint64_t ntx, nty, tile, local;
-
-	frdgen_tile_shape(pr->dims, t);
-	ntx = (pr->w + t[0] - 1) / t[0];
-	nty = (pr->h + t[1] - 1) / t[1];
-	tile = ((uint64_t)(z / t[2]) * nty + y / t[1]) * ntx + x / t[0];
-	local = ((uint64_t)(z % t[2]) * t[1] + y % t[1]) * t[0] + x % t[0];
-	return tile << 16 | local;
-}
-
-/* ---- setup -------------------------------------------------------- */
-
-void frdgen_size(struct frdgen_size *z, const struct frdgen_params *pr)
-{
-	z->w = pr->w;
-	z->h = pr->h;
-	z->d = pr->d;
-	z->n = (size_t)pr->w * pr->h * pr->d;
-	z->hw = z->w / 2;
-	z->hh = z->h / 2;
-	z->hd = z->d / 2;
-	z->rtol = frdgen_radius(pr);
-	z->rmax = sqrt((double)z->hw * z->hw + (double)z->hh * z->hh +
-	    (double)z->hd * z->hd);
-}
-
 static size_t fidx(const struct gen *g, uint32_t x, uint32_t y, uint32_t z)
 {
 	size_t t = ((size_t)(z >> g->lz) * g->nty + (y >> g->ly)) * g->ntx +
 	    (x >> g->lx);
 	return t * g->ts + (((z & (g->tz - 1)) << g->ly | (y & (g->ty - 1))) <<
 	    g->lx | (x & (g->tx - 1)));
-}
-
-double *frdgen_table(const struct frdgen_params *pr)
-{
-	uint32_t hw = pr->w / 2, hh = pr->h / 2, hd = pr->d / 2;
-	size_t nt = (size_t)(hw + 1) * (hh + 1) * (hd + 1);
-	double *t = malloc(nt * sizeof *t);
-
-	if (t == NULL) {
-		frs_fail("out of memory for the force table");
-		return NULL;
-	}
-	for (uint32_t z = 0; z <= hd; z++)
-		for (uint32_t y = 0; y <= hh; y++)
-			for (uint32_t x = 0; x <= hw; x++) {
-				double r = sqrt((double)x * x + (double)y * y +
-				    (double)z * z);
-				t[((size_t)z * (hh + 1) + y) * (hw + 1) + x] =
-				    frdgen_force(pr, r);
-			}
-	return t;
 }
 
 static int make_levels(struct gen *g)
@@ -346,14 +129,6 @@ static void gen_free(struct gen *g)
 	MEM_FREE(g->dirty[0], g->dirty[1], g->ax[0], g->ax[1], g->ax[2],
 	    g->tlist, g->changed, g->ext, g->zc, g->zf, g->fen);
 	frdgen_sel_free(&g->sel);
-}
-
-unsigned frdgen_log2u(uint32_t v)
-{
-	unsigned l = 0;
-	while ((1u << l) < v)
-		l++;
-	return l;
 }
 
 /* Every cell free (0), padding cells +inf. */
@@ -448,14 +223,6 @@ static double tile_rescan(struct gen *g, size_t t)
 	return g->lev[0].min[t] = m;
 }
 
-/* ---- zero cells: counts per tile in a Fenwick tree ----------------- */
-
-void frdgen_fen_add(uint64_t *fen, size_t n, size_t t, int64_t d)
-{
-	for (size_t i = t + 1; i <= n; i += i & (~i + 1))
-		fen[i] = (uint64_t)((int64_t)fen[i] + d);
-}
-
 static void fen_sync(struct gen *g, size_t t)
 {
 	if (g->zc[t] != g->zf[t]) {
@@ -463,28 +230,6 @@ static void fen_sync(struct gen *g, size_t t)
 		    (int64_t)g->zc[t] - (int64_t)g->zf[t]);
 		g->zf[t] = g->zc[t];
 	}
-}
-
-uint64_t frdgen_fen_total(const uint64_t *fen, size_t n)
-{
-	uint64_t s = 0;
-	for (size_t i = n; i > 0; i -= i & (~i + 1))
-		s += fen[i];
-	return s;
-}
-
-size_t frdgen_fen_find(const uint64_t *fen, size_t n, uint64_t *r)
-{
-	size_t pos = 0, step = 1;
-
-	while (step * 2 <= n)
-		step *= 2;
-	for (; step > 0; step /= 2)
-		if (pos + step <= n && fen[pos + step] <= *r) {
-			pos += step;
-			*r -= fen[pos];
-		}
-	return pos;
 }
 
 static double node_min(const struct gen *g, int l, uint32_t x, uint32_t y,
@@ -591,19 +336,6 @@ static void update_levels(struct gen *g)
 static uint32_t umin(uint32_t a, uint32_t b)
 {
 	return a < b ? a : b;
-}
-
-void frdgen_window(const struct frdgen_params *pr,
-    const struct frdgen_size *z, uint32_t tx, double r, struct frdgen_win *wd)
-{
-	wd->e = r >= (double)UINT32_MAX ? UINT32_MAX : (uint32_t)floor(r);
-	wd->r2 = r >= z->rmax ? INFINITY : r * r;
-	/* The taper: f(R) off every force inside R (none past the torus). */
-	wd->sub = pr->field == FRDGEN_FIELD_DOUBLE && pr->taper &&
-	    wd->r2 < INFINITY ? frdgen_force(pr, r) : 0.0;
-	wd->fast = 2 * (uint64_t)wd->e + 1 + 2 * tx <= z->w;
-	wd->ey = umin(wd->e, z->hh);
-	wd->ez = umin(wd->e, z->hd);
 }
 
 /* The x reach of every row (dy, dz) of the window, once per insertion. */
@@ -739,137 +471,6 @@ static void add_force(struct gen *g, double r)
 			push_dirty(g, 0, 0, g->tlist[i]);
 	}
 	update_levels(g);
-}
-
-/* ---- the rank query: the K-th smallest free cell ------------------ */
-
-/* Room for one more item in a growing array. */
-static int item_room(struct frdgen_item **a, size_t n, size_t *cap)
-{
-	if (n == *cap) {
-		size_t ncap = *cap ? 2 * *cap : 256;
-		struct frdgen_item *na = realloc(*a, ncap * sizeof *na);
-		if (na == NULL)
-			return frs_fail("out of memory in the rank query");
-		*a = na;
-		*cap = ncap;
-	}
-	return 0;
-}
-
-int frdgen_push(struct frdgen_sel *s, double v, int lev, uint32_t idx)
-{
-	size_t i;
-
-	if (item_room(&s->heap, s->nheap, &s->hcap) < 0)
-		return -1;
-	i = s->nheap++;
-	while (i > 0 && s->heap[(i - 1) / 2].v > v) {
-		s->heap[i] = s->heap[(i - 1) / 2];
-		i = (i - 1) / 2;
-	}
-	s->heap[i] = (struct frdgen_item){ v, lev, idx };
-	return 0;
-}
-
-static struct frdgen_item heap_pop(struct frdgen_sel *s)
-{
-	struct frdgen_item top = s->heap[0], last = s->heap[--s->nheap];
-	size_t i = 0;
-
-	for (;;) {
-		size_t c = 2 * i + 1;
-		if (c >= s->nheap)
-			break;
-		if (c + 1 < s->nheap && s->heap[c + 1].v < s->heap[c].v)
-			c++;
-		if (s->heap[c].v >= last.v)
-			break;
-		s->heap[i] = s->heap[c];
-		i = c;
-	}
-	if (s->nheap > 0)
-		s->heap[i] = last;
-	return top;
-}
-
-static int emit(struct frdgen_sel *s, struct frdgen_item it)
-{
-	if (item_room(&s->emit, s->nemit, &s->ecap) < 0)
-		return -1;
-	s->emit[s->nemit++] = it;
-	return 0;
-}
-
-static int cmp_key(const void *a, const void *b)
-{
-	const uint64_t *x = a, *y = b;
-	if (x[0] != y[0])
-		return x[0] < y[0] ? -1 : 1;
-	return x[1] < y[1] ? -1 : x[1] > y[1];
-}
-
-/* Pick the (rank)-th (0-based) cell of the tie group emit[a ..] by key. */
-static int pick_in_group(struct frdgen_sel *s, const struct frdgen_params *pr,
-    uint64_t step, size_t a, size_t rank, uint32_t *c)
-{
-	size_t m = s->nemit - a;
-
-	if (m == 1) {
-		*c = s->emit[a].idx;
-		return 0;
-	}
-	if (2 * m > s->kcap) {
-		uint64_t *nk = realloc(s->keys, 2 * m * sizeof *nk);
-		if (nk == NULL)
-			return frs_fail("out of memory in the rank query");
-		s->keys = nk;
-		s->kcap = 2 * m;
-	}
-	for (size_t i = 0; i < m; i++) {
-		s->keys[2 * i] = frdgen_tiekey(pr, step, s->emit[a + i].idx);
-		s->keys[2 * i + 1] = s->emit[a + i].idx;
-	}
-	qsort(s->keys, m, 2 * sizeof *s->keys, cmp_key);
-	*c = (uint32_t)s->keys[2 * rank + 1];
-	return 0;
-}
-
-int frdgen_select(struct frdgen_sel *s, const struct frdgen_params *pr,
-    uint64_t step, uint64_t k, struct frdgen_item root,
-    frdgen_expand_fn *expand, void *ctx, uint32_t *c)
-{
-	double v;
-	size_t a;
-
-	s->nheap = s->nemit = 0;
-	if (frdgen_push(s, root.v, root.lev, root.idx) < 0)
-		return -1;
-	/* Best-first: cells come out in nondecreasing force. */
-	while (s->nheap > 0) {
-		struct frdgen_item it;
-		if (s->nemit >= k && s->heap[0].v > s->emit[k - 1].v)
-			break;
-		it = heap_pop(s);
-		if ((it.lev < 0 ? emit(s, it) : expand(ctx, it.lev, it.idx)) < 0)
-			return -1;
-	}
-	if (s->nemit < k)
-		return frs_fail("internal error: %zu free cells found, rank %llu",
-		    s->nemit, (unsigned long long)k);
-	v = s->emit[k - 1].v;
-	for (a = k - 1; a > 0 && s->emit[a - 1].v == v; a--)
-		;
-	while (s->nemit > k && s->emit[s->nemit - 1].v > v)
-		s->nemit--;
-	return pick_in_group(s, pr, step, a, k - 1 - a, c);
-}
-
-void frdgen_sel_free(struct frdgen_sel *s)
-{
-	free(s->heap);
-	free(s->emit);
-	free(s->keys);
 }
 
 /* Push the children of a node: nodes of the level below, or cells. */
@@ -1024,35 +625,6 @@ done:
 }
 
 /* ---- the generator ------------------------------------------------ */
-
-/* Expected spacing of n values spread evenly: hexagonal in 2-D,
- * face-centred cubic in 3-D. */
-static double spacing(const struct frdgen_params *pr, uint64_t n)
-{
-	double vol = (double)pr->w * pr->h * pr->d;
-
-	if (pr->dims == 2)
-		return sqrt(2.0 * vol / (sqrt(3.0) * (double)n));
-	return cbrt(sqrt(2.0) * vol / (double)n);
-}
-
-double frdgen_radius_after(const struct frdgen_params *pr, double rtol,
-    uint64_t inserted)
-{
-	double r = rtol;
-
-	if (pr->field == FRDGEN_FIELD_INT32)
-		return r;
-	if (pr->reach > 0.0) {
-		double adapt = pr->reach * spacing(pr, inserted);
-		r = adapt > r ? adapt : r;
-	}
-	if (pr->cap > 0.0) {
-		double cap = pr->cap * (double)shortest_side(pr);
-		r = r > cap ? fmax(cap, rtol) : r;
-	}
-	return r;
-}
 
 int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
     struct progress *prog)

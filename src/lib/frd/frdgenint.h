@@ -1,6 +1,6 @@
 /*
  * What frdgen.c (CPU) and frdgencl.c (OpenCL) share, so that both make
- * the same matrix byte for byte: the tile shape, the insertion radius,
+ * the same matrix byte for byte: the sizes and window of an insertion,
  * the force table, the Fenwick tree of zero counts and the best-first
  * rank query.  Internal to the library.
  */
@@ -10,7 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-struct frdgen_params;
+#include "frd/frdparam.h"
 
 /* The sizes a run works with. */
 struct frdgen_size {
@@ -44,8 +44,6 @@ static inline double frdgen_add(double t, double sub)
 }
 /* The least l with 2^l >= v. */
 unsigned frdgen_log2u(uint32_t v);
-/* Tile size per axis: 16 x 8 x 1 in 2-D, 8 x 4 x 4 in 3-D. */
-void frdgen_tile_shape(unsigned dims, uint32_t t[3]);
 /* f by |dx|, |dy|, |dz| up to w/2, h/2, d/2 (x fastest); NULL (with the
  * error set) when out of memory. */
 double *frdgen_table(const struct frdgen_params *pr);
