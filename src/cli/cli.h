@@ -26,7 +26,10 @@
  *	static const char options[] = "s=size k=dims tol exact v=verbose";
  *
  * cli_getopt returns the letter for an option that has one, else OPT_ID
- * (OPT_TOL, OPT_EXACT).  The common options below are in every program.
+ * (OPT_TOL, OPT_EXACT).  The common options below are in every program;
+ * another spelling of an option (--colour) is in cli.c's spellings.
+ * test/t_options.sh checks every program's list against its -h text and
+ * its manual.
  */
 #define CLI_OPTIONS(X) \
 	X(ALGO, "algo", required_argument) \
@@ -113,7 +116,6 @@ enum {
 	OPT_VERSION = 0x1000,
 	OPT_PROGRESS,
 	CLI_OPTIONS(CLI_OPTION_ID_)
-	CLI_NOPTIONS_
 };
 
 struct cli_common {
