@@ -452,7 +452,7 @@ int main(int argc, char **argv)
 	cli_options_done();
 	/* The device before the output: a missing one fails at once. */
 	if (use_cl && ocl_open(&o, dev) < 0)
-		cli_die_device();
+		cli_die_device(1);
 	if (use_cl && !o.fp64)
 		cli_die("--device: OpenCL: %s has no double precision "
 		    "(cl_khr_fp64), which frd-gen needs to give the same matrix "

@@ -263,7 +263,7 @@ int main(int argc, char **argv)
 	cli_options_done();
 	check_matrix(&o);
 	if ((rc = api_sets_open(&o, &run)) < 0)
-		rc == -2 ? cli_die_device() : cli_die_lib();
+		rc == -2 ? cli_die_device(o.alg != API_ALG_FLAT1) : cli_die_lib();
 	cli_out_check(o.out, !o.count_only && !o.text);
 	if (api_sets_write(&o, &run) < 0)
 		cli_die_lib();

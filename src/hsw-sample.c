@@ -256,7 +256,7 @@ int main(int argc, char **argv)
 	parse_opts(argc, argv, &o);
 	cli_options_done();
 	if ((rc = hsw_run_open(&r, o.imp, o.w, o.h, o.cl, o.cl_index)) < 0)
-		rc == -2 ? cli_die_device() : cli_die_lib();
+		rc == -2 ? cli_die_device(1) : cli_die_lib();
 	/* The sets are made on the fly, round by round, except for the
 	 * device, which is handed them all. */
 	t0 = progress_now();

@@ -278,11 +278,20 @@ for d in cl:64 cl:99 cl:99999999999999999999; do
 done
 grep -q 'device); see --list-devices\|devices); see --list-devices\|no platform' "$T/err" &&
     ok "--device cl:N: how many devices there are" || nok "--device cl:N: $(cat "$T/err")"
+grep -q 'see --list-devices, or use --device cpu$' "$T/err" &&
+    ok "--device cl:N: the advice to use the CPU" ||
+    nok "--device cl:N: no advice to use the CPU: $(cat "$T/err")"
 for d in cl: cl:-1 cl:1x; do
 	expect_fail "--device $d: a usage error" 2 "is not cpu, cl or cl:N" "$T/o.pts" \
 	    frs-sample -m "$M" -n 10 --device $d -o "$T/o.pts"
 done
 expect_fail "--device gpu" 2 "--device" "$T/o.pts" frs-sample -m "$M" -n 10 --device gpu -o "$T/o.pts"
 expect_fail "-a flat1 without OpenCL" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 -o "$T/o.pts"
+# Flat 1 runs only on a device: no advice to use the CPU.
+expect_fail "-a flat1 --device cl:64" 1 "no device cl:64" "$T/o.pts" \
+    cl_run frs-sample -m "$M" -n 10 -a flat1 --device cl:64 -o "$T/o.pts"
+grep -q 'see --list-devices$' "$T/err" &&
+    ok "-a flat1, no such device: no advice to use the CPU" ||
+    nok "-a flat1, no such device: $(cat "$T/err")"
 expect_fail "-a flat1 --device cpu" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 --device cpu -o "$T/o.pts"
 done_testing

@@ -460,10 +460,10 @@ int cli_device(const char *arg, int *index)
 	return cl;
 }
 
-noreturn void cli_die_device(void)
+noreturn void cli_die_device(int cpu_too)
 {
-	cli_die("--device: %s; see --list-devices, or use --device cpu",
-	    frs_errmsg());
+	cli_die("--device: %s; see --list-devices%s", frs_errmsg(),
+	    cpu_too ? ", or use --device cpu" : "");
 }
 
 noreturn void cli_list_devices(void)

@@ -178,8 +178,9 @@ int cli_device(const char *arg, int *index);
  * the reason (no platform, no writable PoCL cache). */
 noreturn void cli_list_devices(void);
 /* The OpenCL device of --device failed (to open, or to take the work):
- * "prog: --device: <library message>" and where to turn, exit 1. */
-noreturn void cli_die_device(void);
+ * "prog: --device: <library message>; see --list-devices", with ", or use
+ * --device cpu" when the work runs on the CPU too (cpu_too), exit 1. */
+noreturn void cli_die_device(int cpu_too);
 
 /* Called by every program when its options are parsed and checked,
  * before any file is opened or work begins.  Normally it does nothing.
