@@ -17,7 +17,9 @@ at_exit() {
 	fi
 }
 trap at_exit EXIT
-trap 'rm -rf "$T"' INT TERM
+# Interrupted: stop here (the EXIT trap cleans up and reports it).
+trap 'exit 130' INT
+trap 'exit 143' TERM
 
 ok() { echo "ok - $*"; }
 
