@@ -37,15 +37,29 @@ med() {
 	sort -g "$T/runs" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'
 }
 
-# phase BIN NAME N J: the median of R runs of one -v phase.
-phase() {
-	: >"$T/runs"
-	for _r in $(seq "$R"); do
-		"$1/frs-sample" -q -m "$MAT" -i blob -n "$3" -j "$4" -v \
-		    -o /dev/null 2>"$T/v"
-		sed -n "s/.* $2 \\([0-9.]*\\) s.*/\\1/p" "$T/v" >>"$T/runs"
+# phase_run BIN NAME N J OUT: one run's -v time of phase NAME, added to OUT.
+phase_run() {
+	"$1/frs-sample" -q -m "$MAT" -i blob -n "$3" -j "$4" -v \
+	    -o /dev/null 2>"$T/v"
+	sed -n "s/.* $2 \\([0-9.]*\\) s.*/\\1/p" "$T/v" >>"$5"
+}
+
+median_of() { sort -g "$1" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+
+# phases NAME N J: "OURS BASE", the medians of 3R runs of one -v phase,
+# ours and the baseline's in turn (BASE 0 without one).  A phase of a few
+# milliseconds on two threads varies by 3x between runs here: fewer runs,
+# or all of one build before the other, can flip the verdict.
+phases() {
+	: >"$T/po"
+	: >"$T/pb"
+	echo 0 >"$T/pb0"
+	for _r in $(seq $((3 * R))); do
+		phase_run "$OURS" "$1" "$2" "$3" "$T/po"
+		[ -n "$BASE" ] && phase_run "$BASE" "$1" "$2" "$3" "$T/pb"
 	done
-	sort -g "$T/runs" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'
+	[ -s "$T/pb" ] || cp "$T/pb0" "$T/pb"
+	echo "$(median_of "$T/po") $(median_of "$T/pb")"
 }
 
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (a > 0 && b > 0) ? a / b : 0 }'; }
@@ -82,13 +96,13 @@ for e in 20 24; do
 done
 
 echo
-echo "Phases (-v) at 2^24; the thresholding includes the conversion to points"
-echo "(ours converts each chunk where it is thresholded; the baseline in its output)"
+echo "Phases (-v) at 2^24, medians of $((3 * R)) runs, ours and the baseline's in turn;"
+echo "the thresholding includes the conversion to points (ours converts each"
+echo "chunk where it is thresholded; the baseline in its output)"
 for p in setup thresholding output; do
 	for j in 1 2; do
-		o=$(phase "$OURS" $p 16777216 $j)
-		b=0
-		[ -n "$BASE" ] && b=$(phase "$BASE" $p 16777216 $j)
+		set -- $(phases $p 16777216 $j)
+		o=$1 b=$2
 		tgt=""
 		[ $p = setup ] && tgt=0.15
 		row "$p, -j $j" "$o" "$b" "$tgt"
@@ -102,9 +116,8 @@ for p in setup thresholding output; do
 	fi
 done
 for e in 10 16; do
-	o=$(phase "$OURS" setup $((1 << e)) 1)
-	b=0
-	[ -n "$BASE" ] && b=$(phase "$BASE" setup $((1 << e)) 1)
+	set -- $(phases setup $((1 << e)) 1)
+	o=$1 b=$2
 	row "setup, 2^$e" "$o" "$b" 0.15
 done
 
