@@ -503,6 +503,33 @@ static void test_options(void **state)
 	}
 }
 
+/* The thesis's threshold rule where it matters.  At n = 3000 the window
+ * is the matrix once and no element sits at floor(T), so the two rules
+ * give the same set; at 100000 the window tiles it 16 times and some do:
+ * there the thesis rule passes them all, the unbiased rule by a coin. */
+static void test_thesis_rule(void **state)
+{
+	uint64_t n = 100000;
+	struct frs_options o;
+	frs_sampler *thesis, *unbiased;
+	struct drawn t, u;
+
+	(void)state;
+	frs_options_init(&o);
+	unbiased = sampler_f64(mask, &blob, &o);
+	o.rule = FRS_RULE_THESIS;
+	thesis = sampler_f64(mask, &blob, &o);
+	compare(thesis, &blob, &o, &n, 1, 5, 0, "-i blob --threshold thesis");
+	t = draw(thesis, &n, 1, 5, 0);
+	u = draw(unbiased, &n, 1, 5, 0);
+	/* v < T passes every element v == floor(T): never fewer samples. */
+	assert_true(t.n > u.n);
+	drawn_free(&t);
+	drawn_free(&u);
+	frs_sampler_free(thesis);
+	frs_sampler_free(unbiased);
+}
+
 static void test_progressive(void **state)
 {
 	static const uint64_t steps[] = { 1000, 3000, 5000 };
@@ -2617,6 +2644,7 @@ TU_MAIN(setup, teardown,
 	cmocka_unit_test(test_const_map),
 	cmocka_unit_test(test_blob_defaults),
 	cmocka_unit_test(test_options),
+	cmocka_unit_test(test_thesis_rule),
 	cmocka_unit_test(test_progressive),
 	cmocka_unit_test(test_float_map),
 	cmocka_unit_test(test_stride),
