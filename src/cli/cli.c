@@ -304,8 +304,11 @@ static void option_table(const char *options, struct option *table,
 		size_t len = strcspn(p, " ");
 
 		if (len > 0) {
-			if (n == MAX_OPTIONS)
+			if (n == MAX_OPTIONS) {
+				fprintf(stderr, "%s: internal error: more than %d "
+				    "options\n", cli_prog, MAX_OPTIONS);
 				abort();
+			}
 			table[n++] = option_entry(p, len);
 		}
 		p += len + (p[len] == ' ');
