@@ -37,6 +37,23 @@ med() {
 	sort -g "$T/runs" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'
 }
 
+# med_both ARGS...: "OURS BASE", the median wall seconds of R runs of
+# frs-sample ARGS, ours and the baseline's in turn (BASE 0 without one).
+med_both() {
+	: >"$T/mo"
+	: >"$T/mb"
+	for _r in $(seq "$R"); do
+		timed /dev/null "$OURS/frs-sample" "$@"
+		echo "$SEC" >>"$T/mo"
+		if [ -n "$BASE" ]; then
+			timed /dev/null "$BASE/frs-sample" "$@"
+			echo "$SEC" >>"$T/mb"
+		fi
+	done
+	[ -s "$T/mb" ] || echo 0 >"$T/mb"
+	echo "$(median_of "$T/mo") $(median_of "$T/mb")"
+}
+
 # phase_run BIN NAME N J OUT: one run's -v time of phase NAME, added to OUT.
 phase_run() {
 	"$1/frs-sample" -q -m "$MAT" -i blob -n "$3" -j "$4" -v \
@@ -66,7 +83,7 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (a > 0 && b > 0) ? a /
 verdict() { awk -v v="$1" -v t="$2" 'BEGIN { print (v <= t) ? "met" : "missed" }'; }
 
 echo "Speed of Sorted FRS, blob 128x128, $MAT (no .frp), one thread unless said;"
-echo "medians of $R runs; ours against $BASE_COMMIT in the same run;" \
+echo "medians of $R runs, ours and the baseline's in turn ($BASE_COMMIT);" \
     "load average $(cut -d' ' -f1-3 /proc/loadavg)"
 [ -n "$BASE" ] || echo "(the baseline could not be built: its columns are 0)"
 printf '%-40s %10s %10s %8s %9s %7s\n' what ours_s base_s speedup target verdict
@@ -78,9 +95,8 @@ row() {	# WHAT OURS BASE TARGET
 for e in 20 24; do
 	n=$((1 << e))
 	for j in 1 2; do
-		o=$(med "$OURS/frs-sample" -q -m "$MAT" -i blob -n $n -j $j -o /dev/null)
-		b=0
-		[ -n "$BASE" ] && b=$(med "$BASE/frs-sample" -q -m "$MAT" -i blob -n $n -j $j -o /dev/null)
+		set -- $(med_both -q -m "$MAT" -i blob -n $n -j $j -o /dev/null)
+		o=$1 b=$2
 		tgt=""
 		[ $j = 1 ] && [ $e = 24 ] && tgt=0.6
 		[ $j = 1 ] && [ $e = 20 ] && tgt=0.1
@@ -133,9 +149,8 @@ sh -c "exec \"$OURS/frs-sample\" -q -m \"$MAT\" -i blob -n 16777216 | cat >/dev/
     p=$(med sh -c "exec \"$OURS/frs-sample\" -q -m \"$MAT\" -i blob -n 16777216 | cat >/dev/null")
 printf '%-40s %10.4f s  %6.2f GB/s (whole process)\n' "binary through a pipe to cat" "$p" \
     "$(awk -v s="$p" -v b="$bytes" 'BEGIN { print (s > 0) ? b / s / 1e9 : 0 }')"
-tx=$(med "$OURS/frs-sample" -q -m "$MAT" -i blob -n 1048576 -T -o /dev/null)
-tb=0
-[ -n "$BASE" ] && tb=$(med "$BASE/frs-sample" -q -m "$MAT" -i blob -n 1048576 -T -o /dev/null)
+set -- $(med_both -q -m "$MAT" -i blob -n 1048576 -T -o /dev/null)
+tx=$1 tb=$2
 row "text, 2^20, to /dev/null" "$tx" "$tb" ""
 
 echo
@@ -167,10 +182,9 @@ if "$OURS/frs-sample" -q -i const -n 16 --device cl -o /dev/null 2>/dev/null; th
 	printf '%-40s %10.4f s, of which %.4f s program build\n' "OpenCL thresholding" "$clth" "$clb"
 	printf '%-40s %10.4f s (OpenCL without the build: %.2fx the CPU time)\n' "CPU thresholding" "$cpth" \
 	    "$(awk -v a="$clth" -v b="$clb" -v c="$cpth" 'BEGIN { print (c > 0) ? (a - b) / c : 0 }')"
-	o=$(med "$OURS/frs-sample" -q -m "$MAT" -i blob -n 1048576 --device cl -o /dev/null)
+	set -- $(med_both -q -m "$MAT" -i blob -n 1048576 --device cl -o /dev/null)
+	o=$1 b=$2
 	c=$(med "$OURS/frs-sample" -q -m "$MAT" -i blob -n 1048576 -j 2 -o /dev/null)
-	b=0
-	[ -n "$BASE" ] && b=$(med "$BASE/frs-sample" -q -m "$MAT" -i blob -n 1048576 --device cl -o /dev/null)
 	row "process, --device cl" "$o" "$b" ""
 	printf '%-40s %10.4f s (the OpenCL process: %.2fx the CPU one)\n' "process, CPU -j 2" "$c" "$(ratio "$o" "$c")"
 else
