@@ -129,17 +129,26 @@ int io_read_path(const char *path,
 	return rc;
 }
 
+struct slurp {
+	const char **name;
+	unsigned char **buf;
+	size_t *len;
+};
+
+static int slurp_fp(FILE *fp, const char *name, void *ctx)
+{
+	struct slurp *s = ctx;
+
+	*s->name = name;
+	return io_slurp(fp, name, s->buf, s->len);
+}
+
 int io_slurp_path(const char *path, const char **name, unsigned char **buf,
     size_t *len)
 {
-	FILE *fp = io_open_in(path, name);
-	int rc;
+	struct slurp s = { name, buf, len };
 
-	if (fp == NULL)
-		return -1;
-	rc = io_slurp(fp, *name, buf, len);
-	io_close_in(fp);
-	return rc;
+	return io_read_path(path, slurp_fp, &s);
 }
 
 uint32_t io_get_u32(const unsigned char *p)

@@ -28,7 +28,8 @@ int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len);
  * close it: read's result, or -1 when path does not open. */
 int io_read_path(const char *path,
     int (*read)(FILE *fp, const char *name, void *obj), void *obj);
-/* Open path ("-": standard input), read it whole, close it. */
+/* io_read_path with io_slurp: the whole input in *buf, and in *name the
+ * name messages use (set once path opens). */
 int io_slurp_path(const char *path, const char **name, unsigned char **buf,
     size_t *len);
 
