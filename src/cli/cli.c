@@ -293,8 +293,7 @@ static struct option option_entry(const char *tok, size_t len)
 }
 
 /* The getopt_long table and short options of a program's list and the
- * common options.  Made again on every call: the fuzz target runs several
- * programs in one process. */
+ * common options. */
 static void option_table(const char *options, struct option *table,
     char *shortopts)
 {
@@ -330,8 +329,14 @@ int cli_getopt(int argc, char **argv, const char *options)
 {
 	static struct option table[MAX_OPTIONS + 9];
 	static char shortopts[2 * (MAX_OPTIONS + 8) + 1];
+	static const char *made_for;
 
-	option_table(options, table, shortopts);
+	/* Once a list: the fuzz target runs several programs in one
+	 * process, each with its own. */
+	if (options != made_for) {
+		option_table(options, table, shortopts);
+		made_for = options;
+	}
 	/* getopt's own messages name argv[0]: the program's name instead of
 	 * the path it was run by (or a command's name, as imap's). */
 	if (argc > 0)
