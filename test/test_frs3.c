@@ -1,7 +1,6 @@
 /* 3-D Forced Random Sampling: setup against closed forms, sorted against
  * naive, and the statistics of what comes out against the volume. */
 #include "testutil.h"
-#include "base/num.h"
 #include "frsutil.h"
 #include "formats/frdio.h"
 #include "sample/frs3.h"
