@@ -27,6 +27,9 @@ if [ -n "$BASE" ] && [ ! -x "$BASE/../test/bench_api" ]; then
 	    >/dev/null 2>&1 || true
 fi
 
+# median_of FILE: the median of the numbers in FILE, one a line.
+median_of() { sort -g "$1" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+
 # med CMD...: the median wall seconds of R runs of CMD (output dropped).
 med() {
 	: >"$T/runs"
@@ -34,7 +37,7 @@ med() {
 		timed /dev/null "$@"
 		echo "$SEC" >>"$T/runs"
 	done
-	sort -g "$T/runs" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'
+	median_of "$T/runs"
 }
 
 # med_both ARGS...: "OURS BASE", the median wall seconds of R runs of
@@ -61,8 +64,6 @@ phase_run() {
 	sed -n "s/.* $2 \\([0-9.]*\\) s.*/\\1/p" "$T/v" >>"$5"
 }
 
-median_of() { sort -g "$1" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
-
 # phases NAME N J: "OURS BASE", the medians of 3R runs of one -v phase,
 # ours and the baseline's in turn (BASE 0 without one).  A phase of a few
 # milliseconds on two threads varies by 3x between runs here: fewer runs,
@@ -70,12 +71,11 @@ median_of() { sort -g "$1" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)
 phases() {
 	: >"$T/po"
 	: >"$T/pb"
-	echo 0 >"$T/pb0"
 	for _r in $(seq $((3 * R))); do
 		phase_run "$OURS" "$1" "$2" "$3" "$T/po"
 		[ -n "$BASE" ] && phase_run "$BASE" "$1" "$2" "$3" "$T/pb"
 	done
-	[ -s "$T/pb" ] || cp "$T/pb0" "$T/pb"
+	[ -s "$T/pb" ] || echo 0 >"$T/pb"
 	echo "$(median_of "$T/po") $(median_of "$T/pb")"
 }
 
@@ -198,7 +198,7 @@ if [ -n "${FRS_AUTHORS:-}" ]; then
 		n=$((1 << e))
 		: >"$T/runs"
 		for _r in $(seq "$R"); do $FRS_AUTHORS $n >>"$T/runs"; done
-		a=$(sort -g "$T/runs" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }')
+		a=$(median_of "$T/runs")
 		o=$(med "$OURS/frs-sample" -q -m "$MAT" -i blob -n $n -j 1 -o /dev/null)
 		printf '%-40s %10.4f %10.4f %8s  (authors_s, ours faster by)\n' "2^$e, one thread" "$o" "$a" "$(ratio "$a" "$o")"
 	done
