@@ -8,14 +8,14 @@
 #include "base/outfile.h"
 #include "base/par.h"
 #include "base/progress.h"
-#include "base/rng.h"
 
-#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* frd_toff, frd_tgap and frd_extent: one definition with the kernel. */
+/* frd_toff, frd_tgap and frd_extent: one definition with the kernel
+ * (defs.cl: the common subset's FRS_FN). */
+#include "../../../cl/defs.cl"
 #include "../../../cl/frdgen.cl"
 
 #define MAXLEV 40
