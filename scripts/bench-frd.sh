@@ -16,7 +16,6 @@ GEN=$BUILD/bin/frd-gen
 FRS=$BUILD/bin/frs-sample
 DDA=$BUILD/bin/dda
 REF=$BUILD/test/ref_frd
-SHARED=${FRS_SHARED:-../shared}
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 TIME=/usr/bin/time
@@ -85,7 +84,7 @@ if [ -z "${BENCH_QUICK:-}" ]; then
 	vrow "--field int32 (1 seed)" "$SEC" "$T"/int-1.frd
 fi
 if "$BUILD/bin/frd-prep" -q --import raw32 \
-    "$SHARED/data/ref/authors-512x512.matrix" -o "$T/authors.frd" 2>/dev/null; then
+    data/authors-512x512.matrix -o "$T/authors.frd" 2>/dev/null; then
 	vrow "the authors' 512^2" - "$T/authors.frd"
 fi
 echo "(previous defaults: $OLD)"

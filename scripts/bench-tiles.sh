@@ -1,5 +1,5 @@
 #!/bin/sh
-# Tiles: frs-sample --tiles plain against shuffled on the shared HDR maps
+# Tiles: frs-sample --tiles plain against shuffled on the HDR maps of data/
 # (forest, sunset, interior; --equirect, no jitter, the default matrix)
 # and on a constant map with 2^20 samples, in one run on one build.  Per
 # case: the tiles of the window; the share of samples whose 4-neighbour
@@ -10,13 +10,13 @@
 # thresholding time of sorted (-j 1, frs-sample -v), shuffled over plain
 # (target 1.10).  Then a block chi-square (16 x 8 blocks, 200000 samples)
 # of the counts against each map, shuffled (target p > 1e-4).
-# usage: scripts/bench-tiles.sh BUILD     ($FRS_SHARED: the shared folder)
+# usage: scripts/bench-tiles.sh BUILD
 set -eu
 cd "$(dirname "$0")/.."
 B=${1:-build/bench}
 FRS=$B/bin/frs-sample
 REF=$B/test/ref_tiles
-ENV=${FRS_SHARED:-../shared}/data/env
+ENV=data
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT INT TERM
 

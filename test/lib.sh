@@ -6,7 +6,8 @@
 set -u
 : "${BIN:?BIN must name the directory of the programs}"
 PATH="$BIN:$PATH"
-SHARED=${FRS_SHARED:-../shared}
+# The repository's data (test/run.sh runs every test from the top).
+TD=$PWD/data
 T=$(mktemp -d "${TMPDIR:-/tmp}/frs-test.XXXXXX")
 reached_end=0
 at_exit() {

@@ -12,7 +12,6 @@ cd "$top" || exit 1
 logs=$build/test-logs
 mkdir -p "$logs"
 export BIN="$top/$build/bin"
-export FRS_SHARED="${FRS_SHARED:-$top/../shared}"
 # Sanitizer settings: fail hard, and keep LeakSanitizer on.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=0:detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"

@@ -4,8 +4,8 @@
 
 # The thesis authors' matrix: raw little-endian int32, 512 x 512.
 check "import the authors' raw32 matrix" frd-prep --import raw32 \
-    "$SHARED/data/ref/authors-512x512.matrix" -o "$T/a.frd"
-tail -c $((4 * 512 * 512)) "$T/a.frd" | cmp -s - "$SHARED/data/ref/authors-512x512.matrix" &&
+    "$TD/authors-512x512.matrix" -o "$T/a.frd"
+tail -c $((4 * 512 * 512)) "$T/a.frd" | cmp -s - "$TD/authors-512x512.matrix" &&
     ok "values kept as they are" || nok "values kept as they are"
 check "sample from it" frs-sample -m "$T/a.frd" -i blob -n 1000 -o "$T/a.pts"
 

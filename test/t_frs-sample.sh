@@ -145,11 +145,11 @@ expect_fail "--sets past seed 2^64-1" 2 "2^64-1" "$T/o.pts" \
 
 # Hard maps: negative values clamped with a warning or refused, a real
 # HDR map, a map of one row.
-frs-sample -m "$M" -i "$SHARED/data/env/interior.exr" -s 128x64 -n 1000 -o "$T/int.pts" 2>"$T/warn"
+frs-sample -m "$M" -i "$TD/interior.exr" -s 128x64 -n 1000 -o "$T/int.pts" 2>"$T/warn"
 grep -q 'negative pixels clamped' "$T/warn" && ok "negative importance clamped with a warning" ||
     nok "negative importance clamped with a warning"
 expect_fail "--strict refuses negative importance" 1 "is negative" "$T/strict.pts" \
-    frs-sample -m "$M" --strict -i "$SHARED/data/env/interior.exr" -n 100 -o "$T/strict.pts"
+    frs-sample -m "$M" --strict -i "$TD/interior.exr" -n 100 -o "$T/strict.pts"
 check "1x4096 map" frs-sample -m "$M" -i ramp -s 1x4096 -n 500 -o "$T/thin.pts"
 
 # --exact-count: exactly n samples (each step too), nested with the

@@ -53,7 +53,7 @@ near "$(value mean "$T/info.eq")" 0.636619772 1e-8 &&
 
 # Real HDR environment maps (DWAB-compressed float RGB).
 for m in sunset forest interior; do
-	f=$SHARED/data/env/$m.exr
+	f=$TD/$m.exr
 	if imap info "$f" >"$T/info.$m" 2>"$T/err" &&
 	    [ "$(value width "$T/info.$m")" = 1024 ] &&
 	    [ "$(value nonfinite "$T/info.$m")" = 0 ]; then
@@ -69,7 +69,7 @@ done
 neg=$(value negatives "$T/info.interior")
 [ "${neg:-0}" -gt 1000 ] && ok "interior.exr has $neg negative pixels" ||
     nok "interior.exr negative pixels counted (got '$neg')"
-imap convert -s 128x64 "$SHARED/data/env/interior.exr" "$T/int.exr" 2>"$T/err"
+imap convert -s 128x64 "$TD/interior.exr" "$T/int.exr" 2>"$T/err"
 if [ $? -eq 0 ] && [ "$(grep -c 'negative pixels clamped' "$T/err")" = 1 ] &&
     grep -q "$neg negative" "$T/err"; then
 	ok "negatives clamped with one warning naming the count"
@@ -81,7 +81,7 @@ imap info "$T/int.exr" >"$T/info.int"
 [ "$(value negatives "$T/info.int")" = 0 ] && ok "clamped output has no negatives" ||
     nok "clamped output has no negatives"
 expect_fail "--strict refuses negative importance" 1 "is negative" "$T/strict.exr" \
-    imap convert --strict "$SHARED/data/env/interior.exr" "$T/strict.exr"
+    imap convert --strict "$TD/interior.exr" "$T/strict.exr"
 grep -q "pixel (" "$T/err" && ok "--strict names the pixel" || nok "--strict names the pixel"
 
 # Bad input: exit 1, file and problem named, no output left behind.
@@ -94,7 +94,7 @@ expect_fail "not a PNG" 1 "not a PNG or OpenEXR" "$T/o2.exr" \
 head -c 300 "$T/blob.png" >"$T/cut.png"
 expect_fail "truncated PNG" 1 "cut.png: bad PNG" "$T/o3.exr" \
     imap convert "$T/cut.png" "$T/o3.exr"
-head -c 2000 "$SHARED/data/env/sunset.exr" >"$T/cut.exr"
+head -c 2000 "$TD/sunset.exr" >"$T/cut.exr"
 expect_fail "truncated EXR" 1 "cut.exr" "$T/o4.png" \
     imap convert "$T/cut.exr" "$T/o4.png"
 expect_fail "unknown spec" 1 "unknown parameter 'radius'" "$T/o5.exr" \

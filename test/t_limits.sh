@@ -40,9 +40,9 @@ limit "imap gen -s" 1M "2000x2000 map: needs 30.5 MiB" "$T/a.png" \
 limit "imap info on a PNG too large for the ceiling" 1M \
     "blob.png: 600x600 map: needs 2.7 MiB" - imap info "$T/blob.png"
 limit "an EXR too large for the ceiling" 64k "needs" - \
-    imap info "$SHARED/data/env/sunset.exr"
+    imap info "$TD/sunset.exr"
 limit "EXR on standard input, buffered whole" 64k "<stdin>: needs" - \
-    sh -c "imap info - <'$SHARED/data/env/sunset.exr'"
+    sh -c "imap info - <'$TD/sunset.exr'"
 limit "pts-render -s" 1M "raster: needs 15.3 MiB" "$T/a.png" \
     pts-render -s 4000 "$T/p.txt" -o "$T/a.png"
 limit "discrepancy: text points grow past the ceiling" 256k "p.txt: needs" - \

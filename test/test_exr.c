@@ -5,8 +5,7 @@
  * The files read here are made in the test itself with the OpenEXR C API
  * (channel sets, pixel types, compressions, tiles, data windows that do
  * not start at 0) and hold values given by formulas, which are the
- * oracle.  The real DWAB light probes in the shared data directory
- * ($FRS_SHARED, default ../shared) are read as well.
+ * oracle.  The real DWAB light probes in data/ are read as well.
  */
 #include "base/err.h"
 #include "maps/imap.h"
@@ -840,18 +839,15 @@ struct probe_stats {
 static int read_probe(const char *file, struct frs_imap *m)
 {
 	int rc;
-	const char *shared = getenv("FRS_SHARED");
 	char path[4096];
 	unsigned char *buf;
 	long size;
 	FILE *fp;
 
-	snprintf(path, sizeof path, "%s/data/env/%s",
-	    shared && *shared ? shared : "../shared", file);
+	snprintf(path, sizeof path, "data/%s", file);
 	fp = fopen(path, "rb");
 	if (fp == NULL)
-		fail_msg("cannot open %s (set FRS_SHARED to the shared "
-		    "directory)", path);
+		fail_msg("cannot open %s (run from the top of the tree)", path);
 	assert_int_equal(fseek(fp, 0, SEEK_END), 0);
 	size = ftell(fp);
 	assert_true(size > 0);

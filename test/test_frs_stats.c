@@ -115,9 +115,7 @@ static void env_counts(void **state)
 		struct frs_result r, t;
 		double blocks[16][8] = { { 0 } }, worst = 0;
 		const uint64_t n = 200000;
-		snprintf(path, sizeof path, "%s/data/env/%s.exr",
-		    getenv("FRS_SHARED") ? getenv("FRS_SHARED") : "../shared",
-		    maps[k]);
+		snprintf(path, sizeof path, "data/%s.exr", maps[k]);
 		frs_set_quiet(1);
 		assert_int_equal(imap_load(path, 128, 64, IMAP_EQUIRECT, &map), 0);
 		imap_stats(&map, &st);
