@@ -85,44 +85,50 @@ static unsigned parse_blocks(const char *s, uint32_t *out)
 }
 
 /*
- * The setups of the counts on the map, as frs-sample makes them (tiles
- * auto): the block size of Sorted's lists for each, into blocks (each
- * size once); a table of them on fp when fp is not NULL.
+ * The setups of the counts on the map, as frs-sample makes them by
+ * default (the multi-level window, sigma), level by level: the block
+ * size of Sorted's lists for each, into blocks (each size once); a table
+ * of them on fp when fp is not NULL.
  */
 static unsigned blocks_for(const struct frs_matrix *m, const char *imp,
     double sigma, const uint64_t *n, unsigned nn, uint32_t *blocks, FILE *fp)
 {
 	struct frs_imap map;
+	struct frs_options o;
 	unsigned nb = 0;
 
+	frs_options_init(&o);
+	o.sigma = sigma;
 	if (imap_load(imp, 0, 0, 0, &map) < 0)
 		cli_die_lib();
 	if (fp != NULL)
-		fprintf(fp, "n\tn_s\twindow\ttiles\tblock\tminmap\tvalues\t"
+		fprintf(fp, "n\tlevel\tn_s\twindow\tblock\tminmap\tvalues\t"
 		    "from_frp\n");
 	for (unsigned k = 0; k < nn; k++) {
 		struct frs_setup su;
-		uint64_t vals;
-		uint32_t b;
-		unsigned i;
-		if (frs_setup(&su, &map, m, n[k], sigma, 1) < 0)
+		struct api_lev2 lv;
+		if (frs_setup(&su, &map, m, n[k], sigma, 1) < 0 ||
+		    api_lev2_make(&o, &su, &map, NULL, &lv) < 0)
 			cli_die_lib();
-		su.tiles = frs_tiles_auto(&su);
-		b = api_sorted_block(&su);
-		vals = api_lists_below(&su, &n[k], 1);
-		vals = vals < m->n ? vals : m->n;
-		if (fp != NULL)
-			fprintf(fp, "%llu\t%u\t%llux%llu\t%s\t%u\t%s\t%llu\t%s\n",
-			    (unsigned long long)n[k], su.ns,
-			    (unsigned long long)su.sw, (unsigned long long)su.sh,
-			    su.tiles == FRS_TILES_PLAIN ? "plain" : "shuffled", b,
-			    api_sorted_minmap(&su) ? "yes" : "no",
-			    (unsigned long long)vals,
-			    api_lists_from_frp(m, vals) ? "yes" : "no");
-		for (i = 0; i < nb && blocks[i] != b; i++)
-			;
-		if (i == nb)
-			blocks[nb++] = b;
+		for (unsigned l = 0; l < lv.n; l++) {
+			const struct frs_setup *t = &lv.su[l];
+			uint32_t b = api_sorted_block(t);
+			uint64_t vals = api_lists_below(t, &n[k], 1);
+			unsigned i;
+			vals = vals < m->n ? vals : m->n;
+			if (fp != NULL)
+				fprintf(fp, "%llu\t%u\t%u\t%llux%llu\t%u\t%s\t%llu\t"
+				    "%s\n", (unsigned long long)n[k], t->level, t->ns,
+				    (unsigned long long)t->sw, (unsigned long long)t->sh,
+				    b, api_sorted_minmap(t) ? "yes" : "no",
+				    (unsigned long long)vals,
+				    api_lists_from_frp(m, vals) ? "yes" : "no");
+			for (i = 0; i < nb && blocks[i] != b; i++)
+				;
+			if (i == nb)
+				blocks[nb++] = b;
+		}
+		api_lev2_free(&lv);
 	}
 	imap_free(&map);
 	return nb;

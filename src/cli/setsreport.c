@@ -35,6 +35,56 @@ static void report_setup(FILE *fp, const struct api_sets *o,
 		    r->tau0, r->dims == 2 ? s->exact.passes : t->exact.passes);
 }
 
+/* -v: set 0's levels, one line each: the level, its elements per cell
+ * side, its window and offset, its cells and (when noted) samples. */
+static void report_levels(FILE *fp, const struct api_sets *o,
+    const struct api_sets_run *r)
+{
+	unsigned n = r->dims == 2 ? r->lv.n : r->lv3.n;
+	int noted = !o->count_only;
+	double blur = r->dims == 2 ? r->lv.plan.blur : r->lv3.plan.blur;
+
+	if (r->opt.tiling != FRS_TILING_LEVELS)
+		return;
+	fprintf(fp, "frs-sample: %u level%s of the multi-level window", n,
+	    n == 1 ? "" : "s");
+	if (blur > 0.0)
+		fprintf(fp, ", smoothed over %g %s", blur, r->dims == 2 ?
+		    "pixels" : "voxels");
+	fputc('\n', fp);
+	for (unsigned i = 0; i < n; i++) {
+		const struct frs_setup *s = &r->lv.su[i];
+		const struct frs3_setup *t = &r->lv3.su[i];
+		const struct frs_levels *L = r->dims == 2 ? &r->lv.plan :
+		    &r->lv3.plan;
+		unsigned l = r->dims == 2 ? s->level : t->level;
+		uint64_t cells = L->lev != NULL ? L->cells[l] : 0;
+		if (r->dims == 2)
+			fprintf(fp, "frs-sample:   level %u: n_s %u, window "
+			    "%llux%llu at (%llu, %llu), tau %.9g", l, s->ns,
+			    (unsigned long long)s->sw, (unsigned long long)s->sh,
+			    (unsigned long long)s->wx, (unsigned long long)s->wy,
+			    s->tau);
+		else
+			fprintf(fp, "frs-sample:   level %u: n_s %u, window "
+			    "%llux%llux%llu at (%llu, %llu, %llu), tau %.9g", l,
+			    t->ns, (unsigned long long)t->sw,
+			    (unsigned long long)t->sh, (unsigned long long)t->sd,
+			    (unsigned long long)t->wx, (unsigned long long)t->wy,
+			    (unsigned long long)t->wz, t->tau);
+		if (L->lev != NULL)
+			fprintf(fp, ", %llu %s", (unsigned long long)cells,
+			    r->dims == 2 ? "pixels" : "voxels");
+		if (noted)
+			fprintf(fp, ", %llu samples", (unsigned long long)
+			    r->lcount[i]);
+		if (noted && r->lreused[i] >= 0.0)
+			fprintf(fp, " (%.1f %% showing a matrix element another "
+			    "shows too)", 100.0 * r->lreused[i]);
+		fputc('\n', fp);
+	}
+}
+
 void cli_sets_report(FILE *fp, const struct api_sets *o,
     const struct api_sets_run *r)
 {
@@ -42,6 +92,7 @@ void cli_sets_report(FILE *fp, const struct api_sets *o,
 	uint64_t nt = r->dims == 2 ? frs_tiles(&r->s0, &tx, &ty) : 0;
 
 	report_setup(fp, o, r);
+	report_levels(fp, o, r);
 	if (r->dims == 2 && r->made != 0)
 		fprintf(fp, "frs-sample: %s has no sorted lists of blocks of "
 		    "%u: made them here (frd-prep -a sorted --for N makes a .frp "

@@ -18,8 +18,8 @@
 extern "C" {
 #endif
 
-#define FRS_API_VERSION_MAJOR 1
-#define FRS_API_VERSION_MINOR 2
+#define FRS_API_VERSION_MAJOR 2
+#define FRS_API_VERSION_MINOR 0
 
 /* ---- errors ---------------------------------------------------------- */
 
@@ -115,6 +115,16 @@ int frs_default_matrix(frs_mask **mask, unsigned dims, char *path,
 int frs_map_load(const char *src, uint32_t width, uint32_t height,
     float **map, uint32_t *width_out, uint32_t *height_out, frs_error *err);
 void frs_map_free(float *map);
+/* Since 2.0: an equirectangular environment map (row 0 at the zenith)
+ * as an importance over the unit square proportional to solid angle,
+ * in place: row j times the mean of sin(theta) over its band of polar
+ * angles, theta from pi j / height to pi (j + 1) / height; rows stride
+ * elements apart (0: width).  What frs-sample --equirect does to a map
+ * before sampling it.  Thread-safe. */
+void frs_map_equirect(float *map, uint32_t width, uint32_t height,
+    size_t stride);
+void frs_map_equirect_f64(double *map, uint32_t width, uint32_t height,
+    size_t stride);
 
 /* ---- Forced Random Sampling ------------------------------------------ */
 
@@ -134,25 +144,37 @@ enum frs_rule_mode {
 				   moved so that exactly n samples pass
 				   (each step of progressive sampling) */
 };
-/* Since 1.1 (0.4.0): how a window larger than the mask tiles it. */
+/* How the window is laid over the mask (since 1.1; the multi-level
+ * window and these values since 2.0).  0 is the default, so that a
+ * zeroed struct frs_options is an initialised one. */
 enum frs_tiling_mode {
-	FRS_TILING_AUTO = 0,	/* shuffled when n fits the mask without
-				   repetition (n sigma^2 <= its size), else
-				   plain */
-	FRS_TILING_SHUFFLED,	/* each tile turned, flipped and shifted by
-				   (seed, tile): no lattice of repeats, but
-				   seams at the tile borders */
-	FRS_TILING_PLAIN	/* the mask repeated as it is (thesis 4.5) */
+	FRS_TILING_LEVELS = 0,	/* the multi-level window: elements whose
+				   size follows the map, so that every
+				   region thresholds the mask at a density
+				   where it is blue noise (libfrs(3)) */
+	FRS_TILING_SHUFFLED,	/* one level; each tile turned, flipped and
+				   shifted by (seed, tile): no lattice of
+				   repeats, but seams at the tile borders and
+				   white noise where the map is dark */
+	FRS_TILING_PLAIN	/* one level, the mask repeated as it is
+				   (the thesis, Sec. 4.5) */
 };
 
+/* The largest sparsity sigma (the options' and frs-sample's). */
+#define FRS_SIGMA_MAX 1024.0
+
 struct frs_options {
-	double sigma;			/* sparsity, default 8 */
+	double sigma;			/* sparsity, 1 .. FRS_SIGMA_MAX,
+					   default 8 */
 	enum frs_algorithm algorithm;	/* default FRS_ALG_SORTED */
 	enum frs_jitter_mode jitter;	/* default FRS_JIT_NONE */
 	enum frs_rule_mode rule;	/* default FRS_RULE_UNBIASED */
-	int threads;			/* per call, default 1 */
-	enum frs_tiling_mode tiling;	/* default FRS_TILING_PLAIN;
-					   since 1.1 */
+	int threads;			/* per call, default 1 (0: 1) */
+	enum frs_tiling_mode tiling;	/* default FRS_TILING_LEVELS */
+	double level_blur;		/* since 2.0: how far the levels are
+					   smoothed, in map pixels (volume
+					   voxels); 0: the default, 2 sigma;
+					   at most 1e4 */
 };
 /* The defaults above. */
 void frs_options_init(struct frs_options *opt);
@@ -226,6 +248,27 @@ struct frs_info {
 int frs_sampler_info(const frs_sampler *sampler, uint64_t n, uint64_t seed,
     struct frs_info *info, frs_error *err);
 
+/* Since 2.0: one level of the window of a run.  A run of one level
+ * (plain or shuffled tiles, or a map whose pixels all stay at level 0)
+ * has level 0 alone, whose setup frs_info gives. */
+struct frs_level_info {
+	unsigned level;		/* l: an element is 2^l x 2^l (x 2^l)
+				   elements of level 0 */
+	uint32_t ns;		/* its elements per pixel (voxel) side */
+	uint64_t window[3];	/* its window in elements (depth 1 in 2-D) */
+	uint64_t offset[3];	/* its offset in the tiled mask */
+	uint64_t cells;		/* pixels (voxels) of non-zero importance
+				   at this level */
+	double tau;		/* its threshold scale: 4^l (8^l) times
+				   level 0's */
+};
+/* The levels of the run of n samples with this seed, finest first:
+ * *count gets how many there are (1 to 32), the first cap of them go to
+ * levels (which may be NULL when cap is 0).  Thread-safe. */
+int frs_sampler_levels(const frs_sampler *sampler, uint64_t n,
+    uint64_t seed, struct frs_level_info *levels, unsigned cap,
+    unsigned *count, frs_error *err);
+
 /* ---- three dimensions (since 0.2.0) ---------------------------------- */
 
 typedef struct frs_sampler3 frs_sampler3;
@@ -256,6 +299,10 @@ int frs_draw3_progressive(const frs_sampler3 *sampler,
     double *pdf, uint32_t *step, size_t cap, size_t *count, frs_error *err);
 int frs_count3(const frs_sampler3 *sampler, uint64_t n, uint64_t seed,
     uint64_t *count, frs_error *err);
+/* Since 2.0: frs_sampler_levels for a volume (octree levels). */
+int frs_sampler3_levels(const frs_sampler3 *sampler, uint64_t n,
+    uint64_t seed, struct frs_level_info *levels, unsigned cap,
+    unsigned *count, frs_error *err);
 
 /* ---- Hierarchical Sample Warping ------------------------------------- */
 

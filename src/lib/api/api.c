@@ -92,13 +92,13 @@ void frs_options_init(struct frs_options *opt)
 {
 	*opt = (struct frs_options){ .sigma = 8.0, .algorithm = FRS_ALG_SORTED,
 	    .jitter = FRS_JIT_NONE, .rule = FRS_RULE_UNBIASED, .threads = 1,
-	    .tiling = FRS_TILING_PLAIN };
+	    .tiling = FRS_TILING_LEVELS, .level_blur = 0.0 };
 }
 
 static int check_options(const struct frs_options *o, frs_error *err)
 {
-	if (!(o->sigma >= 1.0 && o->sigma <= 1e6))
-		return api_arg_err(err, "options: sigma must lie in [1, 1e6]");
+	if (!(o->sigma >= 1.0 && o->sigma <= FRS_SIGMA_MAX))
+		return api_arg_err(err, "options: sigma must lie in [1, 1024]");
 	if ((unsigned)o->algorithm > FRS_ALG_LEVEL2)
 		return api_arg_err(err, "options: unknown algorithm");
 	if ((unsigned)o->jitter > FRS_JIT_RANDOM)
@@ -107,6 +107,8 @@ static int check_options(const struct frs_options *o, frs_error *err)
 		return api_arg_err(err, "options: unknown rule");
 	if ((unsigned)o->tiling > FRS_TILING_PLAIN)
 		return api_arg_err(err, "options: unknown tiling");
+	if (!(o->level_blur >= 0.0 && o->level_blur <= API_BLUR_MAX))
+		return api_arg_err(err, "options: level_blur must lie in [0, 1e4]");
 	if (o->threads < 0 || o->threads > 1024)
 		return api_arg_err(err, "options: threads must lie in 0 .. 1024");
 	return FRS_OK;
@@ -154,7 +156,8 @@ int api_run_begin(int have_s, int threads, const uint64_t *steps,
 /* The programs' words for the public enums, in their order. */
 const char *const api_jitter_words[] = { "none", "halton", "random", NULL };
 const char *const api_rule_words[] = { "unbiased", "thesis", NULL };
-const char *const api_tiling_words[] = { "auto", "shuffled", "plain", NULL };
+const char *const api_tiling_words[] = { "levels", "shuffled", "plain",
+    NULL };
 
 /* By enum frs_algorithm, then Flat 1. */
 static const int algos[] = {
@@ -194,9 +197,15 @@ enum frs_place api_jitter(const struct frs_options *o)
 	    o->jitter == FRS_JIT_RANDOM ? FRS_PLACE_RANDOM : FRS_PLACE_CENTRE;
 }
 
-enum frs_tiling api_tiling(const struct frs_options *o,
-    enum frs_tiling automatic)
+/* The levels' windows are plain, each. */
+enum frs_tiling api_tiling(const struct frs_options *o)
 {
-	return o->tiling == FRS_TILING_PLAIN ? FRS_TILES_PLAIN :
-	    o->tiling == FRS_TILING_SHUFFLED ? FRS_TILES_SHUFFLE : automatic;
+	return o->tiling == FRS_TILING_SHUFFLED ? FRS_TILES_SHUFFLE :
+	    FRS_TILES_PLAIN;
+}
+
+double api_blur(const struct frs_options *o)
+{
+	return o->tiling != FRS_TILING_LEVELS ? -1.0 :
+	    o->level_blur > 0.0 ? o->level_blur : 2.0 * o->sigma;
 }

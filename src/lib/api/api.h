@@ -20,6 +20,7 @@
 #include "sample/frscl.h"
 #include "sample/frscore.h"
 #include "sample/hsw.h"
+#include "sample/levels.h"
 
 struct old_lists {
 	struct frs_prep p;
@@ -43,18 +44,30 @@ struct frs_mask {
 	struct frs3_prep p3[32];	/* 3-D sorted lists by log2(block) */
 };
 
+/* The last plan of levels a sampler made (lev.c): the sets of a run
+ * share it, as they share their count. */
+struct api_plan {
+	pthread_mutex_t lock;
+	int valid;
+	double t0;		/* its key: level 0's threshold scale */
+	uint32_t ns;		/* and n_s */
+	struct frs_levels plan;
+};
+
 struct frs_sampler {
 	const frs_mask *mask;
 	struct frs_imap map;
 	struct frs_options opt;
 	int algo;		/* enum frs_impl, or FRSCL_FLAT1 on a device */
 	struct ocl *ocl;	/* the device of api_sampler_device, or NULL */
+	struct api_plan plan;
 };
 
 struct frs_sampler3 {
 	const frs_mask *mask;
 	struct frs_vol vol;
 	struct frs_options opt;
+	struct api_plan plan;
 };
 
 struct frs_hsw {
@@ -79,12 +92,15 @@ int api_readable(const char *path, frs_error *err);
 /* The caller's options (NULL: the defaults) into o, checked.  A code. */
 int api_options(struct frs_options *o, const struct frs_options *opt,
     frs_error *err);
-/* The options' rule, jitter and tiling as the setups take them; the
- * tiling automatic stands for FRS_TILING_AUTO. */
+/* The options' rule, jitter and tiling as the setups take them (each
+ * level's window is plain). */
 enum frs_rule api_rule(const struct frs_options *o);
 enum frs_place api_jitter(const struct frs_options *o);
-enum frs_tiling api_tiling(const struct frs_options *o,
-    enum frs_tiling automatic);
+enum frs_tiling api_tiling(const struct frs_options *o);
+/* The smoothing of the levels in cells, or -1 without levels (plain or
+ * shuffled tiles). */
+double api_blur(const struct frs_options *o);
+#define API_BLUR_MAX 1e4
 /* What every run checks first: a sampler (have_s), 1 to 16 increasing
  * counts, at most 2^40; then the sampler's threads are set.  A code. */
 int api_run_begin(int have_s, int threads, const uint64_t *steps,
@@ -150,28 +166,77 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
 /* frs_sampler_free and frs_sampler3_free. */
 void api_sampler_free(frs_sampler *s2, frs_sampler3 *s3);
 
+/* ---- the levels of a run (lev.c) ----------------------------------- */
+
+/*
+ * The levels of a 2-D run (sample/levels.h): the setup and the map of
+ * every level that has pixels, finest first.  A run of one level (plain
+ * or shuffled tiles, or a map whose pixels all stay at level 0) has level
+ * 0's setup, the thesis's; else each level's setup takes only the pixels
+ * that the plan gives it.  Every level reads the sampler's map.  base is
+ * level 0's
+ * setup (frs_sampler_info's) whether level 0 has pixels or not.
+ */
+struct api_lev2 {
+	unsigned n;
+	struct frs_setup base;
+	struct frs_setup su[FRS_LEVELS_MAX];
+	struct frs_imap map[FRS_LEVELS_MAX];	/* the sampler's, each */
+	struct frs_levels plan;	/* lev NULL with one level; the levels'
+				 * setups point to it */
+};
+/* The levels of level 0's setup s0 (for n, without exact taus) over the
+ * sampler's map under the options o; the plan from cache when it has
+ * the same, else made and kept there.  -1 after frs_fail. */
+int api_lev2_make(const struct frs_options *o, const struct frs_setup *s0,
+    const struct frs_imap *map, struct api_plan *cache, struct api_lev2 *lv);
+void api_lev2_free(struct api_lev2 *lv);
+/* The window elements of non-zero importance over the levels (exact
+ * counts' most). */
+uint64_t api_lev2_most(const struct api_lev2 *lv);
+/* Level 0's exact taus x into every level (each takes 4^l times them). */
+void api_lev2_exact(struct api_lev2 *lv, const struct frs_xtau *x);
+/* The block of Sorted's lists for level i, or 0 for none (the level
+ * scans or walks its pixels, frs_sorted_walk, which costs less than
+ * making the lists for a window of few elements). */
+uint32_t api_lev2_block(const struct api_lev2 *lv, unsigned i);
+
+/* The same in 3-D, over voxels, with 8^l. */
+struct api_lev3 {
+	unsigned n;
+	struct frs3_setup base;
+	struct frs3_setup su[FRS_LEVELS_MAX];
+	struct frs_vol vol[FRS_LEVELS_MAX];
+	struct frs_levels plan;
+};
+int api_lev3_make(const struct frs_options *o, const struct frs3_setup *s0,
+    const struct frs_vol *vol, struct api_plan *cache, struct api_lev3 *lv);
+/* A sampler's cache of plans (cache may be NULL: none), made and
+ * released with the sampler. */
+int api_plan_init(struct api_plan *c);
+void api_plan_free(struct api_plan *c);
+void api_lev3_free(struct api_lev3 *lv);
+uint64_t api_lev3_most(const struct api_lev3 *lv);
+void api_lev3_exact(struct api_lev3 *lv, const struct frs_xtau *x);
+
 /* ---- a run's samples to the caller (store.c) ----------------------- */
 
-/* One run of a 2-D or 3-D sampler: its setup and stored elements. */
+/* One run of a 2-D or 3-D sampler: its levels (lv or lv3, as dims says,
+ * owned) and the stored elements of each. */
 struct api_store {
-	unsigned dims, nsteps;
-	uint64_t nchunk, count;
-	union {
-		struct {
-			struct frs_setup su;
-			struct frs_result r;
-			const struct frs_imap *map;
-		} d2;
-		struct {
-			struct frs3_setup su;
-			struct frs3_result r;
-			const struct frs_vol *vol;
-		} d3;
-	} u;
+	unsigned dims, nsteps, nparts;
+	uint64_t count;
+	struct api_lev2 *lv;
+	struct frs_result r[FRS_LEVELS_MAX];
+	struct api_lev3 *lv3;
+	struct frs3_result r3[FRS_LEVELS_MAX];
 };
 
-/* The rest of st once the run of u.d2 or u.d3 (as dims says) is made. */
-void api_store_set(struct api_store *st, unsigned dims, unsigned nsteps);
+/* The rest of st once the runs of its first nparts levels are made. */
+void api_store_set(struct api_store *st, unsigned dims, unsigned nsteps,
+    unsigned nparts);
+/* Release the runs and the levels. */
+void api_store_free(struct api_store *st);
 /* Run sampler s (a frs_sampler or frs_sampler3) for steps with this
  * seed into st.  A code. */
 typedef int (*api_run_fn)(const void *s, const uint64_t *steps,
@@ -208,18 +273,22 @@ extern uint64_t api_wave;
  * frs_fail. */
 int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
     struct frs_setup *su);
-/* api_setup for steps, and with FRS_RULE_EXACT the exact taus of the
- * steps (api_exact): the setup every run of the sampler uses. */
+/* api_setup for the last of steps, its levels, and with FRS_RULE_EXACT
+ * the exact taus of the steps (api_exact): what every run of the sampler
+ * uses.  -1 after frs_fail; lv to be released with api_lev2_free. */
 int api_setup_steps(const frs_sampler *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, struct frs_setup *su);
-/* su->exact for steps (the last su->n) by Sorted's count passes, whose
- * lists it makes in the mask; su->tau the last step's. */
+    unsigned nsteps, uint64_t seed, struct api_lev2 *lv);
+/* The levels' exact taus for steps (the last lv->su[0].n) by Sorted's
+ * count passes over all levels, whose lists it makes in the mask. */
 int api_exact(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
-    struct frs_setup *su);
-/* The mask prepared for the sampler's runs of su (minmap, sorted lists):
- * what a run prepares first.  -1 after frs_fail (naming the matrix). */
-int api_sampler_prep(const frs_sampler *s, const struct frs_setup *su,
-    const uint64_t *steps, unsigned nsteps, struct frs_prep *view);
+    struct api_lev2 *lv);
+/* The mask prepared for the sampler's runs of level i of lv (minmap,
+ * sorted lists): what a run prepares first.  -1 after frs_fail (naming
+ * the matrix). */
+int api_sampler_prep(const frs_sampler *s, const struct api_lev2 *lv,
+    unsigned i, const uint64_t *steps, unsigned nsteps,
+    struct frs_prep *view);
+
 /* Draw on OpenCL device ocl (kept open by the caller) with algorithm alg
  * (an enum frs_algorithm or API_ALG_FLAT1), the same samples as on the
  * CPU; frscl_last_times has the last run's phases. */
@@ -238,12 +307,12 @@ double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
 
 /* ---- 3-D sampling (draw3.c) ---------------------------------------- */
 
-/* The setup of the steps with this seed, options applied (with
- * FRS_RULE_EXACT its exact taus when view is not NULL); -1 after
- * frs_fail. */
+/* The levels of the steps with this seed, options applied, with
+ * FRS_RULE_EXACT and exact their exact taus (whose passes prepare the
+ * mask's lists); -1 after frs_fail, lv to be released with
+ * api_lev3_free. */
 int api_setup3(const frs_sampler3 *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, const struct frs3_prep *view,
-    struct frs3_setup *su);
+    unsigned nsteps, uint64_t seed, int exact, struct api_lev3 *lv);
 /* The mask's lists for the sampler's runs of su. */
 int api_sampler3_prep(const frs_sampler3 *s, const struct frs3_setup *su,
     struct frs3_prep *view);
@@ -284,8 +353,15 @@ struct api_sets {
 /* What came of them, for the -v report and the warnings. */
 struct api_sets_run {
 	unsigned dims;
-	struct frs_setup s0;	/* set 0's setup (2-D) */
+	struct frs_setup s0;	/* set 0's setup of level 0 (2-D) */
 	struct frs3_setup s3;	/* (3-D) */
+	struct api_lev2 lv;	/* set 0's levels (2-D) */
+	struct api_lev3 lv3;	/* (3-D) */
+	uint64_t lcount[FRS_LEVELS_MAX];	/* with -v: set 0's samples
+						 * per level (lv's order) */
+	double lreused[FRS_LEVELS_MAX];	/* and the share of them whose matrix
+					 * element another of the level
+					 * shows too (2-D), or -1 */
 	double tau0;		/* with FRS_RULE_EXACT: set 0's tau without */
 	const char *made_in;	/* a .frp that lacked lists made here */
 	uint32_t made;		/* their block, 0 when none */

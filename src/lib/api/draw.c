@@ -8,6 +8,7 @@
 #include "frs.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "api/api.h"
 #include "base/err.h"
@@ -51,88 +52,107 @@ int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
 		return -1;
 	su->rule = api_rule(&s->opt);
 	su->jitter = api_jitter(&s->opt);
-	su->tiles = api_tiling(&s->opt, frs_tiles_auto(su));
+	su->tiles = api_tiling(&s->opt);
 	return 0;
 }
 
-/* The exact counts' passes: Sorted's count of the window at any tau,
- * with lists for a little more than the largest tau asked so far (the
- * passes around one tau need one list making). */
+/* The exact counts' passes: Sorted's count of the window at any tau
+ * (level 0's: each level's is 4^l of it), the levels' counts added, with
+ * lists for a little more than the largest tau asked so far (the passes
+ * around one tau need one list making per level). */
 struct xcount {
 	const frs_sampler *s;
-	struct frs_setup su;
-	int minmap, have;
-	uint32_t block;
-	struct frs_prep view;
+	struct api_lev2 *lv;
+	int have[FRS_LEVELS_MAX];
+	struct frs_prep view[FRS_LEVELS_MAX];
 };
 
 static int xcount_fn(void *ctx, double tau, uint64_t *count)
 {
 	struct xcount *x = ctx;
-	struct frs_result r;
-
-	if (!x->have || x->view.below < frs_lim_most(&x->su, tau)) {
-		if (api_mask_prep(x->s->mask, x->minmap, x->block,
-		    frs_lim_most(&x->su, tau * 1.0625), &x->view) < 0)
-			return -1;
-		x->have = 1;
-	}
-	x->su.exact = (struct frs_xtau){ .n = 1, .steps = { x->su.n },
+	struct frs_xtau xt = { .n = 1, .steps = { x->lv->su[0].n },
 	    .tau = { tau } };
-	if (frs_sample(&x->su, &x->s->map, &x->view, FRS_SORTED, &x->su.n, 1,
-	    1, &r) < 0)
-		return -1;
-	*count = r.count;
-	frs_result_free(&r);
+
+	*count = 0;
+	api_lev2_exact(x->lv, &xt);
+	for (unsigned i = 0; i < x->lv->n; i++) {
+		struct frs_setup *su = &x->lv->su[i];
+		struct frs_result r;
+		uint32_t b = api_lev2_block(x->lv, i);
+		if (!x->have[i] || (b && x->view[i].below <
+		    api_lists_below(su, &su->n, 1))) {
+			if (api_mask_prep(x->s->mask, b == 0 || b < su->ns, b,
+			    b ? frs_lim_most(su, 1.0625 * frs_tau(su, su->n)) : 0,
+			    &x->view[i]) < 0)
+				return -1;
+			x->have[i] = 1;
+		}
+		if (frs_sample(su, &x->lv->map[i], &x->view[i], FRS_SORTED,
+		    &su->n, 1, 1, &r) < 0)
+			return -1;
+		*count += r.count;
+		frs_result_free(&r);
+	}
 	return 0;
 }
 
 int api_exact(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
-    struct frs_setup *su)
+    struct api_lev2 *lv)
 {
-	struct xcount x = { s, *su, api_sorted_minmap(su), 0,
-	    api_sorted_block(su), { 0 } };
+	struct xcount x = { .s = s, .lv = lv };
+	struct frs_setup *s0 = &lv->su[0];
+	struct frs_xtau xt;
 	double tau0[16];
 	unsigned passes;
 
 	if (frs_steps_check(steps, nsteps) < 0)
 		return -1;
 	for (unsigned k = 0; k < nsteps; k++)
-		tau0[k] = frs_tau(su, steps[k]);
-	if (frs_exact_taus(steps, nsteps, tau0, frs_exact_most(s->map.v,
-	    (uint64_t)s->map.w * s->map.h, su->ns, 2), xcount_fn, &x,
-	    &su->exact, &passes) < 0)
+		tau0[k] = frs_tau(s0, steps[k]) / s0->lfac;
+	if (frs_exact_taus(steps, nsteps, tau0, api_lev2_most(lv), xcount_fn,
+	    &x, &xt, &passes) < 0)
 		return -1;
-	su->tau = frs_tau(su, su->n);
+	api_lev2_exact(lv, &xt);
 	return 0;
 }
 
 int api_setup_steps(const frs_sampler *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, struct frs_setup *su)
+    unsigned nsteps, uint64_t seed, struct api_lev2 *lv)
 {
-	if (api_setup(s, steps[nsteps - 1], seed, su) < 0)
+	struct frs_setup su;
+
+	memset(lv, 0, sizeof *lv);
+	if (api_setup(s, steps[nsteps - 1], seed, &su) < 0 ||
+	    api_lev2_make(&s->opt, &su, &s->map, (struct api_plan *)&s->plan,
+	    lv) < 0)
 		return -1;
-	if (s->opt.rule == FRS_RULE_EXACT)
-		return api_exact(s, steps, nsteps, su);
+	if (s->opt.rule == FRS_RULE_EXACT && api_exact(s, steps, nsteps, lv) < 0) {
+		api_lev2_free(lv);
+		return -1;
+	}
 	return 0;
 }
 
 /* Stack, Level 1, Level 2 and Flat 1 walk the minmap; Sorted takes its
- * lists, and the minmap too when its blocks are smaller than a pixel. */
-int api_sampler_prep(const frs_sampler *s, const struct frs_setup *su,
-    const uint64_t *steps, unsigned nsteps, struct frs_prep *view)
+ * lists (api_lev2_block), and the minmap too when its blocks are smaller
+ * than a pixel or it has none. */
+int api_sampler_prep(const frs_sampler *s, const struct api_lev2 *lv,
+    unsigned i, const uint64_t *steps, unsigned nsteps,
+    struct frs_prep *view)
 {
-	int sorted = s->algo == FRS_SORTED;
-	int minmap = sorted ? api_sorted_minmap(su) : s->algo != FRS_NAIVE;
+	const struct frs_setup *su = &lv->su[i];
+	uint32_t b = s->algo == FRS_SORTED ? api_lev2_block(lv, i) : 0;
+	int minmap = s->algo == FRS_SORTED ? b == 0 || b < su->ns :
+	    s->algo != FRS_NAIVE;
 
-	return api_mask_prep(s->mask, minmap, sorted ? api_sorted_block(su) : 0,
-	    sorted ? api_lists_below(su, steps, nsteps) : 0, view);
+	return api_mask_prep(s->mask, minmap, b, b ? api_lists_below(su, steps,
+	    nsteps) : 0, view);
 }
 
-/* The setup and prepared matrix of a run for steps with this seed, and
- * the sampler's thread count set.  A code. */
+/* The levels and the prepared matrix of each for a run of steps with
+ * this seed, and the sampler's thread count set.  A code. */
 static int begin_run(const frs_sampler *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, struct frs_setup *su,
+    unsigned nsteps, uint64_t seed, struct api_lev2 *lv,
     struct frs_prep *view, frs_error *err)
 {
 	int rc = api_run_begin(s != NULL, s != NULL ? s->opt.threads : 0, steps,
@@ -140,32 +160,47 @@ static int begin_run(const frs_sampler *s, const uint64_t *steps,
 
 	if (rc != FRS_OK)
 		return rc;
-	if (api_setup_steps(s, steps, nsteps, seed, su) < 0)
+	if (api_setup_steps(s, steps, nsteps, seed, lv) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
-	if (api_sampler_prep(s, su, steps, nsteps, view) < 0)
-		return api_lib_err(err, FRS_E_FORMAT);
+	for (unsigned i = 0; i < lv->n; i++)
+		if (api_sampler_prep(s, lv, i, steps, nsteps, &view[i]) < 0) {
+			api_lev2_free(lv);
+			return api_lib_err(err, FRS_E_FORMAT);
+		}
 	return FRS_OK;
 }
 
-/* Threshold the window for steps with this seed, on the sampler's device
- * or the CPU, into st.  A code. */
+/* Threshold the window of every level for steps with this seed, on the
+ * sampler's device or the CPU, into st.  A code. */
 static int run(const void *vs, const uint64_t *steps, unsigned nsteps,
     uint64_t seed, int count_only, struct api_store *st, frs_error *err)
 {
 	const frs_sampler *s = vs;
-	struct frs_setup *su = &st->u.d2.su;
-	struct frs_result *r = &st->u.d2.r;
-	struct frs_prep view;
-	int rc = begin_run(s, steps, nsteps, seed, su, &view, err);
+	struct frs_prep view[FRS_LEVELS_MAX];
+	struct api_lev2 *lv = malloc(sizeof *lv);
+	int rc;
 
-	if (rc != FRS_OK)
+	memset(st, 0, sizeof *st);
+	if (lv == NULL)
+		return api_nomem(err);
+	if ((rc = begin_run(s, steps, nsteps, seed, lv, view, err)) != FRS_OK) {
+		free(lv);
 		return rc;
-	if ((s->ocl != NULL ? frs_sample_cl(s->ocl, su, &s->map, &view,
-	    s->algo, steps, nsteps, count_only, r) : frs_sample(su, &s->map,
-	    &view, (enum frs_impl)s->algo, steps, nsteps, count_only, r)) < 0)
-		return api_lib_err(err, FRS_E_LIMIT);
-	st->u.d2.map = &s->map;
-	api_store_set(st, 2, nsteps);
+	}
+	st->lv = lv;
+	for (unsigned i = 0; i < lv->n; i++) {
+		const struct frs_setup *su = &lv->su[i];
+		if ((s->ocl != NULL ? frs_sample_cl(s->ocl, su, &lv->map[i],
+		    &view[i], s->algo, steps, nsteps, count_only, &st->r[i]) :
+		    frs_sample(su, &lv->map[i], &view[i], (enum frs_impl)s->algo,
+		    steps, nsteps, count_only, &st->r[i])) < 0) {
+			rc = api_lib_err(err, FRS_E_LIMIT);
+			api_store_set(st, 2, nsteps, i);
+			api_store_free(st);
+			return rc;
+		}
+	}
+	api_store_set(st, 2, nsteps, lv->n);
 	return FRS_OK;
 }
 
@@ -207,25 +242,48 @@ static int direct_ok(const frs_sampler *s, const uint64_t *steps,
 	    s->algo == FRS_SORTED && s->ocl == NULL;
 }
 
-/* The count of every chunk: at[c] the first sample of chunk c, at[nchunk]
- * the total.  A code; *at is the caller's to free. */
-static int chunk_starts(const frs_sampler *s, const struct frs_setup *su,
-    const struct frs_prep *view, uint64_t **at, frs_error *err)
+/* One level of a direct run: its setup, map and prepared matrix, and
+ * at[c] the first sample of its chunk c (at[nc] its count).  A level
+ * whose Sorted walks the minmap (no lists) is thresholded once, its
+ * elements kept in r: a count would cost a second walk. */
+struct dlev {
+	const struct frs_setup *su;
+	const struct frs_imap *map;
+	const struct frs_prep *view;
+	uint64_t *at, nc;
+	struct frs_result r;
+};
+
+/* A direct run: the levels, and the samples of all and of the largest
+ * wave. */
+struct drun {
+	struct api_lev2 lv;
+	struct frs_prep view[FRS_LEVELS_MAX];
+	struct dlev l[FRS_LEVELS_MAX];
+	uint64_t total, most;
+};
+
+/* The count of every chunk of level dl into dl->at (with the elements
+ * kept in dl->r when it has no lists).  A code. */
+static int chunk_starts(struct dlev *dl, frs_error *err)
 {
 	struct frs_result r;
-	uint64_t nc = frs_nchunks(su);
+	uint64_t nc = frs_nchunks(dl->su);
+	int keep = dl->view->block == 0;
 
-	if ((*at = malloc((nc + 1) * sizeof **at)) == NULL)
+	dl->nc = nc;
+	if ((dl->at = malloc((nc + 1) * sizeof *dl->at)) == NULL)
 		return api_nomem(err);
-	if (frs_sample(su, &s->map, view, FRS_SORTED, &su->n, 1, 1, &r) < 0) {
-		free(*at);
-		*at = NULL;
+	if (frs_sample(dl->su, dl->map, dl->view, FRS_SORTED, &dl->su->n, 1,
+	    !keep, &r) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
-	}
-	(*at)[0] = 0;
+	dl->at[0] = 0;
 	for (uint64_t c = 0; c < nc; c++)
-		(*at)[c + 1] = (*at)[c] + r.chunk[c].count;
-	frs_result_free(&r);
+		dl->at[c + 1] = dl->at[c] + r.chunk[c].count;
+	if (keep)
+		dl->r = r;
+	else
+		frs_result_free(&r);
 	return FRS_OK;
 }
 
@@ -261,19 +319,83 @@ static uint64_t wave_most(const uint64_t *at, uint64_t nc)
 	return most;
 }
 
-/*
- * Threshold wave after wave, the elements of a wave in one store (its
- * pages touched once for the run, not once per chunk), each chunk turned
- * into points by direct_chunk where d says; after each wave, out(octx,
- * first sample, samples) if out is not NULL.  d->base follows the wave
- * when wave_base (a buffer of one wave), else stays (the whole run's).
- */
-static int direct_waves(const frs_sampler *s, const struct frs_setup *su,
-    const struct frs_prep *view, const uint64_t *at, struct direct *d,
-    int wave_base, int (*out)(void *, uint64_t, uint64_t), void *octx,
+static void drun_end(struct drun *d)
+{
+	for (unsigned i = 0; i < d->lv.n; i++) {
+		free(d->l[i].at);
+		frs_result_free(&d->l[i].r);
+	}
+	api_lev2_free(&d->lv);
+	free(d);
+}
+
+/* The levels of n samples with this seed, each counted chunk by chunk.
+ * A code; *dp NULL on failure. */
+static int drun_begin(const frs_sampler *s, uint64_t n, uint64_t seed,
+    struct drun **dp, frs_error *err)
+{
+	struct drun *d = calloc(1, sizeof *d);
+	int rc;
+
+	if ((*dp = d) == NULL)
+		return api_nomem(err);
+	if ((rc = begin_run(s, &n, 1, seed, &d->lv, d->view, err)) != FRS_OK) {
+		free(d);
+		*dp = NULL;
+		return rc;
+	}
+	for (unsigned i = 0; i < d->lv.n; i++) {
+		struct dlev *dl = &d->l[i];
+		uint64_t m;
+		*dl = (struct dlev){ &d->lv.su[i], &d->lv.map[i], &d->view[i],
+		    NULL, 0, { 0 } };
+		if ((rc = chunk_starts(dl, err)) != FRS_OK) {
+			drun_end(d);
+			*dp = NULL;
+			return rc;
+		}
+		d->total += dl->at[dl->nc];
+		m = wave_most(dl->at, dl->nc);
+		d->most = m > d->most ? m : d->most;
+	}
+	return FRS_OK;
+}
+
+/* direct_waves for a level whose elements dl->r holds: each chunk
+ * converted in turn. */
+static int kept_waves(const struct dlev *dl, struct direct *d,
+    int wave_base, int (*out)(void *, uint64_t), void *octx,
     frs_error *err)
 {
-	uint64_t nc = frs_nchunks(su), most = wave_most(at, nc);
+	for (uint64_t c0 = 0, c1; c0 < dl->nc; c0 = c1) {
+		c1 = wave_end(dl->at, c0, dl->nc);
+		if (wave_base)
+			d->base = dl->at[c0];
+		for (uint64_t c = c0; c < c1; c++)
+			if (direct_chunk(d, c, &dl->r.chunk[c]) < 0)
+				return api_lib_err(err, FRS_E_LIMIT);
+		if (out != NULL && out(octx, dl->at[c1] - dl->at[c0]) != 0)
+			return api_set_err(err, FRS_E_CALLBACK,
+			    "stopped by the callback");
+	}
+	return FRS_OK;
+}
+
+/*
+ * Threshold level dl wave after wave, the elements of a wave in one store
+ * (its pages touched once for the run, not once per chunk), each chunk
+ * turned into points by direct_chunk where d says; after each wave,
+ * out(octx, samples) if out is not NULL.  d->base follows the wave when
+ * wave_base (a buffer of one wave), else stays (the level's first).
+ */
+static int direct_waves(const struct dlev *dl, struct direct *d,
+    int wave_base, int (*out)(void *, uint64_t), void *octx,
+    frs_error *err)
+{
+	uint64_t nc = dl->nc, most = wave_most(dl->at, nc);
+
+	if (dl->r.chunk != NULL)
+		return kept_waves(dl, d, wave_base, out, octx, err);
 	struct frs_elem *store = malloc((size_t)(most + 1) * sizeof *store);
 	uint64_t *rel = malloc((size_t)(nc + 1) * sizeof *rel);
 	int rc = FRS_OK, team = 0;
@@ -287,18 +409,17 @@ static int direct_waves(const frs_sampler *s, const struct frs_setup *su,
 	else
 		team = 1;
 	for (uint64_t c0 = 0, c1, o; rc == FRS_OK && c0 < nc; c0 = c1) {
-		c1 = wave_end(at, c0, nc);
+		c1 = wave_end(dl->at, c0, nc);
 		for (uint64_t c = c0; c <= c1; c++)
-			rel[c - c0] = at[c] - at[c0];
+			rel[c - c0] = dl->at[c] - dl->at[c0];
 		if (wave_base)
-			d->base = at[c0];
-		o = at[c0] - d->base;
-		if (frs_sample_each(su, &s->map, view, FRS_SORTED, c0, c1, rel,
-		    store, d->xy != NULL ? d->xy + 2 * o : NULL,
-		    d->pdf != NULL ? d->pdf + o : NULL,
-		    direct_chunk, d) < 0)
+			d->base = dl->at[c0];
+		o = dl->at[c0] - d->base;
+		if (frs_sample_each(dl->su, dl->map, dl->view, FRS_SORTED, c0, c1,
+		    rel, store, d->xy != NULL ? d->xy + 2 * o : NULL,
+		    d->pdf != NULL ? d->pdf + o : NULL, direct_chunk, d) < 0)
 			rc = api_lib_err(err, FRS_E_LIMIT);
-		else if (out != NULL && out(octx, at[c0], at[c1] - at[c0]) != 0)
+		else if (out != NULL && out(octx, dl->at[c1] - dl->at[c0]) != 0)
 			rc = api_set_err(err, FRS_E_CALLBACK, "stopped by the callback");
 	}
 	if (team)
@@ -311,23 +432,25 @@ static int direct_waves(const frs_sampler *s, const struct frs_setup *su,
 static int draw_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
     double *xy, double *pdf, size_t bufcap, size_t *count, frs_error *err)
 {
-	struct frs_setup su;
-	struct frs_prep view;
-	struct direct d;
-	uint64_t *at, nc;
-	int rc = begin_run(s, &n, 1, seed, &su, &view, err);
+	struct drun *d;
+	uint64_t first = 0;
+	int rc = drun_begin(s, n, seed, &d, err);
 
-	if (rc != FRS_OK || (rc = chunk_starts(s, &su, &view, &at, err)) != FRS_OK)
+	if (rc != FRS_OK)
 		return rc;
-	nc = frs_nchunks(&su);
-	*count = (size_t)at[nc];
-	if (at[nc] > bufcap) {
-		free(at);
+	*count = (size_t)d->total;
+	if (d->total > bufcap) {
+		drun_end(d);
 		return api_too_small("frs_draw", err);
 	}
-	d = (struct direct){ &su, &s->map, at, 0, xy, pdf };
-	rc = direct_waves(s, &su, &view, at, &d, 0, NULL, NULL, err);
-	free(at);
+	for (unsigned i = 0; rc == FRS_OK && i < d->lv.n; i++) {
+		const struct dlev *dl = &d->l[i];
+		struct direct dd = { dl->su, dl->map, dl->at, 0, xy + 2 * first,
+		    pdf != NULL ? pdf + first : NULL };
+		rc = direct_waves(dl, &dd, 0, NULL, NULL, err);
+		first += dl->at[dl->nc];
+	}
+	drun_end(d);
 	return rc != FRS_OK ? rc : api_ok(err);
 }
 
@@ -390,11 +513,10 @@ struct wave_cb {
 	const double *xy, *pdf;
 };
 
-static int wave_out(void *ctx, uint64_t first, uint64_t n)
+static int wave_out(void *ctx, uint64_t n)
 {
 	const struct wave_cb *w = ctx;
 
-	(void)first;
 	for (uint64_t i = 0; i < n; i += API_BATCH) {
 		size_t k = n - i < API_BATCH ? (size_t)(n - i) : API_BATCH;
 		if (w->fn(w->ctx, w->xy + 2 * i, w->pdf != NULL ? w->pdf + i :
@@ -407,28 +529,26 @@ static int wave_out(void *ctx, uint64_t first, uint64_t n)
 static int each_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
     int want_pdf, frs_point_fn fn, void *ctx, frs_error *err)
 {
-	struct frs_setup su;
-	struct frs_prep view;
-	struct direct d;
+	struct drun *d;
 	struct wave_cb w;
-	uint64_t *at = NULL, most;
 	double *xy = NULL, *pdf = NULL;
-	int rc = begin_run(s, &n, 1, seed, &su, &view, err);
+	int rc = drun_begin(s, n, seed, &d, err);
 
-	if (rc != FRS_OK || (rc = chunk_starts(s, &su, &view, &at, err)) != FRS_OK)
+	if (rc != FRS_OK)
 		return rc;
-	most = wave_most(at, frs_nchunks(&su));
-	xy = malloc((size_t)(2 * most + 1) * sizeof *xy);
-	pdf = want_pdf ? malloc((size_t)(most + 1) * sizeof *pdf) : NULL;
+	xy = malloc((size_t)(2 * d->most + 1) * sizeof *xy);
+	pdf = want_pdf ? malloc((size_t)(d->most + 1) * sizeof *pdf) : NULL;
 	if (xy == NULL || (want_pdf && pdf == NULL))
 		rc = api_nomem(err);
-	d = (struct direct){ &su, &s->map, at, 0, xy, pdf };
-	w = (struct wave_cb){ fn, ctx, at[frs_nchunks(&su)], xy, pdf };
-	if (rc == FRS_OK)
-		rc = direct_waves(s, &su, &view, at, &d, 1, wave_out, &w, err);
+	w = (struct wave_cb){ fn, ctx, d->total, xy, pdf };
+	for (unsigned i = 0; rc == FRS_OK && i < d->lv.n; i++) {
+		const struct dlev *dl = &d->l[i];
+		struct direct dd = { dl->su, dl->map, dl->at, 0, xy, pdf };
+		rc = direct_waves(dl, &dd, 1, wave_out, &w, err);
+	}
 	free(xy);
 	free(pdf);
-	free(at);
+	drun_end(d);
 	return rc != FRS_OK ? rc : api_ok(err);
 }
 
@@ -447,7 +567,8 @@ int frs_draw_each(const frs_sampler *s, const uint64_t *steps,
 int frs_sampler_info(const frs_sampler *s, uint64_t n, uint64_t seed,
     struct frs_info *info, frs_error *err)
 {
-	struct frs_setup su;
+	struct api_lev2 lv;
+	const struct frs_setup *su = &lv.base;
 
 	if (s == NULL || info == NULL)
 		return api_arg_err(err, "frs_sampler_info: NULL argument");
@@ -456,10 +577,11 @@ int frs_sampler_info(const frs_sampler *s, uint64_t n, uint64_t seed,
 	if (n > API_MAX_N)
 		return api_set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
 	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
-	if (api_setup_steps(s, &n, 1, seed, &su) < 0)
+	if (api_setup_steps(s, &n, 1, seed, &lv) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
-	*info = (struct frs_info){ su.ns, su.sw, su.sh, su.wx, su.wy, su.tau,
-	    su.mean, su.max, frs_unique(&su) };
+	*info = (struct frs_info){ su->ns, su->sw, su->sh, su->wx, su->wy,
+	    su->tau, su->mean, su->max, frs_unique(su) };
+	api_lev2_free(&lv);
 	return api_ok(err);
 }
 

@@ -5,6 +5,9 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
 
+#include <stdlib.h>
+#include <string.h>
+
 #include "api/api.h"
 #include "base/err.h"
 #include "maps/vol.h"
@@ -32,21 +35,6 @@ void frs_sampler3_free(frs_sampler3 *s)
 	api_sampler_free(NULL, s);
 }
 
-int api_setup3(const frs_sampler3 *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, const struct frs3_prep *view,
-    struct frs3_setup *su)
-{
-	if (frs3_setup(su, &s->vol, &s->mask->m, steps[nsteps - 1],
-	    s->opt.sigma, seed) < 0)
-		return -1;
-	su->rule = api_rule(&s->opt);
-	su->jitter = api_jitter(&s->opt);
-	su->tiles = api_tiling(&s->opt, frs3_tiles_auto(su));
-	if (view != NULL && s->opt.rule == FRS_RULE_EXACT)
-		return frs3_exact(su, &s->vol, view, steps, nsteps);
-	return 0;
-}
-
 int api_sampler3_prep(const frs_sampler3 *s, const struct frs3_setup *su,
     struct frs3_prep *view)
 {
@@ -54,30 +42,113 @@ int api_sampler3_prep(const frs_sampler3 *s, const struct frs3_setup *su,
 	    frs3_block(su) : 0, view);
 }
 
+static enum frs_impl algo3(const frs_sampler3 *s)
+{
+	return s->opt.algorithm == FRS_ALG_NAIVE ? FRS_NAIVE : FRS_SORTED;
+}
+
+/* Exact counts: the levels' counts at level 0's tau, added. */
+struct xcount3 {
+	const frs_sampler3 *s;
+	struct api_lev3 *lv;
+};
+
+static int xcount3_fn(void *ctx, double tau, uint64_t *count)
+{
+	struct xcount3 *x = ctx;
+	struct frs_xtau xt = { .n = 1, .steps = { x->lv->su[0].n },
+	    .tau = { tau } };
+
+	*count = 0;
+	api_lev3_exact(x->lv, &xt);
+	for (unsigned i = 0; i < x->lv->n; i++) {
+		struct frs3_setup *su = &x->lv->su[i];
+		struct frs3_prep view;
+		struct frs3_result r;
+		if (api_sampler3_prep(x->s, su, &view) < 0 ||
+		    frs3_sample(su, &x->lv->vol[i], &view, algo3(x->s), &su->n, 1,
+		    1, &r) < 0)
+			return -1;
+		*count += r.count;
+		frs3_result_free(&r);
+	}
+	return 0;
+}
+
+static int exact3(const frs_sampler3 *s, const uint64_t *steps,
+    unsigned nsteps, struct api_lev3 *lv)
+{
+	struct xcount3 x = { s, lv };
+	struct frs_xtau xt;
+	double tau0[16];
+	unsigned passes;
+
+	if (frs_steps_check(steps, nsteps) < 0)
+		return -1;
+	for (unsigned k = 0; k < nsteps; k++)
+		tau0[k] = frs3_tau(&lv->base, steps[k]);
+	if (frs_exact_taus(steps, nsteps, tau0, api_lev3_most(lv), xcount3_fn,
+	    &x, &xt, &passes) < 0)
+		return -1;
+	api_lev3_exact(lv, &xt);
+	return 0;
+}
+
+int api_setup3(const frs_sampler3 *s, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int exact, struct api_lev3 *lv)
+{
+	struct frs3_setup su;
+
+	memset(lv, 0, sizeof *lv);
+	if (frs3_setup(&su, &s->vol, &s->mask->m, steps[nsteps - 1],
+	    s->opt.sigma, seed) < 0)
+		return -1;
+	su.rule = api_rule(&s->opt);
+	su.jitter = api_jitter(&s->opt);
+	su.tiles = api_tiling(&s->opt);
+	if (api_lev3_make(&s->opt, &su, &s->vol, (struct api_plan *)&s->plan,
+	    lv) < 0)
+		return -1;
+	if (exact && s->opt.rule == FRS_RULE_EXACT &&
+	    exact3(s, steps, nsteps, lv) < 0) {
+		api_lev3_free(lv);
+		return -1;
+	}
+	return 0;
+}
+
 static int run3(const void *vs, const uint64_t *steps, unsigned nsteps,
     uint64_t seed, int count_only, struct api_store *st, frs_error *err)
 {
 	const frs_sampler3 *s = vs;
-	struct frs3_setup *su = &st->u.d3.su;
-	struct frs3_prep view;
+	struct api_lev3 *lv;
 	int rc;
 
+	memset(st, 0, sizeof *st);
 	if ((rc = api_run_begin(s != NULL, s != NULL ? s->opt.threads : 0,
 	    steps, nsteps, err)) != FRS_OK)
 		return rc;
-	if (api_setup3(s, steps, nsteps, seed, NULL, su) < 0)
+	if ((lv = malloc(sizeof *lv)) == NULL)
+		return api_nomem(err);
+	if (api_setup3(s, steps, nsteps, seed, 1, lv) < 0) {
+		free(lv);
 		return api_lib_err(err, FRS_E_LIMIT);
-	if (api_sampler3_prep(s, su, &view) < 0)
-		return api_lib_err(err, FRS_E_FORMAT);
-	if (s->opt.rule == FRS_RULE_EXACT &&
-	    frs3_exact(su, &s->vol, &view, steps, nsteps) < 0)
-		return api_lib_err(err, FRS_E_LIMIT);
-	if (frs3_sample(su, &s->vol, &view, s->opt.algorithm == FRS_ALG_NAIVE ?
-	    FRS_NAIVE : FRS_SORTED, steps, nsteps, count_only,
-	    &st->u.d3.r) < 0)
-		return api_lib_err(err, FRS_E_LIMIT);
-	st->u.d3.vol = &s->vol;
-	api_store_set(st, 3, nsteps);
+	}
+	st->lv3 = lv;
+	for (unsigned i = 0; i < lv->n; i++) {
+		struct frs3_prep view;
+		if (api_sampler3_prep(s, &lv->su[i], &view) < 0)
+			rc = api_lib_err(err, FRS_E_FORMAT);
+		else if (frs3_sample(&lv->su[i], &lv->vol[i], &view, algo3(s),
+		    steps, nsteps, count_only, &st->r3[i]) < 0)
+			rc = api_lib_err(err, FRS_E_LIMIT);
+		if (rc != FRS_OK) {
+			api_store_set(st, 3, nsteps, i);
+			api_store_free(st);
+			return rc;
+		}
+	}
+	api_store_set(st, 3, nsteps, lv->n);
 	return FRS_OK;
 }
 

@@ -53,6 +53,28 @@ void frs_map_free(float *map)
 	free(map);
 }
 
+void frs_map_equirect(float *map, uint32_t width, uint32_t height,
+    size_t stride)
+{
+	stride = stride ? stride : width;
+	for (uint32_t j = 0; map != NULL && j < height; j++) {
+		double wgt = imap_equirect_weight(j, height);
+		for (uint32_t i = 0; i < width; i++)
+			map[j * stride + i] = (float)(map[j * stride + i] * wgt);
+	}
+}
+
+void frs_map_equirect_f64(double *map, uint32_t width, uint32_t height,
+    size_t stride)
+{
+	stride = stride ? stride : width;
+	for (uint32_t j = 0; map != NULL && j < height; j++) {
+		double wgt = imap_equirect_weight(j, height);
+		for (uint32_t i = 0; i < width; i++)
+			map[j * stride + i] *= wgt;
+	}
+}
+
 /* The caller's map as the library's (doubles, validated: no NaN, no
  * infinity, no negative value, not all zero).  map NULL: constant 1. */
 int api_copy_map(struct frs_imap *m, const float *f, const double *d,
@@ -121,10 +143,14 @@ static int sampler_check(int have_sp, const frs_mask *mask, unsigned dims,
 
 void api_sampler_free(frs_sampler *s2, frs_sampler3 *s3)
 {
-	if (s2 != NULL)
+	if (s2 != NULL) {
 		imap_free(&s2->map);
-	if (s3 != NULL)
+		api_plan_free(&s2->plan);
+	}
+	if (s3 != NULL) {
 		vol_free(&s3->vol);
+		api_plan_free(&s3->plan);
+	}
 	free(s2);
 	free(s3);
 }
@@ -150,15 +176,21 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
 		    v->w, v->h, v->depth, err);
 	if (rc != FRS_OK)
 		return rc;
-	if (dims == 2 && (*s2 = malloc(sizeof **s2)) != NULL)
-		**s2 = (struct frs_sampler){ mask, map, o,
-		    api_algo((int)o.algorithm), NULL };
-	else if (dims == 3 && (*s3 = malloc(sizeof **s3)) != NULL)
-		**s3 = (struct frs_sampler3){ mask, vol, o };
-	else {
-		imap_free(&map);
-		vol_free(&vol);
-		return api_nomem(err);
+	if (dims == 2 && (*s2 = malloc(sizeof **s2)) != NULL) {
+		**s2 = (struct frs_sampler){ .mask = mask, .map = map, .opt = o,
+		    .algo = api_algo((int)o.algorithm) };
+		if (api_plan_init(&(*s2)->plan) == 0)
+			return api_ok(err);
+		free(*s2);
+		*s2 = NULL;
+	} else if (dims == 3 && (*s3 = malloc(sizeof **s3)) != NULL) {
+		**s3 = (struct frs_sampler3){ .mask = mask, .vol = vol, .opt = o };
+		if (api_plan_init(&(*s3)->plan) == 0)
+			return api_ok(err);
+		free(*s3);
+		*s3 = NULL;
 	}
-	return api_ok(err);
+	imap_free(&map);
+	vol_free(&vol);
+	return api_nomem(err);
 }

@@ -30,45 +30,82 @@ struct out {
 	int open;
 	uint64_t n;		/* samples of the set being drawn */
 	uint64_t set;		/* and its index, from 0 */
-	/* -v: how many samples of set 0 show each matrix element */
-	uint32_t *uses;
-	uint64_t nnoted;
+	/* -v: how many samples of set 0 show each matrix element, per
+	 * level (2-D) */
+	uint32_t *uses[FRS_LEVELS_MAX];
 	int collect;
 	double *rec;		/* records with extra columns */
 	size_t reccap;
 };
 
-/* -v: count the matrix element that sample (x, y) of set 0 shows (its
- * window element is floor(x S_W): jitter stays inside it). */
-static void note_point(struct out *u, double x, double y)
+/* The index in run->lv (lv3) of the level of the cell that point p of
+ * set 0 lies in. */
+static unsigned level_of(const struct api_sets_run *run, const double *p)
 {
-	const struct frs_setup *s = &u->run->s0;
-	uint64_t i;
+	const struct frs_levels *L = run->dims == 2 ? &run->lv.plan :
+	    &run->lv3.plan;
+	unsigned n = run->dims == 2 ? run->lv.n : run->lv3.n, l;
+	uint64_t c = 0;
 
-	if (u->uses == NULL &&
-	    (u->uses = calloc((size_t)s->mw * s->mh, sizeof *u->uses)) == NULL) {
+	if (L->lev == NULL)
+		return 0;
+	for (unsigned a = run->dims; a-- > 0;)
+		c = c * L->side[a] + (uint64_t)(p[a] * (double)L->side[a]);
+	l = L->lev[c];
+	for (unsigned i = 0; i < n; i++)
+		if ((run->dims == 2 ? run->lv.su[i].level : run->lv3.su[i].level) ==
+		    l)
+			return i;
+	return 0;
+}
+
+/* -v: count point p of set 0 in its level and (2-D) the matrix element
+ * it shows (its window element is floor(x S_W): jitter stays inside
+ * it). */
+static void note_point(struct out *u, const double *p)
+{
+	struct api_sets_run *run = u->run;
+	unsigned i = level_of(run, p);
+	const struct frs_setup *s = &run->lv.su[i];
+	uint64_t m;
+
+	run->lcount[i]++;
+	if (run->dims != 2)
+		return;
+	if (u->uses[i] == NULL && (u->uses[i] = calloc((size_t)s->mw * s->mh,
+	    sizeof *u->uses[i])) == NULL) {
 		u->collect = 0;	/* -v goes without the share */
 		return;
 	}
-	i = frs_matrix_index(s, (uint64_t)(x * (double)s->sw),
-	    (uint64_t)(y * (double)s->sh));
-	if (u->uses[i] < UINT32_MAX)
-		u->uses[i]++;
-	u->nnoted++;
+	m = frs_matrix_index(s, (uint64_t)(p[0] * (double)s->sw),
+	    (uint64_t)(p[1] * (double)s->sh));
+	if (u->uses[i][m] < UINT32_MAX)
+		u->uses[i][m]++;
 }
 
-/* The share of the noted samples whose matrix element another one
- * shows too: O(n + S_M^2), not a sort of the samples. */
-static double reused_share(const struct out *u)
+/* The shares of the noted samples whose matrix element another one of
+ * their level shows too, per level and in all: O(n + S_M^2) a level,
+ * not a sort of the samples. */
+static void reused_shares(struct out *u)
 {
-	uint64_t reused = 0;
-	size_t n = (size_t)u->run->s0.mw * u->run->s0.mh;
+	struct api_sets_run *run = u->run;
+	uint64_t all = 0, noted = 0;
+	size_t n = (size_t)run->s0.mw * run->s0.mh;
 
-	if (u->nnoted == 0 || u->uses == NULL)
-		return 0.0;
-	for (size_t i = 0; i < n; i++)
-		reused += u->uses[i] >= 2 ? u->uses[i] : 0;
-	return (double)reused / (double)u->nnoted;
+	run->reused = -1.0;
+	for (unsigned i = 0; i < run->lv.n; i++) {
+		uint64_t reused = 0;
+		run->lreused[i] = -1.0;
+		if (u->uses[i] == NULL)
+			continue;
+		for (size_t k = 0; k < n; k++)
+			reused += u->uses[i][k] >= 2 ? u->uses[i][k] : 0;
+		run->lreused[i] = (double)reused / (double)run->lcount[i];
+		all += reused;
+		noted += run->lcount[i];
+	}
+	if (noted > 0)
+		run->reused = (double)all / (double)noted;
 }
 
 /* Open the output at the first set: with one set its count goes into
@@ -112,7 +149,7 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 	if (u->collect) {
 		double t1 = progress_now();
 		for (size_t i = 0; i < k && u->collect; i++)
-			note_point(u, p[2 * i], p[2 * i + 1]);
+			note_point(u, p + dims * i);
 		u->run->tnote += progress_now() - t1;
 		t0 += progress_now() - t1;
 	}
@@ -144,36 +181,80 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 	return rc;
 }
 
-/* The warnings of set 0's setup: patterns that repeat, in the matrix or
- * the lattice of plain tiles. */
-static void warn(const struct api_sets_run *r)
+/* The window elements that the cells of level l of L span on axis a at
+ * n_s elements a cell (the whole axis without levels). */
+static uint64_t level_span(const struct frs_levels *L, unsigned l,
+    unsigned a, uint64_t side, uint64_t ns)
+{
+	if (L->lev == NULL)
+		return side * ns;
+	return (uint64_t)(L->hi[l][a] - L->lo[l][a] + 1) * ns;
+}
+
+/* The warnings of set 0's setup: patterns that repeat.  Without levels,
+ * the thesis's: more samples than the matrix gives without repetition
+ * (Table 4.1), or plain tiles of a window larger than the matrix.  With
+ * levels, each level whose cells span more than the matrix on an axis:
+ * its samples show the same matrix elements again, a lattice of the
+ * matrix's period. */
+static void warn2(const struct api_sets_run *r, int levels)
 {
 	const struct frs_setup *s = &r->s0;
-	const struct frs3_setup *t = &r->s3;
 
-	if (r->dims == 2 && (double)s->n > frs_unique(s))
+	if (!levels && (double)s->n > frs_unique(s))
 		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.0f without repetition, thesis "
 		    "Table 4.1)", (unsigned long long)s->n, s->mw, s->mh,
 		    s->sigma, frs_unique(s));
-	else if (r->dims == 2 && s->tiles == FRS_TILES_PLAIN &&
+	else if (!levels && s->tiles == FRS_TILES_PLAIN &&
 	    (s->sw > s->mw || s->sh > s->mh))
 		frs_warn("plain tiles: the window of %llux%llu repeats the "
 		    "%ux%u matrix as it is, a lattice of the tile's period where "
 		    "few samples fall (shuffled tiles break it)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh, s->mw,
 		    s->mh);
-	else if (r->dims == 3 && (double)t->n > frs3_unique(t))
+	for (unsigned i = 0; levels && i < r->lv.n; i++) {
+		const struct frs_setup *t = &r->lv.su[i];
+		uint64_t x = level_span(&r->lv.plan, t->level, 0, t->iw, t->ns);
+		uint64_t y = level_span(&r->lv.plan, t->level, 1, t->ih, t->ns);
+		if (x > t->mw || y > t->mh)
+			frs_warn("level %u (elements of %ux%u of level 0's, %u a "
+			    "pixel side): its pixels span %llux%llu elements, more "
+			    "than the %ux%u matrix: its samples repeat the "
+			    "matrix's patterns", t->level, 1u << t->level,
+			    1u << t->level, t->ns, (unsigned long long)x,
+			    (unsigned long long)y, t->mw, t->mh);
+	}
+}
+
+static void warn3(const struct api_sets_run *r, int levels)
+{
+	const struct frs3_setup *t = &r->s3;
+
+	if (!levels && (double)t->n > frs3_unique(t))
 		frs_warn("%llu samples from a %ux%ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.6g without repetition)",
 		    (unsigned long long)t->n, t->mw, t->mh, t->md, t->sigma,
 		    frs3_unique(t));
-	else if (r->dims == 3 && t->tiles == FRS_TILES_PLAIN &&
-	    frs3_tiles(t) > 1)
+	else if (!levels && t->tiles == FRS_TILES_PLAIN && frs3_tiles(t) > 1)
 		frs_warn("plain tiles: the window of %llux%llux%llu repeats the "
 		    "%ux%ux%u matrix as it is", (unsigned long long)t->sw,
 		    (unsigned long long)t->sh, (unsigned long long)t->sd, t->mw,
 		    t->mh, t->md);
+	for (unsigned i = 0; levels && i < r->lv3.n; i++) {
+		const struct frs3_setup *u = &r->lv3.su[i];
+		const struct frs_levels *L = &r->lv3.plan;
+		uint64_t x = level_span(L, u->level, 0, u->iw, u->ns);
+		uint64_t y = level_span(L, u->level, 1, u->ih, u->ns);
+		uint64_t z = level_span(L, u->level, 2, u->id, u->ns);
+		if (x > u->mw || y > u->mh || z > u->md)
+			frs_warn("level %u (%u elements a voxel side): its voxels "
+			    "span %llux%llux%llu elements, more than the %ux%ux%u "
+			    "matrix: its samples repeat the matrix's patterns",
+			    u->level, u->ns, (unsigned long long)x,
+			    (unsigned long long)y, (unsigned long long)z, u->mw,
+			    u->mh, u->md);
+	}
 }
 
 /* The mask, its note (a stale twin .frp) as a warning. */
@@ -202,8 +283,8 @@ static int open_device(const struct api_sets *a, struct api_sets_run *run)
 	return -2;
 }
 
-/* The sampler of a 2-D mask on the CPU or the device, and set 0's setup
- * with the mask prepared for it. */
+/* The sampler of a 2-D mask on the CPU or the device, and set 0's
+ * levels with the mask prepared for them. */
 static int open2(const struct api_sets *a, struct api_sets_run *run)
 {
 	struct frs_imap map;
@@ -211,7 +292,7 @@ static int open2(const struct api_sets *a, struct api_sets_run *run)
 	struct frs_setup plain;
 	frs_error err;
 	double t0;
-	int rc;
+	int rc, exact = a->opt.rule == FRS_RULE_EXACT;
 
 	if (imap_load(a->imp ? a->imp : "const", a->size[0], a->size[1],
 	    a->flags, &map) < 0)
@@ -230,14 +311,22 @@ static int open2(const struct api_sets *a, struct api_sets_run *run)
 		return -1;
 	if (run->ocl != NULL)
 		api_sampler_device(run->smp, run->ocl, a->alg);
-	if ((a->opt.rule == FRS_RULE_EXACT && a->verbose ?
-	    api_setup_steps(run->smp, a->steps, a->nsteps, a->seed, &run->s0) :
-	    api_setup(run->smp, a->steps[a->nsteps - 1], a->seed, &run->s0)) < 0)
+	/* Exact counts: set 0's taus only for -v (each set finds its own). */
+	if (exact && a->verbose)
+		rc = api_setup_steps(run->smp, a->steps, a->nsteps, a->seed,
+		    &run->lv);
+	else if ((rc = api_setup(run->smp, a->steps[a->nsteps - 1], a->seed,
+	    &run->s0)) == 0)
+		rc = api_lev2_make(&run->opt, &run->s0, &run->smp->map,
+		    &run->smp->plan, &run->lv);
+	if (rc < 0)
 		return -1;
-	if ((a->opt.rule != FRS_RULE_EXACT || a->verbose) &&
-	    api_sampler_prep(run->smp, &run->s0, a->steps, a->nsteps, &view) < 0)
-		return -1;
-	warn(run);
+	run->s0 = run->lv.base;
+	for (unsigned i = 0; (!exact || a->verbose) && i < run->lv.n; i++)
+		if (api_sampler_prep(run->smp, &run->lv, i, a->steps, a->nsteps,
+		    &view) < 0)
+			return -1;
+	warn2(run, run->opt.tiling == FRS_TILING_LEVELS);
 	run->tsetup = progress_now() - t0;
 	plain = run->s0;
 	plain.exact.n = 0;
@@ -263,18 +352,17 @@ static int open3(const struct api_sets *a, struct api_sets_run *run)
 		return frs_fail("%s", err.message);
 	}
 	vol_free(&v);
-	if (api_setup3(run->smp3, a->steps, a->nsteps, a->seed, NULL,
-	    &run->s3) < 0)
+	/* Exact counts: set 0's taus only for -v, as in 2-D. */
+	if (api_setup3(run->smp3, a->steps, a->nsteps, a->seed, a->verbose,
+	    &run->lv3) < 0)
 		return -1;
-	warn(run);
-	if (api_sampler3_prep(run->smp3, &run->s3, &view) < 0)
-		return -1;
+	run->s3 = run->lv3.base;
+	warn3(run, run->opt.tiling == FRS_TILING_LEVELS);
+	for (unsigned i = 0; i < run->lv3.n; i++)
+		if (api_sampler3_prep(run->smp3, &run->lv3.su[i], &view) < 0)
+			return -1;
 	plain = run->s3;
 	plain.exact.n = 0;
-	if (a->opt.rule == FRS_RULE_EXACT && a->verbose &&
-	    api_setup3(run->smp3, a->steps, a->nsteps, a->seed, &view,
-	    &run->s3) < 0)
-		return -1;
 	run->tau0 = frs3_tau(&plain, plain.n);
 	run->tsetup = progress_now() - t0;
 	return 0;
@@ -350,12 +438,12 @@ static int write_sets(struct out *u)
 	progress_begin(&pr, "sets", a->sets);
 	for (uint64_t set = 0; set < a->sets; set++) {
 		uint64_t c;
-		u->collect = a->verbose && set == 0 && !a->count_only &&
-		    run->dims == 2;
+		u->collect = a->verbose && set == 0 && !a->count_only;
 		u->set = set;
 		c = one_set(u, a->seed + set);
-		/* Every sample of set 0 noted; more sets report none. */
-		run->reused = u->collect ? reused_share(u) : -1.0;
+		/* Every sample of set 0 noted. */
+		if (u->collect)
+			reused_shares(u);
 		u->collect = 0;
 		if (c == UINT64_MAX)
 			return -1;
@@ -390,13 +478,16 @@ int api_sets_write(const struct api_sets *a, struct api_sets_run *run)
 	run->made = mk->made;
 	run->made_in = mk->frp != NULL ? mk->frp : a->matrix;
 	run->device = run->ocl != NULL ? run->ocl->name : NULL;
-	free(u.uses);
+	for (unsigned i = 0; i < FRS_LEVELS_MAX; i++)
+		free(u.uses[i]);
 	free(u.rec);
 	return rc;
 }
 
 void api_sets_close(struct api_sets_run *run)
 {
+	api_lev2_free(&run->lv);
+	api_lev3_free(&run->lv3);
 	frs_sampler_free(run->smp);
 	frs_sampler3_free(run->smp3);
 	frs_mask_free(run->mask);

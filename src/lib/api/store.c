@@ -13,85 +13,111 @@
 #include "api/api.h"
 #include "base/err.h"
 
-void api_store_set(struct api_store *st, unsigned dims, unsigned nsteps)
+void api_store_set(struct api_store *st, unsigned dims, unsigned nsteps,
+    unsigned nparts)
 {
 	st->dims = dims;
 	st->nsteps = nsteps;
-	st->nchunk = dims == 2 ? st->u.d2.r.nchunk : st->u.d3.r.nchunk;
-	st->count = dims == 2 ? st->u.d2.r.count : st->u.d3.r.count;
+	st->nparts = nparts;
+	st->count = 0;
+	for (unsigned i = 0; i < nparts; i++)
+		st->count += dims == 2 ? st->r[i].count : st->r3[i].count;
 }
 
-static uint64_t chunk_size(const struct api_store *st, uint64_t c)
+void api_store_free(struct api_store *st)
 {
-	return st->dims == 2 ? st->u.d2.r.chunk[c].n : st->u.d3.r.chunk[c].n;
+	for (unsigned i = 0; i < st->nparts; i++)
+		if (st->dims == 2)
+			frs_result_free(&st->r[i]);
+		else
+			frs3_result_free(&st->r3[i]);
+	if (st->lv != NULL)
+		api_lev2_free(st->lv);
+	if (st->lv3 != NULL)
+		api_lev3_free(st->lv3);
+	free(st->lv);
+	free(st->lv3);
+	st->lv = NULL;
+	st->lv3 = NULL;
+	st->nparts = 0;
 }
 
-static uint32_t elem_step(const struct api_store *st, uint64_t c,
-    uint64_t i)
+static uint64_t nchunks(const struct api_store *st, unsigned part)
 {
-	return st->dims == 2 ? st->u.d2.r.chunk[c].e[i].step :
-	    st->u.d3.r.chunk[c].e[i].step;
+	return st->dims == 2 ? st->r[part].nchunk : st->r3[part].nchunk;
 }
 
-/* The points of k elements of chunk c from i, dims coordinates each,
- * and their densities when pdf is not NULL. */
-static void points(const struct api_store *st, uint64_t c, uint64_t i,
-    size_t k, double *p, double *pdf)
+static uint64_t chunk_size(const struct api_store *st, unsigned part,
+    uint64_t c)
+{
+	return st->dims == 2 ? st->r[part].chunk[c].n :
+	    st->r3[part].chunk[c].n;
+}
+
+static uint32_t elem_step(const struct api_store *st, unsigned part,
+    uint64_t c, uint64_t i)
+{
+	return st->dims == 2 ? st->r[part].chunk[c].e[i].step :
+	    st->r3[part].chunk[c].e[i].step;
+}
+
+/* The points of k elements of chunk c of level part from i, dims
+ * coordinates each, and their densities when pdf is not NULL. */
+static void points(const struct api_store *st, unsigned part, uint64_t c,
+    uint64_t i, size_t k, double *p, double *pdf)
 {
 	if (st->dims == 2) {
-		const struct frs_elem *e = st->u.d2.r.chunk[c].e + i;
-		frs_points(&st->u.d2.su, e, k, p);
+		const struct frs_setup *su = &st->lv->su[part];
+		const struct frs_elem *e = st->r[part].chunk[c].e + i;
+		frs_points(su, e, k, p);
 		for (size_t j = 0; pdf != NULL && j < k; j++)
-			pdf[j] = api_pdf(&st->u.d2.su, st->u.d2.map, &e[j]);
+			pdf[j] = api_pdf(su, &st->lv->map[part], &e[j]);
 		return;
 	}
 	for (size_t j = 0; j < k; j++) {
-		const struct frs3_elem *e = st->u.d3.r.chunk[c].e + i + j;
-		frs3_point(&st->u.d3.su, e, p + 3 * j);
+		const struct frs3_setup *su = &st->lv3->su[part];
+		const struct frs3_elem *e = st->r3[part].chunk[c].e + i + j;
+		frs3_point(su, e, p + 3 * j);
 		if (pdf != NULL)
-			pdf[j] = frs3_pdf(&st->u.d3.su, st->u.d3.vol, e);
+			pdf[j] = frs3_pdf(su, &st->lv3->vol[part], e);
 	}
-}
-
-static void store_free(struct api_store *st)
-{
-	if (st->dims == 2)
-		frs_result_free(&st->u.d2.r);
-	else
-		frs3_result_free(&st->u.d3.r);
 }
 
 static uint64_t stored(const struct api_store *st)
 {
 	uint64_t n = 0;
 
-	for (uint64_t c = 0; c < st->nchunk; c++)
-		n += chunk_size(st, c);
+	for (unsigned part = 0; part < st->nparts; part++)
+		for (uint64_t c = 0; c < nchunks(st, part); c++)
+			n += chunk_size(st, part, c);
 	return n;
 }
 
 /* Visit the elements in output order, as runs of neighbours in one
- * chunk and step: fn(ctx, chunk, first, count, step), which returns
- * non-zero to stop. */
-static int each_span(const struct api_store *st,
-    int (*fn)(void *, uint64_t, uint64_t, uint64_t, uint32_t), void *ctx)
+ * chunk and step: fn(ctx, level, chunk, first, count, step), which
+ * returns non-zero to stop.  The order: the steps in turn, each level by
+ * level, each level's chunks in order. */
+static int each_span(const struct api_store *st, int (*fn)(void *, unsigned,
+    uint64_t, uint64_t, uint64_t, uint32_t), void *ctx)
 {
 	for (uint32_t s = 0; s < st->nsteps; s++)
-		for (uint64_t c = 0; c < st->nchunk; c++) {
-			uint64_t n = chunk_size(st, c), i = 0, j;
-			while (i < n) {
-				if (st->nsteps > 1 && elem_step(st, c, i) != s) {
-					i++;
-					continue;
+		for (unsigned part = 0; part < st->nparts; part++)
+			for (uint64_t c = 0; c < nchunks(st, part); c++) {
+				uint64_t n = chunk_size(st, part, c), i = 0, j;
+				while (i < n) {
+					if (st->nsteps > 1 &&
+					    elem_step(st, part, c, i) != s) {
+						i++;
+						continue;
+					}
+					j = st->nsteps == 1 ? n : i + 1;
+					while (j < n && elem_step(st, part, c, j) == s)
+						j++;
+					if (fn(ctx, part, c, i, j - i, s) != 0)
+						return -1;
+					i = j;
 				}
-				j = st->nsteps == 1 ? n : i + 1;
-				while (j < n && elem_step(st, c, j) == s)
-					j++;
-				if (fn(ctx, c, i, j - i, s) != 0)
-					return -1;
-				i = j;
 			}
-		}
 	return 0;
 }
 
@@ -103,12 +129,12 @@ struct put {
 	size_t k;
 };
 
-static int put_span(void *ctx, uint64_t c, uint64_t i, uint64_t n,
-    uint32_t s)
+static int put_span(void *ctx, unsigned part, uint64_t c, uint64_t i,
+    uint64_t n, uint32_t s)
 {
 	struct put *p = ctx;
 
-	points(p->st, c, i, (size_t)n, p->p + p->st->dims * p->k,
+	points(p->st, part, c, i, (size_t)n, p->p + p->st->dims * p->k,
 	    p->pdf != NULL ? p->pdf + p->k : NULL);
 	for (uint64_t j = 0; p->step != NULL && j < n; j++)
 		p->step[p->k + j] = s;
@@ -137,15 +163,15 @@ static int flush(struct batch *b)
 	return rc;
 }
 
-static int batch_span(void *ctx, uint64_t c, uint64_t i, uint64_t n,
-    uint32_t s)
+static int batch_span(void *ctx, unsigned part, uint64_t c, uint64_t i,
+    uint64_t n, uint32_t s)
 {
 	struct batch *b = ctx;
 
 	while (n > 0) {
 		size_t k = API_BATCH - b->k;
 		k = n < k ? (size_t)n : k;
-		points(b->st, c, i, k, b->p + b->st->dims * b->k,
+		points(b->st, part, c, i, k, b->p + b->st->dims * b->k,
 		    b->want_pdf ? b->pdf + b->k : NULL);
 		for (size_t j = 0; j < k; j++)
 			b->step[b->k + j] = s;
@@ -195,12 +221,12 @@ int api_draw(api_run_fn run, const void *s, const char *fn,
 	n = stored(&st);
 	*count = (size_t)n;
 	if (n > cap) {
-		store_free(&st);
+		api_store_free(&st);
 		return api_too_small(fn, err);
 	}
 	put = (struct put){ &st, p, pdf, step, 0 };
 	each_span(&st, put_span, &put);
-	store_free(&st);
+	api_store_free(&st);
 	return api_ok(err);
 }
 
@@ -219,7 +245,7 @@ int api_count(api_run_fn run, const void *s, const char *fn, uint64_t n,
 	if ((rc = run(s, &n, 1, seed, 1, &st, err)) != FRS_OK)
 		return rc;
 	*count = st.count;
-	store_free(&st);
+	api_store_free(&st);
 	return api_ok(err);
 }
 
@@ -239,14 +265,14 @@ int api_each(api_run_fn run, const void *s, const char *fn,
 	if ((rc = run(s, steps, nsteps, seed, 0, &st, err)) != FRS_OK)
 		return rc;
 	if ((b = malloc(sizeof *b)) == NULL) {
-		store_free(&st);
+		api_store_free(&st);
 		return api_nomem(err);
 	}
 	*b = (struct batch){ .st = &st, .want_pdf = want_pdf, .fn = cb,
 	    .ctx = ctx, .total = stored(&st) };
 	stop = each_span(&st, batch_span, b) < 0 || flush(b) != 0;
 	free(b);
-	store_free(&st);
+	api_store_free(&st);
 	if (stop)
 		return api_set_err(err, FRS_E_CALLBACK, "stopped by the callback");
 	return api_ok(err);

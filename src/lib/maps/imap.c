@@ -225,13 +225,19 @@ done:
 	return rc;
 }
 
+double imap_equirect_weight(uint32_t j, uint32_t h)
+{
+	/* Mean of sin(theta) over the row's band of polar angles:
+	 * (cos t0 - cos t1) / (t1 - t0). */
+	double t0 = FRS_PI * j / h, t1 = FRS_PI * (j + 1) / h;
+
+	return (cos(t0) - cos(t1)) / (t1 - t0);
+}
+
 void imap_equirect(struct frs_imap *m)
 {
 	for (uint32_t j = 0; j < m->h; j++) {
-		/* Mean of sin(theta) over the row's band of polar angles:
-		 * (cos t0 - cos t1) / (t1 - t0). */
-		double t0 = FRS_PI * j / m->h, t1 = FRS_PI * (j + 1) / m->h;
-		double wgt = (cos(t0) - cos(t1)) / (t1 - t0);
+		double wgt = imap_equirect_weight(j, m->h);
 		for (uint32_t i = 0; i < m->w; i++)
 			m->v[(size_t)j * m->w + i] *= wgt;
 	}

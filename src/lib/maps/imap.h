@@ -63,6 +63,8 @@ int imap_resample(const struct frs_imap *in, uint32_t w, uint32_t h,
  * an equirectangular environment map becomes an importance over the unit
  * square proportional to solid angle. */
 void imap_equirect(struct frs_imap *m);
+/* That weight of row j of h. */
+double imap_equirect_weight(uint32_t j, uint32_t h);
 
 /* Rec. 709 luminance of linear RGB. */
 static inline double imap_luma(double r, double g, double b)

@@ -96,7 +96,7 @@ static int cell_stats(struct frs_window *w, const struct frs_imap *cells,
 
 /* A random multiple of n_s on one axis, or of the matrix side m when n_s
  * exceeds it (every offset is then the same). */
-static uint64_t window_offset(uint64_t seed, unsigned axis, uint64_t ns,
+uint64_t frs_window_offset(uint64_t seed, unsigned axis, uint64_t ns,
     uint32_t m)
 {
 	uint64_t u = ns < m ? ns : m;
@@ -148,7 +148,7 @@ int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
 	w->ns = ns;
 	for (unsigned i = 0; i < k; i++) {
 		w->size[i] = ns * side[i];
-		w->off[i] = window_offset(seed, i, ns, msize[i]);
+		w->off[i] = frs_window_offset(seed, i, ns, msize[i]);
 	}
 	return 0;
 }
@@ -171,6 +171,9 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 	s->sh = w.size[1];
 	s->wx = w.off[0];
 	s->wy = w.off[1];
+	s->lfac = 1.0;
+	s->sw0 = s->sw;
+	s->sh0 = s->sh;
 	s->tau = frs_tau(s, n);
 	s->level0 = (unsigned)floor(log2(fmin((double)w.ns, sigma)));
 	return 0;
@@ -178,8 +181,31 @@ int frs_setup(struct frs_setup *s, const struct frs_imap *map,
 
 double frs_tau(const struct frs_setup *s, uint64_t n)
 {
-	return frs_xtau_get(&s->exact, n, (double)n * (double)s->mw *
-	    (double)s->mh / ((double)s->sw * (double)s->sh * s->imean));
+	return s->lfac * frs_xtau_get(&s->exact, n, (double)n * (double)s->mw *
+	    (double)s->mh / ((double)s->sw0 * (double)s->sh0 * s->imean));
+}
+
+uint64_t frs_level_seed(uint64_t seed, unsigned l)
+{
+	return l == 0 ? seed : frs_rand64(seed, FRS_STREAM_LEVEL, l);
+}
+
+void frs_level_setup(struct frs_setup *s, const struct frs_setup *s0,
+    unsigned l, double max)
+{
+	*s = *s0;
+	s->level = l;
+	s->lfac = ldexp(1.0, 2 * (int)l);
+	s->ns = s0->ns >> l;
+	s->sw = (uint64_t)s->ns * s->iw;
+	s->sh = (uint64_t)s->ns * s->ih;
+	s->seed = frs_level_seed(s0->seed, l);
+	s->wx = frs_window_offset(s->seed, 0, s->ns, s->mw);
+	s->wy = frs_window_offset(s->seed, 1, s->ns, s->mh);
+	s->max = max;
+	s->tiles = FRS_TILES_PLAIN;
+	s->tau = frs_tau(s, s->n);
+	s->level0 = (unsigned)floor(log2(fmin((double)s->ns, s->sigma)));
 }
 
 double frs_xtau_get(const struct frs_xtau *x, uint64_t n, double dflt)
@@ -313,12 +339,6 @@ int frs_exact_taus(const uint64_t *steps, unsigned nsteps,
 double frs_unique(const struct frs_setup *s)
 {
 	return (double)s->mw * (double)s->mh / (s->sigma * s->sigma);
-}
-
-enum frs_tiling frs_tiles_auto(const struct frs_setup *s)
-{
-	return (double)s->n <= frs_unique(s) ? FRS_TILES_SHUFFLE :
-	    FRS_TILES_PLAIN;
 }
 
 uint64_t frs_tiles_axis(uint64_t o, uint64_t n, uint64_t m)
@@ -935,6 +955,8 @@ struct run {
 	double *xy, *pdf;	/* points made in place, or NULL */
 	frs_chunk_fn fn;
 	void *ctx;
+	unsigned start;		/* the minmap level Stack and Level N start
+				 * at (frs_impl_level), once a run */
 };
 
 /* What one pixel's work needs. */
@@ -982,8 +1004,32 @@ static uint64_t wrap(uint64_t v, uint32_t n)
 	return (n & (n - 1)) == 0 ? v & (n - 1) : v % n;
 }
 
-/* Listing 5.2: every window element of the pixel; with shuffled tiles
- * each element through its tile's transform. */
+/* The k values of r from window column x of row y that pass px's
+ * limit, in order.  Their minimum first, in four independent chains (or
+ * wide, where the compiler vectorises): most runs end there. */
+static void scan_run(struct pix *px, const uint32_t *r, uint64_t k,
+    uint64_t x, uint64_t y)
+{
+	uint32_t lo[4] = { UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX };
+	uint64_t j = 0;
+
+	for (; j + 4 <= k; j += 4)
+		for (unsigned c = 0; c < 4; c++)
+			lo[c] = r[j + c] < lo[c] ? r[j + c] : lo[c];
+	for (; j < k; j++)
+		lo[0] = r[j] < lo[0] ? r[j] : lo[0];
+	lo[0] = lo[1] < lo[0] ? lo[1] : lo[0];
+	lo[2] = lo[3] < lo[2] ? lo[3] : lo[2];
+	if ((lo[2] < lo[0] ? lo[2] : lo[0]) >= px->lim)
+		return;
+	for (j = 0; j < k; j++)
+		if (r[j] < px->lim)
+			emit(px, x + j, y, r[j]);
+}
+
+/* Listing 5.2: every window element of the pixel, row by row, each row
+ * in runs that do not wrap around the matrix; with shuffled tiles each
+ * element through its tile's transform. */
 static void pix_naive(struct pix *px)
 {
 	const struct frs_setup *s = px->run->s;
@@ -994,11 +1040,10 @@ static void pix_naive(struct pix *px)
 			uint64_t y = px->y0 + sy;
 			const uint32_t *row = mv + wrap(s->wy + y, s->mh) * s->mw;
 			uint64_t mx = wrap(s->wx + px->x0, s->mw);
-			for (uint32_t sx = 0; sx < s->ns; sx++) {
-				if (row[mx] < px->lim)
-					emit(px, px->x0 + sx, y, row[mx]);
-				if (++mx == s->mw)
-					mx = 0;
+			for (uint64_t k = 0, run; k < s->ns; k += run) {
+				run = s->ns - k < s->mw - mx ? s->ns - k : s->mw - mx;
+				scan_run(px, row + mx, run, px->x0 + k, y);
+				mx = mx + run == s->mw ? 0 : mx + run;
 			}
 		}
 		return;
@@ -1045,6 +1090,11 @@ unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
 	return l;
 }
 
+enum frs_impl frs_sorted_walk(const struct frs_setup *s)
+{
+	return s->ns <= FRS_SCAN_NS ? FRS_NAIVE : FRS_STACK;
+}
+
 unsigned frs_impl_level(const struct frs_setup *s, const struct frs_prep *p,
     enum frs_impl algo)
 {
@@ -1061,7 +1111,7 @@ struct blk {
 static void pix_stack(struct pix *px)
 {
 	const struct run *run = px->run;
-	unsigned L = frs_impl_level(run->s, run->p, run->algo);
+	unsigned L = run->start;
 	uint64_t b = (uint64_t)1 << L, nb = run->s->ns / b;
 	struct blk st[3 * 32 + 4];
 
@@ -1108,7 +1158,7 @@ static void level_block(struct pix *px, unsigned l, uint64_t x, uint64_t y)
 
 static void pix_level(struct pix *px)
 {
-	unsigned L = frs_impl_level(px->run->s, px->run->p, px->run->algo);
+	unsigned L = px->run->start;
 	uint64_t b = (uint64_t)1 << L, nb = px->run->s->ns / b;
 
 	for (uint64_t by = 0; by < nb; by++)
@@ -1307,10 +1357,11 @@ static void run_chunk(struct pix *px, uint64_t ci)
 	uint64_t per = chunk_pixels(s), i1 = (ci + 1) * per;
 
 	i1 = i1 < (uint64_t)s->iw * s->ih ? i1 : (uint64_t)s->iw * s->ih;
-	for (uint64_t i = ci * per; i < i1; i++) {
+	i1 = s->lev != NULL && i1 > s->cell1 ? s->cell1 : i1;
+	for (uint64_t i = ci * per > s->cell0 ? ci * per : s->cell0; i < i1; i++) {
 		uint64_t py = i / s->iw, pxi = i % s->iw;
 		double imp = run->map->v[i];
-		if (!(imp > 0.0))
+		if (!(imp > 0.0) || !frs_cell_here(s->lev, s->level, i))
 			continue;	/* zero importance costs nothing */
 		for (unsigned k = 0; k < run->nsteps; k++)
 			frs_thr_make(&px->th[k], run->tau[k] *
@@ -1414,16 +1465,17 @@ int frs_sample_check(const struct frs_setup *s, const struct frs_prep *p,
 		return frs_fail("the window of %llux%llu elements is too large to "
 		    "store samples (a count-only run counts them)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh);
-	if (algo != FRS_NAIVE && algo != FRS_SORTED && p->nlev < 2)
+	if (algo != FRS_NAIVE && (algo != FRS_SORTED || p->block == 0) &&
+	    p->nlev < 2)
 		return frs_fail("%s: the matrix has no minmap", name);
-	if (algo == FRS_SORTED && (p->block == 0 || p->block > s->ns ||
+	if (algo == FRS_SORTED && p->block != 0 && (p->block > s->ns ||
 	    s->ns % p->block))
 		return frs_fail("sorted: lists of blocks of %u do not fit "
 		    "n_s = %u", p->block, s->ns);
 	if (algo == FRS_SORTED && p->block > frs_tile_max_block(s))
 		return frs_fail("sorted: shuffled tiles keep blocks of at most "
 		    "%u whole, not %u", frs_tile_max_block(s), p->block);
-	if (algo == FRS_SORTED && p->below != FRS_ALL_VALUES &&
+	if (algo == FRS_SORTED && p->block != 0 && p->below != FRS_ALL_VALUES &&
 	    frs_lim_most(s, tau[nsteps - 1]) > p->below)
 		return frs_fail("sorted: the lists hold the values below "
 		    "%llu, the thresholds reach %llu",
@@ -1445,13 +1497,18 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
 {
 	double tau;
 	struct run run = { s, map, p, algo, &tau, 1, 0, c0, at, store, NULL,
-	    NULL, fn, ctx };
+	    NULL, fn, ctx, 0 };
 
 	if (frs_sample_check(s, p, (int)algo, frs_impl_name(algo), &s->n, 1, 0,
 	    &tau) < 0)
 		return -1;
-	/* Points in place need Sorted without jitter (take_points). */
-	if (xy != NULL && algo == FRS_SORTED && s->jitter == FRS_PLACE_CENTRE) {
+	if (algo == FRS_SORTED && p->block == 0)
+		run.algo = frs_sorted_walk(s);
+	run.start = frs_impl_level(s, p, run.algo);
+	/* Points in place need Sorted's lists without jitter
+	 * (take_points). */
+	if (xy != NULL && algo == FRS_SORTED && p->block != 0 &&
+	    s->jitter == FRS_PLACE_CENTRE) {
 		run.xy = xy;
 		run.pdf = pdf;
 	}
@@ -1471,12 +1528,15 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
 {
 	double tau[16];
 	struct run run = { s, map, p, algo, tau, nsteps, count_only, 0,
-	    NULL, NULL, NULL, NULL, NULL, NULL };
+	    NULL, NULL, NULL, NULL, NULL, NULL, 0 };
 
 	memset(r, 0, sizeof *r);
 	if (frs_sample_check(s, p, (int)algo, frs_impl_name(algo), steps,
 	    nsteps, count_only, tau) < 0)
 		return -1;
+	if (algo == FRS_SORTED && p->block == 0)
+		run.algo = frs_sorted_walk(s);
+	run.start = frs_impl_level(s, p, run.algo);
 	r->chunk = frs_chunks_run(&chunk_kind, frs_nchunks(s), result_task,
 	    &run, &r->count);
 	r->nchunk = r->chunk != NULL ? frs_nchunks(s) : 0;

@@ -53,26 +53,43 @@ int frs3_setup(struct frs3_setup *s, const struct frs_vol *vol,
 		*size[i] = w.size[i];
 		*off[i] = w.off[i];
 	}
+	s->lfac = 1.0;
+	s->sw0 = s->sw;
+	s->sh0 = s->sh;
+	s->sd0 = s->sd;
 	s->tau = frs3_tau(s, n);
 	return 0;
 }
 
 double frs3_tau(const struct frs3_setup *s, uint64_t n)
 {
-	return frs_xtau_get(&s->exact, n, (double)n * ((double)s->mw * s->mh *
-	    s->md) / ((double)s->sw * (double)s->sh * (double)s->sd *
+	return s->lfac * frs_xtau_get(&s->exact, n, (double)n * ((double)s->mw *
+	    s->mh * s->md) / ((double)s->sw0 * (double)s->sh0 * (double)s->sd0 *
 	    s->imean));
+}
+
+void frs3_level_setup(struct frs3_setup *s, const struct frs3_setup *s0,
+    unsigned l, double max)
+{
+	*s = *s0;
+	s->level = l;
+	s->lfac = ldexp(1.0, 3 * (int)l);
+	s->ns = s0->ns >> l;
+	s->sw = (uint64_t)s->ns * s->iw;
+	s->sh = (uint64_t)s->ns * s->ih;
+	s->sd = (uint64_t)s->ns * s->id;
+	s->seed = frs_level_seed(s0->seed, l);
+	s->wx = frs_window_offset(s->seed, 0, s->ns, s->mw);
+	s->wy = frs_window_offset(s->seed, 1, s->ns, s->mh);
+	s->wz = frs_window_offset(s->seed, 2, s->ns, s->md);
+	s->max = max;
+	s->tiles = FRS_TILES_PLAIN;
+	s->tau = frs3_tau(s, s->n);
 }
 
 double frs3_unique(const struct frs3_setup *s)
 {
 	return (double)s->mw * s->mh * s->md / (s->sigma * s->sigma * s->sigma);
-}
-
-enum frs_tiling frs3_tiles_auto(const struct frs3_setup *s)
-{
-	return (double)s->n <= frs3_unique(s) ? FRS_TILES_SHUFFLE :
-	    FRS_TILES_PLAIN;
 }
 
 uint64_t frs3_tiles(const struct frs3_setup *s)
@@ -380,11 +397,15 @@ static int slices_task(void *ctx, void *chunk, uint64_t z0, uint64_t z1)
 	vx.run = run;
 	vx.tvalid = 0;
 	for (uint64_t vz = z0; vz < z1; vz++) {
+		uint64_t i0 = vz * s->ih * s->iw, i1 = i0 + s->ih * s->iw;
 		vx.c = &c[vz];
-		for (uint64_t i = vz * s->ih * s->iw; i < (vz + 1) * s->ih * s->iw;
-		    i++) {
+		if (s->lev != NULL) {	/* the level's voxels only */
+			i0 = i0 > s->cell0 ? i0 : s->cell0;
+			i1 = i1 < s->cell1 ? i1 : s->cell1;
+		}
+		for (uint64_t i = i0; i < i1; i++) {
 			double imp = run->vol->v[i];
-			if (!(imp > 0.0))
+			if (!(imp > 0.0) || !frs_cell_here(s->lev, s->level, i))
 				continue;	/* zero importance costs nothing */
 			for (unsigned k = 0; k < run->nsteps; k++)
 				frs_thr_make(&vx.th[k], run->tau[k] * (imp * s->iscale),

@@ -46,16 +46,24 @@ struct frs3_setup {
 	enum frs_tiling tiles;	/* shuffled: 48 symmetries of a cube */
 	double iscale, imean;	/* as in struct frs_setup */
 	struct frs_xtau exact;	/* as in struct frs_setup */
+	/* The multi-level window, as in struct frs_setup: lfac = 8^l. */
+	unsigned level;
+	double lfac;
+	uint64_t sw0, sh0, sd0;
+	const uint8_t *lev;	/* as in struct frs_setup, per voxel */
+	uint64_t cell0, cell1;	/* as in struct frs_setup */
 };
 
 /* The volume must be validated (finite, >= 0, not all zero). */
 int frs3_setup(struct frs3_setup *s, const struct frs_vol *vol,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
 double frs3_tau(const struct frs3_setup *s, uint64_t n);
+/* Level l (>= 1) of the multi-level window of s0 (level 0's setup):
+ * frs_level_setup in 3-D, thresholds times 8^l. */
+void frs3_level_setup(struct frs3_setup *s, const struct frs3_setup *s0,
+    unsigned l, double max);
 /* Samples the matrix gives without repetition: S_M / sigma^3. */
 double frs3_unique(const struct frs3_setup *s);
-/* frs_tiles_auto in 3-D: n <= frs3_unique. */
-enum frs_tiling frs3_tiles_auto(const struct frs3_setup *s);
 /* Matrix tiles the window touches. */
 uint64_t frs3_tiles(const struct frs3_setup *s);
 /* Block side of the sorted lists that fit this setup (and its tiling). */

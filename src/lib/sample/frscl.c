@@ -469,6 +469,9 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 	if (frs_sample_check(s, p, algo, frscl_algo_name(algo), steps, nsteps,
 	    count_only, tau) < 0)
 		return -1;
+	/* Sorted without lists visits the pixels as on the CPU. */
+	if (algo == FRS_SORTED && p->block == 0)
+		algo = (int)frs_sorted_walk(s);
 	if (program(o, &c.prog) < 0)
 		return -1;
 	phase(&c, &last.build);
@@ -483,7 +486,7 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 	for (uint64_t i = 0; i < npix; i++) {
 		double imp = map->v[i];
 		uint64_t *t = thr + c.nact * rec;
-		if (!(imp > 0.0))
+		if (!(imp > 0.0) || !frs_cell_here(s->lev, s->level, i))
 			continue;
 		if (pixel_record(t, tau, nsteps, imp * s->iscale, s->rule) == 0)
 			continue;

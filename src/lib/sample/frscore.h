@@ -82,7 +82,27 @@ struct frs_setup {
 	 * imean is the mean of I * iscale, which tau uses. */
 	double iscale, imean;
 	struct frs_xtau exact;	/* exact counts; n 0 unless asked */
+	/* The multi-level window (levels.h): this setup's level l, whose
+	 * elements are 2^l x 2^l of level 0's and whose thresholds are
+	 * lfac = 4^l times theirs; level 0's window sw0 x sh0, over which
+	 * tau is reckoned (and exact taus kept).  A single-level setup is
+	 * level 0: lfac 1, sw0 x sh0 its own window. */
+	unsigned level;
+	double lfac;
+	uint64_t sw0, sh0;
+	const uint8_t *lev;	/* the level of each pixel (levels.h), or
+				 * NULL: every pixel is this setup's */
+	uint64_t cell0, cell1;	/* with lev: the pixels (row-major) before
+				 * cell0 and from cell1 are none of its */
 };
+
+/* Whether cell i (a pixel or voxel) belongs to the level of a setup
+ * whose cells have the levels lev (NULL: all cells are its). */
+static inline int frs_cell_here(const uint8_t *lev, unsigned level,
+    uint64_t i)
+{
+	return lev == NULL || lev[i] == level;
+}
 
 /* Listing 5.1 in k = 2 or 3 dimensions, the one setup of frs_setup and
  * frs3_setup: over the cells (map pixels or volume voxels) of sides
@@ -114,8 +134,21 @@ int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
 /* tau for another count with the same window (progressive steps); the
- * exact tau of a step when s->exact has it. */
+ * exact tau of a step when s->exact has it; times lfac. */
 double frs_tau(const struct frs_setup *s, uint64_t n);
+/* Level l (>= 1) of the multi-level window of s0 (a setup of level 0)
+ * into s: n_s / 2^l elements a pixel, thresholds times 4^l, its own seed
+ * and window offset; max is the largest value of the level's pixels.
+ * The level must exist: 2^l <= n_s.  s->lev is left to the caller. */
+void frs_level_setup(struct frs_setup *s, const struct frs_setup *s0,
+    unsigned l, double max);
+/* The seed of level l of a run with this seed: the seed itself at
+ * level 0. */
+uint64_t frs_level_seed(uint64_t seed, unsigned l);
+/* A window's offset on one axis: a random multiple of n_s, or of the
+ * matrix side m when n_s exceeds it (every offset is then the same). */
+uint64_t frs_window_offset(uint64_t seed, unsigned axis, uint64_t ns,
+    uint32_t m);
 /* x's tau for the count n, or dflt when x has none. */
 double frs_xtau_get(const struct frs_xtau *x, uint64_t n, double dflt);
 /* The count of a run at threshold scale tau; -1 after frs_fail. */
@@ -139,10 +172,6 @@ uint64_t frs_exact_most(const double *v, uint64_t ncell, uint32_t ns,
     unsigned dims);
 /* Samples a matrix gives without repetition: S_M^2 / sigma^2 (Eq. 4.17). */
 double frs_unique(const struct frs_setup *s);
-/* --tiles auto: shuffled when n fits the matrix without repetition
- * (n <= frs_unique), for then every repeat comes from the tiling; else
- * plain, whose repeats cannot be avoided and which has no seams. */
-enum frs_tiling frs_tiles_auto(const struct frs_setup *s);
 /* Tiles of side m met by n elements from offset o on one axis. */
 uint64_t frs_tiles_axis(uint64_t o, uint64_t n, uint64_t m);
 /* Matrix tiles the window touches, per axis and in all. */
@@ -188,6 +217,13 @@ void frs_prep_free(struct frs_prep *p);
  * wanted level: at most log2 n_s, the top level and the tiling's block. */
 unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
     unsigned want);
+/* Sorted without lists (a small window of a multi-level run, see
+ * api_lev2_lists) visits each pixel as Naive does when it has at most
+ * FRS_SCAN_NS^2 elements (a scan along rows beats random lookups), else
+ * walks the minmap as Stack does; the device does the same, so that the
+ * elements come in the same order. */
+#define FRS_SCAN_NS 16
+enum frs_impl frs_sorted_walk(const struct frs_setup *s);
 /* The start level of algo: Stack's (and Flat 1's) log2 min(n_s, sigma),
  * Level N's N. */
 unsigned frs_impl_level(const struct frs_setup *s, const struct frs_prep *p,

@@ -1,0 +1,339 @@
+/*
+ * The levels of a run (sample/levels.h): from level 0's setup, the
+ * setup and the masked map of every level that has cells, 2-D and 3-D,
+ * and frs_sampler_levels, which reports them.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "frs.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "api/api.h"
+#include "base/err.h"
+#include "base/mem.h"
+#include "base/par.h"
+
+static unsigned log2u(uint64_t v)
+{
+	unsigned l = 0;
+
+	while (((uint64_t)1 << l) < v)
+		l++;
+	return l;
+}
+
+void api_lev2_free(struct api_lev2 *lv)
+{
+	frs_levels_free(&lv->plan);
+	memset(lv, 0, sizeof *lv);
+}
+
+void api_lev3_free(struct api_lev3 *lv)
+{
+	frs_levels_free(&lv->plan);
+	memset(lv, 0, sizeof *lv);
+}
+
+int api_plan_init(struct api_plan *c)
+{
+	memset(c, 0, sizeof *c);
+	if (pthread_mutex_init(&c->lock, NULL) != 0)
+		return frs_fail("cannot make a lock");
+	return 0;
+}
+
+void api_plan_free(struct api_plan *c)
+{
+	frs_levels_free(&c->plan);
+	pthread_mutex_destroy(&c->lock);
+}
+
+/* A copy of the plan a (its levels' array made anew) into b. */
+static int plan_copy(struct frs_levels *b, const struct frs_levels *a)
+{
+	uint64_t n = (uint64_t)a->side[0] * a->side[1] * a->side[2];
+
+	*b = *a;
+	if (a->lev == NULL)
+		return 0;
+	if ((b->lev = mem_calloc("levels", n, 1)) == NULL)
+		return -1;
+	memcpy(b->lev, a->lev, n);
+	return 0;
+}
+
+/* The plan of key (t0, ns) from the cache into L and max: 1 when it was
+ * there, 0 when not, -1 after frs_fail. */
+static int cache_get(struct api_plan *c, double t0, uint32_t ns,
+    struct frs_levels *L)
+{
+	int rc = 0;
+
+	if (c == NULL)
+		return 0;
+	pthread_mutex_lock(&c->lock);
+	if (c->valid && c->t0 == t0 && c->ns == ns) {
+		rc = plan_copy(L, &c->plan) < 0 ? -1 : 1;
+	}
+	pthread_mutex_unlock(&c->lock);
+	return rc;
+}
+
+/* Keep a copy of the plan L of key (t0, ns) in the cache (when there is
+ * no room, it is only not kept). */
+static void cache_put(struct api_plan *c, double t0, uint32_t ns,
+    const struct frs_levels *L)
+{
+	struct frs_levels copy;
+
+	if (c == NULL || plan_copy(&copy, L) < 0) {
+		frs_clearerr();
+		return;
+	}
+	pthread_mutex_lock(&c->lock);
+	frs_levels_free(&c->plan);
+	c->plan = copy;
+	c->t0 = t0;
+	c->ns = ns;
+	c->valid = 1;
+	pthread_mutex_unlock(&c->lock);
+}
+
+/*
+ * The plan of the cells v (sides side, dims of them) for level 0's
+ * threshold scale t0, n_s, matrix elements nm and sigma under the
+ * options o, into L (from the cache when it has it).  The number of
+ * levels that have cells; 0
+ * for one level (no levels asked, or every cell at level 0), with
+ * nothing kept; -1 after frs_fail.
+ */
+static int plan_levels(const struct frs_options *o, unsigned dims,
+    const uint32_t *side, const double *v, double t0, uint32_t ns,
+    double nm, double sigma, struct api_plan *cache, struct frs_levels *L)
+{
+	double blur = api_blur(o);
+	int rc;
+
+	if (blur < 0.0 || ns == 1)
+		return 0;
+	if ((rc = cache_get(cache, t0, ns, L)) < 0)
+		return -1;
+	if (rc == 0) {
+		if (frs_levels_plan(L, dims, side, v, t0, log2u(ns), nm, sigma,
+		    blur) < 0)
+			return -1;
+		cache_put(cache, t0, ns, L);
+	}
+	if (frs_levels_used(L) == 1 && L->cells[0] > 0) {
+		frs_levels_free(L);
+		return 0;
+	}
+	return (int)frs_levels_used(L);
+}
+
+int api_lev2_make(const struct frs_options *o, const struct frs_setup *s0,
+    const struct frs_imap *map, struct api_plan *cache, struct api_lev2 *lv)
+{
+	const uint32_t side[2] = { map->w, map->h };
+	int k;
+
+	memset(lv, 0, sizeof *lv);
+	lv->base = *s0;
+	k = plan_levels(o, 2, side, map->v, s0->tau * s0->iscale, s0->ns,
+	    (double)s0->mw * s0->mh, s0->sigma, cache, &lv->plan);
+	if (k < 0)
+		return -1;
+	if (k == 0) {
+		lv->n = 1;
+		lv->su[0] = *s0;
+		lv->map[0] = *map;
+		return 0;
+	}
+	for (unsigned l = 0; l <= lv->plan.top; l++) {
+		struct frs_setup *su = &lv->su[lv->n];
+		if (lv->plan.cells[l] == 0)
+			continue;
+		if (l == 0) {
+			*su = *s0;
+			su->max = lv->plan.max[0];
+		} else {
+			frs_level_setup(su, s0, l, lv->plan.max[l]);
+		}
+		su->lev = lv->plan.lev;
+		su->cell0 = (uint64_t)lv->plan.lo[l][1] * map->w;
+		su->cell1 = (uint64_t)(lv->plan.hi[l][1] + 1) * map->w;
+		lv->map[lv->n++] = *map;
+	}
+	return 0;
+}
+
+int api_lev3_make(const struct frs_options *o, const struct frs3_setup *s0,
+    const struct frs_vol *vol, struct api_plan *cache, struct api_lev3 *lv)
+{
+	const uint32_t side[3] = { vol->w, vol->h, vol->d };
+	int k;
+
+	memset(lv, 0, sizeof *lv);
+	lv->base = *s0;
+	k = plan_levels(o, 3, side, vol->v, s0->tau * s0->iscale, s0->ns,
+	    (double)s0->mw * s0->mh * s0->md, s0->sigma, cache, &lv->plan);
+	if (k < 0)
+		return -1;
+	if (k == 0) {
+		lv->n = 1;
+		lv->su[0] = *s0;
+		lv->vol[0] = *vol;
+		return 0;
+	}
+	for (unsigned l = 0; l <= lv->plan.top; l++) {
+		struct frs3_setup *su = &lv->su[lv->n];
+		if (lv->plan.cells[l] == 0)
+			continue;
+		if (l == 0) {
+			*su = *s0;
+			su->max = lv->plan.max[0];
+		} else {
+			frs3_level_setup(su, s0, l, lv->plan.max[l]);
+		}
+		su->lev = lv->plan.lev;
+		su->cell0 = (uint64_t)lv->plan.lo[l][2] * vol->w * vol->h;
+		su->cell1 = (uint64_t)(lv->plan.hi[l][2] + 1) * vol->w * vol->h;
+		lv->vol[lv->n++] = *vol;
+	}
+	return 0;
+}
+
+uint64_t api_lev2_most(const struct api_lev2 *lv)
+{
+	uint64_t most = 0;
+
+	if (lv->plan.lev == NULL)
+		return frs_exact_most(lv->map[0].v, (uint64_t)lv->map[0].w *
+		    lv->map[0].h, lv->su[0].ns, 2);
+	for (unsigned i = 0; i < lv->n; i++) {
+		uint64_t ns = lv->su[i].ns;
+		uint64_t e = lv->plan.cells[lv->su[i].level] * ns * ns;
+		most = e > UINT64_MAX - most ? UINT64_MAX : most + e;
+	}
+	return most;
+}
+
+uint64_t api_lev3_most(const struct api_lev3 *lv)
+{
+	uint64_t most = 0;
+
+	if (lv->plan.lev == NULL)
+		return frs_exact_most(lv->vol[0].v, (uint64_t)lv->vol[0].w *
+		    lv->vol[0].h * lv->vol[0].d, lv->su[0].ns, 3);
+	for (unsigned i = 0; i < lv->n; i++) {
+		uint64_t ns = lv->su[i].ns;
+		uint64_t e = lv->plan.cells[lv->su[i].level] * ns * ns * ns;
+		most = e > UINT64_MAX - most ? UINT64_MAX : most + e;
+	}
+	return most;
+}
+
+void api_lev3_exact(struct api_lev3 *lv, const struct frs_xtau *x)
+{
+	lv->base.exact = *x;
+	lv->base.tau = frs3_tau(&lv->base, lv->base.n);
+	for (unsigned i = 0; i < lv->n; i++) {
+		lv->su[i].exact = *x;
+		lv->su[i].tau = frs3_tau(&lv->su[i], lv->su[i].n);
+	}
+}
+
+/*
+ * Sorted's lists for a level of a multi-level run: they cost about a
+ * read of the matrix to make (once a block size), then a bisection a
+ * pixel and a step a sample.  Without them, a level of at most
+ * FRS_SCAN_NS^2 elements a pixel scans them (a few of them a step, along
+ * rows), a larger one walks the minmap: a lookup per block of 8 x 8 at
+ * the start, about 12 a sample (4 children at each of 3 levels).
+ * Samples: each level-0 element of a cell of value v expects t0 v / S_M
+ * of them, n_s^2 elements a cell.  A run of one level has the thesis's
+ * lists, of blocks of n_s or the matrix's side.
+ */
+uint32_t api_lev2_block(const struct api_lev2 *lv, unsigned i)
+{
+	const struct frs_setup *su = &lv->su[i], *b = &lv->base;
+	double nm = (double)su->mw * su->mh, ns = su->ns, ns0 = b->ns;
+	double cells, samples, walk;
+
+	if (lv->plan.lev == NULL)
+		return api_sorted_block(su);
+	cells = (double)lv->plan.cells[su->level];
+	samples = b->tau * b->iscale * ns0 * ns0 * lv->plan.sum[su->level] / nm;
+	walk = su->ns <= FRS_SCAN_NS ? cells * ns * ns / 4.0 :
+	    cells * ns * ns / 64.0 + 12.0 * samples;
+	return nm + 16.0 * cells + samples < walk ? api_sorted_block(su) : 0;
+}
+
+void api_lev2_exact(struct api_lev2 *lv, const struct frs_xtau *x)
+{
+	lv->base.exact = *x;
+	lv->base.tau = frs_tau(&lv->base, lv->base.n);
+	for (unsigned i = 0; i < lv->n; i++) {
+		lv->su[i].exact = *x;
+		lv->su[i].tau = frs_tau(&lv->su[i], lv->su[i].n);
+	}
+}
+
+int frs_sampler_levels(const frs_sampler *s, uint64_t n, uint64_t seed,
+    struct frs_level_info *levels, unsigned cap, unsigned *count,
+    frs_error *err)
+{
+	struct api_lev2 lv;
+
+	if (s == NULL || count == NULL || (levels == NULL && cap > 0))
+		return api_arg_err(err, "frs_sampler_levels: NULL argument");
+	*count = 0;
+	if (n == 0)
+		return api_arg_err(err, "frs_sampler_levels: n must not be 0");
+	if (n > API_MAX_N)
+		return api_set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
+	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
+	if (api_setup_steps(s, &n, 1, seed, &lv) < 0)
+		return api_lib_err(err, FRS_E_LIMIT);
+	for (unsigned i = 0; i < lv.n && i < cap; i++) {
+		const struct frs_setup *su = &lv.su[i];
+		levels[i] = (struct frs_level_info){ su->level, su->ns,
+		    { su->sw, su->sh, 1 }, { su->wx, su->wy, 0 },
+		    lv.plan.lev != NULL ? lv.plan.cells[su->level] :
+		    frs_exact_most(lv.map[i].v, (uint64_t)su->iw * su->ih, 1, 2),
+		    su->tau };
+	}
+	*count = lv.n;
+	api_lev2_free(&lv);
+	return api_ok(err);
+}
+
+int frs_sampler3_levels(const frs_sampler3 *s, uint64_t n, uint64_t seed,
+    struct frs_level_info *levels, unsigned cap, unsigned *count,
+    frs_error *err)
+{
+	struct api_lev3 lv;
+
+	if (s == NULL || count == NULL || (levels == NULL && cap > 0))
+		return api_arg_err(err, "frs_sampler3_levels: NULL argument");
+	*count = 0;
+	if (n == 0)
+		return api_arg_err(err, "frs_sampler3_levels: n must not be 0");
+	if (n > API_MAX_N)
+		return api_set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
+	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
+	if (api_setup3(s, &n, 1, seed, 1, &lv) < 0)
+		return api_lib_err(err, FRS_E_LIMIT);
+	for (unsigned i = 0; i < lv.n && i < cap; i++) {
+		const struct frs3_setup *su = &lv.su[i];
+		levels[i] = (struct frs_level_info){ su->level, su->ns,
+		    { su->sw, su->sh, su->sd }, { su->wx, su->wy, su->wz },
+		    lv.plan.lev != NULL ? lv.plan.cells[su->level] :
+		    frs_exact_most(lv.vol[i].v, (uint64_t)su->iw * su->ih * su->id,
+		    1, 3), su->tau };
+	}
+	*count = lv.n;
+	api_lev3_free(&lv);
+	return api_ok(err);
+}

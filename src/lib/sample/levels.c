@@ -1,0 +1,243 @@
+#define _POSIX_C_SOURCE 200809L
+#include "sample/levels.h"
+#include "base/err.h"
+#include "base/mem.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void frs_levels_free(struct frs_levels *L)
+{
+	free(L->lev);
+	memset(L, 0, sizeof *L);
+}
+
+static uint64_t ncells(const struct frs_levels *L)
+{
+	return (uint64_t)L->side[0] * L->side[1] * L->side[2];
+}
+
+/* The grid the levels are smoothed on: the cells in blocks of f per
+ * side (f^k cells, fewer at the far ends). */
+struct grid {
+	unsigned dims;
+	uint64_t side[3], f;
+};
+
+static uint64_t grid_n(const struct grid *g)
+{
+	return g->side[0] * g->side[1] * g->side[2];
+}
+
+/* One box filter of radius r along one line of n contiguous values,
+ * truncated at the ends (the sums of the blocks inside the map only):
+ * prefix sums in p, n + 1 of them. */
+static void box_line(double *a, uint64_t n, uint64_t r, double *p)
+{
+	p[0] = 0.0;
+	for (uint64_t i = 0; i < n; i++)
+		p[i + 1] = p[i] + a[i];
+	for (uint64_t i = 0; i < n; i++) {
+		uint64_t lo = i > r ? i - r : 0, hi = i + r + 1 < n ? i + r + 1 : n;
+		a[i] = p[hi] - p[lo];
+	}
+}
+
+/* The same along n rows of s values each (an axis other than the
+ * first): a sliding sum, a row at a time, from the copy src of the rows,
+ * so that the inner loops run along memory. */
+static void box_rows(double *a, const double *src, uint64_t n, uint64_t s,
+    uint64_t r)
+{
+	for (uint64_t k = 0; k < s; k++)
+		a[k] = 0.0;
+	for (uint64_t j = 0; j <= r && j < n; j++)
+		for (uint64_t k = 0; k < s; k++)
+			a[k] += src[j * s + k];
+	for (uint64_t i = 1; i < n; i++) {
+		double *o = a + i * s;
+		const double *prev = a + (i - 1) * s;
+		for (uint64_t k = 0; k < s; k++)
+			o[k] = prev[k];
+		if (i + r < n)
+			for (uint64_t k = 0; k < s; k++)
+				o[k] += src[(i + r) * s + k];
+		if (i > r)
+			for (uint64_t k = 0; k < s; k++)
+				o[k] -= src[(i - r - 1) * s + k];
+	}
+}
+
+/* Three box passes along every axis of the grid: about a Gaussian of
+ * standard deviation r blocks (each pass of width w = 2r + 1 has
+ * variance (w^2 - 1) / 12, and 3 (w^2 - 1) / 12 = r^2 + r).  In place;
+ * tmp has room for every block and one more. */
+static void blur_all(const struct grid *g, double *a, uint64_t r,
+    double *tmp)
+{
+	uint64_t total = grid_n(g), stride = 1;
+
+	for (unsigned ax = 0; ax < g->dims; stride *= g->side[ax], ax++) {
+		uint64_t n = g->side[ax], block = stride * n;
+		if (n < 2)
+			continue;
+		for (int pass = 0; pass < 3; pass++)
+			for (uint64_t o = 0; o < total; o += block) {
+				if (stride == 1) {
+					box_line(a + o, n, r, tmp);
+					continue;
+				}
+				memcpy(tmp, a + o, block * sizeof *tmp);
+				box_rows(a + o, tmp, n, stride, r);
+			}
+	}
+}
+
+/* The box radius whose three passes make a Gaussian of standard
+ * deviation blur: w = sqrt(4 blur^2 + 1), r = (w - 1) / 2 rounded. */
+static uint64_t blur_radius(double blur)
+{
+	double w = sqrt(4.0 * blur * blur + 1.0);
+
+	return (uint64_t)floor((w - 1.0) / 2.0 + 0.5);
+}
+
+/* log2 x for x > 0 to about 1e-7, from the exponent and a series in
+ * the mantissa: exact operations only, so the same on every machine
+ * (the levels must not depend on the math library). */
+static double log2_det(double x)
+{
+	int e;
+	double m = 2.0 * frexp(x, &e), u = (m - 1.0) / (m + 1.0), u2 = u * u;
+	/* ln m = 2 atanh u, |u| <= 1/3 */
+	double s = u * (1.0 + u2 * (1.0 / 3.0 + u2 * (1.0 / 5.0 + u2 * (1.0 /
+	    7.0 + u2 * (1.0 / 9.0 + u2 * (1.0 / 11.0 + u2 / 13.0))))));
+
+	return (double)(e - 1) + 2.0 * s / 0.69314718055994530942;
+}
+
+/* floor(x) clamped to levels 0 .. top. */
+static unsigned clamp_level(double x, unsigned top)
+{
+	x = floor(x);
+	return x <= 0.0 ? 0 : x >= top ? top : (unsigned)x;
+}
+
+/* Cell i, at coordinates c, of value v, joins level l. */
+static void add_cell(struct frs_levels *L, uint64_t i, const uint32_t *c,
+    double v, unsigned l)
+{
+	L->lev[i] = (uint8_t)l;
+	L->max[l] = v > L->max[l] ? v : L->max[l];
+	L->sum[l] += v;
+	if (L->cells[l]++ == 0)
+		for (unsigned a = 0; a < 3; a++)
+			L->lo[l][a] = L->hi[l][a] = c[a];
+	for (unsigned a = 0; a < 3; a++) {
+		L->lo[l][a] = c[a] < L->lo[l][a] ? c[a] : L->lo[l][a];
+		L->hi[l][a] = c[a] > L->hi[l][a] ? c[a] : L->hi[l][a];
+	}
+}
+
+/* The block of the grid that cell c lies in. */
+static uint64_t block_of(const struct grid *g, const uint32_t *c)
+{
+	return (c[2] / g->f * g->side[1] + c[1] / g->f) * g->side[0] +
+	    c[0] / g->f;
+}
+
+/* The grid of blocks for smoothing over blur cells: as coarse as keeps
+ * about four blocks to the standard deviation (smoothing, not detail, is
+ * the point; the cost falls with f^k). */
+static void make_grid(struct grid *g, const struct frs_levels *L,
+    double blur)
+{
+	g->dims = L->dims;
+	g->f = 1;
+	while (blur > 0.0 && (double)(2 * g->f) <= blur / 4.0)
+		g->f *= 2;
+	for (unsigned a = 0; a < 3; a++)
+		g->side[a] = (L->side[a] + g->f - 1) / g->f;
+}
+
+/*
+ * Each cell of threshold t = t0 v > 0 takes the coarsest level whose
+ * elements, of 2^(k l) t, stay at or below the sparsity bound nm /
+ * sigma^k, judged on the smoothed log2 threshold s: l = floor((log2 nm -
+ * k log2 sigma - s) / k); capped by its own threshold, 2^(k l) t <= nm /
+ * 4, and by top.  s is the mean of log2 t over the cells of non-zero
+ * importance near the cell (a normalised convolution: empty cells
+ * neither pull their neighbours to the coarsest level nor count), on the
+ * grid of blocks, so that a level's border follows the blocks.
+ */
+int frs_levels_plan(struct frs_levels *L, unsigned dims,
+    const uint32_t *side, const double *v, double t0, unsigned top,
+    double nm, double sigma, double blur)
+{
+	double k = dims, bound = log2(nm) - k * log2(sigma);
+	double *g = NULL, *m = NULL, *p = NULL;
+	struct grid gr;
+	uint64_t nb, i = 0;
+
+	memset(L, 0, sizeof *L);
+	L->dims = dims;
+	L->top = top < FRS_LEVELS_MAX ? top : FRS_LEVELS_MAX - 1;
+	L->blur = blur;
+	for (unsigned a = 0; a < 3; a++)
+		L->side[a] = a < dims ? side[a] : 1;
+	make_grid(&gr, L, blur);
+	nb = grid_n(&gr);
+	if ((L->lev = mem_calloc("levels", ncells(L), 1)) == NULL ||
+	    (g = mem_calloc("levels", nb, sizeof *g)) == NULL ||
+	    (m = mem_calloc("levels", nb, sizeof *m)) == NULL ||
+	    (p = mem_calloc("levels", nb + 1, sizeof *p)) == NULL) {
+		free(g);
+		free(m);
+		frs_levels_free(L);
+		return -1;
+	}
+	for (uint32_t z = 0; z < L->side[2]; z++)
+		for (uint32_t y = 0; y < L->side[1]; y++)
+			for (uint32_t x = 0; x < L->side[0]; x++, i++) {
+				const uint32_t c[3] = { x, y, z };
+				if (v[i] > 0.0) {
+					g[block_of(&gr, c)] += log2_det(t0 * v[i]);
+					m[block_of(&gr, c)] += 1.0;
+				}
+			}
+	if (blur > 0.0) {
+		uint64_t r = blur_radius(blur / (double)gr.f);
+		blur_all(&gr, g, r, p);
+		blur_all(&gr, m, r, p);
+	}
+	i = 0;
+	for (uint32_t z = 0; z < L->side[2]; z++)
+		for (uint32_t y = 0; y < L->side[1]; y++)
+			for (uint32_t x = 0; x < L->side[0]; x++, i++) {
+				const uint32_t c[3] = { x, y, z };
+				uint64_t b = block_of(&gr, c);
+				double t = t0 * v[i];
+				unsigned l;
+				if (!(v[i] > 0.0))
+					continue;
+				l = clamp_level((bound - g[b] / m[b]) / k, L->top);
+				while (l > 0 && ldexp(t, (int)dims * (int)l) >
+				    nm / 4.0)
+					l--;
+				add_cell(L, i, c, v[i], l);
+			}
+	free(g);
+	free(m);
+	free(p);
+	return 0;
+}
+
+unsigned frs_levels_used(const struct frs_levels *L)
+{
+	unsigned k = 0;
+
+	for (unsigned l = 0; l <= L->top; l++)
+		k += L->cells[l] > 0;
+	return k;
+}
