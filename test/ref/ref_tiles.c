@@ -325,28 +325,43 @@ static void seams(int64_t w, int64_t h, int64_t mw, int64_t mh, int64_t wx,
 	grid_done(&g, &s);
 }
 
+/* ---- maps --------------------------------------------------------- */
+
+/* The map at w x h (0 x 0: its own size); flags: IMAP_*. */
+static void map_load(const char *map, uint32_t w, uint32_t h, int flags,
+    struct frs_imap *m)
+{
+	if (imap_load(map, w, h, flags, m) < 0) {
+		fprintf(stderr, "ref_tiles: %s\n", frs_errmsg());
+		exit(1);
+	}
+}
+
+/* Pixel value as importance: a negative one counts as none. */
+static double imp(const struct frs_imap *m, size_t p)
+{
+	return m->v[p] > 0.0 ? m->v[p] : 0.0;
+}
+
 /* ---- chi2 --------------------------------------------------------- */
 
 static void chi2(int bx, int by, const char *map, int flags, const char *path)
 {
 	struct frs_points s;
 	struct frs_imap m;
-	double *e = xcalloc((size_t)bx * by, sizeof *e), tot = 0.0, x2 = 0.0;
-	double *o = xcalloc((size_t)bx * by, sizeof *o), pe = 0.0, po = 0.0;
-	size_t n, df = 0;
+	size_t nbin = (size_t)bx * (size_t)by, n, df = 0;
+	double *e = xcalloc(nbin, sizeof *e), tot = 0.0, x2 = 0.0;
+	double *o = xcalloc(nbin, sizeof *o), pe = 0.0, po = 0.0;
 
 	load(path, &s);
-	if (imap_load(map, 0, 0, flags, &m) < 0) {
-		fprintf(stderr, "ref_tiles: %s\n", frs_errmsg());
-		exit(1);
-	}
+	map_load(map, 0, 0, flags, &m);
 	for (uint32_t y = 0; y < m.h; y++)
 		for (uint32_t x = 0; x < m.w; x++) {
 			size_t b = (size_t)((uint64_t)y * (uint64_t)by / m.h) * (size_t)bx +
 			    (size_t)((uint64_t)x * (uint64_t)bx / m.w);
-			double v = m.v[(size_t)y * m.w + x];
-			e[b] += v > 0.0 ? v : 0.0;
-			tot += v > 0.0 ? v : 0.0;
+			double v = imp(&m, (size_t)y * m.w + x);
+			e[b] += v;
+			tot += v;
 		}
 	n = s.n;
 	for (size_t i = 0; i < n; i++) {
@@ -355,7 +370,7 @@ static void chi2(int bx, int by, const char *map, int flags, const char *path)
 		o[(size_t)(cy < by ? cy : by - 1) * (size_t)bx +
 		    (size_t)(cx < bx ? cx : bx - 1)] += 1.0;
 	}
-	for (size_t b = 0; b < (size_t)bx * by; b++) {
+	for (size_t b = 0; b < nbin; b++) {
 		double ex = e[b] / tot * (double)n;
 		if (ex < 5.0) {
 			pe += ex;
