@@ -31,6 +31,21 @@
  *       noise 10 to 40, white noise about 10 (the largest of some 8000
  *       exponentials of mean 1): it tells a lattice from noise, nn tells
  *       blue noise from white
+ *   ref_tiles nn MAP [--equirect] [-s WxH] [--level-col NAME] FILE...
+ *       per file, nearest-neighbour distances in local spacings: with the
+ *       map of W x H pixels (its own size or -s WxH; loaded as chi2 does),
+ *       the pixel coordinates q = (x W, y H) and the expected samples per
+ *       pixel at the sample's pixel, dens = n I / sum I,
+ *       r = |q - q_nn| sqrt(dens); its 1st, 5th and 10th percentiles (the
+ *       value at floor(p (n - 1)) sorted, as seams takes them) and mean:
+ *           FILE n N p1 A p5 B p10 C mean D
+ *       With --level-col NAME, an extra column of the file (the level of
+ *       a multi-level window), the line goes on with the "seam" samples,
+ *       which have a neighbour of another value of NAME within 1.5 local
+ *       spacings (1.5 / sqrt(dens) pixels; none in a pixel of zero
+ *       importance), and the others: count, 1st and 5th percentiles
+ *           ... seam N p1 A p5 B other N p1 A p5 B
+ *       (nan for an empty group)
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -144,6 +159,36 @@ static size_t grid_knn(const struct grid *g, size_t i, size_t k, int64_t *d2,
 			break;
 	}
 	return m;
+}
+
+/* Whether a point within distance rad (elements) of point i has another
+ * value in v (one per point): a scan of the cells the disc touches. */
+static int grid_mixed(const struct grid *g, size_t i, double rad,
+    const double *v)
+{
+	double r2 = rad * rad;
+	/* no point lies farther than the grid reaches */
+	double far = (double)(g->gw + g->gh) * (double)g->cell;
+	int64_t d = (int64_t)ceil(fmin(rad, far));
+	int64_t x0 = (g->x[i] - d) / g->cell, x1 = (g->x[i] + d) / g->cell;
+	int64_t y0 = (g->y[i] - d) / g->cell, y1 = (g->y[i] + d) / g->cell;
+
+	x0 = x0 < 0 ? 0 : x0;
+	y0 = y0 < 0 ? 0 : y0;
+	x1 = x1 < (int64_t)g->gw ? x1 : (int64_t)g->gw - 1;
+	y1 = y1 < (int64_t)g->gh ? y1 : (int64_t)g->gh - 1;
+	for (int64_t yy = y0; yy <= y1; yy++)
+		for (int64_t xx = x0; xx <= x1; xx++) {
+			size_t c = (size_t)yy * g->gw + (size_t)xx;
+			for (size_t q = g->start[c]; q < g->start[c + 1]; q++) {
+				size_t j = g->item[q];
+				double dx = (double)(g->x[j] - g->x[i]);
+				double dy = (double)(g->y[j] - g->y[i]);
+				if (v[j] != v[i] && dx * dx + dy * dy <= r2)
+					return 1;
+			}
+		}
+	return 0;
 }
 
 static void grid_free(struct grid *g)
@@ -533,6 +578,123 @@ static void band(double y0, double y1, const char *path)
 	pts_free(&s);
 }
 
+/* ---- nn ----------------------------------------------------------- */
+
+/* Grid elements per map pixel: fine enough for spacings far below a
+ * pixel, coarse enough that squared distances fit int64. */
+static int64_t nn_scale(const struct frs_imap *m)
+{
+	return ((int64_t)1 << 30) / (int64_t)(m->w > m->h ? m->w : m->h);
+}
+
+/* The map's expected samples per pixel at the pixel of record r, for n
+ * samples over total importance tot. */
+static double nn_dens(const struct frs_imap *m, double tot, size_t n,
+    const double *r)
+{
+	size_t px = (size_t)(r[0] * m->w), py = (size_t)(r[1] * m->h);
+
+	px = px < m->w ? px : m->w - 1;
+	py = py < m->h ? py : m->h - 1;
+	return (double)n * imp(m, py * m->w + px) / tot;
+}
+
+static void print_pcts(const char *what, double *v, size_t n)
+{
+	printf(" %s %zu p1 %.4f p5 %.4f", what, n, pct(v, n, 0.01),
+	    pct(v, n, 0.05));
+}
+
+/* Nearest-neighbour distances in local spacings, r = |q - q_nn|
+ * sqrt(dens) in pixels q of the map m (total importance tot); with a
+ * column col, apart for the samples with another value of it within 1.5
+ * local spacings (seams between levels) and the others. */
+static void nn(const struct frs_imap *m, double tot, const char *col,
+    const char *path)
+{
+	struct frs_points s;
+	struct grid g;
+	int64_t f = nn_scale(m);
+	double *r, *lv = NULL, *seam = NULL, *other = NULL, sum = 0.0;
+	size_t ns = 0, no = 0;
+	int c = -1;
+
+	load_grid(path, (int64_t)m->w * f, (int64_t)m->h * f, 2, "nn", &s, &g);
+	if (col != NULL && (c = pts_column(&s, col)) < 0) {
+		fprintf(stderr, "ref_tiles: %s: no column %s\n", path, col);
+		exit(1);
+	}
+	r = xcalloc(g.n, sizeof *r);
+	if (c >= 0) {
+		lv = xcalloc(g.n, sizeof *lv);
+		seam = xcalloc(g.n, sizeof *seam);
+		other = xcalloc(g.n, sizeof *other);
+		for (size_t i = 0; i < g.n; i++)
+			lv[i] = s.x[i * (s.dims + s.extra) + (size_t)c];
+	}
+	for (size_t i = 0; i < g.n; i++) {
+		const double *rec = s.x + i * (s.dims + s.extra);
+		double dens = nn_dens(m, tot, g.n, rec);
+		int64_t d2 = 0;
+		size_t nb;
+		grid_knn(&g, i, 1, &d2, &nb);
+		r[i] = sqrt((double)d2) / (double)f * sqrt(dens);
+		sum += r[i];
+		if (c < 0)
+			continue;
+		/* in a pixel of no importance there is no spacing */
+		if (dens > 0.0 && grid_mixed(&g, i, 1.5 / sqrt(dens) *
+		    (double)f, lv))
+			seam[ns++] = r[i];
+		else
+			other[no++] = r[i];
+	}
+	printf("%s n %zu p1 %.4f p5 %.4f p10 %.4f mean %.4f", path, g.n,
+	    pct(r, g.n, 0.01), pct(r, g.n, 0.05), pct(r, g.n, 0.10),
+	    sum / (double)g.n);
+	if (c >= 0) {
+		print_pcts("seam", seam, ns);
+		print_pcts("other", other, no);
+	}
+	printf("\n");
+	free(r);
+	free(lv);
+	free(seam);
+	free(other);
+	grid_done(&g, &s);
+}
+
+/* ref_tiles nn MAP [--equirect] [-s WxH] [--level-col NAME] FILE... */
+static void nn_main(int argc, char **argv)
+{
+	struct frs_imap m;
+	uint32_t w = 0, h = 0;
+	const char *col = NULL;
+	int flags = 0, a = 3;
+	double tot = 0.0;
+
+	for (; a < argc; a++) {
+		if (strcmp(argv[a], "--equirect") == 0)
+			flags |= IMAP_EQUIRECT;
+		else if (strcmp(argv[a], "-s") == 0 && a + 1 < argc) {
+			if (parse_size("-s", argv[++a], IMAP_MAX_SIDE, &w,
+			    &h) < 0)
+				die(frs_errmsg());
+		} else if (strcmp(argv[a], "--level-col") == 0 && a + 1 < argc)
+			col = argv[++a];
+		else
+			break;
+	}
+	if (a == argc)
+		die("nn: no FILE");
+	map_load(argv[2], w, h, flags, &m);
+	for (size_t p = 0; p < (size_t)m.w * m.h; p++)
+		tot += imp(&m, p);
+	for (; a < argc; a++)
+		nn(&m, tot, col, argv[a]);
+	imap_free(&m);
+}
+
 static int64_t num(const char *s)
 {
 	char *end;
@@ -560,9 +722,12 @@ int main(int argc, char **argv)
 			die("band: need 0 <= Y0 < Y1 <= 1");
 		for (int a = 4; a < argc; a++)
 			band(y0, y1, argv[a]);
-	} else
+	} else if (argc >= 4 && strcmp(argv[1], "nn") == 0)
+		nn_main(argc, argv);
+	else
 		die("usage: ref_tiles repeat W H FILE | seams W H MW MH WX WY "
 		    "FILE | chi2 BX BY MAP [--equirect] FILE | band Y0 Y1 "
+		    "FILE... | nn MAP [--equirect] [-s WxH] [--level-col NAME] "
 		    "FILE...");
 	return 0;
 }
