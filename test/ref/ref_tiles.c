@@ -30,7 +30,10 @@
  *       (pmax 0 when m is 0).  A lattice gives about m, hundreds; blue
  *       noise 10 to 40, white noise about 10 (the largest of some 8000
  *       exponentials of mean 1): it tells a lattice from noise, nn tells
- *       blue noise from white
+ *       blue noise from white.  Made for some 10^3 samples in the band
+ *       (16384 on a sunset, rows 0.6 to 0.9): with 10^4 and more, the
+ *       band's own density grows past 100 at |k| of 3 or 4, and a lattice
+ *       finer than 64 a band falls outside; k tells which
  *   ref_tiles nn MAP [--equirect] [-s WxH] [--level-col NAME] FILE...
  *       per file, nearest-neighbour distances in local spacings: with the
  *       map of W x H pixels (its own size or -s WxH; loaded as chi2 does),
