@@ -20,7 +20,8 @@ static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
     "                  [--sigma S] [--jitter none|halton|random] [--pdf]\n"
     "                  [--progressive N1,N2,...] [--threshold unbiased|thesis]\n"
-    "                  [--tiles auto|shuffled|plain] [--count-only]\n"
+    "                  [--tiles levels|plain|shuffled] [--level-blur R]\n"
+    "                  [--level-column] [--count-only]\n"
     "                  [--exact-count] [--sets M]\n"
     "                  [-s SIZE] [-S SEED] [-j N]\n"
     "                  [--device cpu|cl|cl:N] [-T] [-v] [-o FILE]\n"
@@ -44,11 +45,15 @@ static const char usage[] =
     "      --progressive L  counts N1 < N2 < ...: write the samples of each\n"
     "                       step in turn, with a column giving the step\n"
     "      --threshold R    unbiased (default) or thesis (Eq. 4.14)\n"
-    "      --tiles T        a window larger than the matrix: shuffled\n"
-    "                       (each tile turned, flipped and shifted by\n"
-    "                       the seed), plain (default: repeated as it\n"
-    "                       is, thesis Sec. 4.5) or auto (shuffled when\n"
-    "                       n fits the matrix without repetition)\n"
+    "      --tiles T        the window: levels (default: elements whose\n"
+    "                       size follows the map, the multi-level\n"
+    "                       window), plain (one level, the matrix\n"
+    "                       repeated as it is, thesis Sec. 4.5) or\n"
+    "                       shuffled (one level, each tile turned,\n"
+    "                       flipped and shifted by the seed)\n"
+    "      --level-blur R   smooth the levels over R map pixels (volume\n"
+    "                       voxels; default 2 sigma; 0: each on its own)\n"
+    "      --level-column   add a column: each sample's level\n"
     "      --count-only     print the count, make no points\n"
     "      --exact-count    exactly N samples (each step of --progressive):\n"
     "                       the N of smallest (M + u) / I, a subset or\n"
@@ -114,7 +119,8 @@ static noreturn void print_data_dir(void)
 static const char options[] =
     "n=count i=importance m=matrix a=algo s=size sigma jitter pdf "
     "progressive threshold count-only exact-count equirect strict "
-    "sets device list-devices data-dir tiles v=verbose";
+    "sets device list-devices data-dir tiles level-blur level-column "
+    "v=verbose";
 
 static void parse_opts(int argc, char **argv, struct api_sets *o)
 {
@@ -156,6 +162,15 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 			o->opt.tiling = (enum frs_tiling_mode)cli_choice("--tiles",
 			    optarg, api_tiling_words);
 			break;
+		case OPT_LEVEL_BLUR:
+			o->opt.level_blur = cli_double("--level-blur", optarg, 0.0,
+			    API_BLUR_MAX);
+			/* 0: none, which the library's radii below 0.5 are
+			 * (its 0 is the default). */
+			if (o->opt.level_blur == 0.0)
+				o->opt.level_blur = 0.25;
+			break;
+		case OPT_LEVEL_COLUMN: o->level_col = 1; break;
 		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
 		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
 		case OPT_SETS:

@@ -76,6 +76,8 @@
 	X(INPUT, "input", required_argument) \
 	X(JITTER, "jitter", required_argument) \
 	X(KIND, "kind", required_argument) \
+	X(LEVEL_BLUR, "level-blur", required_argument) \
+	X(LEVEL_COLUMN, "level-column", no_argument) \
 	X(LIST_DEVICES, "list-devices", no_argument) \
 	X(LOG, "log", no_argument) \
 	X(MATRIX, "matrix", required_argument) \

@@ -173,8 +173,9 @@ struct frs_options {
 	enum frs_tiling_mode tiling;	/* default FRS_TILING_LEVELS */
 	double level_blur;		/* since 2.0: how far the levels are
 					   smoothed, in map pixels (volume
-					   voxels); 0: the default, 2 sigma;
-					   at most 1e4 */
+					   voxels), at most 1e4; 0: the
+					   default, an eighth of the longest
+					   side; below 0.5: not at all */
 };
 /* The defaults above. */
 void frs_options_init(struct frs_options *opt);

@@ -204,8 +204,8 @@ enum frs_tiling api_tiling(const struct frs_options *o)
 	    FRS_TILES_PLAIN;
 }
 
-double api_blur(const struct frs_options *o)
+double api_blur(const struct frs_options *o, uint32_t longest)
 {
 	return o->tiling != FRS_TILING_LEVELS ? -1.0 :
-	    o->level_blur > 0.0 ? o->level_blur : 2.0 * o->sigma;
+	    o->level_blur > 0.0 ? o->level_blur : (double)longest / 8.0;
 }

@@ -98,8 +98,9 @@ enum frs_rule api_rule(const struct frs_options *o);
 enum frs_place api_jitter(const struct frs_options *o);
 enum frs_tiling api_tiling(const struct frs_options *o);
 /* The smoothing of the levels in cells, or -1 without levels (plain or
- * shuffled tiles). */
-double api_blur(const struct frs_options *o);
+ * shuffled tiles): the options', or an eighth of the longest side of the
+ * map or volume, so that the levels do not depend on its resolution. */
+double api_blur(const struct frs_options *o, uint32_t longest);
 #define API_BLUR_MAX 1e4
 /* What every run checks first: a sampler (have_s), 1 to 16 increasing
  * counts, at most 2^40; then the sampler's threads are set.  A code. */
@@ -347,6 +348,7 @@ struct api_sets {
 	unsigned nsteps;
 	uint64_t seed, sets;
 	int pdf, count_only, text, verbose;
+	int level_col;		/* a column of each sample's level */
 	const char *out;	/* NULL or "-": standard output */
 };
 

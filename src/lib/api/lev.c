@@ -112,7 +112,12 @@ static int plan_levels(const struct frs_options *o, unsigned dims,
     const uint32_t *side, const double *v, double t0, uint32_t ns,
     double nm, double sigma, struct api_plan *cache, struct frs_levels *L)
 {
-	double blur = api_blur(o);
+	uint32_t longest = side[0];
+	double blur;
+
+	for (unsigned a = 1; a < dims; a++)
+		longest = side[a] > longest ? side[a] : longest;
+	blur = api_blur(o, longest);
 	int rc;
 
 	if (blur < 0.0 || ns == 1)

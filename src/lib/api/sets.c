@@ -38,20 +38,26 @@ struct out {
 	size_t reccap;
 };
 
-/* The index in run->lv (lv3) of the level of the cell that point p of
- * set 0 lies in. */
-static unsigned level_of(const struct api_sets_run *run, const double *p)
+/* The level of the cell that point p lies in (every set has set 0's
+ * levels: they do not depend on the seed). */
+static unsigned level_at(const struct api_sets_run *run, const double *p)
 {
 	const struct frs_levels *L = run->dims == 2 ? &run->lv.plan :
 	    &run->lv3.plan;
-	unsigned n = run->dims == 2 ? run->lv.n : run->lv3.n, l;
 	uint64_t c = 0;
 
 	if (L->lev == NULL)
-		return 0;
+		return run->dims == 2 ? run->lv.su[0].level : run->lv3.su[0].level;
 	for (unsigned a = run->dims; a-- > 0;)
 		c = c * L->side[a] + (uint64_t)(p[a] * (double)L->side[a]);
-	l = L->lev[c];
+	return L->lev[c];
+}
+
+/* The index in run->lv (lv3) of the level of point p. */
+static unsigned level_of(const struct api_sets_run *run, const double *p)
+{
+	unsigned n = run->dims == 2 ? run->lv.n : run->lv3.n,
+	    l = level_at(run, p);
 	for (unsigned i = 0; i < n; i++)
 		if ((run->dims == 2 ? run->lv.su[i].level : run->lv3.su[i].level) ==
 		    l)
@@ -93,9 +99,10 @@ static void reused_shares(struct out *u)
 	size_t n = (size_t)run->s0.mw * run->s0.mh;
 
 	run->reused = -1.0;
+	for (unsigned i = 0; i < FRS_LEVELS_MAX; i++)
+		run->lreused[i] = -1.0;
 	for (unsigned i = 0; i < run->lv.n; i++) {
 		uint64_t reused = 0;
-		run->lreused[i] = -1.0;
 		if (u->uses[i] == NULL)
 			continue;
 		for (size_t k = 0; k < n; k++)
@@ -115,7 +122,7 @@ static void reused_shares(struct out *u)
 static int out_begin(struct out *u, uint64_t count)
 {
 	const struct api_sets *a = u->a;
-	const char *names[3];
+	const char *names[4];
 	unsigned extra = 0;
 
 	if (u->open)
@@ -126,6 +133,8 @@ static int out_begin(struct out *u, uint64_t count)
 		names[extra++] = PTS_COL_STEP;
 	if (a->sets > 1)
 		names[extra++] = PTS_COL_SET;
+	if (a->level_col)
+		names[extra++] = PTS_COL_LEVEL;
 	if (outfile_open(&u->of, a->out, !a->count_only && !a->text) < 0)
 		return -1;
 	u->open = 1;
@@ -142,8 +151,9 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 	struct out *u = ctx;
 	double t0 = progress_now();
 	int rc = out_begin(u, total), sets = u->a->sets > 1;
+	int lcol = u->a->level_col;
 	unsigned dims = u->run->dims, ncol = dims + (pdf != NULL ? 1u : 0u) +
-	    (step != NULL ? 1u : 0u) + (sets ? 1u : 0u);
+	    (step != NULL ? 1u : 0u) + (sets ? 1u : 0u) + (lcol ? 1u : 0u);
 
 	u->n = total;
 	if (u->collect) {
@@ -174,6 +184,8 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 				rec[c++] = (double)(step[i] + 1);
 			if (sets)
 				rec[c++] = (double)u->set;
+			if (lcol)
+				rec[c++] = (double)level_at(u->run, p + dims * i);
 		}
 		rc = pts_writer_put_n(&u->w, u->rec, k);
 	}

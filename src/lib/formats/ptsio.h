@@ -43,6 +43,8 @@
 #define PTS_COL_PDF "pdf"	/* the sample's density, frs-sample --pdf */
 #define PTS_COL_STEP "step"	/* its progressive step, from 1 */
 #define PTS_COL_SET "set"	/* its set, from 0 (--sets) */
+#define PTS_COL_LEVEL "level"	/* its level of the multi-level window,
+				 * frs-sample --level-column */
 
 struct frs_points {
 	unsigned dims, extra;

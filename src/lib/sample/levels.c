@@ -117,7 +117,7 @@ static double log2_det(double x)
 	return (double)(e - 1) + 2.0 * s / 0.69314718055994530942;
 }
 
-/* floor(x) clamped to levels 0 .. top. */
+/* floor(x) clamped to levels 0 .. top (x may be far out of range). */
 static unsigned clamp_level(double x, unsigned top)
 {
 	x = floor(x);
@@ -161,15 +161,29 @@ static void make_grid(struct grid *g, const struct frs_levels *L,
 		g->side[a] = (L->side[a] + g->f - 1) / g->f;
 }
 
+/* The coarsest level whose elements, of 2^(k l) t, hold at most nm / 4:
+ * an element passes at most once, so its threshold must stay well below
+ * the matrix's size for its count to stay unbiased. */
+static unsigned cap_level(double t, unsigned dims, double nm, unsigned top)
+{
+	unsigned l = top;
+
+	while (l > 0 && ldexp(t, (int)(dims * l)) > nm / 4.0)
+		l--;
+	return l;
+}
+
 /*
  * Each cell of threshold t = t0 v > 0 takes the coarsest level whose
  * elements, of 2^(k l) t, stay at or below the sparsity bound nm /
  * sigma^k, judged on the smoothed log2 threshold s: l = floor((log2 nm -
- * k log2 sigma - s) / k); capped by its own threshold, 2^(k l) t <= nm /
- * 4, and by top.  s is the mean of log2 t over the cells of non-zero
- * importance near the cell (a normalised convolution: empty cells
- * neither pull their neighbours to the coarsest level nor count), on the
- * grid of blocks, so that a level's border follows the blocks.
+ * k log2 sigma - s) / k), capped by top and by the cap of every cell of
+ * its block (cap_level).  s is the mean of log2 t over the cells of
+ * non-zero importance near the cell (a normalised convolution: empty
+ * cells neither pull their neighbours to the coarsest level nor count)
+ * on the grid of blocks, so that the levels' borders follow the blocks;
+ * a cap of the block's rather than the cell's keeps a bright cell from
+ * cutting a hole in its level.
  */
 int frs_levels_plan(struct frs_levels *L, unsigned dims,
     const uint32_t *side, const double *v, double t0, unsigned top,
@@ -177,6 +191,7 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
 {
 	double k = dims, bound = log2(nm) - k * log2(sigma);
 	double *g = NULL, *m = NULL, *p = NULL;
+	uint8_t *cap = NULL;
 	struct grid gr;
 	uint64_t nb, i = 0;
 
@@ -191,20 +206,27 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
 	if ((L->lev = mem_calloc("levels", ncells(L), 1)) == NULL ||
 	    (g = mem_calloc("levels", nb, sizeof *g)) == NULL ||
 	    (m = mem_calloc("levels", nb, sizeof *m)) == NULL ||
-	    (p = mem_calloc("levels", nb + 1, sizeof *p)) == NULL) {
+	    (p = mem_calloc("levels", nb + 1, sizeof *p)) == NULL ||
+	    (cap = mem_calloc("levels", nb, 1)) == NULL) {
 		free(g);
 		free(m);
+		free(p);
 		frs_levels_free(L);
 		return -1;
 	}
+	memset(cap, (int)L->top, nb);
 	for (uint32_t z = 0; z < L->side[2]; z++)
 		for (uint32_t y = 0; y < L->side[1]; y++)
 			for (uint32_t x = 0; x < L->side[0]; x++, i++) {
 				const uint32_t c[3] = { x, y, z };
-				if (v[i] > 0.0) {
-					g[block_of(&gr, c)] += log2_det(t0 * v[i]);
-					m[block_of(&gr, c)] += 1.0;
-				}
+				uint64_t b = block_of(&gr, c);
+				unsigned l;
+				if (!(v[i] > 0.0))
+					continue;
+				g[b] += log2_det(t0 * v[i]);
+				m[b] += 1.0;
+				l = cap_level(t0 * v[i], dims, nm, cap[b]);
+				cap[b] = (uint8_t)l;
 			}
 	if (blur > 0.0) {
 		uint64_t r = blur_radius(blur / (double)gr.f);
@@ -217,19 +239,16 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
 			for (uint32_t x = 0; x < L->side[0]; x++, i++) {
 				const uint32_t c[3] = { x, y, z };
 				uint64_t b = block_of(&gr, c);
-				double t = t0 * v[i];
 				unsigned l;
 				if (!(v[i] > 0.0))
 					continue;
-				l = clamp_level((bound - g[b] / m[b]) / k, L->top);
-				while (l > 0 && ldexp(t, (int)dims * (int)l) >
-				    nm / 4.0)
-					l--;
+				l = clamp_level((bound - g[b] / m[b]) / k, cap[b]);
 				add_cell(L, i, c, v[i], l);
 			}
 	free(g);
 	free(m);
 	free(p);
+	free(cap);
 	return 0;
 }
 
