@@ -23,7 +23,8 @@
 static const char usage[] =
     "usage: frd-prep [-a none|stack|level1|level2|sorted|all] [--check]\n"
     "                [--import frd|raw32|png16|text] [--rank] [-s WxH]\n"
-    "                [--blocks LIST] [--for LIST [-i MAP] [--sigma S]]\n"
+    "                [--blocks LIST] [--for LIST [-i MAP] [--sigma S]\n"
+    "                [--tiles levels|plain|shuffled]]\n"
     "                [-o FILE] [IN]\n"
     "\n"
     "  -a, --algo A       prepare for A: the minmap (stack, level1, level2),\n"
@@ -38,11 +39,13 @@ static const char usage[] =
     "      --blocks LIST  block sizes of the sorted lists (default\n"
     "                     1,2,4,...,256 up to the matrix size)\n"
     "      --for LIST     the counts to prepare for: with -a sorted or\n"
-    "                     all, the block sizes Sorted needs for them (a\n"
-    "                     table of them under -v); without -a, only the\n"
-    "                     table, on standard output\n"
+    "                     all, the block sizes Sorted needs for them,\n"
+    "                     level by level (a table of them under -v);\n"
+    "                     without -a, only the table, on standard output\n"
     "  -i, --importance MAP  the map of --for (default const, 128x128)\n"
     "      --sigma S      the sigma of --for (default 8)\n"
+    "      --tiles T      the window of --for, as frs-sample's (default\n"
+    "                     levels)\n"
     "      --check        check that the values are a permutation\n"
     "  -v, --verbose      print the matrix size and checksum\n"
     "  -o, --output FILE  output (default standard output)\n"
@@ -85,20 +88,19 @@ static unsigned parse_blocks(const char *s, uint32_t *out)
 }
 
 /*
- * The setups of the counts on the map, as frs-sample makes them by
- * default (the multi-level window, sigma), level by level: the block
- * size of Sorted's lists for each, into blocks (each size once); a table
- * of them on fp when fp is not NULL.
+ * The setups of the counts on the map, as frs-sample makes them with the
+ * options o (sigma, tiles), level by level: the block size of Sorted's
+ * lists for each that has them, into blocks (each size once); a table of
+ * them on fp when fp is not NULL (block 0: the level scans or walks its
+ * pixels, with the minmap); *minmap set when a level reads the minmap.
  */
 static unsigned blocks_for(const struct frs_matrix *m, const char *imp,
-    double sigma, const uint64_t *n, unsigned nn, uint32_t *blocks, FILE *fp)
+    const struct frs_options *o, const uint64_t *n, unsigned nn,
+    uint32_t *blocks, int *minmap, FILE *fp)
 {
 	struct frs_imap map;
-	struct frs_options o;
 	unsigned nb = 0;
 
-	frs_options_init(&o);
-	o.sigma = sigma;
 	if (imap_load(imp, 0, 0, 0, &map) < 0)
 		cli_die_lib();
 	if (fp != NULL)
@@ -107,25 +109,28 @@ static unsigned blocks_for(const struct frs_matrix *m, const char *imp,
 	for (unsigned k = 0; k < nn; k++) {
 		struct frs_setup su;
 		struct api_lev2 lv;
-		if (frs_setup(&su, &map, m, n[k], sigma, 1) < 0 ||
-		    api_lev2_make(&o, &su, &map, NULL, &lv) < 0)
+		if (frs_setup(&su, &map, m, n[k], o->sigma, 1) < 0)
+			cli_die_lib();
+		su.tiles = api_tiling(o);
+		if (api_lev2_make(o, &su, &map, NULL, &lv) < 0)
 			cli_die_lib();
 		for (unsigned l = 0; l < lv.n; l++) {
 			const struct frs_setup *t = &lv.su[l];
-			uint32_t b = api_sorted_block(t);
-			uint64_t vals = api_lists_below(t, &n[k], 1);
+			uint32_t b = api_lev2_block(&lv, l);
+			uint64_t vals = b ? api_lists_below(t, &n[k], 1) : 0;
 			unsigned i;
 			vals = vals < m->n ? vals : m->n;
+			*minmap |= b == 0 || b < t->ns;
 			if (fp != NULL)
 				fprintf(fp, "%llu\t%u\t%u\t%llux%llu\t%u\t%s\t%llu\t"
 				    "%s\n", (unsigned long long)n[k], t->level, t->ns,
 				    (unsigned long long)t->sw, (unsigned long long)t->sh,
-				    b, api_sorted_minmap(t) ? "yes" : "no",
-				    (unsigned long long)vals,
+				    b, b == 0 || b < t->ns ? "yes" : "no",
+				    (unsigned long long)vals, b &&
 				    api_lists_from_frp(m, vals) ? "yes" : "no");
 			for (i = 0; i < nb && blocks[i] != b; i++)
 				;
-			if (i == nb)
+			if (b != 0 && i == nb)
 				blocks[nb++] = b;
 		}
 		api_lev2_free(&lv);
@@ -208,7 +213,7 @@ static const char *import_fix(void)
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
     "a=algo import rank s=size blocks check for i=importance "
-    "sigma v=verbose";
+    "sigma tiles v=verbose";
 
 int main(int argc, char **argv)
 {
@@ -216,12 +221,13 @@ int main(int argc, char **argv)
 	uint32_t w = 0, h = 0, blocks[32];
 	uint64_t counts[32];
 	unsigned nblocks = 0, ncounts = 0;
-	double sigma = 8.0;
+	struct frs_options opt;
 	int c, rank = 0, check = 0, verbose = 0, minmap, sorted, rc;
 	struct frs_matrix m;
 	struct outfile o;
 
 	cli_init("frd-prep", usage);
+	frs_options_init(&opt);
 	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 'a': algo = optarg; break;
@@ -233,7 +239,13 @@ int main(int argc, char **argv)
 		case OPT_FOR: ncounts = parse_list("--for", optarg, counts, 1,
 		    1LL << 40); break;
 		case 'i': imp = optarg; break;
-		case OPT_SIGMA: sigma = cli_double("--sigma", optarg, 1.0, 1e6); break;
+		case OPT_SIGMA:
+			opt.sigma = cli_double("--sigma", optarg, 1.0, FRS_SIGMA_MAX);
+			break;
+		case OPT_TILES:
+			opt.tiling = (enum frs_tiling_mode)cli_choice("--tiles",
+			    optarg, api_tiling_words);
+			break;
 		case 'v': verbose = 1; break;
 		default:
 			cli_common_only(c, optarg);
@@ -274,16 +286,17 @@ int main(int argc, char **argv)
 	if (ncounts > 0 && !sorted && minmap)
 		cli_usage_error("--for needs -a sorted or -a all, or no -a");
 	if (ncounts > 0 && !sorted) {	/* the table only */
-		blocks_for(&m, imp, sigma, counts, ncounts, blocks, stdout);
+		blocks_for(&m, imp, &opt, counts, ncounts, blocks, &minmap,
+		    stdout);
 		frd_free(&m);
 		if (fflush(stdout) != 0 || ferror(stdout))
 			cli_die("<stdout>: write error");
 		return 0;
 	}
 	if (ncounts > 0)
-		nblocks = blocks_for(&m, imp, sigma, counts, ncounts, blocks,
-		    verbose ? stderr : NULL);
-	if (sorted && nblocks == 0)
+		nblocks = blocks_for(&m, imp, &opt, counts, ncounts, blocks,
+		    &minmap, verbose ? stderr : NULL);
+	if (sorted && nblocks == 0 && ncounts == 0)
 		for (uint32_t b = 1; b <= 256 && b <= m.w && b <= m.h; b *= 2)
 			blocks[nblocks++] = b;
 	for (unsigned i = 0; i < nblocks; i++)
@@ -292,7 +305,7 @@ int main(int argc, char **argv)
 			    m.w, m.h);
 	cli_out_open(&o, cli.out, 1);
 	rc = minmap || sorted ? frp_write(o.fp, o.name, src, &m, minmap,
-	    sorted ? blocks : NULL, sorted ? nblocks : 0) :
+	    sorted && nblocks ? blocks : NULL, sorted ? nblocks : 0) :
 	    frd_write(o.fp, o.name, &m);
 	cli_out_commit(&o, rc);
 	if (verbose)

@@ -133,10 +133,24 @@ expect_fail "--blocks without sorted" 2 "--blocks needs" "$T/o.frd" frd-prep --b
 # made with them serves those runs without making lists, a .frp without
 # them still gives the points of the .frd (its lists made, said under -v).
 frd-gen -q -s 128 -o "$T/f.frd"
-frd-prep --for 100,20000 -i blob "$T/f.frd" >"$T/for.tsv" &&
-    [ "$(awk -F '\t' 'NR > 1 { printf "%s:%s ", $1, $5 }' "$T/for.tsv")" = "100:2 20000:32 " ] &&
-    ok "--for: blocks 2 and 32 for 100 and 20000 on blob" ||
-    nok "--for: $(tr '\n' ' ' <"$T/for.tsv")"
+frd-prep --for 100,20000 -i blob --tiles plain "$T/f.frd" >"$T/for.tsv" &&
+    [ "$(awk -F '\t' 'NR > 1 { printf "%s:%s:%s ", $1, $2, $5 }' "$T/for.tsv")" = "100:0:2 20000:0:32 " ] &&
+    ok "--for --tiles plain: blocks 2 and 32 for 100 and 20000 on blob" ||
+    nok "--for --tiles plain: $(tr '\n' ' ' <"$T/for.tsv")"
+# With levels (the default), a row per level: the levels of one count
+# (increasing, from 0 to at most log2 n_s), n_s halved from one to the
+# next, blocks of n_s (or none: the level scans its pixels).
+frd-prep --for 20000 -i blob "$T/f.frd" >"$T/lev.tsv" &&
+    awk -F '\t' 'NR > 1 { if (NR > 2 && ($2 <= l || $3 * 2^($2 - l) != ns)) bad = 1;
+	if ($5 != 0 && $5 != $3) bad = 1; l = $2; ns = $3; rows++ }
+	END { exit !(rows >= 2 && !bad) }' "$T/lev.tsv" &&
+    ok "--for with levels: a row per level, n_s halving, blocks of n_s or none" ||
+    nok "--for with levels: $(tr '\n' ' ' <"$T/lev.tsv")"
+frd-prep -a sorted --for 20000 -i blob "$T/f.frd" -o "$T/lev.frp"
+frs-sample -q -m "$T/f.frd" -i blob -n 20000 -o "$T/l0.pts"
+frs-sample -q -m "$T/lev.frp" -i blob -n 20000 -v -o "$T/l1.pts" 2>"$T/lv1"
+cmp -s "$T/l0.pts" "$T/l1.pts" && ! grep -q 'no sorted lists' "$T/lv1" &&
+    ok "--for's .frp serves every level" || nok "--for's .frp with levels: $(cat "$T/lv1")"
 # (40000 of const with sigma 1 need blocks of 2 and 10000 values: from a
 # .frp.)
 frd-prep -a sorted --for 40000 -i const --sigma 1 "$T/f.frd" -o "$T/for.frp"

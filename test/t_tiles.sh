@@ -83,14 +83,14 @@ awk -v p="$p" -v m="$m" -v r="$r" 'BEGIN { exit !(p > 0.9 && m > 0.9 && r < 0.02
 # Our output: plain tiling of a 64^2 matrix over a sky window repeats;
 # shuffled does far less (seed fixed); a window inside the matrix has
 # nothing to repeat.
-win() { frs-sample -q -v -o /dev/null "$@" 2>&1 | sed -n 's/.*window \([0-9]*\)x\([0-9]*\).*/\1 \2/p'; }
+win() { frs-sample -q -v -o /dev/null "$@" 2>&1 | sed -n 's/.*n_s .*window \([0-9]*\)x\([0-9]*\).*/\1 \2/p'; }
 for t in plain shuffled; do
 	frs-sample -q -m "$T/m.frd" -i sky -n 400 --tiles $t -o "$T/$t.pts"
 done
 # shellcheck disable=SC2046
-pp=$(share $(win -m "$T/m.frd" -i sky -n 400) "$T/plain.pts")
+pp=$(share $(win -m "$T/m.frd" -i sky -n 400 --tiles plain) "$T/plain.pts")
 # shellcheck disable=SC2046
-ps=$(share $(win -m "$T/m.frd" -i sky -n 400) "$T/shuffled.pts")
+ps=$(share $(win -m "$T/m.frd" -i sky -n 400 --tiles plain) "$T/shuffled.pts")
 awk -v p="$pp" -v s="$ps" 'BEGIN { exit !(p > 0.3 && s < p / 2) }' &&
     ok "sky, n 400: repeated share plain $pp, shuffled $ps" ||
     nok "sky, n 400: repeated share plain $pp, shuffled $ps"
@@ -102,19 +102,87 @@ pv=$("$REF" chi2 8 8 sky "$T/chi.pts" | awk '{ print $8 }')
 awk -v p="$pv" 'BEGIN { exit !(p > 1e-4) }' && ok "sky, shuffled: block chi-square p $pv" ||
     nok "sky, shuffled: block chi-square p $pv"
 
-# -v tells the tiles and the reuse; auto picks; bad names fail
-frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles auto -v -o /dev/null 2>"$T/v.txt"
+# -v tells the tiles and the reuse; bad names fail
+frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles shuffled -v -o /dev/null 2>"$T/v.txt"
 grep -q 'tiles ([0-9]*x[0-9]*), shuffled; .* % of the samples show a matrix element' "$T/v.txt" &&
-    ok "-v: tiles, shuffled by auto, reuse share" || nok "-v: tiles, shuffled by auto, reuse share"
-frs-sample -m "$T/m.frd" -n 4000 --tiles auto -v -o /dev/null 2>"$T/v.txt"
-grep -q 'tiles ([0-9]*x[0-9]*), plain' "$T/v.txt" && ok "auto: plain past S_M^2/sigma^2" ||
-    nok "auto: plain past S_M^2/sigma^2"
+    ok "-v: tiles, shuffled, reuse share" || nok "-v: tiles, shuffled, reuse share"
 frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles plain -o /dev/null 2>"$T/w.txt"
 grep -q 'plain tiles: the window' "$T/w.txt" && ok "--tiles plain warns of the lattice" ||
     nok "--tiles plain warns of the lattice"
 frs-sample -q -m "$T/m.frd" -i sky -n 400 --sigma 2 --tiles plain -o /dev/null 2>"$T/w.txt"
 [ ! -s "$T/w.txt" ] && ok "-q silences it" || nok "-q silences it"
 expect_fail "--tiles bogus" 2 "--tiles" "$T/o.pts" frs-sample -m "$T/m.frd" -n 10 --tiles bogus -o "$T/o.pts"
-frs-sample -m "$T/m.frd" -i sky -n 400 --sigma 2 -v -o /dev/null 2>"$T/v.txt"
-grep -q 'tiles ([0-9]*x[0-9]*), plain' "$T/v.txt" && ok "plain by default" || nok "plain by default"
+expect_fail "--tiles auto is gone" 2 "--tiles" "$T/o.pts" frs-sample -m "$T/m.frd" -n 10 --tiles auto -o "$T/o.pts"
+
+# ---- the multi-level window (the default) ----
+# -v: a line per level, its n_s halving from one to the next; the map
+# sky spans five octaves of levels at n 20000 here.
+frs-sample -m "$T/m.frd" -i sky -n 20000 -v -o /dev/null 2>"$T/v.txt"
+awk '/^frs-sample:   level/ { l = $3 + 0; ns = $5 + 0; n++;
+	if (n > 1 && ns * 2^(l - pl) != pns) bad = 1; pl = l; pns = ns }
+    END { exit !(n >= 5 && !bad) }' "$T/v.txt" &&
+    ok "levels by default: -v's lines, five levels or more, n_s halving" ||
+    nok "levels by default: $(grep level "$T/v.txt" | tr '\n' ' ')"
+grep -q 'levels; .* % of the samples show a matrix element that another one of their level' "$T/v.txt" &&
+    ok "-v: the reuse share within levels" || nok "-v: the reuse share within levels"
+# Every implementation and device, on levels spanning five octaves, with
+# progressive steps and the thesis rule too; and any thread count.
+same_all "sky, levels" "naive stack level1 level2 sorted flat1" -m "$T/m.frd" -i sky -n 20000
+same_all "sky 64x32, levels, progressive" "sorted flat1" -m "$T/m.frd" -i sky -s 64x32 --progressive 2000,9000
+same_all "ramp, levels, thesis rule, random jitter" "stack sorted" -m "$T/m.frd" -i ramp -n 6000 --threshold thesis --jitter random
+for j in 1 2 3; do frs-sample -q -m "$T/m.frd" -i sky -n 20000 -j $j -o "$T/j$j.pts"; done
+cmp -s "$T/j1.pts" "$T/j2.pts" && cmp -s "$T/j1.pts" "$T/j3.pts" &&
+    ok "levels: the same bytes on 1, 2 and 3 threads" || nok "levels: the same bytes on 1, 2 and 3 threads"
+# Progressive steps nest (each step only adds points), and --level-column
+# names levels that -v lists.
+frs-sample -q -m "$T/m.frd" -i sky --progressive 1000,5000,20000 --level-column -T -o "$T/pr.txt"
+for k in 1 2; do
+	awk -v k=$k '!/^#/ && $3 <= k { print $1, $2 }' "$T/pr.txt" | sort >"$T/pr$k.s"
+done
+[ "$(comm -23 "$T/pr1.s" "$T/pr2.s" | wc -l)" = 0 ] && [ "$(wc -l <"$T/pr1.s")" -gt 500 ] &&
+    ok "levels: progressive steps nest" || nok "levels: progressive steps nest"
+lv=$(awk '!/^#/ { print $4 }' "$T/pr.txt" | sort -u | tr '\n' ' ')
+frs-sample -m "$T/m.frd" -i sky -n 20000 -v -o /dev/null 2>&1 |
+    awk '/^frs-sample:   level/ { printf "%d ", $3 }' >"$T/vl"
+[ "$lv" = "$(cat "$T/vl")" ] && ok "--level-column: the levels of -v ($lv)" ||
+    nok "--level-column: $lv, -v: $(cat "$T/vl")"
+# The union of --sets and exact counts hold with levels.
+frs-sample -q -m "$T/m.frd" -i sky -n 3000 --exact-count --sets 3 -T -o "$T/x.txt"
+awk '!/^#/ { c[$3]++ } END { exit !(c[0] == 3000 && c[1] == 3000 && c[2] == 3000) }' "$T/x.txt" &&
+    ok "levels: --exact-count, 3 sets of exactly 3000" || nok "levels: --exact-count --sets 3"
+frs-sample -q -m "$T/m.frd" -i sky -n 3000 -S 2 -T | grep -v '^#' >"$T/s2.txt"
+awk '!/^#/ && $3 == 1 { print $1, $2 }' "$T/x.txt" >/dev/null
+frs-sample -q -m "$T/m.frd" -i sky -n 3000 --sets 3 -T -o "$T/u.txt"
+awk '!/^#/ && $3 == 1 { print $1, $2 }' "$T/u.txt" | cmp -s - "$T/s2.txt" &&
+    ok "levels: set 1 of --sets 3 is the run of seed S+1" || nok "levels: set 1 of --sets 3"
+# The counts follow the map across the levels: chi-square of blocks
+# against n I / sum I (p above 1e-4) on sky (most samples at the sun)
+# and on sunset.exr (most in the levels of the sky and the ground), and
+# each sample's --pdf is the map's density there, I / mean I.
+frs-sample -q -m "$T/m.frd" -i sky -n 20000 -o "$T/chil.pts"
+pv=$("$REF" chi2 8 8 sky "$T/chil.pts" | awk '{ print $8 }')
+awk -v p="$pv" 'BEGIN { exit !(p > 1e-4) }' && ok "sky, levels: block chi-square p $pv" ||
+    nok "sky, levels: block chi-square p $pv"
+frs-sample -q -i "$TD/sunset.exr" --equirect -s 256x128 -n 60000 --pdf -T -o "$T/chs.txt"
+pv=$("$REF" chi2 16 8 "$TD/sunset.exr" --equirect "$T/chs.txt" | awk '{ print $8 }')
+awk -v p="$pv" 'BEGIN { exit !(p > 1e-4) }' && ok "sunset, levels: block chi-square p $pv" ||
+    nok "sunset, levels: block chi-square p $pv"
+c=$(grep -vc '^#' "$T/chs.txt")
+awk -v c="$c" 'BEGIN { exit !(c > 59400 && c < 60600) }' &&
+    ok "sunset, levels: $c samples for 60000" || nok "sunset, levels: $c samples for 60000"
+"$REF" pdf "$TD/sunset.exr" --equirect -s 256x128 "$T/chs.txt" >"$T/pdf.txt" 2>&1 &&
+    ok "sunset, levels: --pdf is I / mean I at each sample" ||
+    nok "sunset, levels: --pdf: $(cat "$T/pdf.txt")"
+# No lattice where the map is dark: the band measure (rows 0.6-0.9, the
+# ground) on the real map sunset.exr with the default matrix, plain
+# against levels with the same seed; the measure itself fires on a
+# planted lattice (t_ref_tiles).
+for t in plain levels; do
+	frs-sample -q -i "$TD/sunset.exr" --equirect -n 4096 --tiles $t -o "$T/b$t.pts"
+done
+bp=$("$REF" band 0.6 0.9 "$T/bplain.pts" | awk '{ print $5 }')
+bl=$("$REF" band 0.6 0.9 "$T/blevels.pts" | awk '{ print $5 }')
+awk -v p="$bp" -v l="$bl" 'BEGIN { exit !(p > 100 && l < 25) }' &&
+    ok "sunset, band periodogram maximum: plain $bp, levels $bl" ||
+    nok "sunset, band periodogram maximum: plain $bp, levels $bl"
 done_testing

@@ -297,7 +297,7 @@ static void oracle_setup(const struct frs_imap *map,
 	    seed), 0);
 	su->rule = rule_of(o);
 	su->jitter = jitter_of(o);
-	su->tiles = tiling_of(o, frs_tiles_auto(su));
+	su->tiles = tiling_of(o, FRS_TILES_PLAIN);
 	if (o->rule != FRS_RULE_EXACT)
 		return;
 	c.su = *su;
@@ -2060,7 +2060,7 @@ static double *oracle3(const struct frs_vol *vol, const struct frs_options *o,
 	    o->sigma, seed), 0);
 	su.rule = rule_of(o);
 	su.jitter = jitter_of(o);
-	su.tiles = tiling_of(o, frs3_tiles_auto(&su));
+	su.tiles = tiling_of(o, FRS_TILES_PLAIN);
 	assert_int_equal(frs3_prepare(&p, &mat3, a == FRS_SORTED ?
 	    frs3_block(&su) : 0), 0);
 	if (o->rule == FRS_RULE_EXACT)

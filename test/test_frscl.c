@@ -186,6 +186,14 @@ static void refusals(void **state)
 	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRSCL_FLAT1, &n, 1, 0,
 	    &r), -1);
 	assert_err_has("no minmap");
+	/* Sorted without lists walks the minmap, which p lacks too; lists
+	 * of blocks larger than n_s do not fit. */
+	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRS_SORTED, &n, 1, 0,
+	    &r), -1);
+	assert_err_has("no minmap");
+	frs_prep_free(&p);
+	assert_true(s.ns < 64);
+	assert_int_equal(frs_prepare(&p, &m, 0, 64), 0);
 	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRS_SORTED, &n, 1, 0,
 	    &r), -1);
 	assert_err_has("do not fit");

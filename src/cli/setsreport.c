@@ -90,6 +90,7 @@ void cli_sets_report(FILE *fp, const struct api_sets *o,
 {
 	uint64_t tx = 0, ty = 0;
 	uint64_t nt = r->dims == 2 ? frs_tiles(&r->s0, &tx, &ty) : 0;
+	int levels = r->opt.tiling == FRS_TILING_LEVELS;
 
 	report_setup(fp, o, r);
 	report_levels(fp, o, r);
@@ -97,15 +98,18 @@ void cli_sets_report(FILE *fp, const struct api_sets *o,
 		fprintf(fp, "frs-sample: %s has no sorted lists of blocks of "
 		    "%u: made them here (frd-prep -a sorted --for N makes a .frp "
 		    "that has them)\n", r->made_in, r->made);
-	if (r->dims == 2)
+	if (r->dims == 2 && !levels)
 		fprintf(fp, "frs-sample: %llu tiles (%llux%llu), %s",
 		    (unsigned long long)nt, (unsigned long long)tx,
 		    (unsigned long long)ty, r->s0.tiles == FRS_TILES_PLAIN ?
 		    "plain" : "shuffled");
+	else if (r->dims == 2 && r->reused >= 0.0)
+		fprintf(fp, "frs-sample: levels");
 	if (r->dims == 2 && r->reused >= 0.0)
 		fprintf(fp, "; %.1f %% of the samples show a matrix element "
-		    "that another one shows too", 100.0 * r->reused);
-	if (r->dims == 2)
+		    "that another one %sshows too", 100.0 * r->reused, levels ?
+		    "of their level " : "");
+	if (r->dims == 2 && (!levels || r->reused >= 0.0))
 		fputc('\n', fp);
 	if (r->dims == 2 && o->sets > 1)
 		fprintf(fp, "frs-sample: %llu sets, seeds %llu to %llu\n",

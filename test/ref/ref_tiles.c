@@ -49,6 +49,10 @@
  *       importance), and the others: count, 1st and 5th percentiles
  *           ... seam N p1 A p5 B other N p1 A p5 B
  *       (nan for an empty group)
+ *   ref_tiles pdf MAP [--equirect] [-s WxH] FILE...
+ *       every sample's pdf column (frs-sample --pdf) against I / mean I
+ *       of the map at the sample's pixel: FILE n N worst D, the largest
+ *       relative difference; exit 1 when it passes 1e-12
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -667,8 +671,35 @@ static void nn(const struct frs_imap *m, double tot, const char *col,
 	grid_done(&g, &s);
 }
 
-/* ref_tiles nn MAP [--equirect] [-s WxH] [--level-col NAME] FILE... */
-static void nn_main(int argc, char **argv)
+/* Every sample's pdf column against I / mean I of the map m (total
+ * importance tot) at its pixel: the largest relative difference; exit 1
+ * past 1e-12. */
+static void pdfcheck(const struct frs_imap *m, double tot, const char *path)
+{
+	struct frs_points s;
+	double mean = tot / ((double)m->w * m->h), worst = 0.0;
+	int c;
+
+	load(path, &s);
+	if ((c = pts_column(&s, "pdf")) < 0) {
+		fprintf(stderr, "ref_tiles: %s: no column pdf\n", path);
+		exit(1);
+	}
+	for (size_t i = 0; i < s.n; i++) {
+		const double *rec = s.x + i * (s.dims + s.extra);
+		size_t px = (size_t)(rec[0] * m->w), py = (size_t)(rec[1] * m->h);
+		double want = imp(m, py * m->w + px) / mean;
+		double d = fabs(rec[c] - want) / (want > 1.0 ? want : 1.0);
+		worst = d > worst ? d : worst;
+	}
+	printf("%s n %zu worst %.3g\n", path, s.n, worst);
+	pts_free(&s);
+	if (worst > 1e-12)
+		exit(1);
+}
+
+/* ref_tiles nn|pdf MAP [--equirect] [-s WxH] [--level-col NAME] FILE... */
+static void map_main(int argc, char **argv)
 {
 	struct frs_imap m;
 	uint32_t w = 0, h = 0;
@@ -689,12 +720,15 @@ static void nn_main(int argc, char **argv)
 			break;
 	}
 	if (a == argc)
-		die("nn: no FILE");
+		die("nn, pdf: no FILE");
 	map_load(argv[2], w, h, flags, &m);
 	for (size_t p = 0; p < (size_t)m.w * m.h; p++)
 		tot += imp(&m, p);
 	for (; a < argc; a++)
-		nn(&m, tot, col, argv[a]);
+		if (strcmp(argv[1], "nn") == 0)
+			nn(&m, tot, col, argv[a]);
+		else
+			pdfcheck(&m, tot, argv[a]);
 	imap_free(&m);
 }
 
@@ -725,12 +759,13 @@ int main(int argc, char **argv)
 			die("band: need 0 <= Y0 < Y1 <= 1");
 		for (int a = 4; a < argc; a++)
 			band(y0, y1, argv[a]);
-	} else if (argc >= 4 && strcmp(argv[1], "nn") == 0)
-		nn_main(argc, argv);
+	} else if (argc >= 4 && (strcmp(argv[1], "nn") == 0 ||
+	    strcmp(argv[1], "pdf") == 0))
+		map_main(argc, argv);
 	else
 		die("usage: ref_tiles repeat W H FILE | seams W H MW MH WX WY "
 		    "FILE | chi2 BX BY MAP [--equirect] FILE | band Y0 Y1 "
 		    "FILE... | nn MAP [--equirect] [-s WxH] [--level-col NAME] "
-		    "FILE...");
+		    "FILE... | pdf MAP [--equirect] [-s WxH] FILE...");
 	return 0;
 }
