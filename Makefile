@@ -166,9 +166,9 @@ $(B)/gen/clsrc.c: $(CLSRC) scripts/cl2c.sh
 # $(B)/pic/, exporting only the API of src/lib/frs.h (the version script
 # src/lib/libfrs.map).  The programs and tests link libfrs.a, which keeps
 # the internal symbols they use.
-SOMAJOR = 1
+SOMAJOR = 2
 SONAME = libfrs.so.$(SOMAJOR)
-SOMINOR = 2
+SOMINOR = 0
 SOFILE = libfrs.so.$(SOMAJOR).$(SOMINOR).0
 PICOBJ = $(LIBOBJ:$(B)/%=$(B)/pic/%)
 SOMAP = src/lib/libfrs.map

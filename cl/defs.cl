@@ -23,8 +23,10 @@ enum {
 	FRS_STREAM_SET = 9,		/* per-set seeds of repeated runs */
 	FRS_STREAM_FRD_DRAW = 10,	/* frd-gen cells drawn for large ties */
 	FRS_STREAM_TILE = 11,		/* shuffled tiles (cl/tile.cl) */
-	FRS_STREAM_LEVEL = 12		/* seeds of the multi-level window's
+	FRS_STREAM_LEVEL = 12,		/* seeds of the multi-level window's
 					   levels (levels.h) */
+	FRS_STREAM_PLACE = 13		/* the level-0 element a coarser
+					   level's sample goes to */
 };
 
 /* Types and qualifiers for code written once for both sides (cl/tile.cl,

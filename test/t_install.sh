@@ -41,7 +41,11 @@ missing=""
 for p in $progs; do
 	[ -x "$U/bin/$p" ] || missing="$missing bin/$p"
 done
-for f in include/frs.h lib/libfrs.a lib/libfrs.so.1.2.0 \
+# The soname's major and the file's minor are the API version's (frs.h).
+maj=$(sed -n 's/^#define FRS_API_VERSION_MAJOR //p' "$TOP/src/lib/frs.h")
+min=$(sed -n 's/^#define FRS_API_VERSION_MINOR //p' "$TOP/src/lib/frs.h")
+so=libfrs.so.$maj.$min.0
+for f in include/frs.h lib/libfrs.a lib/$so \
     lib/pkgconfig/frs.pc lib/pkgconfig/frs-static.pc share/frs/default.frd \
     share/frs/default3.frd \
     share/frs/sunset.exr; do
@@ -56,17 +60,17 @@ done
     nok "not installed:$missing"
 cmp -s "$TOP/src/lib/frs.h" "$U/include/frs.h" && ok "frs.h as in src/lib/" ||
     nok "frs.h as in src/lib/"
-[ "$(readlink "$U/lib/libfrs.so.1")" = libfrs.so.1.2.0 ] &&
-    [ "$(readlink "$U/lib/libfrs.so")" = libfrs.so.1.2.0 ] &&
-    ok "libfrs.so and libfrs.so.1 link to libfrs.so.1.2.0" ||
-    nok "libfrs.so and libfrs.so.1 link to libfrs.so.1.2.0"
-readelf -d "$U/lib/libfrs.so.1.2.0" | grep -q 'SONAME.*\[libfrs\.so\.1\]' &&
-    ok "soname libfrs.so.1" || nok "soname libfrs.so.1"
+[ "$(readlink "$U/lib/libfrs.so.$maj")" = $so ] &&
+    [ "$(readlink "$U/lib/libfrs.so")" = $so ] &&
+    ok "libfrs.so and libfrs.so.$maj link to $so" ||
+    nok "libfrs.so and libfrs.so.$maj link to $so"
+readelf -d "$U/lib/$so" | grep -q "SONAME.*\[libfrs\.so\.$maj\]" &&
+    ok "soname libfrs.so.$maj" || nok "soname libfrs.so.$maj"
 
 # The exported functions are those the header declares, no more.
 grep -o 'frs_[a-z0-9_]*(' "$TOP/src/lib/frs.h" | tr -d '(' | sort -u \
     >"$T/api.txt"
-nm -D --defined-only "$U/lib/libfrs.so.1.2.0" |
+nm -D --defined-only "$U/lib/$so" |
     awk '$2 != "A" { sub(/@.*/, "", $3); print $3 }' | sort -u >"$T/exported.txt"
 if cmp -s "$T/api.txt" "$T/exported.txt"; then
 	ok "libfrs.so exports the $(wc -l <"$T/api.txt") functions of frs.h"
@@ -74,7 +78,7 @@ else
 	nok "libfrs.so exports the functions of frs.h"
 	diff "$T/api.txt" "$T/exported.txt" | head -n 20 | sed 's/^/# /'
 fi
-nm -D --defined-only "$U/lib/libfrs.so.1.2.0" | grep -qw -e imap_load -e frs_fail &&
+nm -D --defined-only "$U/lib/$so" | grep -qw -e imap_load -e frs_fail &&
     nok "internal symbols (imap_load, frs_fail) exported" ||
     ok "internal symbols (imap_load, frs_fail) not exported"
 
@@ -152,12 +156,12 @@ for page in libfrs.3 frs_draw.3; do
 	}
 done
 
-# Dynamic: libfrs.so.1 from the staging directory.
+# Dynamic: libfrs.so.$maj from the staging directory.
 if cc $WARN -o "$T/ex_dyn" "$TOP/test/api_example.c" $CFLAGS_FRS $LIBS_FRS \
     2>"$T/err"; then
 	ok "api_example.c built against libfrs.so"
-	readelf -d "$T/ex_dyn" | grep -q 'NEEDED.*\[libfrs\.so\.1\]' &&
-	    ok "it needs libfrs.so.1" || nok "it needs libfrs.so.1"
+	readelf -d "$T/ex_dyn" | grep -q "NEEDED.*\[libfrs\.so\.$maj\]" &&
+	    ok "it needs libfrs.so.$maj" || nok "it needs libfrs.so.$maj"
 	LD_LIBRARY_PATH="$U/lib" "$T/ex_dyn" "$T/map.exr" "$M" \
 	    >"$T/dyn.txt" 2>"$T/err"
 	same_points "$T/dyn.txt" "dynamic: frs-sample's points"
@@ -240,8 +244,8 @@ link_run() {
 # frs.pc with its rpath: libfrs.so of the prefix, found without
 # LD_LIBRARY_PATH, and the shipped matrix beside it.
 link_run frs "$T/p_dyn" $(pcp --variable=rpath frs) &&
-    { ldd "$T/p_dyn" | grep -q "libfrs\.so\.1 => $P/lib/" &&
-    ok "it loads $P/lib/libfrs.so.1" || nok "it loads $P/lib/libfrs.so.1"; }
+    { ldd "$T/p_dyn" | grep -q "libfrs\.so\.$maj => $P/lib/" &&
+    ok "it loads $P/lib/libfrs.so.$maj" || nok "it loads $P/lib/libfrs.so.$maj"; }
 # frs-static.pc: libfrs.a by its path, no libfrs.so needed.
 pcp --libs frs-static | grep -q -- "$P/lib/libfrs\.a" &&
     ok "pkg-config --libs frs-static names $P/lib/libfrs.a" ||

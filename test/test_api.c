@@ -244,7 +244,7 @@ static struct prepared {
 	int minmap;
 	uint32_t block;
 	struct frs_prep p;
-} prepared[8];
+} prepared[32];
 static size_t nprepared;
 
 static const struct frs_prep *oracle_prep(int minmap, uint32_t b)
@@ -262,9 +262,63 @@ static const struct frs_prep *oracle_prep(int minmap, uint32_t b)
 	return &q->p;
 }
 
-/* Exact counts: Naive's count of the window at scale tau. */
+/* The levels of a run as frs.h defines them (libfrs(3)): the plan of
+ * frs_levels_plan for level 0's setup s0, smoothed as the options say
+ * (0: an eighth of the longest side), and a setup per level that has
+ * pixels (frs_level_setup), which reads the pixels of its level.  One
+ * level (s0 as it is) without levels, or when every pixel is at 0. */
+struct olev {
+	unsigned n;
+	struct frs_setup su[FRS_LEVELS_MAX];
+	struct frs_levels plan;
+};
+
+/* The same for a matrix of nm elements. */
+static void oracle_levels_of(const struct frs_imap *map,
+    const struct frs_options *o, const struct frs_setup *s0, double nm,
+    struct olev *lv)
+{	const uint32_t side[2] = { map->w, map->h };
+	double blur = o->level_blur > 0.0 ? o->level_blur :
+	    (double)(map->w > map->h ? map->w : map->h) / 8.0;
+	unsigned top = 0;
+
+	memset(lv, 0, sizeof *lv);
+	lv->n = 1;
+	lv->su[0] = *s0;
+	if (o->tiling != FRS_TILING_LEVELS || s0->ns == 1)
+		return;
+	while ((1u << top) < s0->ns)
+		top++;
+	assert_int_equal(frs_levels_plan(&lv->plan, 2, side, map->v,
+	    s0->tau * s0->iscale, top, nm, s0->sigma, blur), 0);
+	if (frs_levels_used(&lv->plan) == 1 && lv->plan.cells[0] > 0)
+		return;
+	lv->n = 0;
+	for (unsigned l = 0; l <= top; l++) {
+		struct frs_setup *su = &lv->su[lv->n];
+		if (lv->plan.cells[l] == 0)
+			continue;
+		if (l == 0)
+			*su = *s0;
+		else
+			frs_level_setup(su, s0, l, lv->plan.max[l]);
+		su->max = lv->plan.max[l];
+		su->lev = lv->plan.lev;
+		su->cell0 = 0;
+		su->cell1 = (uint64_t)map->w * map->h;
+		lv->n++;
+	}
+}
+
+static void oracle_levels(const struct frs_imap *map,
+    const struct frs_options *o, const struct frs_setup *s0, struct olev *lv)
+{
+	oracle_levels_of(map, o, s0, (double)mat.w * mat.h, lv);
+}
+
+/* Exact counts: Naive's count of every level at level 0's scale tau. */
 struct naive_count {
-	struct frs_setup su;
+	struct olev *lv;
 	const struct frs_imap *map;
 	const struct frs_prep *p;
 };
@@ -274,89 +328,142 @@ static int naive_count(void *ctx, double tau, uint64_t *count)
 	struct naive_count *c = ctx;
 	struct frs_result r;
 
-	c->su.exact = (struct frs_xtau){ .n = 1, .steps = { c->su.n },
-	    .tau = { tau } };
-	if (frs_sample(&c->su, c->map, c->p, FRS_NAIVE, &c->su.n, 1, 1, &r) < 0)
-		return -1;
-	*count = r.count;
-	frs_result_free(&r);
+	*count = 0;
+	for (unsigned i = 0; i < c->lv->n; i++) {
+		struct frs_setup *su = &c->lv->su[i];
+		su->exact = (struct frs_xtau){ .n = 1, .steps = { su->n },
+		    .tau = { tau } };
+		if (frs_sample(su, c->map, c->p, FRS_NAIVE, &su->n, 1, 1, &r) < 0)
+			return -1;
+		*count += r.count;
+		frs_result_free(&r);
+	}
 	return 0;
 }
 
-/* Listing 5.1 (frs_setup) with the options; under FRS_RULE_EXACT the
- * taus at which Naive counts exactly each step. */
+/* Listing 5.1 (frs_setup) with the options, its levels; under
+ * FRS_RULE_EXACT the taus at which Naive counts exactly each step over
+ * all levels. */
 static void oracle_setup(const struct frs_imap *map,
     const struct frs_options *o, const uint64_t *steps, unsigned nsteps,
-    uint64_t seed, struct frs_setup *su)
+    uint64_t seed, struct olev *lv)
 {
-	struct naive_count c;
+	struct naive_count c = { lv, map, oracle_prep(0, 0) };
+	struct frs_setup su;
+	struct frs_xtau x;
 	double tau0[16];
+	uint64_t most = 0;
 	unsigned passes;
 
-	assert_int_equal(frs_setup(su, map, &mat, steps[nsteps - 1], o->sigma,
+	assert_int_equal(frs_setup(&su, map, &mat, steps[nsteps - 1], o->sigma,
 	    seed), 0);
-	su->rule = rule_of(o);
-	su->jitter = jitter_of(o);
-	su->tiles = tiling_of(o, FRS_TILES_PLAIN);
+	su.rule = rule_of(o);
+	su.jitter = jitter_of(o);
+	su.tiles = tiling_of(o, FRS_TILES_PLAIN);
+	oracle_levels(map, o, &su, lv);
 	if (o->rule != FRS_RULE_EXACT)
 		return;
-	c.su = *su;
-	c.map = map;
-	c.p = oracle_prep(0, 0);
 	for (unsigned k = 0; k < nsteps; k++)
-		tau0[k] = frs_tau(su, steps[k]);
-	assert_int_equal(frs_exact_taus(steps, nsteps, tau0,
-	    frs_exact_most(map->v, (uint64_t)map->w * map->h, su->ns, 2),
-	    naive_count, &c, &su->exact, &passes), 0);
-	su->tau = frs_tau(su, su->n);
+		tau0[k] = frs_tau(&su, steps[k]);
+	/* every window element of non-zero importance, level by level */
+	for (unsigned i = 0; i < lv->n; i++) {
+		const struct frs_setup *t = &lv->su[i];
+		for (uint64_t p = 0; p < (uint64_t)map->w * map->h; p++)
+			most += map->v[p] > 0.0 && frs_cell_here(t->lev, t->level,
+			    p) ? (uint64_t)t->ns * t->ns : 0;
+	}
+	assert_int_equal(frs_exact_taus(steps, nsteps, tau0, most, naive_count,
+	    &c, &x, &passes), 0);
+	for (unsigned i = 0; i < lv->n; i++) {
+		lv->su[i].exact = x;
+		lv->su[i].tau = frs_tau(&lv->su[i], lv->su[i].n);
+	}
 }
 
-/* What frs_draw_progressive promises for map and o: the window
- * thresholded by the same implementation (on lists prepared here), each
- * element's point by frs_point, its density I / mean, in the order of
- * frs.h: the steps in turn, each in row order. */
+/* What frs_draw_progressive promises for map and o: the window of each
+ * level thresholded by the same implementation (on lists prepared here),
+ * each element's point by frs_point, its density I / mean, in the order
+ * of frs.h: the steps in turn, each level by level, each in row order.
+ * *exact_order is cleared where the API may order a pixel's elements
+ * otherwise (Sorted walks or scans a small level instead of its lists). */
 static struct drawn oracle_draw(const struct frs_imap *map,
     const struct frs_options *o, const uint64_t *steps, unsigned nsteps,
-    uint64_t seed)
+    uint64_t seed, int *exact_order)
 {
 	enum frs_impl a = algo_of(o->algorithm);
-	struct frs_setup su;
-	struct frs_result r;
+	struct olev lv;
+	struct frs_result r[FRS_LEVELS_MAX];
 	struct drawn d = { 0, NULL, NULL, NULL };
-	uint32_t b = 0;
-	int minmap = a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2;
+	uint64_t count = 0;
 
-	oracle_setup(map, o, steps, nsteps, seed, &su);
-	if (a == FRS_SORTED) {
-		/* blocks of n_s, as far as the matrix and its tiling keep
-		 * them whole; the minmap for the rest of each pixel */
-		uint32_t t = frs_tile_max_block(&su);
-		b = su.ns < mat.w ? su.ns : mat.w;
-		b = b < mat.h ? b : mat.h;
-		b = b < t ? b : t;
-		minmap = b < su.ns;
-	}
+	oracle_setup(map, o, steps, nsteps, seed, &lv);
+	*exact_order = a != FRS_SORTED || lv.n == 1;
 	frs_set_threads(1);
-	assert_int_equal(frs_sample(&su, map, oracle_prep(minmap, b), a, steps,
-	    nsteps, 0, &r), 0);
-	d.xy = malloc(2 * (r.count + 1) * sizeof *d.xy);
-	d.pdf = malloc((r.count + 1) * sizeof *d.pdf);
-	d.step = malloc((r.count + 1) * sizeof *d.step);
+	for (unsigned i = 0; i < lv.n; i++) {
+		const struct frs_setup *su = &lv.su[i];
+		uint32_t b = 0;
+		int minmap = a == FRS_STACK || a == FRS_LEVEL1 || a == FRS_LEVEL2;
+		if (a == FRS_SORTED) {
+			/* blocks of n_s, as far as the matrix and its tiling
+			 * keep them whole; the minmap for the rest of each
+			 * pixel */
+			uint32_t t = frs_tile_max_block(su);
+			b = su->ns < mat.w ? su->ns : mat.w;
+			b = b < mat.h ? b : mat.h;
+			b = b < t ? b : t;
+			minmap = b < su->ns;
+		}
+		assert_int_equal(frs_sample(su, map, oracle_prep(minmap, b), a,
+		    steps, nsteps, 0, &r[i]), 0);
+		count += r[i].count;
+	}
+	d.xy = malloc(2 * (count + 1) * sizeof *d.xy);
+	d.pdf = malloc((count + 1) * sizeof *d.pdf);
+	d.step = malloc((count + 1) * sizeof *d.step);
 	assert_true(d.xy && d.pdf && d.step);
 	for (uint32_t k = 0; k < nsteps; k++)
-		for (uint64_t c = 0; c < r.nchunk; c++)
-			for (uint64_t i = 0; i < r.chunk[c].n; i++) {
-				const struct frs_elem *e = &r.chunk[c].e[i];
-				if (nsteps > 1 && e->step != k)
-					continue;
-				frs_point(&su, e, &d.xy[2 * d.n], &d.xy[2 * d.n + 1]);
-				d.pdf[d.n] = map->v[(size_t)(e->y / su.ns) * map->w +
-				    e->x / su.ns] / su.mean;
-				d.step[d.n++] = e->step;
-			}
-	assert_true(d.n == r.count);
-	frs_result_free(&r);
+		for (unsigned l = 0; l < lv.n; l++)
+			for (uint64_t c = 0; c < r[l].nchunk; c++)
+				for (uint64_t i = 0; i < r[l].chunk[c].n; i++) {
+					const struct frs_elem *e = &r[l].chunk[c].e[i];
+					const struct frs_setup *su = &lv.su[l];
+					if (nsteps > 1 && e->step != k)
+						continue;
+					frs_point(su, e, &d.xy[2 * d.n],
+					    &d.xy[2 * d.n + 1]);
+					d.pdf[d.n] = map->v[(size_t)(e->y / su->ns) *
+					    map->w + e->x / su->ns] / su->mean;
+					d.step[d.n++] = e->step;
+				}
+	assert_true(d.n == count);
+	for (unsigned l = 0; l < lv.n; l++)
+		frs_result_free(&r[l]);
+	frs_levels_free(&lv.plan);
 	return d;
+}
+
+/* Records of k doubles, sorted (the same set in another order compares
+ * equal). */
+static int rec_k;
+static int rec_cmp(const void *a, const void *b)
+{
+	const double *p = a, *q = b;
+
+	for (int i = 0; i < rec_k; i++)
+		if (p[i] != q[i])
+			return p[i] < q[i] ? -1 : 1;
+	return 0;
+}
+
+static double *sort_recs(const double *rec, size_t n, size_t k)
+{
+	double *s = malloc((n ? n : 1) * k * sizeof *s);
+
+	assert_non_null(s);
+	memcpy(s, rec, n * k * sizeof *s);
+	rec_k = (int)k;
+	qsort(s, n, k * sizeof *s, rec_cmp);
+	return s;
 }
 
 /*
@@ -372,19 +479,27 @@ static void compare(const frs_sampler *s, const struct frs_imap *map,
 	struct frs_options dflt;
 	struct drawn d, want;
 	double *rec, *ref;
+	size_t k = 2 + (size_t)pdf + (nsteps > 1);
+	int in_order;
 
 	o = o != NULL ? o : (frs_options_init(&dflt), &dflt);
 	frs_sample_prog(MATRIX, args, steps, nsteps, seed, pdf, out);
 	d = draw(s, steps, nsteps, seed, pdf);
 	rec = records(&d, pdf, nsteps > 1);
-	want = oracle_draw(map, o, steps, nsteps, seed);
+	want = oracle_draw(map, o, steps, nsteps, seed, &in_order);
 	ref = records(&want, pdf, nsteps > 1);
 	if (want.n != d.n)
 		print_error("%s: the API made %zu samples, the oracle %zu\n", args,
 		    d.n, want.n);
 	assert_int_equal(d.n, want.n);
-	assert_memory_equal(rec, ref, d.n * (2 + (size_t)pdf + (nsteps > 1)) *
-	    sizeof *rec);
+	if (in_order) {
+		assert_memory_equal(rec, ref, d.n * k * sizeof *rec);
+	} else {
+		double *a = sort_recs(rec, d.n, k), *b = sort_recs(ref, d.n, k);
+		assert_memory_equal(a, b, d.n * k * sizeof *rec);
+		free(a);
+		free(b);
+	}
 	same_as_file(out, rec, d.n, (unsigned)pdf + (nsteps > 1));
 	free(ref);
 	free(rec);
@@ -505,8 +620,9 @@ static void test_options(void **state)
 
 /* The thesis's threshold rule where it matters.  At n = 3000 the window
  * is the matrix once and no element sits at floor(T), so the two rules
- * give the same set; at 100000 the window tiles it 16 times and some do:
- * there the thesis rule passes them all, the unbiased rule by a coin. */
+ * give the same set; at 100000 the thesis's window (plain tiles) tiles it
+ * 16 times and some do: there the thesis rule passes them all, the
+ * unbiased rule by a coin.  (The levels, the default, through compare.) */
 static void test_thesis_rule(void **state)
 {
 	uint64_t n = 100000;
@@ -516,10 +632,14 @@ static void test_thesis_rule(void **state)
 
 	(void)state;
 	frs_options_init(&o);
-	unbiased = sampler_f64(mask, &blob, &o);
 	o.rule = FRS_RULE_THESIS;
 	thesis = sampler_f64(mask, &blob, &o);
 	compare(thesis, &blob, &o, &n, 1, 5, 0, "-i blob --threshold thesis");
+	frs_sampler_free(thesis);
+	o.tiling = FRS_TILING_PLAIN;
+	thesis = sampler_f64(mask, &blob, &o);
+	o.rule = FRS_RULE_UNBIASED;
+	unbiased = sampler_f64(mask, &blob, &o);
 	t = draw(thesis, &n, 1, 5, 0);
 	u = draw(unbiased, &n, 1, 5, 0);
 	/* v < T passes every element v == floor(T): never fewer samples. */
@@ -713,23 +833,13 @@ static int wave_gather(void *ctx, const double *xy, const double *pdf,
 	return 0;
 }
 
-static int rec3_cmp(const void *a, const void *b)
-{
-	const double *p = a, *q = b;
-
-	for (int i = 0; i < 3; i++)
-		if (p[i] != q[i])
-			return p[i] < q[i] ? -1 : 1;
-	return 0;
-}
-
 /* The records (x, y, pdf) of d in increasing order. */
 static double *sorted_records(const struct drawn *d)
 {
-	double *r = records(d, 1, 0);
+	double *r = records(d, 1, 0), *q = sort_recs(r, d->n, 3);
 
-	qsort(r, d->n, 3 * sizeof *r, rec3_cmp);
-	return r;
+	free(r);
+	return q;
 }
 
 /* Sorted with one step goes from the thresholding straight to the
@@ -878,8 +988,9 @@ static void test_info(void **state)
 	assert_non_null(fp);
 	while (fgets(line, sizeof line, fp) != NULL) {
 		const char *p = strstr(line, "n_s ");
-		if (p != NULL && sscanf(p, "n_s %u, window %llux%llu at (%llu, "
-		    "%llu), tau %lg", &ns, &ww, &wh, &ox, &oy, &tau) == 6)
+		/* the first: level 0's (the thesis's) window */
+		if (!found && p != NULL && sscanf(p, "n_s %u, window %llux%llu at "
+		    "(%llu, %llu), tau %lg", &ns, &ww, &wh, &ox, &oy, &tau) == 6)
 			found = 1;
 	}
 	fclose(fp);
@@ -1129,7 +1240,7 @@ static void test_code_names(void **state)
 	}
 	assert_non_null(v);
 	assert_int_equal(sscanf(v, "%d.%d.%d", &a, &b, &c), 3);
-	assert_int_equal(FRS_API_VERSION_MAJOR, 1);
+	assert_int_equal(FRS_API_VERSION_MAJOR, 2);
 }
 
 static void test_mask_errors(void **state)
@@ -2042,38 +2153,139 @@ static int put3(void *ctx, const struct frs3_elem *e)
 }
 
 /* oracle_draw in 3-D, as records in frs-sample's layout: frs3_setup with
- * the options, the exact taus of frs3_exact, the same implementation's
- * elements in the order of frs.h (frs3_each), each by put3. */
+ * the options, its levels (octree levels over voxels, as in 2-D), the
+ * same implementation's elements of each level in the order of frs.h
+ * (frs3_each, level by level), each by put3.  Exact counts: the search
+ * of frs_exact_taus over the levels' Naive counts.  (Steps in turn over
+ * the levels: compared as sets with progressive steps.) */
+struct olev3 {
+	unsigned n;
+	struct frs3_setup su[FRS_LEVELS_MAX];
+	struct frs_levels plan;
+	const struct frs_vol *vol;
+	struct frs3_prep none;
+};
+
+static int naive_count3(void *ctx, double tau, uint64_t *count)
+{
+	struct olev3 *lv = ctx;
+	struct frs3_result r;
+
+	*count = 0;
+	for (unsigned i = 0; i < lv->n; i++) {
+		struct frs3_setup *su = &lv->su[i];
+		su->exact = (struct frs_xtau){ .n = 1, .steps = { su->n },
+		    .tau = { tau } };
+		if (frs3_sample(su, lv->vol, &lv->none, FRS_NAIVE, &su->n, 1, 1,
+		    &r) < 0)
+			return -1;
+		*count += r.count;
+		frs3_result_free(&r);
+	}
+	return 0;
+}
+
+static void oracle_levels3(const struct frs_vol *vol,
+    const struct frs_options *o, const struct frs3_setup *s0,
+    struct olev3 *lv)
+{
+	const uint32_t side[3] = { vol->w, vol->h, vol->d };
+	uint32_t longest = vol->w > vol->h ? vol->w : vol->h;
+	double blur;
+	unsigned top = 0;
+
+	longest = vol->d > longest ? vol->d : longest;
+	blur = o->level_blur > 0.0 ? o->level_blur : (double)longest / 8.0;
+	memset(lv, 0, sizeof *lv);
+	lv->vol = vol;
+	lv->none.m = &mat3;
+	lv->n = 1;
+	lv->su[0] = *s0;
+	if (o->tiling != FRS_TILING_LEVELS || s0->ns == 1)
+		return;
+	while ((1u << top) < s0->ns)
+		top++;
+	assert_int_equal(frs_levels_plan(&lv->plan, 3, side, vol->v,
+	    s0->tau * s0->iscale, top, (double)mat3.w * mat3.h * mat3.d,
+	    s0->sigma, blur), 0);
+	if (frs_levels_used(&lv->plan) == 1 && lv->plan.cells[0] > 0)
+		return;
+	lv->n = 0;
+	for (unsigned l = 0; l <= top; l++) {
+		struct frs3_setup *su = &lv->su[lv->n];
+		if (lv->plan.cells[l] == 0)
+			continue;
+		if (l == 0)
+			*su = *s0;
+		else
+			frs3_level_setup(su, s0, l, lv->plan.max[l]);
+		su->max = lv->plan.max[l];
+		su->lev = lv->plan.lev;
+		su->cell0 = 0;
+		su->cell1 = (uint64_t)vol->w * vol->h * vol->d;
+		lv->n++;
+	}
+}
+
 static double *oracle3(const struct frs_vol *vol, const struct frs_options *o,
     const uint64_t *steps, unsigned nsteps, uint64_t seed, int pdf, size_t *n)
 {
 	enum frs_impl a = o->algorithm == FRS_ALG_NAIVE ? FRS_NAIVE : FRS_SORTED;
 	size_t k = 3 + (size_t)pdf + (nsteps > 1);
-	struct frs3_setup su;
-	struct frs3_prep p;
-	struct frs3_result r;
-	struct oracle3 o3 = { &su, vol, NULL, 0, k, pdf, nsteps > 1 };
+	struct frs3_setup s0;
+	struct olev3 lv;
+	struct frs3_result r[FRS_LEVELS_MAX];
+	struct oracle3 o3 = { NULL, vol, NULL, 0, k, pdf, nsteps > 1 };
+	uint64_t count = 0;
 
 	if (mat3.v == NULL)
 		assert_int_equal(frd_read(MATRIX3, &mat3), 0);
-	assert_int_equal(frs3_setup(&su, vol, &mat3, steps[nsteps - 1],
+	assert_int_equal(frs3_setup(&s0, vol, &mat3, steps[nsteps - 1],
 	    o->sigma, seed), 0);
-	su.rule = rule_of(o);
-	su.jitter = jitter_of(o);
-	su.tiles = tiling_of(o, FRS_TILES_PLAIN);
-	assert_int_equal(frs3_prepare(&p, &mat3, a == FRS_SORTED ?
-	    frs3_block(&su) : 0), 0);
-	if (o->rule == FRS_RULE_EXACT)
-		assert_int_equal(frs3_exact(&su, vol, &p, steps, nsteps), 0);
+	s0.rule = rule_of(o);
+	s0.jitter = jitter_of(o);
+	s0.tiles = tiling_of(o, FRS_TILES_PLAIN);
+	oracle_levels3(vol, o, &s0, &lv);
+	if (o->rule == FRS_RULE_EXACT) {
+		struct frs_xtau x;
+		double tau0[16];
+		unsigned passes;
+		uint64_t most = 0;
+		for (unsigned i = 0; i < nsteps; i++)
+			tau0[i] = frs3_tau(&s0, steps[i]);
+		for (unsigned i = 0; i < lv.n; i++)
+			for (uint64_t c = 0; c < (uint64_t)vol->w * vol->h * vol->d;
+			    c++)
+				most += vol->v[c] > 0.0 && frs_cell_here(lv.su[i].lev,
+				    lv.su[i].level, c) ? (uint64_t)lv.su[i].ns *
+				    lv.su[i].ns * lv.su[i].ns : 0;
+		assert_int_equal(frs_exact_taus(steps, nsteps, tau0, most,
+		    naive_count3, &lv, &x, &passes), 0);
+		for (unsigned i = 0; i < lv.n; i++) {
+			lv.su[i].exact = x;
+			lv.su[i].tau = frs3_tau(&lv.su[i], lv.su[i].n);
+		}
+	}
 	frs_set_threads(1);
-	assert_int_equal(frs3_sample(&su, vol, &p, a, steps, nsteps, 0, &r), 0);
-	o3.rec = malloc((r.count + 1) * k * sizeof *o3.rec);
+	for (unsigned i = 0; i < lv.n; i++) {
+		struct frs3_prep p;
+		assert_int_equal(frs3_prepare(&p, &mat3, a == FRS_SORTED ?
+		    frs3_block(&lv.su[i]) : 0), 0);
+		assert_int_equal(frs3_sample(&lv.su[i], vol, &p, a, steps, nsteps,
+		    0, &r[i]), 0);
+		frs3_prep_free(&p);
+		count += r[i].count;
+	}
+	o3.rec = malloc((count + 1) * k * sizeof *o3.rec);
 	assert_non_null(o3.rec);
-	frs3_each(&r, nsteps, put3, &o3);
+	for (unsigned i = 0; i < lv.n; i++) {
+		o3.su = &lv.su[i];
+		frs3_each(&r[i], nsteps, put3, &o3);
+		frs3_result_free(&r[i]);
+	}
 	*n = o3.n;
-	assert_true(*n == r.count);
-	frs3_result_free(&r);
-	frs3_prep_free(&p);
+	assert_true(*n == count);
+	frs_levels_free(&lv.plan);
 	return o3.rec;
 }
 
@@ -2094,7 +2306,14 @@ static void compare3(const frs_sampler3 *s, const struct frs_vol *vol,
 	rec = draw3(s, steps, nsteps, seed, pdf, &n);
 	ref = oracle3(vol, o, steps, nsteps, seed, pdf, &nref);
 	assert_int_equal(n, nref);
-	assert_memory_equal(rec, ref, n * k * sizeof *rec);
+	if (nsteps == 1) {
+		assert_memory_equal(rec, ref, n * k * sizeof *rec);
+	} else {	/* the oracle gives the levels' steps in turn */
+		double *a = sort_recs(rec, n, k), *b = sort_recs(ref, n, k);
+		assert_memory_equal(a, b, n * k * sizeof *rec);
+		free(a);
+		free(b);
+	}
 	assert_int_equal(pts_read(out, &p), 0);
 	assert_int_equal(p.dims, 3);
 	assert_int_equal(p.n, n);
@@ -2484,10 +2703,11 @@ static void test_exact_same(void **state)
 }
 
 /* A brute-force oracle: on a small matrix and map, every window
- * element's key (v + u) / I, sorted; the n smallest are the exact set. */
+ * element's key (v + u) / (4^l I) over every level l (one with plain
+ * tiles), u its coin, sorted; the n smallest are the exact set. */
 struct keyed {
 	double key;
-	uint64_t x, y;
+	uint64_t l, x, y;
 };
 
 static int key_cmp(const void *a, const void *b)
@@ -2501,8 +2721,50 @@ static int elem_cmp(const void *a, const void *b)
 {
 	const uint64_t *p = a, *q = b;
 
-	return p[1] != q[1] ? (p[1] < q[1] ? -1 : 1) :
-	    p[0] < q[0] ? -1 : p[0] > q[0];
+	for (int i = 0; i < 3; i++)
+		if (p[i] != q[i])
+			return p[i] < q[i] ? -1 : 1;
+	return 0;
+}
+
+/* Every window element of every level of lv over the 8 x 6 map m of the
+ * matrix values v, keyed; their number. */
+static uint64_t all_keys(const struct olev *lv, const struct frs_imap *m,
+    const uint32_t *v, struct keyed *k)
+{
+	uint64_t nk = 0;
+
+	for (unsigned i = 0; i < lv->n; i++) {
+		const struct frs_setup *su = &lv->su[i];
+		for (uint64_t y = 0; y < su->sh; y++)
+			for (uint64_t x = 0; x < su->sw; x++) {
+				uint64_t p = (y / su->ns) * 8 + x / su->ns;
+				double imp = m->v[p];
+				double u = frs_rand01(su->seed, FRS_STREAM_COIN,
+				    y * su->sw + x);
+				if (imp > 0.0 && frs_cell_here(su->lev, su->level, p))
+					k[nk++] = (struct keyed){ ((double)v[
+					    frs_matrix_index(su, x, y)] + u) /
+					    (su->lfac * imp * su->iscale), i, x, y };
+			}
+	}
+	return nk;
+}
+
+/* The level index and window element of each drawn point, as (l, x, y). */
+static void elems_of(const struct olev *lv, const struct drawn *d,
+    uint64_t *got)
+{
+	for (size_t i = 0; i < d->n; i++) {
+		uint64_t px = (uint64_t)(d->xy[2 * i] * 8.0);
+		uint64_t py = (uint64_t)(d->xy[2 * i + 1] * 6.0), l = 0;
+		while (!frs_cell_here(lv->su[l].lev, lv->su[l].level, py * 8 + px))
+			l++;
+		got[3 * i] = l;
+		got[3 * i + 1] = (uint64_t)(d->xy[2 * i] * (double)lv->su[l].sw);
+		got[3 * i + 2] = (uint64_t)(d->xy[2 * i + 1] *
+		    (double)lv->su[l].sh);
+	}
 }
 
 static void test_exact_oracle(void **state)
@@ -2513,6 +2775,7 @@ static void test_exact_oracle(void **state)
 	struct frs_rng r;
 	frs_mask *mk;
 	frs_error e;
+	unsigned most = 0;
 
 	(void)state;
 	assert_non_null(v);
@@ -2529,56 +2792,53 @@ static void test_exact_oracle(void **state)
 	for (uint32_t i = 0; i < 8 * 6; i++)	/* some zeros, one bright */
 		m.v[i] = i % 7 == 3 ? 0.0 : i == 20 ? 9.0 :
 		    0.05 + frs_rng_next01(&r);
+	for (int levels = 0; levels < 2; levels++)
 	for (size_t ni = 0; ni < 5; ni++)
 		for (uint64_t seed = 1; seed <= 3; seed++) {
 			struct frs_options o;
 			struct frs_setup su;
+			struct olev lv;
 			struct drawn d;
 			struct keyed *k;
-			uint64_t n = ns[ni], nk = 0, *got, *want;
+			uint64_t n = ns[ni], nk, *got, *want;
 			frs_sampler *s;
 			frs_options_init(&o);
 			o.rule = FRS_RULE_EXACT;
+			o.level_blur = 0.25;	/* each pixel its own level */
+			o.tiling = levels ? FRS_TILING_LEVELS : FRS_TILING_PLAIN;
 			assert_int_equal(frs_sampler_new_f64(&s, mk, m.v, 8, 6, 0,
 			    &o, &e), FRS_OK);
 			assert_int_equal(api_setup(s, n, seed, &su), 0);
-			k = malloc(su.sw * su.sh * sizeof *k);
+			oracle_levels_of(&m, &o, &su, 64.0 * 64.0, &lv);
+			most = lv.n > most ? lv.n : most;
+			k = malloc(lv.n * su.sw * su.sh * sizeof *k);
 			assert_non_null(k);
-			for (uint64_t y = 0; y < su.sh; y++)
-				for (uint64_t x = 0; x < su.sw; x++) {
-					double imp = m.v[(y / su.ns) * 8 + x / su.ns];
-					double u = frs_rand01(seed, FRS_STREAM_COIN,
-					    y * su.sw + x);
-					if (imp > 0.0)
-						k[nk++] = (struct keyed){ ((double)v[
-						    frs_matrix_index(&su, x, y)] + u) /
-						    (imp * su.iscale), x, y };
-				}
+			nk = all_keys(&lv, &m, v, k);
 			qsort(k, nk, sizeof *k, key_cmp);
 			assert_true(nk > n);
-			want = malloc(2 * n * sizeof *want);
-			got = malloc(2 * n * sizeof *got);
+			want = malloc(3 * n * sizeof *want);
+			got = malloc(3 * n * sizeof *got);
 			assert_true(want && got);
 			for (uint64_t i = 0; i < n; i++) {
-				want[2 * i] = k[i].x;
-				want[2 * i + 1] = k[i].y;
+				want[3 * i] = k[i].l;
+				want[3 * i + 1] = k[i].x;
+				want[3 * i + 2] = k[i].y;
 			}
 			d = draw(s, &n, 1, seed, 0);
 			assert_int_equal(d.n, n);
-			for (uint64_t i = 0; i < n; i++) {
-				got[2 * i] = (uint64_t)(d.xy[2 * i] * (double)su.sw);
-				got[2 * i + 1] = (uint64_t)(d.xy[2 * i + 1] *
-				    (double)su.sh);
-			}
-			qsort(want, n, 2 * sizeof *want, elem_cmp);
-			qsort(got, n, 2 * sizeof *got, elem_cmp);
-			assert_memory_equal(want, got, 2 * n * sizeof *got);
+			elems_of(&lv, &d, got);
+			qsort(want, n, 3 * sizeof *want, elem_cmp);
+			qsort(got, n, 3 * sizeof *got, elem_cmp);
+			assert_memory_equal(want, got, 3 * n * sizeof *got);
 			drawn_free(&d);
+			frs_levels_free(&lv.plan);
 			free(want);
 			free(got);
 			free(k);
 			frs_sampler_free(s);
 		}
+	/* the levels were tried: several at some count */
+	assert_true(most >= 3);
 	imap_free(&m);
 	frs_mask_free(mk);
 	free(v);

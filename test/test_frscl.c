@@ -192,11 +192,15 @@ static void refusals(void **state)
 	    &r), -1);
 	assert_err_has("no minmap");
 	frs_prep_free(&p);
+	n = 10;
+	assert_int_equal(frs_setup(&s, &map, &m, n, 8.0, 1), 0);
 	assert_true(s.ns < 64);
 	assert_int_equal(frs_prepare(&p, &m, 0, 64), 0);
 	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRS_SORTED, &n, 1, 0,
 	    &r), -1);
 	assert_err_has("do not fit");
+	n = 1000;
+	assert_int_equal(frs_setup(&s, &map, &m, n, 8.0, 1), 0);
 	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRS_NAIVE, bad, 2, 0,
 	    &r), -1);
 	assert_err_has("increase");

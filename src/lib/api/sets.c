@@ -203,17 +203,56 @@ static uint64_t level_span(const struct frs_levels *L, unsigned l,
 	return (uint64_t)(L->hi[l][a] - L->lo[l][a] + 1) * ns;
 }
 
+/* The levels among the n of lv (2-D setups s2, or 3-D s3) whose cells
+ * span more than the matrix on an axis, as "2, 3", into buf; their
+ * number. */
+static unsigned repeating(const struct frs_levels *L, unsigned n,
+    const struct frs_setup *s2, const struct frs3_setup *s3, char *buf,
+    size_t cap)
+{
+	unsigned k = 0;
+	size_t len = 0;
+
+	buf[0] = '\0';
+	for (unsigned i = 0; i < n; i++) {
+		unsigned l = s2 ? s2[i].level : s3[i].level;
+		uint64_t ns = s2 ? s2[i].ns : s3[i].ns;
+		const uint32_t side[3] = { s2 ? s2[i].iw : s3[i].iw,
+		    s2 ? s2[i].ih : s3[i].ih, s2 ? 1 : s3[i].id };
+		const uint32_t m[3] = { s2 ? s2[i].mw : s3[i].mw,
+		    s2 ? s2[i].mh : s3[i].mh, s2 ? UINT32_MAX : s3[i].md };
+		int over = 0;
+		for (unsigned a = 0; a < (s2 ? 2u : 3u); a++)
+			over |= level_span(L, l, a, side[a], ns) > m[a];
+		if (over && len < cap)
+			len += (size_t)snprintf(buf + len, cap - len, "%s%u",
+			    k ? ", " : "", l);
+		k += (unsigned)over;
+	}
+	return k;
+}
+
 /* The warnings of set 0's setup: patterns that repeat.  Without levels,
  * the thesis's: more samples than the matrix gives without repetition
  * (Table 4.1), or plain tiles of a window larger than the matrix.  With
- * levels, each level whose cells span more than the matrix on an axis:
- * its samples show the same matrix elements again, a lattice of the
+ * levels, the levels whose cells span more than the matrix on an axis:
+ * their samples show the same matrix elements again, a lattice of the
  * matrix's period. */
 static void warn2(const struct api_sets_run *r, int levels)
 {
 	const struct frs_setup *s = &r->s0;
+	char which[256];
+	unsigned k = levels ? repeating(&r->lv.plan, r->lv.n, r->lv.su, NULL,
+	    which, sizeof which) : 0;
 
-	if (!levels && (double)s->n > frs_unique(s))
+	if (k > 0)
+		frs_warn("level%s %s of the multi-level window span%s more than "
+		    "the %ux%u matrix: %s samples repeat the matrix's patterns%s",
+		    k > 1 ? "s" : "", which, k > 1 ? "" : "s", s->mw, s->mh,
+		    k > 1 ? "their" : "its", (double)s->n > frs_unique(s) ?
+		    " (n is past the samples it gives without repetition, "
+		    "thesis Table 4.1)" : "");
+	else if (!levels && (double)s->n > frs_unique(s))
 		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.0f without repetition, thesis "
 		    "Table 4.1)", (unsigned long long)s->n, s->mw, s->mh,
@@ -225,25 +264,22 @@ static void warn2(const struct api_sets_run *r, int levels)
 		    "few samples fall (shuffled tiles break it)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh, s->mw,
 		    s->mh);
-	for (unsigned i = 0; levels && i < r->lv.n; i++) {
-		const struct frs_setup *t = &r->lv.su[i];
-		uint64_t x = level_span(&r->lv.plan, t->level, 0, t->iw, t->ns);
-		uint64_t y = level_span(&r->lv.plan, t->level, 1, t->ih, t->ns);
-		if (x > t->mw || y > t->mh)
-			frs_warn("level %u (elements of %ux%u of level 0's, %u a "
-			    "pixel side): its pixels span %llux%llu elements, more "
-			    "than the %ux%u matrix: its samples repeat the "
-			    "matrix's patterns", t->level, 1u << t->level,
-			    1u << t->level, t->ns, (unsigned long long)x,
-			    (unsigned long long)y, t->mw, t->mh);
-	}
 }
 
 static void warn3(const struct api_sets_run *r, int levels)
 {
 	const struct frs3_setup *t = &r->s3;
+	char which[256];
+	unsigned k = levels ? repeating(&r->lv3.plan, r->lv3.n, NULL, r->lv3.su,
+	    which, sizeof which) : 0;
 
-	if (!levels && (double)t->n > frs3_unique(t))
+	if (k > 0)
+		frs_warn("level%s %s of the multi-level window span%s more than "
+		    "the %ux%ux%u matrix: %s samples repeat the matrix's patterns%s",
+		    k > 1 ? "s" : "", which, k > 1 ? "" : "s", t->mw, t->mh,
+		    t->md, k > 1 ? "their" : "its", (double)t->n > frs3_unique(t) ?
+		    " (n is past the samples it gives without repetition)" : "");
+	else if (!levels && (double)t->n > frs3_unique(t))
 		frs_warn("%llu samples from a %ux%ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.6g without repetition)",
 		    (unsigned long long)t->n, t->mw, t->mh, t->md, t->sigma,
@@ -253,20 +289,6 @@ static void warn3(const struct api_sets_run *r, int levels)
 		    "%ux%ux%u matrix as it is", (unsigned long long)t->sw,
 		    (unsigned long long)t->sh, (unsigned long long)t->sd, t->mw,
 		    t->mh, t->md);
-	for (unsigned i = 0; levels && i < r->lv3.n; i++) {
-		const struct frs3_setup *u = &r->lv3.su[i];
-		const struct frs_levels *L = &r->lv3.plan;
-		uint64_t x = level_span(L, u->level, 0, u->iw, u->ns);
-		uint64_t y = level_span(L, u->level, 1, u->ih, u->ns);
-		uint64_t z = level_span(L, u->level, 2, u->id, u->ns);
-		if (x > u->mw || y > u->mh || z > u->md)
-			frs_warn("level %u (%u elements a voxel side): its voxels "
-			    "span %llux%llux%llu elements, more than the %ux%ux%u "
-			    "matrix: its samples repeat the matrix's patterns",
-			    u->level, u->ns, (unsigned long long)x,
-			    (unsigned long long)y, (unsigned long long)z, u->mw,
-			    u->mh, u->md);
-	}
 }
 
 /* The mask, its note (a stale twin .frp) as a warning. */

@@ -528,19 +528,23 @@ void frs3_point(const struct frs3_setup *s, const struct frs3_elem *e,
 	const uint64_t c[3] = { e->x, e->y, e->z };
 	const uint64_t side[3] = { s->sw, s->sh, s->sd };
 	uint64_t id = elem_id(s, e->x, e->y, e->z);
+	unsigned l = s->level;
 
-	for (int a = 0; a < 3; a++) {
+	/* A level-l element (l > 0) at one of its level-0 elements, as in
+	 * 2-D (frs_point). */
+	for (unsigned a = 0; a < 3; a++) {
 		double j = 0.5;
+		uint64_t ca = c[a] << l | (l > 0 ? frs_level_place(s->seed, l, id,
+		    3, a) : 0);
 		if (s->jitter == FRS_PLACE_RANDOM) {
-			j = frs_rand01(s->seed, FRS_STREAM_JITTER, 3 * id + (uint64_t)a);
+			j = frs_rand01(s->seed, FRS_STREAM_JITTER, 3 * id + a);
 		} else if (s->jitter == FRS_PLACE_HALTON) {
 			/* Halton (2, 3, 5) by element, rotated by the seed. */
 			j = num_radical_inverse(id + 1, base[a]) +
-			    frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX -
-			    (uint64_t)a);
+			    frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX - a);
 			j -= floor(j);
 		}
-		p[a] = frs_below_one(((double)c[a] + j) / (double)side[a]);
+		p[a] = frs_below_one(((double)ca + j) / (double)(side[a] << l));
 	}
 }
 
