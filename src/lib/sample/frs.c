@@ -1505,10 +1505,10 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
 	if (algo == FRS_SORTED && p->block == 0)
 		run.algo = frs_sorted_walk(s);
 	run.start = frs_impl_level(s, p, run.algo);
-	/* Points in place need Sorted's lists without jitter, at level 0
+	/* Points in place need Sorted's lists without jitter
 	 * (take_points). */
 	if (xy != NULL && algo == FRS_SORTED && p->block != 0 &&
-	    s->jitter == FRS_PLACE_CENTRE && s->level == 0) {
+	    s->jitter == FRS_PLACE_CENTRE) {
 		run.xy = xy;
 		run.pdf = pdf;
 	}
@@ -1635,12 +1635,11 @@ double frs_below_one(double v)
 }
 
 uint64_t frs_level_place(uint64_t seed, unsigned level, uint64_t id,
-    unsigned dims, unsigned axis)
+    unsigned axis)
 {
 	uint64_t r = frs_rand64(seed, FRS_STREAM_PLACE, id);
 
-	return (r >> ((dims == 2 ? 32 : 21) * axis)) &
-	    (((uint64_t)1 << level) - 1);
+	return (r >> (21 * axis)) & (((uint64_t)1 << level) - 1);
 }
 
 /* The jitter of element id in [0, 1)^2: the centre, or Halton or random
@@ -1665,27 +1664,19 @@ static void jitter2(const struct frs_setup *s, uint64_t id, double *jx,
 }
 
 /*
- * A level-l element (l > 0) stands for 2^l x 2^l elements of level 0 in
- * one pixel, whose importance is constant: its sample goes to one of
- * them, drawn from (level seed, element) (frs_level_place), with the
- * jitter of the level-l element.  So every level's samples lie on level
- * 0's grid of n_s a pixel side, not on a grid as coarse as their
- * elements (pixel centres at the coarsest), uniform over the element.
+ * An element's point, at every level alike: each level's element grid is
+ * as fine against its samples' spacing as level 0's (sigma elements at
+ * the sparsity bound), so centres are as good a place at every level.
+ * (A volume's levels go to level 0's grid instead, frs3_point.)
  */
 void frs_point(const struct frs_setup *s, const struct frs_elem *e,
     double *x, double *y)
 {
-	uint64_t id = (uint64_t)e->y * s->sw + e->x, ex = e->x, ey = e->y;
-	unsigned l = s->level;
 	double jx, jy;
 
-	jitter2(s, id, &jx, &jy);
-	if (l > 0) {
-		ex = ex << l | frs_level_place(s->seed, l, id, 2, 0);
-		ey = ey << l | frs_level_place(s->seed, l, id, 2, 1);
-	}
-	*x = coord(ex, jx, (double)(s->sw << l));
-	*y = coord(ey, jy, (double)(s->sh << l));
+	jitter2(s, (uint64_t)e->y * s->sw + e->x, &jx, &jy);
+	*x = coord(e->x, jx, (double)s->sw);
+	*y = coord(e->y, jy, (double)s->sh);
 }
 
 void frs_points(const struct frs_setup *s, const struct frs_elem *e,
@@ -1693,7 +1684,7 @@ void frs_points(const struct frs_setup *s, const struct frs_elem *e,
 {
 	double sw = (double)s->sw, sh = (double)s->sh;
 
-	if (s->jitter != FRS_PLACE_CENTRE || s->level > 0) {
+	if (s->jitter != FRS_PLACE_CENTRE) {
 		for (size_t i = 0; i < n; i++)
 			frs_point(s, &e[i], &xy[2 * i], &xy[2 * i + 1]);
 		return;

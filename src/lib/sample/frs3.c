@@ -530,12 +530,18 @@ void frs3_point(const struct frs3_setup *s, const struct frs3_elem *e,
 	uint64_t id = elem_id(s, e->x, e->y, e->z);
 	unsigned l = s->level;
 
-	/* A level-l element (l > 0) at one of its level-0 elements, as in
-	 * 2-D (frs_point). */
+	/* A level-l element (l > 0) stands for 8^l elements of level 0 in
+	 * one voxel, whose importance is constant: its sample goes to one of
+	 * them, drawn from (level seed, element), with the jitter of the
+	 * level-l element.  Every level's samples then lie on level 0's grid
+	 * of n_s a voxel side: at the centres of their own elements, those
+	 * of a coarse level form a coarse grid that shows in every
+	 * projection of the volume (64 columns over shell3's 32^3 voxels at
+	 * 4096 samples, against 256 at level 0). */
 	for (unsigned a = 0; a < 3; a++) {
 		double j = 0.5;
 		uint64_t ca = c[a] << l | (l > 0 ? frs_level_place(s->seed, l, id,
-		    3, a) : 0);
+		    a) : 0);
 		if (s->jitter == FRS_PLACE_RANDOM) {
 			j = frs_rand01(s->seed, FRS_STREAM_JITTER, 3 * id + a);
 		} else if (s->jitter == FRS_PLACE_HALTON) {

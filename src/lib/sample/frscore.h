@@ -339,17 +339,14 @@ int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
 /* v, or the double below 1 if v is 1. */
 double frs_below_one(double v);
 
-/* The point of an element, in [0, 1)^2, with the setup's jitter; an
- * element of level l > 0 at one of the 4^l level-0 elements it stands
- * for (frs_level_place), so that every level's points lie on level 0's
- * grid. */
+/* The point of an element, in [0, 1)^2, with the setup's jitter. */
 void frs_point(const struct frs_setup *s, const struct frs_elem *e,
     double *x, double *y);
-/* The level-0 element, on one axis (of dims), that the sample of level-l
- * element id (l > 0) goes to within it: l random bits of (level seed,
- * element), the same on every device. */
+/* The level-0 element, on axis 0, 1 or 2, that the sample of a volume's
+ * level-l element id (l <= 21) goes to within it (frs3_point): l random
+ * bits of (level seed, element). */
 uint64_t frs_level_place(uint64_t seed, unsigned level, uint64_t id,
-    unsigned dims, unsigned axis);
+    unsigned axis);
 /* frs_point of n elements into xy (x, y pairs): the same values, one
  * loop without calls when there is no jitter. */
 void frs_points(const struct frs_setup *s, const struct frs_elem *e,
