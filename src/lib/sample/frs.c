@@ -959,6 +959,10 @@ struct run {
 				 * at (frs_impl_level), once a run */
 };
 
+/* The most blocks a pixel's descent marks (64 x 64); a pixel of more
+ * looks at each. */
+#define LIVE_MAX 4096
+
 /* What one pixel's work needs. */
 struct pix {
 	const struct run *run;
@@ -968,6 +972,8 @@ struct pix {
 	uint64_t x0, y0;	/* the pixel's first window element */
 	double pdf;		/* its density, for points made in place */
 	struct tcache tc;
+	uint8_t live[LIVE_MAX];	/* Sorted, shuffled tiles: its blocks worth
+				 * a look (mark_live) */
 };
 
 /* Room for k more elements in c; a chunk in a caller's store
@@ -1261,26 +1267,28 @@ static void take_block(struct pix *px, const struct frs_tile *t,
 	c->n += k;
 }
 
-/* A lower bound of the values of a pixel whose blocks are smaller than
- * it (shuffled tiles with n_s above the step): the minmap of level
- * log2 n_s over the (at most 2 x 2) blocks its matrix region meets, or 0
- * when there is no such level.  Dark pixels then cost four lookups
+/* A lower bound of the values that the window-aligned square of the
+ * given side from window element (x, y) shows (inside one tile, as an
+ * aligned square of a side below the matrix's is): the minmap of level
+ * log2 side over the (at most 2 x 2) blocks its matrix region meets, or 0
+ * when there is no such level.  A dark square then costs four lookups
  * instead of a bisection per block. */
-static uint32_t pixel_bound(struct pix *px)
+static uint32_t region_bound(struct pix *px, uint64_t x, uint64_t y,
+    uint64_t side)
 {
 	const struct frs_setup *s = px->run->s;
 	const struct frs_prep *p = px->run->p;
-	unsigned L = log2u64(s->ns);
+	unsigned L = log2u64(side);
 	uint64_t lx, ly, c[2][2], lo[2], m[2] = { s->mw, s->mh };
 	uint32_t v = UINT32_MAX;
 	const struct frs_tile *t;
 
-	if (s->ns >= s->mw || s->ns >= s->mh || L >= p->nlev)
+	if (side >= s->mw || side >= s->mh || L >= p->nlev)
 		return 0;
-	t = tile_at(s, &px->tc, px->x0, px->y0, &lx, &ly);
+	t = tile_at(s, &px->tc, x, y, &lx, &ly);
 	for (uint64_t k = 0; k < 2; k++) {	/* opposite corners */
-		uint64_t i = block_index(s, t, 0, lx + k * (s->ns - 1),
-		    ly + k * (s->ns - 1));
+		uint64_t i = block_index(s, t, 0, lx + k * (side - 1),
+		    ly + k * (side - 1));
 		c[k][0] = i % s->mw;
 		c[k][1] = i / s->mw;
 	}
@@ -1289,7 +1297,7 @@ static uint32_t pixel_bound(struct pix *px)
 		lo[i] = c[0][i] < c[1][i] ? c[0][i] : c[1][i];
 	for (int i = 0; i < 2; i++)
 		if ((c[0][i] > c[1][i] ? c[0][i] - c[1][i] : c[1][i] - c[0][i]) !=
-		    s->ns - 1)
+		    side - 1)
 			lo[i] = c[0][i] > c[1][i] ? c[0][i] : c[1][i];
 	for (uint64_t qy = 0; qy < 2; qy++)
 		for (uint64_t qx = 0; qx < 2; qx++) {
@@ -1301,6 +1309,42 @@ static uint32_t pixel_bound(struct pix *px)
 	return v;
 }
 
+/* Shuffled tiles, a pixel of nb x nb blocks of side b (blocks smaller
+ * than it): mark in px->live the blocks that a descent over the
+ * window-aligned squares from the square of `side` at (x, y) reaches,
+ * skipping each square whose bound reaches the limit.  The blocks are
+ * then taken in their order; the descent only skips, in O(log) lookups
+ * for a dark square where looking at each block cost one per block. */
+static void mark_live(struct pix *px, uint64_t x, uint64_t y, uint64_t side,
+    uint32_t b, uint64_t nb)
+{
+	uint64_t h = side / 2;
+
+	if (side == b) {
+		px->live[(y - px->y0) / b * nb + (x - px->x0) / b] = 1;
+		return;
+	}
+	if (region_bound(px, x, y, side) >= px->lim)
+		return;
+	for (uint64_t q = 0; q < 4; q++)
+		mark_live(px, x + (q & 1) * h, y + (q >> 1) * h, h, b, nb);
+}
+
+/* The live blocks of the pixel (1 when worth a look), from squares of
+ * at most half the matrix's side (the largest a bound can be had for). */
+static void pixel_live(struct pix *px, uint32_t b, uint64_t nb)
+{
+	const struct frs_setup *s = px->run->s;
+	uint64_t side = s->ns, m = s->mw < s->mh ? s->mw : s->mh;
+
+	memset(px->live, 0, nb * nb);
+	while (side >= m && side > b)
+		side /= 2;
+	for (uint64_t y = 0; y < s->ns; y += side)
+		for (uint64_t x = 0; x < s->ns; x += side)
+			mark_live(px, px->x0 + x, px->y0 + y, side, b, nb);
+}
+
 static void pix_sorted(struct pix *px)
 {
 	const struct run *run = px->run;
@@ -1309,15 +1353,21 @@ static void pix_sorted(struct pix *px)
 	uint32_t b = p->block;
 	uint64_t nb = s->ns / b;
 	unsigned lb = 0;
+	int live = nb > 1 && nb * nb <= LIVE_MAX;
 
 	while ((1u << lb) < b)
 		lb++;
-	if (nb > 1 && pixel_bound(px) >= px->lim)
+	if (live)
+		pixel_live(px, b, nb);
+	else if (nb > 1 && region_bound(px, px->x0, px->y0, s->ns) >= px->lim)
 		return;
 	for (uint64_t by = 0; by < nb; by++)
 		for (uint64_t bx = 0; bx < nb; bx++) {
 			uint64_t x = px->x0 + bx * b, y = px->y0 + by * b, lx, ly;
-			const struct frs_tile *t = tile_at(s, &px->tc, x, y, &lx, &ly);
+			const struct frs_tile *t;
+			if (live && !px->live[by * nb + bx])
+				continue;
+			t = tile_at(s, &px->tc, x, y, &lx, &ly);
 			uint64_t blk = block_index(s, t, lb, lx, ly);
 			const uint32_t *val = p->sval + p->soff[blk];
 			const uint32_t *idx = p->sidx + p->soff[blk];
