@@ -61,6 +61,72 @@ static void text_glyphs(void **state)
 	raster_free(&r);
 }
 
+/* The 3 x 5 cells of c at scale 1 as a string of '#' and '.', row by
+ * row: what a reader sees. */
+static void cells_of(char c, char out[16])
+{
+	struct frs_raster r;
+	char s[2] = { c, '\0' };
+
+	assert_int_equal(raster_alloc(&r, 3, 5, 3), 0);
+	plot_text(&r, 0, 0, 1, s, ink);
+	for (int i = 0; i < 15; i++)
+		out[i] = is_ink(&r, i % 3, i / 3) ? '#' : '.';
+	out[15] = '\0';
+	raster_free(&r);
+}
+
+/* Letters as a 3 x 5 font draws them, written out by hand: A with its
+ * apex and crossbar, H with a bar in the middle, M with its two middle
+ * rows full and N with three (as the Tom Thumb font draws them). */
+static void text_letters(void **state)
+{
+	static const char *const want[][2] = {
+		{ "A", ".#." "#.#" "###" "#.#" "#.#" },
+		{ "H", "#.#" "#.#" "###" "#.#" "#.#" },
+		{ "M", "#.#" "###" "###" "#.#" "#.#" },
+		{ "N", "#.#" "###" "###" "###" "#.#" },
+		{ "E", "###" "#.." "##." "#.." "###" },
+		{ "1", ".#." "##." ".#." ".#." "###" },
+	};
+	char got[16];
+	(void)state;
+	for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+		cells_of(want[i][0][0], got);
+		if (strcmp(got, want[i][1]) != 0)
+			fail_msg("'%s' is %s, not %s", want[i][0], got, want[i][1]);
+	}
+}
+
+/* Every glyph of the font: the letters that are mirror images of
+ * themselves are drawn so, every glyph has ink in its top and bottom
+ * rows or is punctuation, and no two characters look the same. */
+static void text_font(void **state)
+{
+	static const char all[] = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+	    ".,-+_/:=()%?";
+	static const char mirror[] = "0AHIMOTUVWXY8";
+	char g[sizeof all][16];
+	(void)state;
+	for (size_t i = 0; i < sizeof all - 1; i++)
+		cells_of(all[i], g[i]);
+	for (size_t i = 0; i < sizeof all - 1; i++)
+		for (size_t j = 0; j < i; j++)
+			if (strcmp(g[i], g[j]) == 0)
+				fail_msg("'%c' and '%c' are the same glyph %s",
+				    all[i], all[j], g[i]);
+	for (const char *c = mirror; *c; c++) {
+		char m[16];
+		cells_of(*c, m);
+		for (int y = 0; y < 5; y++)
+			if (m[3 * y] != m[3 * y + 2])
+				fail_msg("'%c' is not symmetric: %s", *c, m);
+	}
+	for (size_t i = 0; i < 36; i++)
+		if (strchr(g[i], '#') > g[i] + 2 || strrchr(g[i], '#') < g[i] + 12)
+			fail_msg("'%c' does not span the 5 rows: %s", all[i], g[i]);
+}
+
 /* A curve from (x0, y0) to (x1, y1) of the box lights the bottom left
  * and top right pixels and is 8-connected; values beyond are clamped. */
 static void curve_box(void **state)
@@ -141,6 +207,8 @@ static void axes(void **state)
 TU_MAIN(NULL, NULL,
 	cmocka_unit_test(text_width),
 	cmocka_unit_test(text_glyphs),
+	cmocka_unit_test(text_letters),
+	cmocka_unit_test(text_font),
 	cmocka_unit_test(curve_box),
 	cmocka_unit_test(curve_nan),
 	cmocka_unit_test(axes))
