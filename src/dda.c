@@ -474,24 +474,15 @@ static void page_alloc(const struct opts *o, size_t ngroups,
 	}
 }
 
-/* The title: the file's name (its end, when it is too long) and the
- * figures. */
+/* The title: the file's name, fitted into two lines of the band above
+ * the image (plot_text_fit), and the figures. */
 static void page_title(struct page *pg, int x0, const struct group *gr)
 {
 	static const uint8_t ink[3] = { 0, 0, 0 };
-	size_t room = (PG_ML + pg->pw) / ((PLOT_GLYPH_W + 1) * PG_SCALE);
-	const char *name = gr->set[0].file;
-	size_t len = strlen(name);
 	char line[256];
 
-	if (room > sizeof line - 1)
-		room = sizeof line - 1;
-
-	if (len > room && room > 2) {
-		snprintf(line, sizeof line, "..%s", name + len - (room - 2));
-		name = line;
-	}
-	plot_text(&pg->r, x0 + 4, 8, PG_SCALE, name, ink);
+	plot_text_fit(&pg->r, x0 + 4, 8, (int)pg->colw - 8, 13, PG_SCALE,
+	    gr->set[0].file, ink);
 	snprintf(line, sizeof line, "%zu SET%s  N %.6g  RHO %.3f", gr->nset,
 	    gr->nset == 1 ? "" : "S", gr->nmean, gr->rho);
 	plot_text(&pg->r, x0 + 4, 22, PG_SCALE, line, ink);
@@ -517,13 +508,34 @@ static void page_plot(struct page *pg, int x0, int k, const char *title,
 	plot_curve(&pg->r, &b, x, y, n, color);
 }
 
+/* The anisotropy plot's range, from its n values and the noise line
+ * (10 log10(1/m) for m sets: lower for more sets), and its ticks: whole
+ * steps of 5, 10, 20 or 50 dB, at most 7 of them. */
+static void aniso_range(const double *y, size_t n, double noise, double *lo,
+    double *hi, double *tick, size_t *ntick)
+{
+	static const double steps[] = { 5, 10, 20, 50 };
+	double step = 0;
+
+	for (size_t i = 0; i < sizeof steps / sizeof steps[0]; i++) {
+		step = steps[i];
+		plot_range(y, n, noise, step, lo, hi);
+		if ((*hi - *lo) / step <= 6)
+			break;
+	}
+	if ((*hi - *lo) / step > 6)	/* beyond 300 dB: the edges hold it */
+		*lo = *hi - 6 * step;
+	*ntick = 0;
+	for (double t = *lo; t <= *hi + step / 2; t += step)
+		tick[(*ntick)++] = t;
+}
+
 static void page_column(const struct opts *o, struct page *pg, size_t col,
     const struct spec_img *im, const struct group *gr)
 {
 	static const uint8_t blue[3] = { 0, 0, 200 }, red[3] = { 200, 0, 0 },
 	    green[3] = { 0, 130, 0 };
 	static const double yt[] = { 0, 1, 2, 3, 4 };
-	static const double at[] = { -20, -10, 0, 10 };
 	int x0 = (int)(col * pg->colw);
 	int ix = x0 + PG_ML + (int)(pg->pw - pg->side) / 2;
 	size_t nb = gr->rad.nbins, ng = rdf_bins(o), m = 0;
@@ -532,6 +544,8 @@ static void page_column(const struct opts *o, struct page *pg, size_t col,
 	double bin = nb > 1 ? gr->rad.lo[1] - gr->rad.lo[0] : 0;
 	double xmax = (double)o->size * im->scale;
 	const char *unit = o->mode == FOURIER ? "FREQUENCY" : "SPACINGS";
+	double noise = 10 * log10(1.0 / (double)gr->nset), lo, hi, at[8];
+	size_t nat;
 	char title[64];
 
 	if (x == NULL || y == NULL)
@@ -555,8 +569,9 @@ static void page_column(const struct opts *o, struct page *pg, size_t col,
 	for (size_t i = 1, j = 0; i < nb; i++)
 		if (gr->rad.count[i] > 1)
 			y[j++] = gr->rad.aniso[i];
-	page_plot(pg, x0, 1, "ANISOTROPY DB", xmax, -20, 10, at, 4,
-	    10 * log10(1.0 / (double)gr->nset), x, y, m, red);
+	aniso_range(y, m, noise, &lo, &hi, at, &nat);
+	page_plot(pg, x0, 1, "ANISOTROPY DB", xmax, lo, hi, at, nat, noise, x,
+	    y, m, red);
 	for (size_t b = 0; b < ng; b++) {
 		x[b] = rdf_r(o, b);
 		y[b] = gr->g[b];

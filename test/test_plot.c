@@ -127,6 +127,71 @@ static void text_font(void **state)
 			fail_msg("'%c' does not span the 5 rows: %s", all[i], g[i]);
 }
 
+/* The raster of plot_text's lines, one under another (6 s apart), for
+ * comparing with plot_text_fit. */
+static void lines_of(struct frs_raster *q, int x, int y, int scale,
+    const char *const *line, size_t n)
+{
+	for (size_t i = 0; i < n; i++)
+		plot_text(q, x, y + (int)i * (PLOT_GLYPH_H + 1) * scale, scale,
+		    line[i], ink);
+}
+
+/* plot_text_fit in a box 23 x 13 at (2, 1): 3 characters a line at
+ * scale 2 (one line), 6 at scale 1 (two lines). */
+static void text_fit(void **state)
+{
+	static const struct {
+		const char *s;
+		int scale, lines;
+		const char *line[2];
+	} c[] = {
+		{ "ABC", 2, 1, { "ABC" } },		/* fits as it is */
+		{ "ABCD", 1, 1, { "ABCD" } },		/* a smaller scale */
+		{ "ABCDEFGHIJKL", 1, 2, { "ABCDEF", "GHIJKL" } },	/* wrapped */
+		{ "ABCDEFGHIJKLMNOPQRST", 1, 2, { "ABCDEF", "GHI..." } },
+	};
+	(void)state;
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		struct frs_raster r, q;
+		assert_int_equal(raster_alloc(&r, 30, 20, 3), 0);
+		assert_int_equal(raster_alloc(&q, 30, 20, 3), 0);
+		assert_int_equal(plot_text_fit(&r, 2, 1, 23, 13, 2, c[i].s, ink),
+		    c[i].lines);
+		lines_of(&q, 2, 1, c[i].scale, c[i].line, (size_t)c[i].lines);
+		if (memcmp(r.px, q.px, 30 * 20 * 3) != 0)
+			fail_msg("'%s' is not drawn as %d line(s) at scale %d",
+			    c[i].s, c[i].lines, c[i].scale);
+		for (int y = 0; y < 20; y++)
+			for (int x = 0; x < 30; x++)
+				if (x < 2 || x >= 25 || y < 1 || y >= 14)
+					assert_false(is_ink(&r, x, y));
+		raster_free(&r);
+		raster_free(&q);
+	}
+}
+
+/* plot_range: whole steps around the data and the reference, NaN left
+ * out, at least one step. */
+static void range(void **state)
+{
+	double lo, hi;
+	double a[] = { -28.5, NAN, -31.2, -29 };
+	double b[] = { -6.5, 2.5, -3 };
+	double z[] = { NAN };
+	(void)state;
+	plot_range(a, 4, -30.1, 10, &lo, &hi);
+	assert_true(lo == -40 && hi == -20);
+	plot_range(b, 3, -6.0, 5, &lo, &hi);
+	assert_true(lo == -10 && hi == 5);
+	plot_range(b, 3, 12, 10, &lo, &hi);
+	assert_true(lo == -10 && hi == 20);
+	plot_range(z, 1, 0, 10, &lo, &hi);	/* the reference alone */
+	assert_true(lo == 0 && hi == 10);
+	plot_range(z, 0, -20, 10, &lo, &hi);
+	assert_true(lo == -20 && hi == -10);
+}
+
 /* A curve from (x0, y0) to (x1, y1) of the box lights the bottom left
  * and top right pixels and is 8-connected; values beyond are clamped. */
 static void curve_box(void **state)
@@ -209,6 +274,8 @@ TU_MAIN(NULL, NULL,
 	cmocka_unit_test(text_glyphs),
 	cmocka_unit_test(text_letters),
 	cmocka_unit_test(text_font),
+	cmocka_unit_test(text_fit),
+	cmocka_unit_test(range),
 	cmocka_unit_test(curve_box),
 	cmocka_unit_test(curve_nan),
 	cmocka_unit_test(axes))
