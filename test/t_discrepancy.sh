@@ -402,4 +402,20 @@ expect_fail "set column decreasing" 1 "dec.txt: point 1: set 0 after set 1" "$T/
 printf '#pts dims=2 extra=1 names=set\n0.1 0.2 0.5\n' >"$T/half.txt"
 expect_fail "set column not whole" 1 "half.txt: point 0: set 0.5 is not a whole number" "$T/o9" \
     discrepancy -o "$T/o9" "$T/half.txt"
+# A pdf column: the points follow a density, but the discrepancy is that
+# of the plain area; a warning names the file and says so, once per
+# file, none for a file without one or under -q; the table is the same.
+hsw-sample -i blob -n 300 --pdf -o "$T/pdf.pts"
+hsw-sample -i blob -n 300 -o "$T/nopdf.pts"
+discrepancy --grid 100 --per-set "$T/pdf.pts" "$T/pdf.pts" >"$T/w1" 2>"$T/err"
+[ "$(grep -c "discrepancy: warning: $T/pdf.pts: .*pdf.*area" "$T/err")" = 2 ] &&
+    [ "$(wc -l <"$T/err")" = 2 ] &&
+    ok "a pdf column: a warning per file naming it, the area measured" ||
+    nok "pdf column warning: $(cat "$T/err")"
+discrepancy --grid 100 --per-set "$T/nopdf.pts" "$T/nopdf.pts" >"$T/w2" 2>"$T/err"
+[ ! -s "$T/err" ] && [ "$(cut -f 1-7 "$T/w1")" = "$(cut -f 1-7 "$T/w2")" ] &&
+    ok "no pdf column: no warning, the same discrepancies" ||
+    nok "no pdf column: $(cat "$T/err")"
+discrepancy -q --grid 100 "$T/pdf.pts" >/dev/null 2>"$T/err"
+[ ! -s "$T/err" ] && ok "-q: no pdf warning" || nok "-q pdf warning: $(cat "$T/err")"
 done_testing
