@@ -157,7 +157,8 @@ expect_fail "--db junk" 2 "--db" - dda --db 3 "$T/grid.pts"
 expect_fail "no files" 2 "no point files" - dda --rdf
 expect_fail "missing file" 1 "$T/nope.pts" "$T/o1" dda -o "$T/o1" "$T/nope.pts"
 expect_fail "outside [0,1)" 1 "out.txt" "$T/o2" dda -o "$T/o2" "$T/out.txt"
-expect_fail "--sets not dividing" 1 "not a whole number of sets" "$T/o3" \
+expect_fail "--sets not dividing" 1 \
+    "grid.pts: 256 points are not a whole number of sets of 100, and there is no set column" "$T/o3" \
     dda --sets 100 -o "$T/o3" "$T/grid.pts"
 expect_fail "point on zero importance" 1 "grid.pts" "$T/o4" \
     dda --dda -i blob:sigma=0.01 -o "$T/o4" "$T/grid.pts"
@@ -252,7 +253,32 @@ done
 dda --fourier --size 16 -o "$T/sc" "$T/rand.pts"
 dda --fourier --size 16 --sets 512 -o "$T/sd" "$T/rand.pts"
 cmp -s "$T/sc" "$T/sd" && ok "--sets 512 agreeing with the set column" || nok "--sets 512, set column"
-expect_fail "--sets 256 disagreeing with the set column" 1 \
-    "rand.pts: set 0 of the file's set column has 512 points, not 256" "$T/o3" \
-    dda --sets 256 -o "$T/o3" "$T/rand.pts"
+# --sets N disagreeing with the set column: the file's sets as they are,
+# with a warning naming the file and both sizes.
+dda --fourier --size 16 --sets 256 -o "$T/se" "$T/rand.pts" 2>"$T/err"
+cmp -s "$T/sc" "$T/se" &&
+    grep -q "^dda: warning: $T/rand.pts: .*set column.* 512 points, not 256" "$T/err" &&
+    ok "--sets 256 beside a set column of 512: its sets, a warning" ||
+    nok "--sets 256 beside a set column: $(cat "$T/err")"
+# Sets of different sizes in the set column: the warning gives their range.
+printf '#pts dims=2 extra=1 names=set\n0.1 0.2 0\n0.3 0.4 0\n0.5 0.6 1\n0.7 0.8 1\n0.9 0.1 1\n' >"$T/var.txt"
+dda --density --sets 2 -o "$T/sv" "$T/var.txt" 2>"$T/err"
+grep -q "var.txt: .*2 to 3 points, not 2" "$T/err" && [ "$(grep -c '^[01]	' "$T/sv")" = 2 ] &&
+    ok "sets of 2 and 3 points: their range in the warning" || nok "range: $(cat "$T/err")"
+
+# A file without a set column cut into blocks of N in file order: a
+# warning naming the file, the blocks as if they were files of their own.
+ref-sample -k dart -n 1024 -q -o "$T/d1024.pts"
+ref-sample -k dart -n 4096 -q -T -o "$T/d4096.txt"
+grep -v '^#' "$T/d4096.txt" | split -l 1024 - "$T/blk."
+dda --density --sets 1024 -o "$T/cut" "$T/d4096.txt" 2>"$T/err"
+dda --density -o "$T/files" "$T/blk.aa" "$T/blk.ab" "$T/blk.ac" "$T/blk.ad" 2>/dev/null
+[ "$(cut -f 1-4 "$T/cut")" = "$(cut -f 1-4 "$T/files")" ] &&
+    [ "$(grep -c "^dda: warning: $T/d4096.txt: no set column: cut in file order into 4 sets of 1024" "$T/err")" = 1 ] &&
+    ok "no set column, --sets 1024: 4 blocks in file order and a warning naming the file" ||
+    nok "blocks without a set column: $(cat "$T/err")"
+dda --density --sets 1024 -o "$T/one" "$T/d1024.pts" 2>"$T/err"
+[ ! -s "$T/err" ] && ok "a file of exactly N points: one set, no warning" ||
+    nok "one block: $(cat "$T/err")"
+
 done_testing

@@ -63,6 +63,17 @@ ref-sample -k random --sets 200 -n 256 -q -T | awk '!/^#/ { print $1, $2 }' >"$T
 mc-error -f disc "$T/rand.pts" >"$T/d0"
 cmp -s "$T/d0" "$T/d" && ok "the set column splits as --sets 256 does" || nok "set column: $(cat "$T/d0")"
 mc-error -f disc "$T/rand1.txt" >"$T/d1"
+# The same file cut by --sets 256: the rows of the set column, and a
+# warning naming the file; --sets 128 beside the set column: its sets.
+mc-error -f disc --sets 256 "$T/rand1.txt" >"$T/d2" 2>"$T/err"
+[ "$(cut -f 1-6 "$T/d2")" = "$(cut -f 1-6 "$T/d")" ] &&
+    grep -q "^mc-error: warning: $T/rand1.txt: no set column: cut in file order into 200 sets" "$T/err" &&
+    ok "no set column, --sets 256: 200 blocks, a warning naming the file" ||
+    nok "--sets 256 without a set column: $(cat "$T/err")"
+mc-error -f disc --sets 128 "$T/rand.pts" >"$T/d3" 2>"$T/err"
+cmp -s "$T/d3" "$T/d" && grep -q "rand.pts: .*256 points, not 128" "$T/err" &&
+    ok "--sets 128 beside a set column of 256: its sets, a warning" ||
+    nok "--sets 128 beside a set column: $(cat "$T/err")"
 near "$(col estimate_mean "$T/d1")" "$(col estimate_mean "$T/d")" 1e-9 &&
     [ "$(col sets "$T/d1")" = 1 ] && ok "one set: same mean" || nok "one set"
 
