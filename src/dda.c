@@ -27,7 +27,8 @@
 
 static const char usage[] =
     "usage: dda [--fourier | --dda | --density | --rdf] [--summary]\n"
-    "           [-i IMPORTANCE] [-s WxH] [--size K] [--approx] [--eps E]\n"
+    "           [-i IMPORTANCE] [-s WxH] [--equirect] [--strict] [--size K]\n"
+    "           [--approx] [--eps E]\n"
     "           [--sigma S] [--bin W] [--torus] [--rmax R] [--bins B]\n"
     "           [--png FILE] [--radial FILE] [--db LO:HI] [--sets N] [-j N]\n"
     "           [-q] [-o FILE] FILE...\n"
@@ -44,6 +45,9 @@ static const char usage[] =
     "                    --dda, --density and --rdf measure distances in\n"
     "                    local sample spacings\n"
     "  -s, --size-map WxH  size at which procedural maps are evaluated\n"
+    "                    (default 128x128), or files resampled\n"
+    "  --equirect        weight map rows by sin(theta)\n"
+    "  --strict          negative importance is an error\n"
     "  --size K          frequencies |k| <= K (--fourier, default 128) or\n"
     "                    pixels from the centre (--dda, default 128)\n"
     "  --approx          --fourier by gridding and FFT instead of exact\n"
@@ -71,6 +75,7 @@ enum mode { FOURIER, DDA, DENSITY, RDF };
 struct opts {
 	enum mode mode;
 	int nmodes, approx, torus, have_size, have_bin, summary;
+	int flags;		/* imap_load's: --equirect, --strict */
 	const char *imp, *png, *radial;
 	uint32_t mw, mh, size;
 	double eps, sigma, bin, rmax, lo_db, hi_db;
@@ -98,7 +103,8 @@ static void parse_db(struct opts *o, const char *s)
 
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
-    "fourier dda density rdf i=importance s=size-map size approx "
+    "fourier dda density rdf i=importance s=size-map equirect strict size "
+    "approx "
     "eps sigma bin torus rmax bins png radial db sets summary";
 
 static void parse(int argc, char **argv, struct opts *o)
@@ -116,6 +122,8 @@ static void parse(int argc, char **argv, struct opts *o)
 		case 's':
 			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->mw, &o->mh);
 			break;
+		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
 		case OPT_SIZE:
 			o->size = (uint32_t)cli_u64("--size", optarg, 1, 4096);
 			o->have_size = 1;
@@ -157,6 +165,8 @@ static void parse(int argc, char **argv, struct opts *o)
 		    "in its table");
 	if ((o->png || o->radial) && (o->mode == DENSITY || o->mode == RDF))
 		cli_usage_error("--png and --radial go with --fourier or --dda");
+	if (o->flags && o->imp == NULL)
+		cli_usage_error("--equirect and --strict go with -i");
 	if (o->imp && o->mode == FOURIER)
 		cli_usage_error("-i: the Fourier spectrum is for uniform sets; "
 		    "use --dda for adaptive ones");
@@ -722,7 +732,7 @@ int main(int argc, char **argv)
 		cli_die("no memory");
 	cli_read_sets(&ps, argc, argv, o.per, note_first, first);
 	check_3d(&o, &ps);
-	if (o.imp && imap_load(o.imp, o.mw, o.mh, 0, &map) < 0)
+	if (o.imp && imap_load(o.imp, o.mw, o.mh, o.flags, &map) < 0)
 		cli_die_lib();
 	cli_out_open(&of, cli.out, 0);
 	if (o.summary)

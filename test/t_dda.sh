@@ -293,4 +293,29 @@ if grep -q '^dda --summary --sets 1024 --png cmp.png frs.pts sobol.pts dart.pts$
 else
 	nok "frs(7)'s dda --summary example: $(cat "$T/ex.sh" "$T/ex/err" 2>&1 | head -n 8)"
 fi
+# The map options of frs-sample: --equirect weights the map's rows by
+# sin(theta) as imap convert --equirect does (the densities of its float
+# map, to 1e-6, not those of the map as it is); --strict refuses negative
+# importance, which is otherwise clamped with a warning; both need -i.
+imap convert --equirect -s 64x32 sky "$T/sky-eq.exr"
+hsw-sample -i sky -s 64x32 --equirect -n 200 --input random --sets 20 -q -o "$T/eq.pts"
+dda --density -i sky -s 64x32 --equirect -o "$T/de" "$T/eq.pts"
+dda --density -i "$T/sky-eq.exr" -o "$T/dc" "$T/eq.pts"
+dda --density -i sky -s 64x32 -o "$T/dp" "$T/eq.pts"
+# rel A B: the largest relative difference of the sets' rho.
+rel() { paste "$1" "$2" | awk -F '\t' 'NR > 1 && $1 != "mean" { d = ($4 - $9) / $9
+    if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3g\n", m }'; }
+awk -v c="$(rel "$T/de" "$T/dc")" -v p="$(rel "$T/de" "$T/dp")" 'BEGIN { exit !(c < 1e-6 && p > 1e-3) }' &&
+    ok "--equirect: the density of imap convert --equirect's map" ||
+    nok "--equirect: $(rel "$T/de" "$T/dc") from the converted map, $(rel "$T/de" "$T/dp") from the plain"
+ref-sample -n 300 -q -o "$T/r300.pts"
+expect_fail "--strict refuses negative importance" 1 "is negative" "$T/o7" \
+    dda --density --strict -i "$TD/interior.exr" -s 64x32 -o "$T/o7" "$T/r300.pts"
+dda --density -i "$TD/interior.exr" -s 64x32 -o "$T/o8" "$T/r300.pts" 2>"$T/err" &&
+    grep -q "interior.exr: .*negative.*clamped" "$T/err" &&
+    ok "negative importance without --strict: clamped, a warning" ||
+    nok "negative importance without --strict: $(cat "$T/err")"
+for o in --equirect --strict; do
+	expect_fail "$o without -i" 2 "$o" - dda --density $o "$T/r300.pts"
+done
 done_testing

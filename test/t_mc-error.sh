@@ -294,4 +294,14 @@ expect_fail "--env: missing file" 1 "$T/none.exr" "$O" \
     mc-error -f gauss --env "$T/none.exr" -o "$O" "$T/r3.pts"
 expect_fail "--env: all zero" 1 "const:0" "$O" \
     mc-error --env const:0 -o "$O" "$T/r3.pts"
+# --strict, as in frs-sample: negative radiance in env's map an error
+# naming it; without it clamped with a warning.  No map: a usage error.
+expect_fail "--strict refuses a negative env map" 1 "is negative" - \
+    mc-error -f env --strict --env "$TD/interior.exr" "$T/grid.txt"
+mc-error -f env --env "$TD/interior.exr" "$T/grid.txt" >/dev/null 2>"$T/err" &&
+    grep -q "interior.exr: .*negative.*clamped" "$T/err" &&
+    ok "a negative env map without --strict: clamped, a warning" ||
+    nok "negative env map without --strict: $(cat "$T/err")"
+expect_fail "--strict without env's map" 2 "--strict" - \
+    mc-error -f disc --strict "$T/grid.txt"
 done_testing

@@ -338,4 +338,14 @@ expect_fail "--set of no point" 1 "--set 9: no point has that set" "$T/o.png" \
     sh -c "frs-sample -q -n 100 --sets 4 | pts-render --set 9 -o '$T/o.png'"
 expect_fail "--sets without --set" 2 "--set K" "$T/o.png" \
     pts-render --sets 64 -o "$T/o.png" "$T/old.txt"
+# --strict, as in frs-sample: negative importance in the map an error
+# naming it, no picture; without it clamped with a warning.
+expect_fail "--strict refuses negative importance" 1 "is negative" "$T/st.png" \
+    pts-render --strict -i "$TD/interior.exr" -s 64x32 -o "$T/st.png" "$T/X.txt"
+pts-render -i "$TD/interior.exr" -s 64x32 -o "$T/cl.png" "$T/X.txt" 2>"$T/err" &&
+    grep -q "interior.exr: .*negative.*clamped" "$T/err" &&
+    ok "negative importance without --strict: clamped, a warning" ||
+    nok "negative importance without --strict: $(cat "$T/err")"
+expect_fail "--strict without -i" 2 "need -i" "$T/st.png" \
+    pts-render --strict -o "$T/st.png" "$T/X.txt"
 done_testing
