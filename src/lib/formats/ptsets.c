@@ -70,8 +70,8 @@ static void warn_split(const char *path, size_t per, int column,
 			frs_warn("%s: no set column: cut in file order into %zu "
 			    "sets of %zu points, which are sets of their own only "
 			    "if the file holds such sets one after another (a set "
-			    "column marks them, as frs-sample and ref-sample write "
-			    "it for several sets)", path, k, per);
+			    "column marks them, as frs-sample, hsw-sample and "
+			    "ref-sample write it for several sets)", path, k, per);
 		return;
 	}
 	for (size_t i = 0; i < k; i++) {
