@@ -518,48 +518,66 @@ static void page_plot(struct page *pg, int x0, int k, const char *title,
 	plot_curve(&pg->r, &b, x, y, n, color);
 }
 
-/* The anisotropy plot's range, from its n values and the noise line
- * (10 log10(1/m) for m sets: lower for more sets), and its ticks: whole
- * steps of 5, 10, 20 or 50 dB, at most 7 of them. */
-static void aniso_range(const double *y, size_t n, double noise, double *lo,
-    double *hi, double *tick, size_t *ntick)
+/* The anisotropy plot's axis, one for all the columns so that they
+ * compare: its range around every curve and noise line (10 log10(1/m)
+ * for m sets: lower for more sets), in whole steps of 5, 10, 20 or 50 dB,
+ * at most 6 of them, and its ticks. */
+struct aniso_axis {
+	double lo, hi, tick[8];
+	size_t ntick;
+};
+
+/* The values the axis must hold: every plotted anisotropy (annuli 1 on
+ * with more than one pixel) and noise line; *n of them, to be freed. */
+static double *aniso_values(const struct group *gr, size_t ngroups,
+    size_t *n)
+{
+	size_t cap = 0, k = 0;
+	double *v;
+
+	for (size_t g = 0; g < ngroups; g++)
+		cap += gr[g].rad.nbins + 1;
+	if ((v = malloc(cap * sizeof *v)) == NULL)
+		cli_die("no memory for the page");
+	for (size_t g = 0; g < ngroups; g++) {
+		v[k++] = 10 * log10(1.0 / (double)gr[g].nset);
+		for (size_t i = 1; i < gr[g].rad.nbins; i++)
+			if (gr[g].rad.count[i] > 1)
+				v[k++] = gr[g].rad.aniso[i];
+	}
+	*n = k;
+	return v;
+}
+
+static void aniso_axis(const struct group *gr, size_t ngroups,
+    struct aniso_axis *ax)
 {
 	static const double steps[] = { 5, 10, 20, 50 };
-	double step = 0;
+	double step = 0, noise0 = 10 * log10(1.0 / (double)gr[0].nset);
+	size_t n;
+	double *v = aniso_values(gr, ngroups, &n);
 
 	for (size_t i = 0; i < sizeof steps / sizeof steps[0]; i++) {
 		step = steps[i];
-		plot_range(y, n, noise, step, lo, hi);
-		if ((*hi - *lo) / step <= 6)
+		plot_range(v, n, noise0, step, &ax->lo, &ax->hi);
+		if ((ax->hi - ax->lo) / step <= 6)
 			break;
 	}
-	if ((*hi - *lo) / step > 6)	/* beyond 300 dB: the edges hold it */
-		*lo = *hi - 6 * step;
-	*ntick = 0;
-	for (double t = *lo; t <= *hi + step / 2; t += step)
-		tick[(*ntick)++] = t;
+	free(v);
+	if ((ax->hi - ax->lo) / step > 6)	/* past 300 dB: the edges */
+		ax->lo = ax->hi - 6 * step;
+	ax->ntick = 0;
+	for (double t = ax->lo; t <= ax->hi + step / 2; t += step)
+		ax->tick[ax->ntick++] = t;
 }
 
-static void page_column(const struct opts *o, struct page *pg, size_t col,
+/* The title and the spectrum (or DDA) image of column col. */
+static void page_image(const struct opts *o, struct page *pg, size_t col,
     const struct spec_img *im, const struct group *gr)
 {
-	static const uint8_t blue[3] = { 0, 0, 200 }, red[3] = { 200, 0, 0 },
-	    green[3] = { 0, 130, 0 };
-	static const double yt[] = { 0, 1, 2, 3, 4 };
 	int x0 = (int)(col * pg->colw);
 	int ix = x0 + PG_ML + (int)(pg->pw - pg->side) / 2;
-	size_t nb = gr->rad.nbins, ng = rdf_bins(o), m = 0;
-	double *x = malloc((nb + ng + 1) * sizeof *x);
-	double *y = malloc((nb + ng + 1) * sizeof *y);
-	double bin = nb > 1 ? gr->rad.lo[1] - gr->rad.lo[0] : 0;
-	double xmax = (double)o->size * im->scale;
-	const char *unit = o->mode == FOURIER ? "FREQUENCY" : "SPACINGS";
-	double noise = 10 * log10(1.0 / (double)gr->nset), lo, hi, at[8];
-	size_t nat;
-	char title[64];
 
-	if (x == NULL || y == NULL)
-		cli_die("no memory for the page");
 	page_title(pg, x0, gr);
 	for (uint32_t r = 0; r < pg->side; r++)
 		for (uint32_t c = 0; c < pg->side; c++) {
@@ -568,6 +586,26 @@ static void page_column(const struct opts *o, struct page *pg, size_t col,
 			memset(pg->r.px + ((size_t)(PG_TOP + r) * pg->r.w +
 			    (size_t)ix + c) * 3, v, 3);
 		}
+}
+
+/* The three plots of column col. */
+static void page_plots(const struct opts *o, struct page *pg, size_t col,
+    const struct group *gr, const struct aniso_axis *ax)
+{
+	static const uint8_t blue[3] = { 0, 0, 200 }, red[3] = { 200, 0, 0 },
+	    green[3] = { 0, 130, 0 };
+	static const double yt[] = { 0, 1, 2, 3, 4 };
+	int x0 = (int)(col * pg->colw);
+	size_t nb = gr->rad.nbins, ng = rdf_bins(o), m = 0;
+	double *x = malloc((nb + ng + 1) * sizeof *x);
+	double *y = malloc((nb + ng + 1) * sizeof *y);
+	double bin = nb > 1 ? gr->rad.lo[1] - gr->rad.lo[0] : 0;
+	double xmax = o->mode == FOURIER ? (double)o->size : o->eps;
+	const char *unit = o->mode == FOURIER ? "FREQUENCY" : "SPACINGS";
+	char title[64];
+
+	if (x == NULL || y == NULL)
+		cli_die("no memory for the page");
 	/* Annulus 0 holds DC (or d = 0): the table has it, the plots not. */
 	for (size_t i = 1; i < nb; i++)
 		if (gr->rad.count[i] > 1) {
@@ -579,9 +617,8 @@ static void page_column(const struct opts *o, struct page *pg, size_t col,
 	for (size_t i = 1, j = 0; i < nb; i++)
 		if (gr->rad.count[i] > 1)
 			y[j++] = gr->rad.aniso[i];
-	aniso_range(y, m, noise, &lo, &hi, at, &nat);
-	page_plot(pg, x0, 1, "ANISOTROPY DB", xmax, lo, hi, at, nat, noise, x,
-	    y, m, red);
+	page_plot(pg, x0, 1, "ANISOTROPY DB", xmax, ax->lo, ax->hi, ax->tick,
+	    ax->ntick, 10 * log10(1.0 / (double)gr->nset), x, y, m, red);
 	for (size_t b = 0; b < ng; b++) {
 		x[b] = rdf_r(o, b);
 		y[b] = gr->g[b];
@@ -592,7 +629,8 @@ static void page_column(const struct opts *o, struct page *pg, size_t col,
 	free(y);
 }
 
-/* Everything of one group but the table; its column of the page. */
+/* Everything of one group but the table and its plots; its image on
+ * the page. */
 static void group_run(const struct opts *o, const struct frs_imap *map,
     struct group *gr, double *dmin, double *rho, struct page *pg,
     size_t col)
@@ -643,7 +681,7 @@ static void group_run(const struct opts *o, const struct frs_imap *map,
 			gr->gmax_r = rdf_r(o, b);
 		}
 	if (pg != NULL)
-		page_column(o, pg, col, &im, gr);
+		page_image(o, pg, col, &im, gr);
 	spec_img_free(&im);
 }
 
@@ -669,6 +707,12 @@ static void summary(const struct opts *o, const struct pt_sets *ps,
 		gr[k].nset = first[k + 1] - first[k];
 		group_run(o, map, &gr[k], dmin + first[k], rho + first[k],
 		    ppg, k);
+	}
+	if (ppg != NULL) {
+		struct aniso_axis ax;
+		aniso_axis(gr, ngroups, &ax);
+		for (size_t k = 0; k < ngroups; k++)
+			page_plots(o, ppg, k, &gr[k], &ax);
 	}
 	fprintf(out, "# summary\nsets\tn\tdmin\trho\tpeak\tpeak_%s\tg_max\t"
 	    "g_max_r\tfile\n", x);
