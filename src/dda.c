@@ -27,7 +27,8 @@
 
 static const char usage[] =
     "usage: dda [--fourier | --dda | --density | --rdf] [--summary]\n"
-    "           [-i IMPORTANCE] [-s WxH] [--size K] [--approx] [--eps E]\n"
+    "           [-i IMPORTANCE] [-s WxH] [--equirect] [--strict] [--size K]\n"
+    "           [--approx] [--eps E]\n"
     "           [--sigma S] [--bin W] [--torus] [--rmax R] [--bins B]\n"
     "           [--png FILE] [--radial FILE] [--db LO:HI] [--sets N] [-j N]\n"
     "           [-q] [-o FILE] FILE...\n"
@@ -44,6 +45,9 @@ static const char usage[] =
     "                    --dda, --density and --rdf measure distances in\n"
     "                    local sample spacings\n"
     "  -s, --size-map WxH  size at which procedural maps are evaluated\n"
+    "                    (default 128x128), or files resampled\n"
+    "  --equirect        weight map rows by sin(theta)\n"
+    "  --strict          negative importance is an error\n"
     "  --size K          frequencies |k| <= K (--fourier, default 128) or\n"
     "                    pixels from the centre (--dda, default 128)\n"
     "  --approx          --fourier by gridding and FFT instead of exact\n"
@@ -59,8 +63,8 @@ static const char usage[] =
     "                    --summary: the page of pictures and curves\n"
     "  --radial FILE     --fourier, --dda: radial mean and anisotropy\n"
     "  --db LO:HI        PNG grey scale in dB (-10:10)\n"
-    "  --sets N          split every file into sets of N points (a file\n"
-    "                    with a set column is split by it; N must agree)\n"
+    "  --sets N          split every file into sets of N points in\n"
+    "                    file order (a file with a set column: its sets)\n"
     "  -j, --threads N   threads (default: all cores)\n"
     "  -o, --output F    the table (default standard output)\n"
     "  -q, --quiet       no notes;  --progress  a progress bar\n"
@@ -71,6 +75,7 @@ enum mode { FOURIER, DDA, DENSITY, RDF };
 struct opts {
 	enum mode mode;
 	int nmodes, approx, torus, have_size, have_bin, summary;
+	int flags;		/* imap_load's: --equirect, --strict */
 	const char *imp, *png, *radial;
 	uint32_t mw, mh, size;
 	double eps, sigma, bin, rmax, lo_db, hi_db;
@@ -98,7 +103,8 @@ static void parse_db(struct opts *o, const char *s)
 
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
-    "fourier dda density rdf i=importance s=size-map size approx "
+    "fourier dda density rdf i=importance s=size-map equirect strict size "
+    "approx "
     "eps sigma bin torus rmax bins png radial db sets summary";
 
 static void parse(int argc, char **argv, struct opts *o)
@@ -116,6 +122,8 @@ static void parse(int argc, char **argv, struct opts *o)
 		case 's':
 			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->mw, &o->mh);
 			break;
+		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
 		case OPT_SIZE:
 			o->size = (uint32_t)cli_u64("--size", optarg, 1, 4096);
 			o->have_size = 1;
@@ -157,6 +165,8 @@ static void parse(int argc, char **argv, struct opts *o)
 		    "in its table");
 	if ((o->png || o->radial) && (o->mode == DENSITY || o->mode == RDF))
 		cli_usage_error("--png and --radial go with --fourier or --dda");
+	if (o->flags && o->imp == NULL)
+		cli_usage_error("--equirect and --strict go with -i");
 	if (o->imp && o->mode == FOURIER)
 		cli_usage_error("-i: the Fourier spectrum is for uniform sets; "
 		    "use --dda for adaptive ones");
@@ -474,24 +484,15 @@ static void page_alloc(const struct opts *o, size_t ngroups,
 	}
 }
 
-/* The title: the file's name (its end, when it is too long) and the
- * figures. */
+/* The title: the file's name, fitted into two lines of the band above
+ * the image (plot_text_fit), and the figures. */
 static void page_title(struct page *pg, int x0, const struct group *gr)
 {
 	static const uint8_t ink[3] = { 0, 0, 0 };
-	size_t room = (PG_ML + pg->pw) / ((PLOT_GLYPH_W + 1) * PG_SCALE);
-	const char *name = gr->set[0].file;
-	size_t len = strlen(name);
 	char line[256];
 
-	if (room > sizeof line - 1)
-		room = sizeof line - 1;
-
-	if (len > room && room > 2) {
-		snprintf(line, sizeof line, "..%s", name + len - (room - 2));
-		name = line;
-	}
-	plot_text(&pg->r, x0 + 4, 8, PG_SCALE, name, ink);
+	plot_text_fit(&pg->r, x0 + 4, 8, (int)pg->colw - 8, 13, PG_SCALE,
+	    gr->set[0].file, ink);
 	snprintf(line, sizeof line, "%zu SET%s  N %.6g  RHO %.3f", gr->nset,
 	    gr->nset == 1 ? "" : "S", gr->nmean, gr->rho);
 	plot_text(&pg->r, x0 + 4, 22, PG_SCALE, line, ink);
@@ -517,25 +518,66 @@ static void page_plot(struct page *pg, int x0, int k, const char *title,
 	plot_curve(&pg->r, &b, x, y, n, color);
 }
 
-static void page_column(const struct opts *o, struct page *pg, size_t col,
+/* The anisotropy plot's axis, one for all the columns so that they
+ * compare: its range around every curve and noise line (10 log10(1/m)
+ * for m sets: lower for more sets), in whole steps of 5, 10, 20 or 50 dB,
+ * at most 6 of them, and its ticks. */
+struct aniso_axis {
+	double lo, hi, tick[8];
+	size_t ntick;
+};
+
+/* The values the axis must hold: every plotted anisotropy (annuli 1 on
+ * with more than one pixel) and noise line; *n of them, to be freed. */
+static double *aniso_values(const struct group *gr, size_t ngroups,
+    size_t *n)
+{
+	size_t cap = 0, k = 0;
+	double *v;
+
+	for (size_t g = 0; g < ngroups; g++)
+		cap += gr[g].rad.nbins + 1;
+	if ((v = malloc(cap * sizeof *v)) == NULL)
+		cli_die("no memory for the page");
+	for (size_t g = 0; g < ngroups; g++) {
+		v[k++] = 10 * log10(1.0 / (double)gr[g].nset);
+		for (size_t i = 1; i < gr[g].rad.nbins; i++)
+			if (gr[g].rad.count[i] > 1)
+				v[k++] = gr[g].rad.aniso[i];
+	}
+	*n = k;
+	return v;
+}
+
+static void aniso_axis(const struct group *gr, size_t ngroups,
+    struct aniso_axis *ax)
+{
+	static const double steps[] = { 5, 10, 20, 50 };
+	double step = 0, noise0 = 10 * log10(1.0 / (double)gr[0].nset);
+	size_t n;
+	double *v = aniso_values(gr, ngroups, &n);
+
+	for (size_t i = 0; i < sizeof steps / sizeof steps[0]; i++) {
+		step = steps[i];
+		plot_range(v, n, noise0, step, &ax->lo, &ax->hi);
+		if ((ax->hi - ax->lo) / step <= 6)
+			break;
+	}
+	free(v);
+	if ((ax->hi - ax->lo) / step > 6)	/* past 300 dB: the edges */
+		ax->lo = ax->hi - 6 * step;
+	ax->ntick = 0;
+	for (double t = ax->lo; t <= ax->hi + step / 2; t += step)
+		ax->tick[ax->ntick++] = t;
+}
+
+/* The title and the spectrum (or DDA) image of column col. */
+static void page_image(const struct opts *o, struct page *pg, size_t col,
     const struct spec_img *im, const struct group *gr)
 {
-	static const uint8_t blue[3] = { 0, 0, 200 }, red[3] = { 200, 0, 0 },
-	    green[3] = { 0, 130, 0 };
-	static const double yt[] = { 0, 1, 2, 3, 4 };
-	static const double at[] = { -20, -10, 0, 10 };
 	int x0 = (int)(col * pg->colw);
 	int ix = x0 + PG_ML + (int)(pg->pw - pg->side) / 2;
-	size_t nb = gr->rad.nbins, ng = rdf_bins(o), m = 0;
-	double *x = malloc((nb + ng + 1) * sizeof *x);
-	double *y = malloc((nb + ng + 1) * sizeof *y);
-	double bin = nb > 1 ? gr->rad.lo[1] - gr->rad.lo[0] : 0;
-	double xmax = (double)o->size * im->scale;
-	const char *unit = o->mode == FOURIER ? "FREQUENCY" : "SPACINGS";
-	char title[64];
 
-	if (x == NULL || y == NULL)
-		cli_die("no memory for the page");
 	page_title(pg, x0, gr);
 	for (uint32_t r = 0; r < pg->side; r++)
 		for (uint32_t c = 0; c < pg->side; c++) {
@@ -544,6 +586,26 @@ static void page_column(const struct opts *o, struct page *pg, size_t col,
 			memset(pg->r.px + ((size_t)(PG_TOP + r) * pg->r.w +
 			    (size_t)ix + c) * 3, v, 3);
 		}
+}
+
+/* The three plots of column col. */
+static void page_plots(const struct opts *o, struct page *pg, size_t col,
+    const struct group *gr, const struct aniso_axis *ax)
+{
+	static const uint8_t blue[3] = { 0, 0, 200 }, red[3] = { 200, 0, 0 },
+	    green[3] = { 0, 130, 0 };
+	static const double yt[] = { 0, 1, 2, 3, 4 };
+	int x0 = (int)(col * pg->colw);
+	size_t nb = gr->rad.nbins, ng = rdf_bins(o), m = 0;
+	double *x = malloc((nb + ng + 1) * sizeof *x);
+	double *y = malloc((nb + ng + 1) * sizeof *y);
+	double bin = nb > 1 ? gr->rad.lo[1] - gr->rad.lo[0] : 0;
+	double xmax = o->mode == FOURIER ? (double)o->size : o->eps;
+	const char *unit = o->mode == FOURIER ? "FREQUENCY" : "SPACINGS";
+	char title[64];
+
+	if (x == NULL || y == NULL)
+		cli_die("no memory for the page");
 	/* Annulus 0 holds DC (or d = 0): the table has it, the plots not. */
 	for (size_t i = 1; i < nb; i++)
 		if (gr->rad.count[i] > 1) {
@@ -555,8 +617,8 @@ static void page_column(const struct opts *o, struct page *pg, size_t col,
 	for (size_t i = 1, j = 0; i < nb; i++)
 		if (gr->rad.count[i] > 1)
 			y[j++] = gr->rad.aniso[i];
-	page_plot(pg, x0, 1, "ANISOTROPY DB", xmax, -20, 10, at, 4,
-	    10 * log10(1.0 / (double)gr->nset), x, y, m, red);
+	page_plot(pg, x0, 1, "ANISOTROPY DB", xmax, ax->lo, ax->hi, ax->tick,
+	    ax->ntick, 10 * log10(1.0 / (double)gr->nset), x, y, m, red);
 	for (size_t b = 0; b < ng; b++) {
 		x[b] = rdf_r(o, b);
 		y[b] = gr->g[b];
@@ -567,7 +629,8 @@ static void page_column(const struct opts *o, struct page *pg, size_t col,
 	free(y);
 }
 
-/* Everything of one group but the table; its column of the page. */
+/* Everything of one group but the table and its plots; its image on
+ * the page. */
 static void group_run(const struct opts *o, const struct frs_imap *map,
     struct group *gr, double *dmin, double *rho, struct page *pg,
     size_t col)
@@ -618,7 +681,7 @@ static void group_run(const struct opts *o, const struct frs_imap *map,
 			gr->gmax_r = rdf_r(o, b);
 		}
 	if (pg != NULL)
-		page_column(o, pg, col, &im, gr);
+		page_image(o, pg, col, &im, gr);
 	spec_img_free(&im);
 }
 
@@ -644,6 +707,12 @@ static void summary(const struct opts *o, const struct pt_sets *ps,
 		gr[k].nset = first[k + 1] - first[k];
 		group_run(o, map, &gr[k], dmin + first[k], rho + first[k],
 		    ppg, k);
+	}
+	if (ppg != NULL) {
+		struct aniso_axis ax;
+		aniso_axis(gr, ngroups, &ax);
+		for (size_t k = 0; k < ngroups; k++)
+			page_plots(o, ppg, k, &gr[k], &ax);
 	}
 	fprintf(out, "# summary\nsets\tn\tdmin\trho\tpeak\tpeak_%s\tg_max\t"
 	    "g_max_r\tfile\n", x);
@@ -707,7 +776,7 @@ int main(int argc, char **argv)
 		cli_die("no memory");
 	cli_read_sets(&ps, argc, argv, o.per, note_first, first);
 	check_3d(&o, &ps);
-	if (o.imp && imap_load(o.imp, o.mw, o.mh, 0, &map) < 0)
+	if (o.imp && imap_load(o.imp, o.mw, o.mh, o.flags, &map) < 0)
 		cli_die_lib();
 	cli_out_open(&of, cli.out, 0);
 	if (o.summary)

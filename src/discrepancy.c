@@ -43,8 +43,8 @@ static const char usage[] =
     "      --d2-only     D2 alone (with --exact: no exact Dinf);\n"
     "                    the Dinf columns read nan\n"
     "      --dinf-only   Dinf alone; the D2 columns read nan\n"
-    "      --sets N      split every file into sets of N points (a file\n"
-    "                    with a set column is split by it; N must agree)\n"
+    "      --sets N      split every file into sets of N points in\n"
+    "                    file order (a file with a set column: its sets)\n"
     "      --per-set     a row per set instead of one per point count\n"
     "      --group G     a row per point count over all files (n), per\n"
     "                    input file (file) or for all sets (all); n is\n"
@@ -215,6 +215,20 @@ static void only_checks(const struct disc_opts *o, int have_grid)
 		    "D2, which --dinf-only leaves out; drop --exact");
 }
 
+/* A file whose points carry a pdf (importance sampling) is measured all
+ * the same against the plain area: its discrepancy says how far from
+ * uniform the points are, not how well they follow their density. */
+static int warn_pdf(void *ctx, const struct pt_sets *s, size_t file,
+    size_t first)
+{
+	(void)ctx, (void)file;
+	if (first < s->n && s->set[first].w != NULL)
+		frs_warn("%s: the points have a pdf column, but D2 and Dinf "
+		    "measure them against the plain area (uniform density), "
+		    "not against their pdf", s->set[first].file);
+	return 0;
+}
+
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
     "c=class grid shapes exact d2-only dinf-only sets per-set "
@@ -286,7 +300,7 @@ int main(int argc, char **argv)
 	cli_options_done();
 
 	ps.max_dims = 3;
-	cli_read_sets(&ps, argc, argv, per, NULL, NULL);
+	cli_read_sets(&ps, argc, argv, per, warn_pdf, NULL);
 	sets = ps.set, nsets = ps.n;
 	if (ps.dims == 3 && !have_grid)
 		o.grid = DISC3_STAR_GRID;

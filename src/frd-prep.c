@@ -23,7 +23,8 @@
 static const char usage[] =
     "usage: frd-prep [-a none|stack|level1|level2|sorted|all] [--check]\n"
     "                [--import frd|raw32|png16|text] [--rank] [-s WxH]\n"
-    "                [--blocks LIST] [--for LIST [-i MAP] [--sigma S]\n"
+    "                [--blocks LIST] [--for LIST [-i MAP] [--size-map WxH]\n"
+    "                [--equirect] [--strict] [--sigma S]\n"
     "                [--tiles levels|plain|shuffled]]\n"
     "                [-o FILE] [IN]\n"
     "\n"
@@ -43,6 +44,10 @@ static const char usage[] =
     "                     level by level (a table of them under -v);\n"
     "                     without -a, only the table, on standard output\n"
     "  -i, --importance MAP  the map of --for (default const, 128x128)\n"
+    "      --size-map WxH the size at which --for's map is evaluated or\n"
+    "                     resampled, as frs-sample -s\n"
+    "      --equirect     weight --for's map rows by sin(theta)\n"
+    "      --strict       negative importance in --for's map is an error\n"
     "      --sigma S      the sigma of --for (default 8)\n"
     "      --tiles T      the window of --for, as frs-sample's (default\n"
     "                     levels)\n"
@@ -94,14 +99,22 @@ static unsigned parse_blocks(const char *s, uint32_t *out)
  * them on fp when fp is not NULL (block 0: the level scans or walks its
  * pixels, with the minmap); *minmap set when a level reads the minmap.
  */
-static unsigned blocks_for(const struct frs_matrix *m, const char *imp,
+/* --for's map, loaded as frs-sample loads it: its size (0: its own),
+ * --equirect and --strict. */
+struct mapopt {
+	const char *imp;
+	uint32_t w, h;
+	int flags;
+};
+
+static unsigned blocks_for(const struct frs_matrix *m, const struct mapopt *mo,
     const struct frs_options *o, const uint64_t *n, unsigned nn,
     uint32_t *blocks, int *minmap, FILE *fp)
 {
 	struct frs_imap map;
 	unsigned nb = 0;
 
-	if (imap_load(imp, 0, 0, 0, &map) < 0)
+	if (imap_load(mo->imp, mo->w, mo->h, mo->flags, &map) < 0)
 		cli_die_lib();
 	if (fp != NULL)
 		fprintf(fp, "n\tlevel\tn_s\twindow\tblock\tminmap\tvalues\t"
@@ -212,12 +225,13 @@ static const char *import_fix(void)
 
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
-    "a=algo import rank s=size blocks check for i=importance "
-    "sigma tiles v=verbose";
+    "a=algo import rank s=size blocks check for i=importance size-map "
+    "equirect strict sigma tiles v=verbose";
 
 int main(int argc, char **argv)
 {
-	const char *fmt = "frd", *algo = "none", *in, *src, *imp = "const";
+	const char *fmt = "frd", *algo = "none", *in, *src;
+	struct mapopt mo = { "const", 0, 0, 0 };
 	uint32_t w = 0, h = 0, blocks[32];
 	uint64_t counts[32];
 	unsigned nblocks = 0, ncounts = 0;
@@ -238,7 +252,12 @@ int main(int argc, char **argv)
 		case OPT_CHECK: check = 1; break;
 		case OPT_FOR: ncounts = parse_list("--for", optarg, counts, 1,
 		    1LL << 40); break;
-		case 'i': imp = optarg; break;
+		case 'i': mo.imp = optarg; break;
+		case OPT_SIZE_MAP:
+			cli_size("--size-map", optarg, IMAP_MAX_SIDE, &mo.w, &mo.h);
+			break;
+		case OPT_EQUIRECT: mo.flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: mo.flags |= IMAP_STRICT; break;
 		case OPT_SIGMA:
 			opt.sigma = cli_double("--sigma", optarg, 1.0, FRS_SIGMA_MAX);
 			break;
@@ -253,6 +272,9 @@ int main(int argc, char **argv)
 	}
 	if (argc - optind > 1)
 		cli_usage_error("one input at most");
+	if ((mo.w || mo.flags) && ncounts == 0)
+		cli_usage_error("--size-map, --equirect and --strict are of "
+		    "--for's map: give --for LIST");
 	in = optind < argc ? argv[optind] : "-";
 	src = strcmp(in, "-") ? in : "<stdin>";
 	cli_options_done();
@@ -286,7 +308,7 @@ int main(int argc, char **argv)
 	if (ncounts > 0 && !sorted && minmap)
 		cli_usage_error("--for needs -a sorted or -a all, or no -a");
 	if (ncounts > 0 && !sorted) {	/* the table only */
-		blocks_for(&m, imp, &opt, counts, ncounts, blocks, &minmap,
+		blocks_for(&m, &mo, &opt, counts, ncounts, blocks, &minmap,
 		    stdout);
 		frd_free(&m);
 		if (fflush(stdout) != 0 || ferror(stdout))
@@ -294,7 +316,7 @@ int main(int argc, char **argv)
 		return 0;
 	}
 	if (ncounts > 0)
-		nblocks = blocks_for(&m, imp, &opt, counts, ncounts, blocks,
+		nblocks = blocks_for(&m, &mo, &opt, counts, ncounts, blocks,
 		    &minmap, verbose ? stderr : NULL);
 	if (sorted && nblocks == 0 && ncounts == 0)
 		for (uint32_t b = 1; b <= 256 && b <= m.w && b <= m.h; b *= 2)

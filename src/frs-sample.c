@@ -8,6 +8,7 @@
 
 #include "api/api.h"
 #include "cli/cli.h"
+#include "cli/ptsopt.h"
 #include "cli/setsreport.h"
 #include "base/datadir.h"
 #include "base/mem.h"
@@ -174,7 +175,7 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
 		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
 		case OPT_SETS:
-			o->sets = cli_u64("--sets", optarg, 1, API_SETS_MAX);
+			o->sets = cli_sets_m(optarg);
 			break;
 		case OPT_DEVICE: o->cl = cli_device(optarg, &o->device); break;
 		case OPT_LIST_DEVICES: cli_list_devices();
@@ -205,14 +206,7 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 		    (unsigned long long)n);
 	}
 	n = o->steps[o->nsteps - 1];
-	if (o->sets > API_SETS_MAX / n)
-		cli_usage_error("--sets %llu: %llu sets of %llu samples exceed "
-		    "the 2^56 one file can hold", (unsigned long long)o->sets,
-		    (unsigned long long)o->sets, (unsigned long long)n);
-	if (o->sets - 1 > UINT64_MAX - cli.seed)
-		cli_usage_error("--sets %llu: the seeds from -S %llu would pass "
-		    "2^64-1", (unsigned long long)o->sets,
-		    (unsigned long long)cli.seed);
+	cli_sets_check(o->sets, n);
 	o->opt.threads = cli.threads;
 	o->seed = cli.seed;
 	o->text = cli.text;

@@ -11,6 +11,7 @@
 #include "api/hswrun.h"
 #include "cli/cli.h"
 #include "cli/output.h"
+#include "cli/ptsopt.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "base/mem.h"
@@ -18,11 +19,13 @@
 #include "base/par.h"
 #include "base/progress.h"
 #include "formats/ptsio.h"
+#include "formats/setsout.h"
 #include "sample/refsamp.h"
 
 static const char usage[] =
     "usage: hsw-sample -i IMPORTANCE -n COUNT [--input SET|FILE] [--pdf]\n"
-    "                  [-s WxH] [-S SEED] [-j N] [--device cpu|cl|cl:N]\n"
+    "                  [--sets M] [-s WxH] [--equirect] [--strict]\n"
+    "                  [-S SEED] [-j N] [--device cpu|cl|cl:N]\n"
     "                  [-T] [-v] [-o FILE]\n"
     "       hsw-sample --list-devices\n"
     "\n"
@@ -35,8 +38,13 @@ static const char usage[] =
     "                       seed), or a .pts FILE (its first two\n"
     "                       coordinates)\n"
     "      --pdf            add a column: I / mean I of each point's pixel\n"
+    "      --sets M         write M sets one after another, set i made\n"
+    "                       with seed S+i (default 1); M > 1 adds a\n"
+    "                       column, the set i (random, jittered, dart)\n"
     "  -s, --size WxH       size at which procedural maps are evaluated\n"
     "                       (default 128x128), or files resampled\n"
+    "      --equirect       weight map rows by sin(theta)\n"
+    "      --strict         negative importance is an error\n"
     "  -S, --seed N         seed of random, jittered and dart (default 1)\n"
     "  -j, --threads N      threads (default all); same points for any N\n"
     "      --device D       cpu (default), cl (the first OpenCL device) or\n"
@@ -54,16 +62,33 @@ static const char usage[] =
 struct opts {
 	const char *imp, *file;
 	int input;		/* enum hsw_input, INPUT_DART, or -1 for file */
-	uint64_t n;
+	uint64_t n, sets;
 	int have_n, pdf, verbose;
 	uint32_t w, h;
+	int flags;		/* imap_load's: --equirect, --strict */
 	int cl, cl_index;	/* --device: OpenCL, and which (-1: first) */
 };
 
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
-    "n=count i=importance s=size input pdf device list-devices "
-    "v=verbose";
+    "n=count i=importance input pdf sets s=size equirect strict device "
+    "list-devices v=verbose";
+
+/* --sets M > 1: only inputs that the seed changes give M sets, not one
+ * set M times. */
+static void check_sets(const struct opts *o)
+{
+	static const char *const names[] = { "random", "regular", "jittered",
+	    "halton", "hammersley" };
+
+	if (o->sets == 1 || o->input == HSW_RANDOM ||
+	    o->input == HSW_JITTERED || o->input == INPUT_DART)
+		return;
+	cli_usage_error("--sets %llu: --input %s is the same for every seed, "
+	    "so the sets would all be one; use random, jittered or dart",
+	    (unsigned long long)o->sets, o->file ? o->file :
+	    names[o->input]);
+}
 
 static void parse_opts(int argc, char **argv, struct opts *o)
 {
@@ -97,6 +122,9 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 				    optarg);
 			break;
 		case OPT_PDF: o->pdf = 1; break;
+		case OPT_SETS: o->sets = cli_sets_m(optarg); break;
+		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
 		case OPT_DEVICE:
 			o->cl = cli_device(optarg, &o->cl_index);
 			break;
@@ -111,10 +139,13 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 		cli_usage_error("-i IMPORTANCE is required");
 	if (!o->have_n && o->file == NULL)
 		cli_usage_error("-n COUNT is required");
+	check_sets(o);
+	if (o->have_n)
+		cli_sets_check(o->sets, o->n);
 }
 
-/* The input set: 2n doubles. */
-static double *make_input(struct opts *o)
+/* The input set of seed: 2n doubles. */
+static double *make_input(struct opts *o, uint64_t seed)
 {
 	char what[48];
 	double *pts;
@@ -164,10 +195,17 @@ static double *make_input(struct opts *o)
 			    (unsigned long long)o->n,
 			    (unsigned long long)REFSAMP_MAX_N);
 		}
-		if (refsamp_gen(REFSAMP_DART, o->n, cli.seed,
+		if (refsamp_gen(REFSAMP_DART, o->n, seed,
 		    REFSAMP_DART_FAILURES, pts, &placed) < 0) {
 			free(pts);
 			cli_die("--input dart: %s", frs_errmsg());
+		}
+		if (placed < o->n && o->sets > 1) {
+			free(pts);
+			cli_die("--input dart, seed %llu: placed only %llu of %llu "
+			    "points; with --sets every set needs them all: lower "
+			    "-n", (unsigned long long)seed,
+			    (unsigned long long)placed, (unsigned long long)o->n);
 		}
 		if (placed < o->n) {
 			fprintf(stderr, "hsw-sample: --input dart placed %llu of "
@@ -178,45 +216,68 @@ static double *make_input(struct opts *o)
 		}
 		return pts;
 	}
-	hsw_input_make((enum hsw_input)o->input, o->n, cli.seed, pts);
+	hsw_input_make((enum hsw_input)o->input, o->n, seed, pts);
 	return pts;
 }
 
-/* The output, and the seconds spent writing it. */
+/* The sets are made on the fly, round by round, except those of a file,
+ * dart throwing and the device, which is handed them all. */
+static int whole_input(const struct opts *o)
+{
+	return o->file != NULL || o->input == INPUT_DART || o->cl;
+}
+
+/* The output, and the seconds spent writing it and making the input
+ * of sets after the first. */
 struct output {
 	struct outfile of;
-	struct pts_writer w;
-	double t_out;
+	struct sets_writer w;
+	double t_out, t_input;
 };
 
 static int put_round(void *ctx, const double *rec, size_t k)
 {
 	struct output *u = ctx;
 	double t0 = progress_now();
-	int rc = pts_writer_put_n(&u->w, rec, k);
+	int rc = sets_writer_put(&u->w, rec, k);
 
 	u->t_out += progress_now() - t0;
 	return rc;
 }
 
-static void warp_and_write(const struct opts *o, struct hsw_run *r,
-    double *pts, struct output *u)
+/* The M sets, set i of seed S + i (pts: set 0's input, when made
+ * beforehand), warped into one file. */
+static void warp_and_write(struct opts *o, struct hsw_run *r, double *pts,
+    struct output *u)
 {
 	static const char *const names[] = { PTS_COL_PDF };
+	enum hsw_input kind = (enum hsw_input)(o->input == INPUT_DART ?
+	    HSW_HALTON : o->input);
+	struct progress pr;
 	double t0;
-
 	int rc;
 
 	cli_out_open(&u->of, cli.out, !cli.text);
-	rc = pts_writer_begin(&u->w, u->of.fp, u->of.name, 2, (unsigned)o->pdf,
-	    names, o->n, cli.text);
-	if (rc == 0)
-		rc = hsw_run_each(r, (enum hsw_input)(o->input == INPUT_DART ?
-		    HSW_HALTON : o->input), pts, o->n, cli.seed, o->pdf,
+	rc = sets_writer_begin(&u->w, u->of.fp, u->of.name, 2,
+	    (unsigned)o->pdf, names, o->sets, o->sets * o->n, cli.text);
+	progress_begin(&pr, "sets", o->sets);
+	for (uint64_t set = 0; rc == 0 && set < o->sets; set++) {
+		if (set > 0 && pts != NULL) {
+			free(pts);
+			t0 = progress_now();
+			pts = make_input(o, cli.seed + set);
+			u->t_input += progress_now() - t0;
+		}
+		u->w.set = set;
+		rc = hsw_run_each(r, kind, pts, o->n, cli.seed + set, o->pdf,
 		    put_round, u);
+		progress_update(&pr, set + 1);
+	}
+	progress_end(&pr);
+	free(pts);
 	t0 = progress_now();
 	if (rc == 0)
-		rc = pts_writer_end(&u->w);
+		rc = sets_writer_end(&u->w);
 	cli_out_commit(&u->of, rc);
 	u->t_out += progress_now() - t0;
 }
@@ -232,9 +293,11 @@ static void report(const struct opts *o, const struct hsw_run *r,
 
 	hsw_run_shape(r, &w, &h, &side, &levels, &mean);
 	fprintf(stderr, "hsw-sample: map %ux%u padded to %ux%u (%u levels), "
-	    "mean %.6g; input %s, %llu points, %d threads\n", w, h, side, side,
-	    levels, mean, o->file ? o->file : o->input == INPUT_DART ? "dart" :
-	    names[o->input], (unsigned long long)o->n, frs_threads());
+	    "mean %.6g; input %s, %llu points, %llu set%s, %d threads\n", w, h,
+	    side, side, levels, mean, o->file ? o->file :
+	    o->input == INPUT_DART ? "dart" : names[o->input],
+	    (unsigned long long)o->n, (unsigned long long)o->sets,
+	    o->sets == 1 ? "" : "s", frs_threads());
 	fprintf(stderr, "hsw-sample: setup %.6f s, warping %.6f s, output "
 	    "%.6f s\n", t_setup, r->t_warp, t_out);
 	if (r->cl)
@@ -246,27 +309,27 @@ static void report(const struct opts *o, const struct hsw_run *r,
 
 int main(int argc, char **argv)
 {
-	struct opts o = { NULL, NULL, HSW_HALTON, 0, 0, 0, 0, 0, 0, 0, -1 };
+	struct opts o = { .input = HSW_HALTON, .sets = 1, .cl_index = -1 };
 	struct hsw_run r;
 	struct output u = { .t_out = 0 };
-	double *pts = NULL, t0, t_input;
+	double *pts = NULL, t0;
 	int rc;
 
 	cli_init("hsw-sample", usage);
 	parse_opts(argc, argv, &o);
 	cli_options_done();
-	if ((rc = hsw_run_open(&r, o.imp, o.w, o.h, o.cl, o.cl_index)) < 0)
+	if ((rc = hsw_run_open(&r, o.imp, o.w, o.h, o.flags, o.cl,
+	    o.cl_index)) < 0)
 		rc == -2 ? cli_die_device(1) : cli_die_lib();
-	/* The sets are made on the fly, round by round, except for the
-	 * device, which is handed them all. */
+	/* Set 0's input before the output opens: its count (a file's, the
+	 * darts placed) goes into the header. */
 	t0 = progress_now();
-	if (o.file != NULL || o.input == INPUT_DART || o.cl)
-		pts = make_input(&o);
-	t_input = progress_now() - t0;
+	if (whole_input(&o))
+		pts = make_input(&o, cli.seed);
+	u.t_input = progress_now() - t0;
 	warp_and_write(&o, &r, pts, &u);
 	if (o.verbose)
-		report(&o, &r, r.t_tree + t_input, u.t_out);
+		report(&o, &r, r.t_tree + u.t_input, u.t_out);
 	hsw_run_close(&r);
-	free(pts);
 	return 0;
 }

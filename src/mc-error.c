@@ -24,7 +24,8 @@
 
 static const char usage[] =
     "usage: mc-error [-f NAME[,NAME...]] [--sets N] [--group n|file|all]\n"
-    "                [--weights | --no-pdf] [--env MAP] [-q] [-o FILE]\n"
+    "                [--weights | --no-pdf] [--env MAP] [--strict] [-q]\n"
+    "                [-o FILE]\n"
     "                FILE...\n"
     "\n"
     "  -f, --function F  integrands, repeatable or a comma list: gauss,\n"
@@ -32,8 +33,9 @@ static const char usage[] =
     "                    with --env)\n"
     "      --env MAP     env's environment map, equirectangular: PNG,\n"
     "                    OpenEXR or a spec (default the shipped sunset.exr)\n"
-    "      --sets N      split every file into sets of N points (a file\n"
-    "                    with a set column is split by it; N must agree)\n"
+    "      --strict      negative values in env's map are an error\n"
+    "      --sets N      split every file into sets of N points in\n"
+    "                    file order (a file with a set column: its sets)\n"
     "      --group G     a row per point count over all files (n), per\n"
     "                    input file (file) or for all sets (all);\n"
     "                    default a row per point count and file, with a\n"
@@ -153,27 +155,29 @@ static const char *default_env(void)
 	return path;
 }
 
-/* Load env's map when env is requested or --env given. */
-static void load_env(const char *src, unsigned mask)
+/* Load env's map when env is requested or --env given.  It is radiance
+ * over the sphere, whose integrand carries the sin(theta) of solid angle
+ * itself: no --equirect here. */
+static void load_env(const char *src, unsigned mask, int flags)
 {
 	if (src == NULL && !(mask & ENV_BIT))
 		return;
 	if (src == NULL)
 		src = default_env();
-	if (imap_load(src, 0, 0, 0, &envmap) < 0)
+	if (imap_load(src, 0, 0, flags, &envmap) < 0)
 		cli_die_lib();
 }
 
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
-    "f=function sets group weights no-pdf env";
+    "f=function sets group weights no-pdf env strict";
 
 int main(int argc, char **argv)
 {
 	unsigned mask = 0;
 	enum pt_group grp = PT_GROUP_NFILE;
 	enum pdfmode mode = PDF_AUTO;
-	int c, weights = 0, nopdf = 0;
+	int c, weights = 0, nopdf = 0, flags = 0;
 	const char *env = NULL;
 	size_t per = 0;
 	struct pt_sets s = { .max_dims = 2 };	/* the integrands are 2-D */
@@ -188,6 +192,7 @@ int main(int argc, char **argv)
 		case OPT_WEIGHTS: weights = 1; break;
 		case OPT_NO_PDF: nopdf = 1; break;
 		case OPT_ENV: env = optarg; break;
+		case OPT_STRICT: flags |= IMAP_STRICT; break;
 		default:
 			cli_common_only(c, optarg);
 		}
@@ -198,9 +203,12 @@ int main(int argc, char **argv)
 	mode = weights ? PDF_REQUIRE : nopdf ? PDF_IGNORE : PDF_AUTO;
 	if (mask == 0)
 		mask = ((1u << INTEGRANDS) - 1) & (env ? ~0u : ~ENV_BIT);
+	if (flags && env == NULL && !(mask & ENV_BIT))
+		cli_usage_error("--strict: no map to read (it goes with env's, "
+		    "-f env or --env MAP)");
 	cli_options_done();
 
-	load_env(env, mask);
+	load_env(env, mask, flags);
 	cli_read_sets(&s, argc, argv, per, check_pdf, &mode);
 	cli_out_open(&of, cli.out, 0);
 	table(of.fp, mask, grp, &s, mode, (size_t)(argc - optind));

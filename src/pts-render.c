@@ -20,7 +20,8 @@
 
 static const char usage[] =
     "usage: pts-render [-q] [-s SIZE] [-r R] [-i MAP] [--color] [-o FILE] [PTS]\n"
-    "                  [--log] [--srgb] [--equirect] [--format png|pnm]\n"
+    "                  [--log] [--srgb] [--equirect] [--strict]\n"
+    "                  [--format png|pnm]\n"
     "                  [--axes xy|xz|yz] [--alpha A] [--set K [--sets N]]\n"
     "\n"
     "  PTS                 a point file, binary or text (default: standard\n"
@@ -29,8 +30,8 @@ static const char usage[] =
     "      --set K         draw set K only (from 0): the points whose set\n"
     "                      column is K, or with --sets N the K-th run of\n"
     "                      N points of a file without one\n"
-    "      --sets N        sets of N points, for --set (a set column must\n"
-    "                      agree)\n"
+    "      --sets N        sets of N points in file order, for --set (a\n"
+    "                      file with a set column: its sets)\n"
     "      --axes AB       the coordinates drawn across and down: xy\n"
     "                      (default), or xz or yz of a 3-D (or higher) set\n"
     "  -s, --size SIZE     image size, N (NxN) or WxH (default 512)\n"
@@ -48,6 +49,7 @@ static const char usage[] =
     "      --srgb          decode a PNG map from sRGB to linear\n"
     "      --equirect      weight the map's rows by sin(theta), as for an\n"
     "                      equirectangular environment map\n"
+    "      --strict        negative importance is an error\n"
     "      --color         colour the dots by their order in the file,\n"
     "                      first blue to last red (RGB output); also\n"
     "                      --colour\n"
@@ -122,7 +124,7 @@ static void pick_set(const struct frs_points *p, const char *name,
 
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
-    "s=size r=radius i=importance log color colour srgb equirect "
+    "s=size r=radius i=importance log color colour srgb equirect strict "
     "format axes alpha set sets";
 
 int main(int argc, char **argv)
@@ -167,6 +169,9 @@ int main(int argc, char **argv)
 		case OPT_EQUIRECT:
 			flags |= IMAP_EQUIRECT;
 			break;
+		case OPT_STRICT:
+			flags |= IMAP_STRICT;
+			break;
 		case OPT_ALPHA:
 			alpha = cli_double("--alpha", optarg, 0.0, 1.0);
 			break;
@@ -202,7 +207,7 @@ int main(int argc, char **argv)
 		cli_usage_error("the points and the importance map cannot both "
 		    "be standard input");
 	if (imp == NULL && (logscale || (flags & ~IMAP_ALLOW_ZERO)))
-		cli_usage_error("--log, --srgb and --equirect need -i");
+		cli_usage_error("--log, --srgb, --equirect and --strict need -i");
 
 	/* The output first: a bad path fails before any work, and standard
 	 * output is never a terminal. */

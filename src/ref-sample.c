@@ -11,12 +11,14 @@
 
 #include "cli/cli.h"
 #include "cli/output.h"
+#include "cli/ptsopt.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "base/mem.h"
 #include "base/outfile.h"
 #include "base/progress.h"
 #include "formats/ptsio.h"
+#include "formats/setsout.h"
 #include "sample/refsamp.h"
 
 static const char usage[] =
@@ -50,11 +52,6 @@ static const char usage[] =
     "  -o, --output FILE    output (default standard output)\n"
     "  -q, --quiet          no notes\n"
     "  -h, --help           this help;  --version  the version\n";
-
-/* Most points in all the sets of one file: M * count records of 16 or
- * 24 bytes (up to 4 columns of 8 bytes elsewhere) stay far inside a
- * 64-bit file offset. */
-#define SETS_MAX_TOTAL ((uint64_t)1 << 56)
 
 /* One set with the given seed into xy; *placed gets its size. */
 static int make_set(enum refsamp_kind kind, unsigned dims, uint64_t n,
@@ -130,9 +127,8 @@ int main(int argc, char **argv)
 	struct frs_imap map;
 	int have_map = 0;
 	struct outfile of;
-	struct pts_writer w;
+	struct sets_writer w;
 	struct progress pr;
-	static const char *const names[] = { PTS_COL_SET };
 
 	cli_init("ref-sample", usage);
 	while ((c = cli_getopt(argc, argv, options)) != -1) {
@@ -157,7 +153,7 @@ int main(int argc, char **argv)
 		case OPT_STRICT: flags |= IMAP_STRICT; break;
 		case OPT_EQUIRECT: flags |= IMAP_EQUIRECT; break;
 		case OPT_SETS:
-			sets = cli_u64("--sets", optarg, 1, SETS_MAX_TOTAL);
+			sets = cli_sets_m(optarg);
 			break;
 		default:
 			cli_common_only(c, optarg);
@@ -171,15 +167,7 @@ int main(int argc, char **argv)
 		maxf = kind == REFSAMP_RELAXED_DART ? REFSAMP_RELAXED_FAILURES :
 		    REFSAMP_DART_FAILURES;
 	count = refsamp_count_dims(kind, n, dims);
-	if (sets > SETS_MAX_TOTAL / count)
-		cli_usage_error("--sets %llu: %llu sets of %llu points exceed "
-		    "the 2^56 points one file can hold",
-		    (unsigned long long)sets, (unsigned long long)sets,
-		    (unsigned long long)count);
-	if (sets - 1 > UINT64_MAX - cli.seed)
-		cli_usage_error("--sets %llu: the seeds from -S %llu would pass "
-		    "2^64-1", (unsigned long long)sets,
-		    (unsigned long long)cli.seed);
+	cli_sets_check(sets, count);
 	if (count != n)
 		note_grid(kind, dims, n, count);
 	cli_options_done();
@@ -219,8 +207,8 @@ int main(int argc, char **argv)
 		    (unsigned long long)count, (unsigned long long)maxf);
 	}
 	cli_out_open(&of, cli.out, !cli.text);
-	if (pts_writer_begin(&w, of.fp, of.name, dims, sets > 1 ? 1 : 0,
-	    names, sets > 1 ? sets * count : placed, cli.text) < 0)
+	if (sets_writer_begin(&w, of.fp, of.name, dims, 0, NULL, sets,
+	    sets > 1 ? sets * count : placed, cli.text) < 0)
 		goto fail;
 	progress_begin(&pr, "sets", sets);
 	for (uint64_t set = 0; set < sets; set++) {
@@ -245,14 +233,13 @@ int main(int argc, char **argv)
 				    (unsigned long long)maxf);
 			}
 		}
-		/* --sets M, M > 1: each point followed by its set. */
-		if (pts_writer_put_cols(&w, xy, &(struct pts_col){ NULL,
-		    (double)set }, (size_t)placed) < 0)
+		w.set = set;
+		if (sets_writer_put(&w, xy, (size_t)placed) < 0)
 			goto fail;
 		progress_update(&pr, set + 1);
 	}
 	progress_end(&pr);
-	if (pts_writer_end(&w) < 0)
+	if (sets_writer_end(&w) < 0)
 		goto fail;
 	cli_out_commit(&of, 0);
 	if (have_map)

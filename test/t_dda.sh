@@ -157,7 +157,8 @@ expect_fail "--db junk" 2 "--db" - dda --db 3 "$T/grid.pts"
 expect_fail "no files" 2 "no point files" - dda --rdf
 expect_fail "missing file" 1 "$T/nope.pts" "$T/o1" dda -o "$T/o1" "$T/nope.pts"
 expect_fail "outside [0,1)" 1 "out.txt" "$T/o2" dda -o "$T/o2" "$T/out.txt"
-expect_fail "--sets not dividing" 1 "not a whole number of sets" "$T/o3" \
+expect_fail "--sets not dividing" 1 \
+    "grid.pts: 256 points are not a whole number of sets of 100, and there is no set column" "$T/o3" \
     dda --sets 100 -o "$T/o3" "$T/grid.pts"
 expect_fail "point on zero importance" 1 "grid.pts" "$T/o4" \
     dda --dda -i blob:sigma=0.01 -o "$T/o4" "$T/grid.pts"
@@ -252,7 +253,69 @@ done
 dda --fourier --size 16 -o "$T/sc" "$T/rand.pts"
 dda --fourier --size 16 --sets 512 -o "$T/sd" "$T/rand.pts"
 cmp -s "$T/sc" "$T/sd" && ok "--sets 512 agreeing with the set column" || nok "--sets 512, set column"
-expect_fail "--sets 256 disagreeing with the set column" 1 \
-    "rand.pts: set 0 of the file's set column has 512 points, not 256" "$T/o3" \
-    dda --sets 256 -o "$T/o3" "$T/rand.pts"
+# --sets N disagreeing with the set column: the file's sets as they are,
+# with a warning naming the file and both sizes.
+dda --fourier --size 16 --sets 256 -o "$T/se" "$T/rand.pts" 2>"$T/err"
+cmp -s "$T/sc" "$T/se" &&
+    grep -q "^dda: warning: $T/rand.pts: .*set column.* 512 points, not 256" "$T/err" &&
+    ok "--sets 256 beside a set column of 512: its sets, a warning" ||
+    nok "--sets 256 beside a set column: $(cat "$T/err")"
+# Sets of different sizes in the set column: the warning gives their range.
+printf '#pts dims=2 extra=1 names=set\n0.1 0.2 0\n0.3 0.4 0\n0.5 0.6 1\n0.7 0.8 1\n0.9 0.1 1\n' >"$T/var.txt"
+dda --density --sets 2 -o "$T/sv" "$T/var.txt" 2>"$T/err"
+grep -q "var.txt: .*2 to 3 points, not 2" "$T/err" && [ "$(grep -c '^[01]	' "$T/sv")" = 2 ] &&
+    ok "sets of 2 and 3 points: their range in the warning" || nok "range: $(cat "$T/err")"
+
+# A file without a set column cut into blocks of N in file order: a
+# warning naming the file, the blocks as if they were files of their own.
+ref-sample -k dart -n 1024 -q -o "$T/d1024.pts"
+ref-sample -k dart -n 4096 -q -T -o "$T/d4096.txt"
+grep -v '^#' "$T/d4096.txt" | split -l 1024 - "$T/blk."
+dda --density --sets 1024 -o "$T/cut" "$T/d4096.txt" 2>"$T/err"
+dda --density -o "$T/files" "$T/blk.aa" "$T/blk.ab" "$T/blk.ac" "$T/blk.ad" 2>/dev/null
+[ "$(cut -f 1-4 "$T/cut")" = "$(cut -f 1-4 "$T/files")" ] &&
+    [ "$(grep -c "^dda: warning: $T/d4096.txt: no set column: cut in file order into 4 sets of 1024" "$T/err")" = 1 ] &&
+    ok "no set column, --sets 1024: 4 blocks in file order and a warning naming the file" ||
+    nok "blocks without a set column: $(cat "$T/err")"
+dda --density --sets 1024 -o "$T/one" "$T/d1024.pts" 2>"$T/err"
+[ ! -s "$T/err" ] && ok "a file of exactly N points: one set, no warning" ||
+    nok "one block: $(cat "$T/err")"
+
+# frs(7)'s example of --summary, as the page writes it: the commands that
+# make its files, then dda, with no message and a page of three columns.
+awk '/^\.Bd -literal/ { n = 0; on = 1; next } /^\.Ed/ { if (hit) exit; on = 0; next }
+    on { l[n++] = $0; if ($0 ~ /^dda --summary/) hit = 1 }
+    END { if (hit) for (i = 0; i < n; i++) print l[i] }' man/man7/frs.7 >"$T/ex.sh"
+if grep -q '^dda --summary --sets 1024 --png cmp.png frs.pts sobol.pts dart.pts$' "$T/ex.sh" &&
+    (cd "$T" && mkdir ex && cd ex && sh -e ../ex.sh >table 2>err) && [ ! -s "$T/ex/err" ] &&
+    [ "$(pngsize "$T/ex/cmp.png")" = 951x839 ]; then
+	ok "frs(7)'s dda --summary example runs as written"
+else
+	nok "frs(7)'s dda --summary example: $(cat "$T/ex.sh" "$T/ex/err" 2>&1 | head -n 8)"
+fi
+# The map options of frs-sample: --equirect weights the map's rows by
+# sin(theta) as imap convert --equirect does (the densities of its float
+# map, to 1e-6, not those of the map as it is); --strict refuses negative
+# importance, which is otherwise clamped with a warning; both need -i.
+imap convert --equirect -s 64x32 sky "$T/sky-eq.exr"
+hsw-sample -i sky -s 64x32 --equirect -n 200 --input random --sets 20 -q -o "$T/eq.pts"
+dda --density -i sky -s 64x32 --equirect -o "$T/de" "$T/eq.pts"
+dda --density -i "$T/sky-eq.exr" -o "$T/dc" "$T/eq.pts"
+dda --density -i sky -s 64x32 -o "$T/dp" "$T/eq.pts"
+# rel A B: the largest relative difference of the sets' rho.
+rel() { paste "$1" "$2" | awk -F '\t' 'NR > 1 && $1 != "mean" { d = ($4 - $9) / $9
+    if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3g\n", m }'; }
+awk -v c="$(rel "$T/de" "$T/dc")" -v p="$(rel "$T/de" "$T/dp")" 'BEGIN { exit !(c < 1e-6 && p > 1e-3) }' &&
+    ok "--equirect: the density of imap convert --equirect's map" ||
+    nok "--equirect: $(rel "$T/de" "$T/dc") from the converted map, $(rel "$T/de" "$T/dp") from the plain"
+ref-sample -n 300 -q -o "$T/r300.pts"
+expect_fail "--strict refuses negative importance" 1 "is negative" "$T/o7" \
+    dda --density --strict -i "$TD/interior.exr" -s 64x32 -o "$T/o7" "$T/r300.pts"
+dda --density -i "$TD/interior.exr" -s 64x32 -o "$T/o8" "$T/r300.pts" 2>"$T/err" &&
+    grep -q "interior.exr: .*negative.*clamped" "$T/err" &&
+    ok "negative importance without --strict: clamped, a warning" ||
+    nok "negative importance without --strict: $(cat "$T/err")"
+for o in --equirect --strict; do
+	expect_fail "$o without -i" 2 "$o" - dda --density $o "$T/r300.pts"
+done
 done_testing

@@ -170,4 +170,25 @@ expect_fail "--for with --blocks" 2 "one or the other" "$T/x.frp" \
 expect_fail "--for 0" 2 "--for" "$T/x.frp" frd-prep --for 0 "$T/f.frd" -o "$T/x.frp"
 expect_fail "--for with -a stack" 2 "--for needs" "$T/x.frp" \
     frd-prep -a stack --for 100 "$T/f.frd" -o "$T/x.frp"
+# The map options of frs-sample for --for's map: --size-map (frs-sample's
+# -s), --equirect (the table of imap convert --equirect's map) and
+# --strict (negative importance an error).
+imap convert --equirect -s 64x32 sky "$T/sky-eq.exr"
+frd-prep --for 100,3000 -i sky --size-map 64x32 --equirect "$T/f.frd" >"$T/fe.tsv" &&
+    frd-prep --for 100,3000 -i "$T/sky-eq.exr" "$T/f.frd" >"$T/fc.tsv" &&
+    cmp -s "$T/fe.tsv" "$T/fc.tsv" && [ "$(wc -l <"$T/fe.tsv")" = 3 ] &&
+    ok "--for --equirect --size-map: the table of the converted map" ||
+    nok "--for --equirect: $(cat "$T/fe.tsv" "$T/fc.tsv" | tr '\n' ' ')"
+frd-prep -a sorted --for 3000 -i sky --size-map 64x32 --equirect "$T/f.frd" -o "$T/eq.frp" &&
+    frs-sample -q -m "$T/eq.frp" -i sky -s 64x32 --equirect -n 3000 -v -o "$T/eq.pts" 2>"$T/v3" &&
+    frs-sample -q -m "$T/f.frd" -i sky -s 64x32 --equirect -n 3000 -o "$T/eq0.pts" &&
+    cmp -s "$T/eq.pts" "$T/eq0.pts" && ! grep -q 'no sorted lists' "$T/v3" &&
+    ok "--for --equirect's .frp: frs-sample --equirect uses its lists" ||
+    nok "--for --equirect's .frp: $(cat "$T/v3")"
+expect_fail "--strict refuses negative importance" 1 "is negative" - \
+    frd-prep --for 100 -i "$TD/interior.exr" --size-map 64x32 --strict "$T/f.frd"
+for o in --equirect --strict "--size-map 64x32"; do
+	# shellcheck disable=SC2086
+	expect_fail "$o without --for" 2 "--for" - frd-prep $o "$T/f.frd" -o "$T/x.frd"
+done
 done_testing

@@ -99,6 +99,88 @@ expect_fail "missing map" 1 "nosuchmap" - hsw-sample -i "$T/nosuchmap.png" -n 10
 expect_fail "write to /dev/full" 1 "/dev/full" - \
     hsw-sample -i blob -n 100000 -o /dev/full
 
+# --equirect: the map's rows weighted by sin(theta) at load, as imap
+# convert --equirect writes it: the points of the converted map (float
+# pixels: equal to 1e-6), and not those of the map as it is.
+imap convert --equirect -s 64x32 sky "$T/sky-eq.exr"
+hsw-sample -i sky -s 64x32 --equirect -n 3000 --input random -T -o "$T/eq.txt"
+hsw-sample -i "$T/sky-eq.exr" -n 3000 --input random -T -o "$T/conv.txt"
+hsw-sample -i sky -s 64x32 -n 3000 --input random -T -o "$T/plain.txt"
+maxdiff() {
+	paste "$1" "$2" | awk '!/^#/ { d = $1 - $3; if (d < 0) d = -d; if (d > m) m = d
+	    d = $2 - $4; if (d < 0) d = -d; if (d > m) m = d } END { printf "%.3g\n", m }'
+}
+awk -v a="$(maxdiff "$T/eq.txt" "$T/conv.txt")" -v b="$(maxdiff "$T/eq.txt" "$T/plain.txt")" \
+    'BEGIN { exit !(a < 1e-6 && b > 1e-3) }' &&
+    ok "--equirect: the points of imap convert --equirect's map" ||
+    nok "--equirect: $(maxdiff "$T/eq.txt" "$T/conv.txt") from the converted map"
+# A constant map over the sphere: density sin(pi y), so a share
+# (1 - cos(pi/4)) / 2 = 0.1464 of the points above y = 1/4 (standard
+# error 0.0011 for 100000 points).
+hsw-sample -i const --equirect -n 100000 --input random -T |
+    awk '!/^#/ { n++; if ($2 < 0.25) k++ } END { p = k / n; print p
+	exit !(p > 0.1404 && p < 0.1524) }' >"$T/share" &&
+    ok "--equirect, constant map: $(cat "$T/share") of the points above y = 1/4 (0.146)" ||
+    nok "--equirect, constant map: $(cat "$T/share") above y = 1/4, not 0.146"
+# --strict: a negative pixel is an error naming the map, no output; without
+# it clamped with a warning.
+expect_fail "--strict refuses negative importance" 1 "is negative" "$T/strict.pts" \
+    hsw-sample --strict -i "$TD/interior.exr" -s 64x32 -n 100 -o "$T/strict.pts"
+hsw-sample -i "$TD/interior.exr" -s 64x32 -n 100 -o "$T/clamped.pts" 2>"$T/err" &&
+    grep -q "interior.exr: .*negative.*clamped" "$T/err" &&
+    ok "negative importance without --strict: clamped, a warning" ||
+    nok "negative importance without --strict: $(cat "$T/err")"
+
+# --sets M: set i is the set of -S S+i, the records one after another,
+# each followed by its set (the column named set), counted in the header.
+# recs FILE NCOL: the records after the header and its names block.
+recs() {
+	tail -c +$((32 + $(od -A n -t u4 -j 20 -N 4 "$1" | tr -d ' ') + 1)) "$1" |
+	    od -A n -t x8 -v -w$((8 * $2))
+}
+sethex() { case $1 in 0) echo 0000000000000000 ;; 1) echo 3ff0000000000000 ;;
+	2) echo 4000000000000000 ;; esac; }
+for a in "--input random" "--input jittered" "--input dart" "--input random --pdf"; do
+	case $a in *pdf) nc=3 names="pdf set " ;; *) nc=2 names="set     " ;; esac
+	# shellcheck disable=SC2086
+	hsw-sample -i blob -s 64x64 $a -n 200 -S 5 --sets 3 -o "$T/sets.pts"
+	: >"$T/cat.hex"
+	for s in 5 6 7; do
+		# shellcheck disable=SC2086
+		hsw-sample -i blob -s 64x64 $a -n 200 -S $s -o "$T/one.pts"
+		recs "$T/one.pts" $nc |
+		    sed "s/\$/ $(sethex $((s - 5)))/" >>"$T/cat.hex"
+	done
+	if recs "$T/sets.pts" $((nc + 1)) | cmp -s - "$T/cat.hex" &&
+	    [ "$(pts_count "$T/sets.pts")" = 600 ] &&
+	    [ "$(head -c 40 "$T/sets.pts" | tail -c 8 | tr '\0' ' ')" = "$names" ]; then
+		ok "$a --sets 3 -S 5: the sets of -S 5, 6, 7 and a set column, count 600"
+	else
+		nok "$a --sets 3 -S 5: the sets of -S 5, 6, 7 and a set column, count 600"
+	fi
+done
+hsw-sample -i blob --input random -n 50 -S 2 --sets 2 -T -o "$T/sets.txt"
+{ hsw-sample -i blob --input random -n 50 -S 2 -T | sed '/^#/d; s/$/ 0/'
+  hsw-sample -i blob --input random -n 50 -S 3 -T | sed '/^#/d; s/$/ 1/'; } >"$T/cat.txt"
+head -n 1 "$T/sets.txt" | grep -q '^#pts dims=2 extra=1 count=100 version=2 names=set$' &&
+    grep -v '^#' "$T/sets.txt" | cmp -s - "$T/cat.txt" &&
+    ok "--sets 2 -T: one header, count 100, the records of -S 2 and 3 and their set" ||
+    nok "--sets 2 -T: $(head -n 1 "$T/sets.txt")"
+hsw-sample -i blob --input random -n 300 -S 4 -o "$T/a.pts"
+hsw-sample -i blob --input random -n 300 -S 4 --sets 1 -o "$T/b.pts"
+cmp -s "$T/a.pts" "$T/b.pts" && ok "--sets 1 gives the same bytes" ||
+    nok "--sets 1 gives the same bytes"
+for i in halton regular hammersley "$T/in.txt"; do
+	expect_fail "--sets 2 with --input $i, the same for every seed" 2 "every seed" \
+	    "$T/o.pts" hsw-sample -i blob -n 3 --input "$i" --sets 2 -o "$T/o.pts"
+done
+expect_fail "--sets 0" 2 "--sets" "$T/o.pts" \
+    hsw-sample -i blob -n 10 --input random --sets 0 -o "$T/o.pts"
+expect_fail "--sets past 2^56 points in all" 2 "2^56" "$T/o.pts" \
+    hsw-sample -i blob -n 4294967296 --input random --sets 33554432 -o "$T/o.pts"
+expect_fail "--sets past seed 2^64-1" 2 "2^64-1" "$T/o.pts" \
+    hsw-sample -i blob -n 10 --input random -S 18446744073709551614 --sets 3 -o "$T/o.pts"
+
 # --device: OpenCL gives the CPU's bytes; device listing and errors.
 if cl_run hsw-sample --list-devices >"$T/dev" 2>"$T/err"; then
 	head -n 1 "$T/dev" | grep -q '^cl:0' && ok "--list-devices: cl:0 first" ||
@@ -127,6 +209,12 @@ if cl_run hsw-sample --list-devices >"$T/dev" 2>"$T/err"; then
 	cmp -s "$T/cpu.txt" "$T/cl.txt" &&
 	    ok "--device cl:0, 100x60, dart, --pdf -T: the CPU's text" ||
 	    nok "--device cl:0, 100x60, dart, --pdf -T: the CPU's text"
+	hsw-sample -i blob -n 3000 --input jittered -S 3 --sets 3 --pdf -o "$T/scpu.pts"
+	cl_run hsw-sample -i blob -n 3000 --input jittered -S 3 --sets 3 --pdf \
+	    --device cl -o "$T/scl.pts"
+	cmp -s "$T/scpu.pts" "$T/scl.pts" &&
+	    ok "--device cl --sets 3: the CPU's bytes" ||
+	    nok "--device cl --sets 3: the CPU's bytes"
 	cl_run hsw-sample -i blob -n 1000 --device cl -v -o /dev/null 2>"$T/v"
 	grep -q 'kernel' "$T/v" && ok "-v --device cl: device times" ||
 	    nok "-v --device cl: device times"

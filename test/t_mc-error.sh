@@ -63,6 +63,17 @@ ref-sample -k random --sets 200 -n 256 -q -T | awk '!/^#/ { print $1, $2 }' >"$T
 mc-error -f disc "$T/rand.pts" >"$T/d0"
 cmp -s "$T/d0" "$T/d" && ok "the set column splits as --sets 256 does" || nok "set column: $(cat "$T/d0")"
 mc-error -f disc "$T/rand1.txt" >"$T/d1"
+# The same file cut by --sets 256: the rows of the set column, and a
+# warning naming the file; --sets 128 beside the set column: its sets.
+mc-error -f disc --sets 256 "$T/rand1.txt" >"$T/d2" 2>"$T/err"
+[ "$(cut -f 1-6 "$T/d2")" = "$(cut -f 1-6 "$T/d")" ] &&
+    grep -q "^mc-error: warning: $T/rand1.txt: no set column: cut in file order into 200 sets" "$T/err" &&
+    ok "no set column, --sets 256: 200 blocks, a warning naming the file" ||
+    nok "--sets 256 without a set column: $(cat "$T/err")"
+mc-error -f disc --sets 128 "$T/rand.pts" >"$T/d3" 2>"$T/err"
+cmp -s "$T/d3" "$T/d" && grep -q "rand.pts: .*256 points, not 128" "$T/err" &&
+    ok "--sets 128 beside a set column of 256: its sets, a warning" ||
+    nok "--sets 128 beside a set column: $(cat "$T/err")"
 near "$(col estimate_mean "$T/d1")" "$(col estimate_mean "$T/d")" 1e-9 &&
     [ "$(col sets "$T/d1")" = 1 ] && ok "one set: same mean" || nok "one set"
 
@@ -283,4 +294,14 @@ expect_fail "--env: missing file" 1 "$T/none.exr" "$O" \
     mc-error -f gauss --env "$T/none.exr" -o "$O" "$T/r3.pts"
 expect_fail "--env: all zero" 1 "const:0" "$O" \
     mc-error --env const:0 -o "$O" "$T/r3.pts"
+# --strict, as in frs-sample: negative radiance in env's map an error
+# naming it; without it clamped with a warning.  No map: a usage error.
+expect_fail "--strict refuses a negative env map" 1 "is negative" - \
+    mc-error -f env --strict --env "$TD/interior.exr" "$T/grid.txt"
+mc-error -f env --env "$TD/interior.exr" "$T/grid.txt" >/dev/null 2>"$T/err" &&
+    grep -q "interior.exr: .*negative.*clamped" "$T/err" &&
+    ok "a negative env map without --strict: clamped, a warning" ||
+    nok "negative env map without --strict: $(cat "$T/err")"
+expect_fail "--strict without env's map" 2 "--strict" - \
+    mc-error -f disc --strict "$T/grid.txt"
 done_testing

@@ -317,8 +317,19 @@ frs-sample -q -i blob -n 300 --sets 4 | pts-render --color --set 0 -o "$T/set0.p
     nok "--set 0 --color"
 ref-sample -q -k halton -n 64 --sets 3 -T | awk '!/^#/ { print $1, $2 }' >"$T/old.txt"
 ref-sample -q -k halton -n 64 -S 2 | pts-render -o "$T/h2.png"
-pts-render --sets 64 --set 1 -o "$T/old1.png" "$T/old.txt" && cmp -s "$T/old1.png" "$T/h2.png" &&
-    ok "--sets 64 --set 1 of a file without a set column" || nok "--sets 64 --set 1"
+pts-render --sets 64 --set 1 -o "$T/old1.png" "$T/old.txt" 2>"$T/err" &&
+    cmp -s "$T/old1.png" "$T/h2.png" &&
+    grep -q "^pts-render: warning: $T/old.txt: no set column: cut in file order into 3 sets of 64" "$T/err" &&
+    ok "--sets 64 --set 1 of a file without a set column: its block, a warning naming the file" ||
+    nok "--sets 64 --set 1: $(cat "$T/err")"
+# A set column of sets of 300 beside --sets 100: its set 1, a warning.
+ref-sample -q -k halton -n 300 --sets 3 -o "$T/h3.pts"
+ref-sample -q -k halton -n 300 -S 2 | pts-render -o "$T/h300.png"
+pts-render --sets 100 --set 1 -o "$T/h31.png" "$T/h3.pts" 2>"$T/err" &&
+    cmp -s "$T/h31.png" "$T/h300.png" &&
+    grep -q "^pts-render: warning: $T/h3.pts: .*set column have 300 points, not 100" "$T/err" &&
+    ok "--sets 100 beside a set column of 300: its set, a warning" ||
+    nok "--sets 100 beside a set column: $(cat "$T/err")"
 expect_fail "--set without a set column" 1 "old.txt: --set 1: the points have no set column" \
     "$T/o.png" pts-render --set 1 -o "$T/o.png" "$T/old.txt"
 expect_fail "--set past the sets" 1 "old.txt: --set 3: the file has 3 sets of 64 points" \
@@ -327,4 +338,14 @@ expect_fail "--set of no point" 1 "--set 9: no point has that set" "$T/o.png" \
     sh -c "frs-sample -q -n 100 --sets 4 | pts-render --set 9 -o '$T/o.png'"
 expect_fail "--sets without --set" 2 "--set K" "$T/o.png" \
     pts-render --sets 64 -o "$T/o.png" "$T/old.txt"
+# --strict, as in frs-sample: negative importance in the map an error
+# naming it, no picture; without it clamped with a warning.
+expect_fail "--strict refuses negative importance" 1 "is negative" "$T/st.png" \
+    pts-render --strict -i "$TD/interior.exr" -s 64x32 -o "$T/st.png" "$T/X.txt"
+pts-render -i "$TD/interior.exr" -s 64x32 -o "$T/cl.png" "$T/X.txt" 2>"$T/err" &&
+    grep -q "interior.exr: .*negative.*clamped" "$T/err" &&
+    ok "negative importance without --strict: clamped, a warning" ||
+    nok "negative importance without --strict: $(cat "$T/err")"
+expect_fail "--strict without -i" 2 "need -i" "$T/st.png" \
+    pts-render --strict -o "$T/st.png" "$T/X.txt"
 done_testing

@@ -61,6 +61,137 @@ static void text_glyphs(void **state)
 	raster_free(&r);
 }
 
+/* The 3 x 5 cells of c at scale 1 as a string of '#' and '.', row by
+ * row: what a reader sees. */
+static void cells_of(char c, char out[16])
+{
+	struct frs_raster r;
+	char s[2] = { c, '\0' };
+
+	assert_int_equal(raster_alloc(&r, 3, 5, 3), 0);
+	plot_text(&r, 0, 0, 1, s, ink);
+	for (int i = 0; i < 15; i++)
+		out[i] = is_ink(&r, i % 3, i / 3) ? '#' : '.';
+	out[15] = '\0';
+	raster_free(&r);
+}
+
+/* Letters as a 3 x 5 font draws them, written out by hand: A with its
+ * apex and crossbar, H with a bar in the middle, M with its two middle
+ * rows full and N with three (as the Tom Thumb font draws them). */
+static void text_letters(void **state)
+{
+	static const char *const want[][2] = {
+		{ "A", ".#." "#.#" "###" "#.#" "#.#" },
+		{ "H", "#.#" "#.#" "###" "#.#" "#.#" },
+		{ "M", "#.#" "###" "###" "#.#" "#.#" },
+		{ "N", "#.#" "###" "###" "###" "#.#" },
+		{ "E", "###" "#.." "##." "#.." "###" },
+		{ "1", ".#." "##." ".#." ".#." "###" },
+	};
+	char got[16];
+	(void)state;
+	for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+		cells_of(want[i][0][0], got);
+		if (strcmp(got, want[i][1]) != 0)
+			fail_msg("'%s' is %s, not %s", want[i][0], got, want[i][1]);
+	}
+}
+
+/* Every glyph of the font: the letters that are mirror images of
+ * themselves are drawn so, every glyph has ink in its top and bottom
+ * rows or is punctuation, and no two characters look the same. */
+static void text_font(void **state)
+{
+	static const char all[] = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+	    ".,-+_/:=()%?";
+	static const char mirror[] = "0AHIMOTUVWXY8";
+	char g[sizeof all][16];
+	(void)state;
+	for (size_t i = 0; i < sizeof all - 1; i++)
+		cells_of(all[i], g[i]);
+	for (size_t i = 0; i < sizeof all - 1; i++)
+		for (size_t j = 0; j < i; j++)
+			if (strcmp(g[i], g[j]) == 0)
+				fail_msg("'%c' and '%c' are the same glyph %s",
+				    all[i], all[j], g[i]);
+	for (const char *c = mirror; *c; c++) {
+		char m[16];
+		cells_of(*c, m);
+		for (int y = 0; y < 5; y++)
+			if (m[3 * y] != m[3 * y + 2])
+				fail_msg("'%c' is not symmetric: %s", *c, m);
+	}
+	for (size_t i = 0; i < 36; i++)
+		if (strchr(g[i], '#') > g[i] + 2 || strrchr(g[i], '#') < g[i] + 12)
+			fail_msg("'%c' does not span the 5 rows: %s", all[i], g[i]);
+}
+
+/* The raster of plot_text's lines, one under another (6 s apart), for
+ * comparing with plot_text_fit. */
+static void lines_of(struct frs_raster *q, int x, int y, int scale,
+    const char *const *line, size_t n)
+{
+	for (size_t i = 0; i < n; i++)
+		plot_text(q, x, y + (int)i * (PLOT_GLYPH_H + 1) * scale, scale,
+		    line[i], ink);
+}
+
+/* plot_text_fit in a box 23 x 13 at (2, 1): 3 characters a line at
+ * scale 2 (one line), 6 at scale 1 (two lines). */
+static void text_fit(void **state)
+{
+	static const struct {
+		const char *s;
+		int scale, lines;
+		const char *line[2];
+	} c[] = {
+		{ "ABC", 2, 1, { "ABC" } },		/* fits as it is */
+		{ "ABCD", 1, 1, { "ABCD" } },		/* a smaller scale */
+		{ "ABCDEFGHIJKL", 1, 2, { "ABCDEF", "GHIJKL" } },	/* wrapped */
+		{ "ABCDEFGHIJKLMNOPQRST", 1, 2, { "ABCDEF", "GHI..." } },
+	};
+	(void)state;
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		struct frs_raster r, q;
+		assert_int_equal(raster_alloc(&r, 30, 20, 3), 0);
+		assert_int_equal(raster_alloc(&q, 30, 20, 3), 0);
+		assert_int_equal(plot_text_fit(&r, 2, 1, 23, 13, 2, c[i].s, ink),
+		    c[i].lines);
+		lines_of(&q, 2, 1, c[i].scale, c[i].line, (size_t)c[i].lines);
+		if (memcmp(r.px, q.px, 30 * 20 * 3) != 0)
+			fail_msg("'%s' is not drawn as %d line(s) at scale %d",
+			    c[i].s, c[i].lines, c[i].scale);
+		for (int y = 0; y < 20; y++)
+			for (int x = 0; x < 30; x++)
+				if (x < 2 || x >= 25 || y < 1 || y >= 14)
+					assert_false(is_ink(&r, x, y));
+		raster_free(&r);
+		raster_free(&q);
+	}
+}
+
+/* plot_range: whole steps around the data and the reference, NaN left
+ * out, at least one step. */
+static void range(void **state)
+{
+	double lo, hi;
+	double a[] = { -28.5, NAN, -31.2, -29 };
+	double b[] = { -6.5, 2.5, -3 };
+	double z[] = { NAN };
+	(void)state;
+	plot_range(a, 4, -30.1, 10, &lo, &hi);
+	assert_true(lo == -40 && hi == -20);
+	plot_range(b, 3, -6.0, 5, &lo, &hi);
+	assert_true(lo == -10 && hi == 5);
+	plot_range(b, 3, 12, 10, &lo, &hi);
+	assert_true(lo == -10 && hi == 20);
+	plot_range(z, 1, 0, 10, &lo, &hi);	/* the reference alone */
+	assert_true(lo == 0 && hi == 10);
+	plot_range(z, 0, -20, 10, &lo, &hi);
+	assert_true(lo == -20 && hi == -10);
+}
+
 /* A curve from (x0, y0) to (x1, y1) of the box lights the bottom left
  * and top right pixels and is 8-connected; values beyond are clamped. */
 static void curve_box(void **state)
@@ -141,6 +272,10 @@ static void axes(void **state)
 TU_MAIN(NULL, NULL,
 	cmocka_unit_test(text_width),
 	cmocka_unit_test(text_glyphs),
+	cmocka_unit_test(text_letters),
+	cmocka_unit_test(text_font),
+	cmocka_unit_test(text_fit),
+	cmocka_unit_test(range),
 	cmocka_unit_test(curve_box),
 	cmocka_unit_test(curve_nan),
 	cmocka_unit_test(axes))

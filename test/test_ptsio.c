@@ -278,55 +278,6 @@ static void text_many(void **state)
 	free(x);
 }
 
-/* pts_writer_put_cols: points and columns given apart, in more records
- * than one of its pieces holds, give the bytes of the records packed by
- * hand (pts_write), in both forms. */
-static void put_cols(void **state)
-{
-	enum { N = 3000, NCOL = 4 };
-	static const char *const nm[] = { "v1", "v2" };
-	double *xy = malloc(N * 2 * sizeof *xy), *v = malloc(N * sizeof *v);
-	double *rec = malloc(N * NCOL * sizeof *rec);
-	struct pts_col col[2] = { { NULL, 0 }, { NULL, 7 } };
-	(void)state;
-
-	assert_true(xy != NULL && v != NULL && rec != NULL);
-	col[0].v = v;
-	for (size_t i = 0; i < N; i++) {
-		xy[2 * i] = frs_rand01(3, FRS_STREAM_TEST, 2 * i);
-		xy[2 * i + 1] = frs_rand01(3, FRS_STREAM_TEST, 2 * i + 1);
-		v[i] = (double)i * 0.5 - 17;
-		rec[NCOL * i] = xy[2 * i];
-		rec[NCOL * i + 1] = xy[2 * i + 1];
-		rec[NCOL * i + 2] = v[i];
-		rec[NCOL * i + 3] = 7;
-	}
-	for (int text = 0; text <= 1; text++) {
-		struct pts_writer w;
-		unsigned char *a, *b;
-		size_t la, lb;
-		FILE *fp;
-
-		write_set(tu_path("packed"), 2, 2, rec, N, text);
-		fp = fopen(tu_path("cols"), "wb");
-		assert_non_null(fp);
-		assert_int_equal(pts_writer_begin(&w, fp, "cols", 2, 2, nm, N,
-		    text), 0);
-		assert_int_equal(pts_writer_put_cols(&w, xy, col, N), 0);
-		assert_int_equal(pts_writer_end(&w), 0);
-		assert_int_equal(fclose(fp), 0);
-		a = tu_read(tu_path("packed"), &la);
-		b = tu_read(tu_path("cols"), &lb);
-		assert_int_equal(la, lb);
-		assert_memory_equal(a, b, la);
-		free(a);
-		free(b);
-	}
-	free(xy);
-	free(v);
-	free(rec);
-}
-
 /* Text without a header: every column is a coordinate; comments and
  * blank lines are skipped; CRLF is accepted. */
 static void plain_text(void **state)
@@ -481,7 +432,6 @@ TU_MAIN(NULL, tu_teardown,
 	cmocka_unit_test(bad_names),
 	cmocka_unit_test(text_form),
 	cmocka_unit_test(text_many),
-	cmocka_unit_test(put_cols),
 	cmocka_unit_test(plain_text),
 	cmocka_unit_test(unknown_count),
 	cmocka_unit_test(bad_text),

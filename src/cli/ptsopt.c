@@ -3,10 +3,28 @@
 
 #include "cli/cli.h"
 #include "cli/ptsopt.h"
+#include "formats/setsout.h"
 
 size_t cli_sets(const char *arg)
 {
 	return (size_t)cli_u64("--sets", arg, 1, (uint64_t)1 << 40);
+}
+
+uint64_t cli_sets_m(const char *arg)
+{
+	return cli_u64("--sets", arg, 1, SETS_MAX_POINTS);
+}
+
+void cli_sets_check(uint64_t m, uint64_t n)
+{
+	if (m > SETS_MAX_POINTS / n)
+		cli_usage_error("--sets %llu: %llu sets of %llu points exceed "
+		    "the 2^56 points one file can hold", (unsigned long long)m,
+		    (unsigned long long)m, (unsigned long long)n);
+	if (m - 1 > UINT64_MAX - cli.seed)
+		cli_usage_error("--sets %llu: the seeds from -S %llu would pass "
+		    "2^64-1", (unsigned long long)m,
+		    (unsigned long long)cli.seed);
 }
 
 enum pt_group cli_group(const char *arg)

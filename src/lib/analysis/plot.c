@@ -13,11 +13,11 @@ static const char *const font_cells[] = {
 	"###..#.##..####", "#.##.####..#..#", "####..###..####",
 	"####..####.####", "###..#..#.#..#.", "####.#####.####",
 	"####.####..####",
-	".#.#.####.##.#.", "##.#.###.#.###.", ".###..#..#...##",
+	".#.#.#####.##.#", "##.#.###.#.###.", ".###..#..#...##",
 	"##.#.##.##.###.", "####..##.#..###", "####..##.#..#..",
-	".###..#.##.#.##", "#.##.####.##.#.", "###.#..#..#.###",
+	".###..#.##.#.##", "#.##.#####.##.#", "###.#..#..#.###",
 	"..#..#..##.#.#.", "#.##.###.#.##.#", "#..#..#..#..###",
-	"#.#####.##.##.#", "##.#.##.##.##.#", ".#.#.##.##.#.#.",
+	"#.########.##.#", "#.###########.#", ".#.#.##.##.#.#.",
 	"##.#.###.#..#..", ".#.#.##.###..##", "##.#.###.#.##.#",
 	".###...#...###.", "###.#..#..#..#.", "#.##.##.##.####",
 	"#.##.##.##.#.#.", "#.##.########.#", "#.##.#.#.#.##.#",
@@ -74,6 +74,88 @@ void plot_text(struct frs_raster *r, int x, int y, int scale, const char *s,
 					    y + gy * scale + v, color);
 		}
 	}
+}
+
+/* Characters a line of w pixels holds at scale, lines h pixels hold. */
+static size_t fit_cols(int w, int scale)
+{
+	return w < 0 ? 0 : (size_t)((w + scale) / ((PLOT_GLYPH_W + 1) * scale));
+}
+
+static size_t fit_rows(int h, int scale)
+{
+	return h < 0 ? 0 : (size_t)((h + scale) / ((PLOT_GLYPH_H + 1) * scale));
+}
+
+/* s over lines of cols characters at scale; its first max characters. */
+static void text_lines(struct frs_raster *r, int x, int y, int scale,
+    const char *s, size_t max, size_t cols, const uint8_t *color)
+{
+	char line[256];
+	size_t len = strlen(s);
+
+	if (cols >= sizeof line)
+		cols = sizeof line - 1;
+	for (size_t at = 0; at < len && at < max; at += cols) {
+		size_t k = len - at < cols ? len - at : cols;
+		if (k > max - at)
+			k = max - at;
+		memcpy(line, s + at, k);
+		line[k] = '\0';
+		plot_text(r, x, y, scale, line, color);
+		y += (PLOT_GLYPH_H + 1) * scale;
+	}
+}
+
+int plot_text_fit(struct frs_raster *r, int x, int y, int w, int h,
+    int scale, const char *s, const uint8_t *color)
+{
+	size_t len = strlen(s), cols, rows;
+	char end[256];
+
+	if (len == 0)
+		return 0;
+	if (plot_text_width(s, scale) <= w && fit_rows(h, scale) >= 1) {
+		plot_text(r, x, y, scale, s, color);
+		return 1;
+	}
+	for (int k = scale - 1; k >= 1; k--) {
+		cols = fit_cols(w, k), rows = fit_rows(h, k);
+		if (cols > 0 && len <= cols * rows) {
+			text_lines(r, x, y, k, s, len, cols, color);
+			return (int)((len + cols - 1) / cols);
+		}
+	}
+	/* Too long even at scale 1: the lines there is room for, the last
+	 * one ending in "..." (a line too short for it is left as it is). */
+	cols = fit_cols(w, 1), rows = fit_rows(h, 1);
+	if (cols == 0 || rows == 0)
+		return 0;
+	text_lines(r, x, y, 1, s, (rows - 1) * cols, cols, color);
+	if (cols > 3 && cols < sizeof end) {
+		snprintf(end, sizeof end, "%.*s...", (int)(cols - 3),
+		    s + (rows - 1) * cols);
+		plot_text(r, x, y + (int)(rows - 1) * (PLOT_GLYPH_H + 1), 1, end,
+		    color);
+	}
+	return (int)rows;
+}
+
+void plot_range(const double *y, size_t n, double ref, double step,
+    double *lo, double *hi)
+{
+	double a = ref, b = ref;
+
+	for (size_t i = 0; i < n; i++) {
+		if (!isfinite(y[i]))
+			continue;
+		a = y[i] < a ? y[i] : a;
+		b = y[i] > b ? y[i] : b;
+	}
+	*lo = floor(a / step) * step;
+	*hi = ceil(b / step) * step;
+	if (*hi <= *lo)
+		*hi = *lo + step;
 }
 
 /* Data to pixel coordinates, clamped to the box. */

@@ -42,6 +42,20 @@ int plot_text_width(const char *s, int scale);
 void plot_text(struct frs_raster *r, int x, int y, int scale, const char *s,
     const uint8_t *color);
 
+/* Text s fitted into the w x h pixels at (x, y): one line at scale if
+ * it fits, else at the largest smaller scale at which it fits wrapped
+ * over lines 6 scale apart (broken anywhere), else at scale 1 over the
+ * lines there is room for, the last one cut and ending in "...".  The
+ * number of lines drawn. */
+int plot_text_fit(struct frs_raster *r, int x, int y, int w, int h,
+    int scale, const char *s, const uint8_t *color);
+
+/* The range [*lo, *hi] of a plot of the n values y (NaN and infinities left out) and
+ * the reference line ref: whole multiples of step around them, at least
+ * one step apart. */
+void plot_range(const double *y, size_t n, double ref, double step,
+    double *lo, double *hi);
+
 /* The frame of the box, grid lines at the ticks (data values; those
  * outside the range are left out), and each tick's value (%g) left of
  * the box (y) or below it (x), in text of the given scale. */

@@ -331,10 +331,8 @@ void api_hsw_pdf(const struct hsw_tree *t, const struct frs_imap *map,
 /* ---- frs-sample's sets (sets.c) ------------------------------------ */
 
 /* What frs-sample asks for: M sets of a 2-D map or 3-D volume, set i
- * with seed + i, written to one file. */
-#define API_SETS_MAX ((uint64_t)1 << 56)	/* samples of all M sets:
-						 * far inside a 64-bit file
-						 * offset at 32 bytes each */
+ * with seed + i, written to one file (setsout.h: at most
+ * SETS_MAX_POINTS samples in all). */
 struct api_sets {
 	unsigned dims;		/* the matrix's: 2 or 3 */
 	const char *matrix, *imp;	/* imp NULL: constant */

@@ -15,7 +15,7 @@
 #define ROUND ((uint64_t)1 << 16)
 
 int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
-    uint32_t h, int cl, int cl_index)
+    uint32_t h, int flags, int cl, int cl_index)
 {
 	struct frs_imap map;
 	frs_error err;
@@ -26,7 +26,7 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 	r->cl = cl;
 	if (cl && ocl_open(&r->dev, cl_index) < 0)
 		return -2;
-	if (imap_load(src, w, h, 0, &map) < 0)
+	if (imap_load(src, w, h, flags, &map) < 0)
 		goto fail;
 	t0 = progress_now();
 	rc = frs_hsw_new_f64(&r->hw, map.v, map.w, map.h, 0, &err);

@@ -26,11 +26,12 @@ struct hsw_run {
 };
 
 /* Open the device when cl (cl_index, -1: the first), load the map src at
- * w x h (0, 0: its own size, imap_load) and build its quadtree, there too
- * with the device.  -1 with a message (those about the map name src), -2
- * when the device cannot be opened or cannot take the tree. */
+ * w x h (0, 0: its own size) with imap_load's flags and build its
+ * quadtree, there too with the device.  -1 with a message (those about
+ * the map name src), -2 when the device cannot be opened or cannot take
+ * the tree. */
 int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
-    uint32_t h, int cl, int cl_index);
+    uint32_t h, int flags, int cl, int cl_index);
 void hsw_run_close(struct hsw_run *r);
 
 /* The records of one round: k of them, x, y and with pdf the density

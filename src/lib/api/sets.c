@@ -17,6 +17,7 @@
 #include "base/outfile.h"
 #include "base/progress.h"
 #include "formats/ptsio.h"
+#include "formats/setsout.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "maps/vol.h"
@@ -26,10 +27,9 @@ struct out {
 	const struct api_sets *a;
 	struct api_sets_run *run;
 	struct outfile of;
-	struct pts_writer w;
+	struct sets_writer w;	/* its set: the one being drawn */
 	int open;
 	uint64_t n;		/* samples of the set being drawn */
-	uint64_t set;		/* and its index, from 0 */
 	/* -v: how many samples of set 0 show each matrix element, per
 	 * level (2-D) */
 	uint32_t *uses[FRS_LEVELS_MAX];
@@ -118,11 +118,12 @@ static void reused_shares(struct out *u)
 /* Open the output at the first set: with one set its count goes into
  * the header; more sets announce 0 (unknown), which the writer replaces
  * by the total when the output can seek.  The extra columns, in their
- * order: pdf, step (progressive), set (M > 1). */
+ * order: pdf, step (progressive), level (--level-column), and the
+ * writer's set (M > 1). */
 static int out_begin(struct out *u, uint64_t count)
 {
 	const struct api_sets *a = u->a;
-	const char *names[4];
+	const char *names[3];
 	unsigned extra = 0;
 
 	if (u->open)
@@ -131,15 +132,14 @@ static int out_begin(struct out *u, uint64_t count)
 		names[extra++] = PTS_COL_PDF;
 	if (a->nsteps > 1)
 		names[extra++] = PTS_COL_STEP;
-	if (a->sets > 1)
-		names[extra++] = PTS_COL_SET;
 	if (a->level_col)
 		names[extra++] = PTS_COL_LEVEL;
 	if (outfile_open(&u->of, a->out, !a->count_only && !a->text) < 0)
 		return -1;
 	u->open = 1;
-	if (!a->count_only && pts_writer_begin(&u->w, u->of.fp, u->of.name,
-	    u->run->dims, extra, names, a->sets == 1 ? count : 0, a->text) < 0)
+	if (!a->count_only && sets_writer_begin(&u->w, u->of.fp, u->of.name,
+	    u->run->dims, extra, names, a->sets, a->sets == 1 ? count : 0,
+	    a->text) < 0)
 		return -1;
 	return 0;
 }
@@ -150,10 +150,9 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 {
 	struct out *u = ctx;
 	double t0 = progress_now();
-	int rc = out_begin(u, total), sets = u->a->sets > 1;
-	int lcol = u->a->level_col;
+	int rc = out_begin(u, total), lcol = u->a->level_col;
 	unsigned dims = u->run->dims, ncol = dims + (pdf != NULL ? 1u : 0u) +
-	    (step != NULL ? 1u : 0u) + (sets ? 1u : 0u) + (lcol ? 1u : 0u);
+	    (step != NULL ? 1u : 0u) + (lcol ? 1u : 0u);
 
 	u->n = total;
 	if (u->collect) {
@@ -164,7 +163,7 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 		t0 += progress_now() - t1;
 	}
 	if (rc == 0 && ncol == dims)
-		rc = pts_writer_put_n(&u->w, p, k);
+		rc = sets_writer_put(&u->w, p, k);
 	else if (rc == 0 && k * ncol > u->reccap) {
 		free(u->rec);
 		u->reccap = k * ncol;
@@ -182,12 +181,10 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 				rec[c++] = pdf[i];
 			if (step != NULL)
 				rec[c++] = (double)(step[i] + 1);
-			if (sets)
-				rec[c++] = (double)u->set;
 			if (lcol)
 				rec[c++] = (double)level_at(u->run, p + dims * i);
 		}
-		rc = pts_writer_put_n(&u->w, u->rec, k);
+		rc = sets_writer_put(&u->w, u->rec, k);
 	}
 	u->run->tout += progress_now() - t0;
 	return rc;
@@ -473,7 +470,7 @@ static int write_sets(struct out *u)
 	for (uint64_t set = 0; set < a->sets; set++) {
 		uint64_t c;
 		u->collect = a->verbose && set == 0 && !a->count_only;
-		u->set = set;
+		u->w.set = set;
 		c = one_set(u, a->seed + set);
 		/* Every sample of set 0 noted. */
 		if (u->collect)
@@ -501,7 +498,7 @@ int api_sets_write(const struct api_sets *a, struct api_sets_run *run)
 	if (rc == 0 && frs_mask_note(mk) != NULL && run->note == NULL)
 		frs_warn("%s", frs_mask_note(mk));
 	t0 = progress_now();
-	if (rc == 0 && !a->count_only && pts_writer_end(&u.w) < 0)
+	if (rc == 0 && !a->count_only && sets_writer_end(&u.w) < 0)
 		rc = -1;
 	if (rc < 0 && u.open)
 		outfile_abort(&u.of);

@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -53,6 +54,40 @@ static int set_of(const struct frs_points *p, const char *path, int col,
 	return 0;
 }
 
+/* What a split by per does that the user may not expect: a file without
+ * a set column cut into blocks in file order (sets only if the file was
+ * written set after set: one sampler's single set comes out in strips),
+ * or a set column whose sets are not per points (they win). */
+static void warn_split(const char *path, size_t per, int column,
+    const struct pt_range *r, size_t k)
+{
+	size_t lo = SIZE_MAX, hi = 0;
+
+	if (per == 0)
+		return;
+	if (!column) {
+		if (k > 1)
+			frs_warn("%s: no set column: cut in file order into %zu "
+			    "sets of %zu points, which are sets of their own only "
+			    "if the file holds such sets one after another (a set "
+			    "column marks them, as frs-sample, hsw-sample and "
+			    "ref-sample write it for several sets)", path, k, per);
+		return;
+	}
+	for (size_t i = 0; i < k; i++) {
+		lo = r[i].n < lo ? r[i].n : lo;
+		hi = r[i].n > hi ? r[i].n : hi;
+	}
+	if (k == 0 || (lo == per && hi == per))
+		return;
+	if (lo == hi)
+		frs_warn("%s: the sets of its set column have %zu points, not "
+		    "%zu; they are taken as they are", path, lo, per);
+	else
+		frs_warn("%s: the sets of its set column have %zu to %zu points, "
+		    "not %zu; they are taken as they are", path, lo, hi, per);
+}
+
 int pt_split(const struct frs_points *p, const char *path, size_t per,
     struct pt_range **out, size_t *k)
 {
@@ -63,7 +98,8 @@ int pt_split(const struct frs_points *p, const char *path, size_t per,
 	*out = NULL, *k = 0;
 	if (col < 0 && per && p->n % per != 0)
 		return frs_fail("%s: %zu points are not a whole number of sets "
-		    "of %zu", path, p->n, per);
+		    "of %zu, and there is no set column to split them by", path,
+		    p->n, per);
 	for (size_t i = 0; i < p->n;) {
 		struct pt_range t = { i, 0, n };
 		if (col >= 0) {
@@ -87,12 +123,6 @@ int pt_split(const struct frs_points *p, const char *path, size_t per,
 				i++;
 			}
 			t.n = i - t.first;
-			if (per && t.n != per) {
-				frs_fail("%s: set %llu of the file's set column "
-				    "has %zu points, not %zu", path,
-				    (unsigned long long)id, t.n, per);
-				goto fail;
-			}
 		} else {
 			t.n = per ? per : p->n;
 			i += t.n;
@@ -109,6 +139,7 @@ int pt_split(const struct frs_points *p, const char *path, size_t per,
 		r[n++] = t;
 	}
 	*out = r, *k = n;
+	warn_split(path, per, col >= 0, r, n);
 	return 0;
 fail:
 	free(r);

@@ -22,9 +22,11 @@ struct pt_range {
  * The sets of p, read from path: with a column named "set" (pts(5)), the
  * runs of equal values (whole numbers from 0, never decreasing; an empty
  * set simply has no points); else with per > 0 blocks of per records
- * (the count must be a multiple); else the whole file.  With both a set
- * column and per, every set must have per points.  *r (malloc'd, *k
- * ranges; p->n = 0 gives none) or -1 with a message naming path.
+ * (the count must be a multiple); else the whole file.  With per, a
+ * warning naming path when the file is cut into more than one block, or
+ * when its set column has sets of another size than per (the column's
+ * sets are kept).  *r (malloc'd, *k ranges; p->n = 0 gives none) or -1
+ * with a message naming path.
  */
 int pt_split(const struct frs_points *p, const char *path, size_t per,
     struct pt_range **r, size_t *k);

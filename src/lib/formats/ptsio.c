@@ -705,30 +705,6 @@ int pts_writer_put(struct pts_writer *w, const double *rec)
 	return 0;
 }
 
-int pts_writer_put_cols(struct pts_writer *w, const double *x,
-    const struct pts_col *extra, size_t n)
-{
-	double buf[4096];
-	unsigned ncol = w->dims + w->extra;
-	size_t per = sizeof buf / sizeof *buf / ncol;
-
-	if (w->extra == 0)
-		return pts_writer_put_n(w, x, n);
-	for (size_t b = 0; b < n; b += per) {
-		size_t m = n - b < per ? n - b : per;
-		for (size_t i = 0; i < m; i++) {
-			double *r = buf + i * ncol;
-			memcpy(r, x + (b + i) * w->dims, w->dims * sizeof *r);
-			for (unsigned j = 0; j < w->extra; j++)
-				r[w->dims + j] = extra[j].v != NULL ?
-				    extra[j].v[b + i] : extra[j].c;
-		}
-		if (pts_writer_put_n(w, buf, m) < 0)
-			return -1;
-	}
-	return 0;
-}
-
 int pts_writer_end(struct pts_writer *w)
 {
 	if (w->count != 0 && w->written != w->count)

@@ -107,16 +107,6 @@ int pts_writer_put(struct pts_writer *w, const double *rec);
 /* n records at once (n * (dims + extra) values): one check pass and one
  * write; the fast path of the samplers. */
 int pts_writer_put_n(struct pts_writer *w, const double *recs, size_t n);
-/* An extra column for pts_writer_put_cols: v[0 .. n - 1], or where v is
- * NULL the value c in every record (a set's number). */
-struct pts_col {
-	const double *v;
-	double c;
-};
-/* n points of dims coordinates each (packed) and w->extra columns: the
- * records put together here, in pieces, for pts_writer_put_n. */
-int pts_writer_put_cols(struct pts_writer *w, const double *x,
-    const struct pts_col *extra, size_t n);
 int pts_writer_end(struct pts_writer *w);
 
 /* Write a whole set (p->names names its extra columns). */
