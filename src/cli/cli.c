@@ -431,6 +431,15 @@ double cli_double(const char *opt, const char *s, double min, double max)
 	return v;
 }
 
+double cli_double_above(const char *opt, const char *s, double min,
+    double max)
+{
+	double v;
+	if (parse_double_above(opt, s, min, max, &v) < 0)
+		cli_usage_error("%s", frs_errmsg());
+	return v;
+}
+
 void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
     uint32_t *h)
 {

@@ -165,6 +165,9 @@ void cli_out_check(const char *path, int binary);
 long long cli_ll(const char *opt, const char *s, long long min, long long max);
 uint64_t cli_u64(const char *opt, const char *s, uint64_t min, uint64_t max);
 double cli_double(const char *opt, const char *s, double min, double max);
+/* The same in (min, max]: for values that must be above min. */
+double cli_double_above(const char *opt, const char *s, double min,
+    double max);
 void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
     uint32_t *h);
 /* "N", "WxH" or "WxHxD": the number of sizes given; "N" fills all three,
