@@ -168,8 +168,8 @@ expect_fail "a count that would take hours" 1 "use a larger matrix" - \
     frs-sample -m "$M" -i const -s 1 -n 1099511627776 --count-only
 expect_fail "3-D samples past FRS_MAX_MEM" 1 "above the memory limit" "$T/o.pts" \
     env FRS_MAX_MEM=1G frs-sample -m "$M" -n 80000000 -o "$T/o.pts"
-expect_fail "ramp3 axis 1.5" 1 "axis" "$T/o.pts" frs-sample -m "$M" -i ramp3:axis=1.5 -n 10 -o "$T/o.pts"
-expect_fail "unknown volume parameter" 1 "unknown parameter" "$T/o.pts" frs-sample -m "$M" -i blob3:q=1 -n 10 -o "$T/o.pts"
+expect_fail "ramp3 axis 1.5" 2 "ramp3:axis=1.5: axis: 1.5 is not 0 (x), 1 (y) or 2 (z)" "$T/o.pts" frs-sample -m "$M" -i ramp3:axis=1.5 -n 10 -o "$T/o.pts"
+expect_fail "unknown volume parameter" 2 "unknown parameter" "$T/o.pts" frs-sample -m "$M" -i blob3:q=1 -n 10 -o "$T/o.pts"
 expect_fail "imap gen blob3 as PNG" 2 "volume" "$T/v.png" imap gen blob3 -o "$T/v.png"
 expect_fail "imap gen blob -s 4x4x4" 2 "volume size" "$T/v.png" imap gen blob -s 4x4x4 -o "$T/v.png"
 expect_fail "imap convert of a volume" 2 "not converted" "$T/v.png" imap convert "$T/b.frv" "$T/v.png"

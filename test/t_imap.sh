@@ -124,7 +124,7 @@ expect_fail "truncated PNG" 1 "cut.png: bad PNG" "$T/o3.exr" \
 head -c 2000 "$TD/sunset.exr" >"$T/cut.exr"
 expect_fail "truncated EXR" 1 "cut.exr" "$T/o4.png" \
     imap convert "$T/cut.exr" "$T/o4.png"
-expect_fail "unknown spec" 1 "unknown parameter 'radius'" "$T/o5.exr" \
+expect_fail "unknown spec" 2 "unknown parameter 'radius'" "$T/o5.exr" \
     imap gen blob:radius=3 -o "$T/o5.exr"
 expect_fail "unknown map name" 2 "not a procedural map" "$T/o6.exr" \
     imap gen blobby -o "$T/o6.exr"

@@ -347,7 +347,7 @@ expect_fail "--log without -i" 2 "need -i" "$T/o14.png" \
     pts-render --log "$T/X.txt" -o "$T/o14.png"
 expect_fail "both on standard input" 2 "standard input" "$T/o15.png" \
     pts-render -i - - -o "$T/o15.png"
-expect_fail "bad importance map" 1 "unknown parameter" "$T/o16.png" \
+expect_fail "bad importance map" 2 "unknown parameter" "$T/o16.png" \
     pts-render -i blob:radius=3 "$T/X.txt" -o "$T/o16.png"
 expect_fail "missing importance file" 1 "nothere.exr" "$T/o17.png" \
     pts-render -i "$T/nothere.exr" "$T/X.txt" -o "$T/o17.png"

@@ -216,6 +216,13 @@ noreturn void cli_die(const char *fmt, ...)
 
 noreturn void cli_die_lib(void)
 {
+	/* A procedural map spec that does not parse is a bad argument,
+	 * though only loading the map finds it: a usage error. */
+	if (frs_errkind() == FRS_ERRKIND_SPEC) {
+		outfile_cleanup_all();
+		reported = 1;
+		cli_usage_error("%s", frs_errmsg());
+	}
 	cli_die("%s", frs_errmsg());
 }
 

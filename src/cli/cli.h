@@ -151,7 +151,8 @@ noreturn void cli_usage_error(const char *fmt, ...) FRS_PRINTF(1, 2);
 int cli_choice(const char *opt, const char *s, const char *const *words);
 /* "prog: message", exit 1, removing unfinished output files. */
 noreturn void cli_die(const char *fmt, ...) FRS_PRINTF(1, 2);
-/* "prog: <library message>", exit 1. */
+/* "prog: <library message>", exit 1; exit 2, a usage error, when it is
+ * a procedural map spec that does not parse (an option's argument). */
 noreturn void cli_die_lib(void);
 void cli_note(const char *fmt, ...) FRS_PRINTF(1, 2);	/* unless -q */
 
