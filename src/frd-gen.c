@@ -340,16 +340,16 @@ int main(int argc, char **argv)
 			pr.dims = (unsigned)cli_ll("-k", optarg, 2, 3);
 			break;
 		case 'p':
-			pr.p = cli_double("-p", optarg, 0.0, 1.0);
-			if (pr.p <= 0.0)
-				cli_usage_error("-p: %s is outside (0, 1]", optarg);
+			pr.p = cli_double_above("-p", optarg, 0.0, 1.0);
 			mo.frd_only = "-p";
 			break;
 		case OPT_TOL:
-			pr.tol = cli_double("--tol", optarg, 0.0, 0.999999);
-			if (pr.tol <= 0.0)
-				cli_usage_error("--tol: must be above 0 (use "
-				    "--exact to keep every contribution)");
+			/* 0 would be --exact, which the hint names. */
+			if (parse_double_above("--tol", optarg, 0.0, 0.999999,
+			    &pr.tol) < 0)
+				cli_usage_error("%s%s", frs_errmsg(),
+				    strtod(optarg, NULL) <= 0.0 ? "; --exact "
+				    "keeps every contribution" : "");
 			mo.tol_set = 1;
 			mo.dbl_only = "--tol";
 			break;
@@ -404,9 +404,8 @@ int main(int argc, char **argv)
 			mo.vac = parse_choice("--method", optarg, "frd", "vac");
 			break;
 		case OPT_VAC_SIGMA:
-			mo.vac_sigma = cli_double("--vac-sigma", optarg, 0.0, 1e6);
-			if (mo.vac_sigma <= 0.0)
-				cli_usage_error("--vac-sigma: must be above 0");
+			mo.vac_sigma = cli_double_above("--vac-sigma", optarg,
+			    0.0, 1e6);
 			break;
 		case OPT_QUALITY:
 			qfile = optarg;

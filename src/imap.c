@@ -283,7 +283,7 @@ static int info_volume(const char *src, const char *name)
 static int cmd_info(int argc, char **argv)
 {
 	struct frs_imap m;
-	struct frs_imap_stats s;
+	struct frs_imap_stats src, s;
 	const char *name;
 
 	if (argc != 1)
@@ -293,14 +293,19 @@ static int cmd_info(int argc, char **argv)
 		return info_volume(argv[0], name);
 	map_size();
 	cli_options_done();
-	/* Statistics of the source as it is, negatives included. */
+	/* The statistics of the map as the programs use it: checked and
+	 * clamped as the warning says, then weighted (as convert does);
+	 * negatives and min_negative are those the clamping took away. */
 	if (imap_load_raw(argv[0], opt_w, opt_h, opt_flags, &m) < 0)
+		cli_die_lib();
+	imap_stats(&m, &src);
+	if (imap_validate(&m, name, opt_flags | IMAP_ALLOW_ZERO) < 0)
 		cli_die_lib();
 	if (opt_flags & IMAP_EQUIRECT)
 		imap_equirect(&m);
 	imap_stats(&m, &s);
-	if (imap_validate(&m, name, opt_flags | IMAP_ALLOW_ZERO) < 0)
-		cli_die_lib();
+	s.negatives = src.negatives;
+	s.min_negative = src.min_negative;
 	printf("source %s\nwidth %u\nheight %u\npixels %llu\n", name, m.w, m.h,
 	    (unsigned long long)s.count);
 	print_stats(&s);

@@ -123,10 +123,19 @@ fi
 expect_fail "size 0" 2 "-s" "$T/o.frd" frd-gen -s 0 -o "$T/o.frd"
 expect_fail "size 1" 2 "at least 2 cells" "$T/o.frd" frd-gen -s 1 -o "$T/o.frd"
 expect_fail "no size" 2 "-s SIZE is required" "$T/o.frd" frd-gen -o "$T/o.frd"
-expect_fail "p = 0" 2 "-p" "$T/o.frd" frd-gen -s 16 -p 0 -o "$T/o.frd"
+# One range for -p, 0 excluded, stated alike on either side of it.
+expect_fail "p = 0" 2 "-p: 0 is out of range (0, 1]" "$T/o.frd" \
+    frd-gen -s 16 -p 0 -o "$T/o.frd"
+expect_fail "p = 2" 2 "-p: 2 is out of range (0, 1]" "$T/o.frd" \
+    frd-gen -s 16 -p 2 -o "$T/o.frd"
+expect_fail "p = -1" 2 "-p: -1 is out of range (0, 1]" "$T/o.frd" \
+    frd-gen -s 16 -p -1 -o "$T/o.frd"
 expect_fail "p > 1" 2 "-p" "$T/o.frd" frd-gen -s 16 -p 1.5 -o "$T/o.frd"
 expect_fail "p = nan" 2 "not a finite number" "$T/o.frd" frd-gen -s 16 -p nan -o "$T/o.frd"
-expect_fail "tol = 0" 2 "--exact" "$T/o.frd" frd-gen -s 16 --tol 0 -o "$T/o.frd"
+expect_fail "tol = 0" 2 "--tol: 0 is out of range (0, 0.999999]; --exact" "$T/o.frd" \
+    frd-gen -s 16 --tol 0 -o "$T/o.frd"
+expect_fail "tol = 1" 2 "--tol: 1 is out of range (0, 0.999999]" "$T/o.frd" \
+    frd-gen -s 16 --tol 1 -o "$T/o.frd"
 expect_fail "k = 4" 2 "-k" "$T/o.frd" frd-gen -s 16 -k 4 -o "$T/o.frd"
 expect_fail "2^32 values" 2 "2^32" "$T/o.frd" frd-gen -s 65536 -o "$T/o.frd"
 expect_fail "memory that cannot be had" 1 "GiB, above the memory limit" "$T/o.frd" \
@@ -165,9 +174,9 @@ frd-gen --method frd -s 64 -o "$T/f.frd" && cmp -s "$T/f.frd" "$T/a.frd" &&
     ok "--method frd is the default" || nok "--method frd is the default"
 expect_fail "--method foo" 2 "--method: 'foo' is not frd or vac" "$T/o.frd" \
     frd-gen --method foo -s 16 -o "$T/o.frd"
-expect_fail "--vac-sigma 0" 2 "--vac-sigma: must be above 0" "$T/o.frd" \
+expect_fail "--vac-sigma 0" 2 "--vac-sigma: 0 is out of range (0, 1e+06]" "$T/o.frd" \
     frd-gen --method vac --vac-sigma 0 -s 16 -o "$T/o.frd"
-expect_fail "--vac-sigma -1" 2 "--vac-sigma" "$T/o.frd" \
+expect_fail "--vac-sigma -1" 2 "--vac-sigma: -1 is out of range (0, 1e+06]" "$T/o.frd" \
     frd-gen --method vac --vac-sigma -1 -s 16 -o "$T/o.frd"
 expect_fail "--vac-sigma nan" 2 "not a finite number" "$T/o.frd" \
     frd-gen --method vac --vac-sigma nan -s 16 -o "$T/o.frd"

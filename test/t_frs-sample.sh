@@ -2,6 +2,7 @@
 # frs-sample: output, determinism, options, hard cases and bad input.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/ptsutil.sh"
+TOP=$(cd "$(dirname "$0")/.." && pwd)
 
 # A small matrix keeps the tests fast; the default one is tried once.
 frd-gen -s 256 --tol 1e-2 -o "$T/m.frd"
@@ -62,11 +63,48 @@ frd-prep -a all "$M" -o "$T/m.frp"
 frs-sample -m "$T/m.frp" -i blob -n 3000 -T -o "$T/frp.txt"
 cmp -s "$T/frp.txt" "$T/j1.txt" && ok "a .frp gives the same points" ||
     nok "a .frp gives the same points"
+# A stale .frp beside the matrix (made from another) is ignored with a
+# warning: the run goes on with the matrix alone, as frs(7), frd(5) and
+# frs-sample(1) say; no manual calls it refused.
 frd-gen -s 256 --tol 1e-2 -S 9 -o "$T/m2.frd"
 cp "$T/m.frp" "$T/m2.frp"
-frs-sample -m "$T/m2.frd" -i blob -n 100 -o /dev/null 2>"$T/warn"
-grep -q 'stale' "$T/warn" && ok "a stale .frp beside the matrix is refused" ||
-    nok "a stale .frp beside the matrix is refused"
+mkdir "$T/alone" && cp "$T/m2.frd" "$T/alone/m2.frd"
+frs-sample -m "$T/alone/m2.frd" -i blob -n 100 -T -o "$T/alone.txt" 2>"$T/err"
+if frs-sample -m "$T/m2.frd" -i blob -n 100 -T -o "$T/stale.txt" 2>"$T/warn" &&
+    grep -qF "warning: $T/m2.frp is stale (made from another matrix than $T/m2.frd); ignored" \
+	"$T/warn" && cmp -s "$T/stale.txt" "$T/alone.txt"; then
+	ok "a stale .frp beside the matrix is ignored with a warning"
+else
+	nok "a stale .frp beside the matrix is ignored with a warning"
+	sed 's/^/# /' "$T/warn"
+fi
+# A matrix whose values are not a permutation is refused, naming the
+# first repeated value and where it repeats: element 1 made a copy of
+# element 0.
+L=$(od -A n -t u4 -j 28 -N 4 "$M" | tr -d ' ')
+v0=$(od -A n -t u4 -j $((32 + L)) -N 4 "$M" | tr -d ' ')
+cp "$M" "$T/dup.frd"
+dd if="$M" of="$T/dup.frd" bs=1 skip=$((32 + L)) seek=$((36 + L)) count=4 \
+    conv=notrunc 2>/dev/null
+expect_fail "a matrix that is not a permutation is refused" 1 \
+    "dup.frd: not a permutation: value $v0 repeats at (1, 0, 0)" "$T/dup.pts" \
+    frs-sample -m "$T/dup.frd" -i blob -n 100 -o "$T/dup.pts"
+# The manuals: none says a stale .frp is refused, or that the values go
+# unchecked.
+for pg in "$TOP"/man/man*/*.[0-9]; do
+	command -v mandoc >/dev/null || break
+	mandoc -Tascii "$pg" | col -b | tr '\n' ' ' | tr -s ' ' |
+	    grep -oiE 'stale[^.]*refused|readers? (does|do) not check[^.]*' |
+	    sed "s|^|${pg##*/}: |"
+done >"$T/says"
+if ! command -v mandoc >/dev/null; then
+	ok "# SKIP the manuals on .frp and permutations: no mandoc"
+elif [ ! -s "$T/says" ]; then
+	ok "no manual calls a stale .frp refused or a permutation unchecked"
+else
+	nok "no manual calls a stale .frp refused or a permutation unchecked"
+	sed 's/^/# /' "$T/says"
+fi
 
 # --sets M: set i is the set of -S S+i, each record followed by its set
 # (the column named set, pts(5) version 2); one header counts them all.

@@ -79,6 +79,22 @@ awk -v n="$n" 'BEGIN { exit !(n > 0.999 * 1073741824 && n < 1.001 * 1073741824) 
 frs-sample -m "$M" -i blob3 -n 5000 2>"$T/warn" >/dev/null
 grep -q 'repeat' "$T/warn" && ok "warning past the matrix's unique samples" ||
     nok "warning past the matrix's unique samples"
+# Plain tiles repeat the matrix only where the window is larger than it,
+# as in 2-D: a window of the matrix's size, wherever it lies, uses each
+# element once (issue 32: -s 16x16x16 -n 1000 --sigma 4 gave a 64^3
+# window of the shipped 64^3 matrix, at an offset, and warned).  The
+# window is the volume's side times n_s: 4 x 4 at sigma 4 (16^3, the
+# test matrix) and 5 x 4 (20^3), both below the unique samples.
+for a in "-m $M -s 4x4x4 -n 50" "-s 16x16x16 -n 1000"; do
+	frs-sample $a --sigma 4 -T -o "$T/tw.txt" 2>"$T/warn"
+	[ $? -eq 0 ] && [ ! -s "$T/warn" ] &&
+	    ok "no warning for a window the size of the matrix ($a)" ||
+	    nok "a window the size of the matrix ($a): $(cat "$T/warn")"
+done
+frs-sample -m "$M" -s 5x5x5 -n 30 --sigma 4 -T -o "$T/tw.txt" 2>"$T/warn" &&
+    grep -q '20x20x20' "$T/warn" &&
+    ok "plain tiles: a 20^3 window of a 16^3 matrix warns" ||
+    nok "plain tiles: a 20^3 window of a 16^3 matrix warns: $(cat "$T/warn")"
 
 frs-sample -m "$M" -i blob3 -n 300 --sets 3 --count-only -q >"$T/counts"
 [ "$(wc -l <"$T/counts")" = 3 ] && frs-sample -m "$M" -i blob3 -n 300 -S 2 --count-only -q |
@@ -152,8 +168,8 @@ expect_fail "a count that would take hours" 1 "use a larger matrix" - \
     frs-sample -m "$M" -i const -s 1 -n 1099511627776 --count-only
 expect_fail "3-D samples past FRS_MAX_MEM" 1 "above the memory limit" "$T/o.pts" \
     env FRS_MAX_MEM=1G frs-sample -m "$M" -n 80000000 -o "$T/o.pts"
-expect_fail "ramp3 axis 1.5" 1 "axis" "$T/o.pts" frs-sample -m "$M" -i ramp3:axis=1.5 -n 10 -o "$T/o.pts"
-expect_fail "unknown volume parameter" 1 "unknown parameter" "$T/o.pts" frs-sample -m "$M" -i blob3:q=1 -n 10 -o "$T/o.pts"
+expect_fail "ramp3 axis 1.5" 2 "ramp3:axis=1.5: axis: 1.5 is not 0 (x), 1 (y) or 2 (z)" "$T/o.pts" frs-sample -m "$M" -i ramp3:axis=1.5 -n 10 -o "$T/o.pts"
+expect_fail "unknown volume parameter" 2 "unknown parameter" "$T/o.pts" frs-sample -m "$M" -i blob3:q=1 -n 10 -o "$T/o.pts"
 expect_fail "imap gen blob3 as PNG" 2 "volume" "$T/v.png" imap gen blob3 -o "$T/v.png"
 expect_fail "imap gen blob -s 4x4x4" 2 "volume size" "$T/v.png" imap gen blob -s 4x4x4 -o "$T/v.png"
 expect_fail "imap convert of a volume" 2 "not converted" "$T/v.png" imap convert "$T/b.frv" "$T/v.png"

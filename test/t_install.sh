@@ -106,6 +106,11 @@ else
 	nok "pkg-config --modversion frs is frs_library_version()"
 	sed 's/^/# /' "$T/err" | head -n 5
 fi
+V=$(sed -n 's/^#define FRS_VERSION "\(.*\)"$/\1/p' "$TOP/src/lib/api/version.h")
+[ -n "$V" ] && [ "$(pc --modversion frs)" = "$V" ] &&
+    [ "$(pc --modversion frs-static)" = "$V" ] &&
+    ok "frs.pc and frs-static.pc: version.h's $V" ||
+    nok "frs.pc and frs-static.pc: $(pc --modversion frs), not version.h's ${V:-?}"
 # The header alone, as C with every warning and as C++.
 printf '#include <frs.h>\nint main(void) { return FRS_OK; }\n' >"$T/h.c"
 check "frs.h: C11 -Wall -Wextra -pedantic -Werror" cc -std=c11 -Wall -Wextra \

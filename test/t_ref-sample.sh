@@ -130,6 +130,40 @@ rm -f "$T/o.pts"
 expect_fail "--sets: a short dart set is an error" 1 "placed only" "$T/o.pts" \
     ref-sample -k dart -n 5000 --max-failures 1 --sets 2 -o "$T/o.pts"
 
+# A long dart run says so first, whether or not standard error is a
+# terminal (here a file): a note with the time it will take, from the
+# count (and the sets), not with -q, none for a short run.
+# note_of CMD...: CMD's standard error in $T/note, CMD stopped once the
+# note is there (or after 20 s); its output must not be left.
+note_of() {
+	"$@" 2>"$T/note" &
+	pid=$!
+	i=0
+	while [ $i -lt 200 ] && ! grep -q 'take about' "$T/note" &&
+	    kill -0 $pid 2>/dev/null; do
+		sleep 0.1
+		i=$((i + 1))
+	done
+	kill $pid 2>/dev/null
+	wait $pid 2>/dev/null
+}
+for a in "-k dart -n 6000000" "-k dart -n 1000000 --sets 10" \
+    "-d 3 -k dart -n 2000000" "-k relaxed-dart -n 4000000"; do
+	# shellcheck disable=SC2086
+	note_of ref-sample $a -o "$T/long.pts"
+	if grep -qE '^ref-sample: [a-z-]+: [0-9]+ points( in [0-9]+ sets)? take about [0-9]+ (seconds|minutes|hours)' \
+	    "$T/note" && [ ! -e "$T/long.pts" ]; then
+		ok "ref-sample $a: a note of the time first ($(cat "$T/note"))"
+	else
+		nok "ref-sample $a: no note of the time: $(cat "$T/note")"
+	fi
+done
+note_of ref-sample -q -k dart -n 6000000 -o "$T/long.pts"
+[ ! -s "$T/note" ] && ok "-q: no note of the time" ||
+    nok "-q: a note of the time: $(cat "$T/note")"
+ref-sample -k dart -n 100000 -o "$T/short.pts" 2>"$T/note" && [ ! -s "$T/note" ] &&
+    ok "a short dart run: no note" || nok "a short dart run: $(cat "$T/note")"
+
 # Relaxed dart throwing by an importance map.
 writes_points "-k relaxed-dart -i blob: 500 points" 500 "$T/rd.pts" \
     ref-sample -k relaxed-dart -n 500 -i blob -s 64x64 -q -o "$T/rd.pts"

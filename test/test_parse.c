@@ -61,6 +61,28 @@ static void doubles(void **state)
 	assert_true(d > 0.0);
 }
 
+/* (min, max]: min itself is out, and the range reads the same on
+ * either side. */
+static void doubles_above(void **state)
+{
+	double d;
+	(void)state;
+
+	assert_int_equal(parse_double_above("-p", "1", 0, 1, &d), 0);
+	assert_true(d == 1.0);
+	assert_int_equal(parse_double_above("-p", "1e-300", 0, 1, &d), 0);
+	assert_true(d == 1e-300);
+	assert_int_equal(parse_double_above("-p", "0", 0, 1, &d), -1);
+	assert_err_has("-p: 0 is out of range (0, 1]");
+	assert_int_equal(parse_double_above("-p", "-0", 0, 1, &d), -1);
+	assert_int_equal(parse_double_above("-p", "2", 0, 1, &d), -1);
+	assert_err_has("-p: 2 is out of range (0, 1]");
+	assert_int_equal(parse_double_above("-p", "nan", 0, 1, &d), -1);
+	assert_err_has("-p", "not a finite number");
+	assert_int_equal(parse_double_above("-p", "x", 0, 1, &d), -1);
+	assert_err_has("-p: 'x' is not a number");
+}
+
 static void sizes(void **state)
 {
 	uint32_t w, h;
@@ -83,4 +105,5 @@ static void sizes(void **state)
 TU_MAIN(NULL, NULL,
 	cmocka_unit_test(ints),
 	cmocka_unit_test(doubles),
+	cmocka_unit_test(doubles_above),
 	cmocka_unit_test(sizes))

@@ -315,41 +315,52 @@ static void alloc_limits(void **state)
 	assert_near(raster_default_radius(1), 0.7, 1e-15);
 }
 
-/* raster_spacing: a regular grid of spacing g pixels gives radius g / 3
- * inside (edges too: the density counts only cells in the picture),
- * the default radius where sparse, the floor where denser than that. */
+/* raster_spacing, by its definition (raster.h) worked out by hand on a
+ * grid of points at the odd pixels of a 1024x512 picture (R = 3): the
+ * squares around an odd pixel reach 16 points between 7 pixels across
+ * (3 x 3 points) and 9 (5 x 5), at 49 + 7/16 * 32 = 63 square pixels,
+ * so s = sqrt(63/16) and r = s/3 + 1/2; around the corner pixel (0, 0),
+ * clipped, between 7 x 7 (9 points) and 8 x 8 (16), at 64, s = 2; far
+ * from every point r = R; a pile is measured in the pixel it covers and
+ * leaves the grid 8 pixels away as it was. */
 static void spacing_radius(void **state)
 {
 	const uint32_t w = 1024, h = 512;
 	struct raster_spacing sp;
-	double *x;
+	double *x, grid = sqrt(63.0 / 16.0) / 3.0 + 0.5;
 	size_t n = 0;
 	(void)state;
 
-	/* 2-pixel grid over the left half, 3 points on the right half. */
-	x = malloc(sizeof *x * 2 * (256 * 256 + 3));
+	/* A 2-pixel grid over the left half, 3 points on the right half,
+	 * and room for a pile of 1000. */
+	x = malloc(sizeof *x * 2 * (256 * 256 + 3 + 1000));
 	assert_non_null(x);
 	for (uint32_t j = 0; j < 256; j++)
 		for (uint32_t i = 0; i < 256; i++, n++) {
-			x[2 * n] = (2.0 * i + 1.0) / w;
-			x[2 * n + 1] = (2.0 * j + 1.0) / h;
+			x[2 * n] = (2.0 * i + 1.5) / w;
+			x[2 * n + 1] = (2.0 * j + 1.5) / h;
 		}
 	for (int k = 0; k < 3; k++, n++) {
 		x[2 * n] = 0.7 + 0.1 * k;
 		x[2 * n + 1] = 0.5;
 	}
 	assert_int_equal(raster_spacing_init(&sp, x, n, 2, 0, 1, w, h), 0);
-	assert_near(sp.cell, 12.0, 1e-15);
-	assert_near(raster_spacing_radius(&sp, 256.5, 256.5), 2.0 / 3.0, 1e-12);
-	assert_near(raster_spacing_radius(&sp, 0.5, 0.5), 2.0 / 3.0, 1e-12);
+	assert_near(raster_spacing_radius(&sp, 257.5, 257.5), grid, 1e-12);
+	assert_near(raster_spacing_radius(&sp, 0.5, 0.5), 2.0 / 3.0 + 0.5,
+	    1e-12);
 	assert_near(raster_spacing_radius(&sp, 900.0, 256.0), 3.0, 1e-15);
 	raster_spacing_free(&sp);
-	/* Half of them piled on one column: the floor. */
-	for (size_t k = 0; k < n; k++)
-		x[2 * k] = 0.5;
-	assert_int_equal(raster_spacing_init(&sp, x, n / 2, 2, 0, 1, w, h), 0);
-	assert_near(raster_spacing_radius(&sp, 512.0, 64.0),
-	    RASTER_SPACING_MIN, 1e-15);
+	/* The pile on pixel (101, 101): 1001 points in it, so there the
+	 * square is that pixel alone. */
+	for (int k = 0; k < 1000; k++, n++) {
+		x[2 * n] = 101.5 / w;
+		x[2 * n + 1] = 101.5 / h;
+	}
+	assert_int_equal(raster_spacing_init(&sp, x, n, 2, 0, 1, w, h), 0);
+	assert_near(raster_spacing_radius(&sp, 101.5, 101.5),
+	    1.0 / (3.0 * sqrt(1001.0)) + 0.5, 1e-12);
+	assert_near(raster_spacing_radius(&sp, 109.5, 101.5), grid, 1e-12);
+	assert_near(raster_spacing_radius(&sp, 101.5, 93.5), grid, 1e-12);
 	raster_spacing_free(&sp);
 	free(x);
 }

@@ -216,6 +216,13 @@ noreturn void cli_die(const char *fmt, ...)
 
 noreturn void cli_die_lib(void)
 {
+	/* A procedural map spec that does not parse is a bad argument,
+	 * though only loading the map finds it: a usage error. */
+	if (frs_errkind() == FRS_ERRKIND_SPEC) {
+		outfile_cleanup_all();
+		reported = 1;
+		cli_usage_error("%s", frs_errmsg());
+	}
 	cli_die("%s", frs_errmsg());
 }
 
@@ -427,6 +434,15 @@ double cli_double(const char *opt, const char *s, double min, double max)
 {
 	double v;
 	if (parse_double(opt, s, min, max, &v) < 0)
+		cli_usage_error("%s", frs_errmsg());
+	return v;
+}
+
+double cli_double_above(const char *opt, const char *s, double min,
+    double max)
+{
+	double v;
+	if (parse_double_above(opt, s, min, max, &v) < 0)
 		cli_usage_error("%s", frs_errmsg());
 	return v;
 }

@@ -153,7 +153,8 @@ noreturn void cli_usage_error(const char *fmt, ...) FRS_PRINTF(1, 2);
 int cli_choice(const char *opt, const char *s, const char *const *words);
 /* "prog: message", exit 1, removing unfinished output files. */
 noreturn void cli_die(const char *fmt, ...) FRS_PRINTF(1, 2);
-/* "prog: <library message>", exit 1. */
+/* "prog: <library message>", exit 1; exit 2, a usage error, when it is
+ * a procedural map spec that does not parse (an option's argument). */
 noreturn void cli_die_lib(void);
 void cli_note(const char *fmt, ...) FRS_PRINTF(1, 2);	/* unless -q */
 
@@ -167,6 +168,9 @@ void cli_out_check(const char *path, int binary);
 long long cli_ll(const char *opt, const char *s, long long min, long long max);
 uint64_t cli_u64(const char *opt, const char *s, uint64_t min, uint64_t max);
 double cli_double(const char *opt, const char *s, double min, double max);
+/* The same in (min, max]: for values that must be above min. */
+double cli_double_above(const char *opt, const char *s, double min,
+    double max);
 void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
     uint32_t *h);
 /* "N", "WxH" or "WxHxD": the number of sizes given; "N" fills all three,

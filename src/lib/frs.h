@@ -42,7 +42,8 @@ typedef struct frs_error {
 
 /* "FRS_E_ARG" and so on; thread-safe. */
 const char *frs_code_name(int code);
-/* "0.4.0"; thread-safe. */
+/* The release, "major.minor.patch", as every program's --version
+ * prints it; thread-safe. */
 const char *frs_library_version(void);
 
 /* ---- progress (since 1.2) ---------------------------------------------- */

@@ -274,10 +274,10 @@ double raster_default_radius(uint32_t w)
 
 /* ---- radii from the local spacing ---------------------------------- */
 
-/* Cell index of pixel coordinate v on a side of n cells. */
-static uint32_t cell_of(double v, double cell, uint32_t n)
+/* The pixel of coordinate v on a side of n pixels, clamped. */
+static uint32_t pixel_of(double v, uint32_t n)
 {
-	double c = floor(v / cell);
+	double c = floor(v);
 
 	return !(c >= 0.0) ? 0 : c >= (double)n ? n - 1 : (uint32_t)c;
 }
@@ -286,99 +286,136 @@ int raster_spacing_init(struct raster_spacing *s, const double *x,
     size_t n, size_t ncol, unsigned ax, unsigned ay, uint32_t w,
     uint32_t h)
 {
-	uint64_t *count;
-	size_t cells;
+	size_t stride = (size_t)w + 1;
+	uint32_t *sum;
 
 	memset(s, 0, sizeof *s);
+	if ((uint64_t)n > UINT32_MAX)
+		return frs_fail("dot radii: %llu points, more than %lu",
+		    (unsigned long long)n, (unsigned long)UINT32_MAX);
+	sum = mem_calloc("dot radii", (uint64_t)stride * ((uint64_t)h + 1),
+	    sizeof *sum);
+	if (sum == NULL)
+		return -1;
+	/* Counts per pixel at (i + 1, j + 1), then summed over rows and
+	 * columns: sum[j][i] counts the points in pixels < i across and
+	 * < j down. */
+	for (size_t k = 0; k < n; k++) {
+		const double *p = x + k * ncol;
+		uint32_t i = pixel_of(p[ax] * w, w), j = pixel_of(p[ay] * h, h);
+
+		sum[(j + 1) * stride + i + 1]++;
+	}
+	for (size_t j = 1; j <= h; j++)
+		for (size_t i = 1; i <= w; i++)
+			sum[j * stride + i] += sum[j * stride + i - 1] +
+			    sum[(j - 1) * stride + i] -
+			    sum[(j - 1) * stride + i - 1];
 	s->w = w;
 	s->h = h;
 	s->rmax = raster_default_radius(w);
-	s->cell = RASTER_SPACING_CELL * s->rmax;
-	s->gw = (uint32_t)ceil((double)w / s->cell);
-	s->gh = (uint32_t)ceil((double)h / s->cell);
-	s->gw = s->gw < 1 ? 1 : s->gw;
-	s->gh = s->gh < 1 ? 1 : s->gh;
-	cells = (size_t)s->gw * s->gh;
-	if ((count = mem_calloc("dot radii", cells, sizeof *count)) == NULL)
-		return -1;
-	if ((s->rho = mem_calloc("dot radii", cells, sizeof *s->rho)) == NULL) {
-		free(count);
-		return -1;
-	}
-	for (size_t k = 0; k < n; k++) {
-		const double *p = x + k * ncol;
-		uint32_t i = cell_of(p[ax] * w, s->cell, s->gw);
-		uint32_t j = cell_of(p[ay] * h, s->cell, s->gh);
-		count[(size_t)j * s->gw + i]++;
-	}
-	for (uint32_t j = 0; j < s->gh; j++)
-		for (uint32_t i = 0; i < s->gw; i++) {
-			uint64_t m = 0;
-			double area = 0.0;
-
-			for (uint32_t b = j > 0 ? j - 1 : 0;
-			    b <= j + 1 && b < s->gh; b++) {
-				double ch = fmin(s->cell, (double)h -
-				    b * s->cell);
-				for (uint32_t a = i > 0 ? i - 1 : 0;
-				    a <= i + 1 && a < s->gw; a++) {
-					m += count[(size_t)b * s->gw + a];
-					area += ch * fmin(s->cell, (double)w -
-					    a * s->cell);
-				}
-			}
-			s->rho[(size_t)j * s->gw + i] = area > 0.0 ?
-			    (double)m / area : 0.0;
-		}
-	free(count);
+	s->sum = sum;
 	return 0;
 }
 
-/* Position between cell centres: the lower cell and the weight of the
- * upper one, clamped to the outer centres. */
-static void between(double v, double cell, uint32_t n, uint32_t *lo,
-    double *t)
-{
-	double u = v / cell - 0.5;
+/* The square of pixels b around pixel (i, j) each way, clipped. */
+struct box {
+	uint32_t x0, y0, x1, y1;	/* pixel corners, x1 and y1 past */
+};
 
-	if (!(u > 0.0)) {
-		*lo = 0;
-		*t = 0.0;
-	} else if (u >= (double)(n - 1)) {
-		*lo = n - 1;
-		*t = 0.0;
-	} else {
-		*lo = (uint32_t)u;
-		*t = u - (double)*lo;
+static struct box box_around(const struct raster_spacing *s, uint32_t i,
+    uint32_t j, uint32_t b)
+{
+	struct box q;
+
+	q.x0 = i > b ? i - b : 0;
+	q.y0 = j > b ? j - b : 0;
+	q.x1 = s->w - i > b ? i + b + 1 : s->w;
+	q.y1 = s->h - j > b ? j + b + 1 : s->h;
+	return q;
+}
+
+static uint32_t box_count(const struct raster_spacing *s, struct box q)
+{
+	size_t stride = (size_t)s->w + 1;
+	const uint32_t *t = s->sum;
+
+	return t[q.y1 * stride + q.x1] - t[q.y0 * stride + q.x1] -
+	    t[q.y1 * stride + q.x0] + t[q.y0 * stride + q.x0];
+}
+
+static double box_area(struct box q)
+{
+	return (double)(q.x1 - q.x0) * (double)(q.y1 - q.y0);
+}
+
+static int box_whole(const struct raster_spacing *s, struct box q)
+{
+	return q.x0 == 0 && q.y0 == 0 && q.x1 == s->w && q.y1 == s->h;
+}
+
+/* Points per square pixel around pixel (i, j): see raster.h. */
+static double spacing_rho(const struct raster_spacing *s, uint32_t i,
+    uint32_t j)
+{
+	/* The spacing at which the radius reaches R: fewer than the count
+	 * in an area of count * sparse^2 means a dot of R. */
+	double sparse = (s->rmax - RASTER_SPACING_MIN) /
+	    RASTER_SPACING_FRACTION;
+	double enough = RASTER_SPACING_COUNT * sparse * sparse;
+	double c0 = 0.0, a0 = 0.0, c1, a1;
+	uint32_t lo = 0, hi = 0, top = s->w > s->h ? s->w : s->h;
+	struct box q = box_around(s, i, j, 0);
+
+	/* Grow until the square holds the count or is large enough to say
+	 * the points are sparse; then the smallest that holds it. */
+	while (box_count(s, q) < RASTER_SPACING_COUNT) {
+		if (box_whole(s, q) || box_area(q) >= enough || hi >= top)
+			return box_count(s, q) / box_area(q);
+		lo = hi + 1;
+		hi = 2 * hi + 1;
+		q = box_around(s, i, j, hi);
 	}
+	while (lo < hi) {
+		uint32_t mid = lo + (hi - lo) / 2;
+
+		if (box_count(s, box_around(s, i, j, mid)) >=
+		    RASTER_SPACING_COUNT)
+			hi = mid;
+		else
+			lo = mid + 1;
+	}
+	q = box_around(s, i, j, hi);
+	c1 = box_count(s, q);
+	a1 = box_area(q);
+	if (hi > 0) {
+		q = box_around(s, i, j, hi - 1);
+		c0 = box_count(s, q);
+		a0 = box_area(q);
+	}
+	/* The area at which the count reaches RASTER_SPACING_COUNT,
+	 * linear between the two squares: a pile in the larger one counts
+	 * as no more than that, so it does not spill onto its neighbours. */
+	return RASTER_SPACING_COUNT / (a0 + (RASTER_SPACING_COUNT - c0) /
+	    (c1 - c0) * (a1 - a0));
 }
 
 double raster_spacing_radius(const struct raster_spacing *s, double px,
     double py)
 {
-	uint32_t i, j, i1, j1;
-	double tx, ty, rho, rad;
-	const double *g = s->rho;
+	double rho = spacing_rho(s, pixel_of(px, s->w), pixel_of(py, s->h));
+	double rad;
 
-	between(px, s->cell, s->gw, &i, &tx);
-	between(py, s->cell, s->gh, &j, &ty);
-	i1 = i + 1 < s->gw ? i + 1 : i;
-	j1 = j + 1 < s->gh ? j + 1 : j;
-	rho = (1.0 - ty) * ((1.0 - tx) * g[(size_t)j * s->gw + i] +
-	    tx * g[(size_t)j * s->gw + i1]) +
-	    ty * ((1.0 - tx) * g[(size_t)j1 * s->gw + i] +
-	    tx * g[(size_t)j1 * s->gw + i1]);
 	if (!(rho > 0.0))
 		return s->rmax;
-	rad = RASTER_SPACING_FRACTION / sqrt(rho);
-	return rad < RASTER_SPACING_MIN ? RASTER_SPACING_MIN :
-	    rad > s->rmax ? s->rmax : rad;
+	rad = RASTER_SPACING_FRACTION / sqrt(rho) + RASTER_SPACING_MIN;
+	return rad > s->rmax ? s->rmax : rad;
 }
 
 void raster_spacing_free(struct raster_spacing *s)
 {
-	free(s->rho);
-	s->rho = NULL;
+	free(s->sum);
+	s->sum = NULL;
 }
 
 void raster_ramp(uint64_t k, uint64_t n, uint8_t rgb[3])

@@ -70,35 +70,43 @@ double raster_default_radius(uint32_t w);
 /*
  * Dot radii that follow the local spacing of a point set, so that dots
  * shrink where the points are dense instead of merging into a solid
- * blob (pts-render without -r).  With R = raster_default_radius(w), the
- * picture is cut into square cells of RASTER_SPACING_CELL * R pixels
- * (the last row and column may be narrower).  The density of a cell,
- * points per square pixel, is the count of the 3 x 3 cells around it
- * (those inside the picture) over their area; the density rho at a
- * point is the bilinear interpolation between the densities of the
- * cells' centres (clamped at the edges), the local spacing is
- * s = 1 / sqrt(rho), and the radius is
+ * blob (pts-render without -r), while denser still looks darker.
  *
- *     clamp(RASTER_SPACING_FRACTION * s, RASTER_SPACING_MIN, R)
+ * The density rho at a point, points per square pixel, is that of its
+ * nearest points: the squares of pixels centred on its pixel, 1, 3, 5,
+ * ... pixels across and clipped to the picture, grow until one holds at
+ * least RASTER_SPACING_COUNT points, and rho is that count over the
+ * area at which the squares reach it, linear in the count between that
+ * square and the one before (the whole square when it is the first).
+ * So it is local wherever the points are dense, and a pile of points
+ * counts as no more than the count for the points around it.  Where no
+ * square up to the area of that count at the spacing that makes a dot
+ * of R holds that many, the points are sparse: rho is the count in that
+ * square over its area.  The local spacing is
+ * s = 1 / sqrt(rho), and the radius, with R = raster_default_radius(w),
  *
- * (R where rho is 0).  Dots of radius s / 3 cover about pi / 9, 35 %, of
- * the area wherever the spacing is below 3 R; sparser points keep R.
+ *     min(R, RASTER_SPACING_FRACTION * s + RASTER_SPACING_MIN)
+ *
+ * (R where rho is 0).  The dots then cover pi (1/3 + 1/(2 s))^2 of the
+ * area, which grows as the spacing shrinks: about 1.1 at a spacing of
+ * 2 pixels and 2.2 at 1 pixel, dark, but their arrangement shows where
+ * they lie several pixels apart.
  */
-#define RASTER_SPACING_CELL 4.0
+#define RASTER_SPACING_COUNT 16
 #define RASTER_SPACING_FRACTION (1.0 / 3.0)
-#define RASTER_SPACING_MIN 0.25
+#define RASTER_SPACING_MIN 0.5
 
 struct raster_spacing {
 	uint32_t w, h;		/* the picture, pixels */
-	uint32_t gw, gh;	/* cells across and down */
-	double cell;		/* cell side, pixels */
 	double rmax;		/* R */
-	double *rho;		/* gw * gh densities, row-major */
+	uint32_t *sum;		/* (w + 1) * (h + 1) counts of the points
+				 * left of and above each pixel corner */
 };
 
-/* The densities of n points of ncol values each (x: n * ncol doubles),
+/* The counts of n points of ncol values each (x: n * ncol doubles),
  * coordinates ax (across) and ay (down) in [0,1), drawn on a w x h
- * picture.  -1 with the library's message when out of memory. */
+ * picture.  -1 with the library's message when out of memory or n is
+ * 2^32 or more. */
 int raster_spacing_init(struct raster_spacing *s, const double *x,
     size_t n, size_t ncol, unsigned ax, unsigned ay, uint32_t w,
     uint32_t h);

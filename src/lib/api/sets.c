@@ -281,7 +281,8 @@ static void warn3(const struct api_sets_run *r, int levels)
 		    "its patterns (it gives %.6g without repetition)",
 		    (unsigned long long)t->n, t->mw, t->mh, t->md, t->sigma,
 		    frs3_unique(t));
-	else if (!levels && t->tiles == FRS_TILES_PLAIN && frs3_tiles(t) > 1)
+	else if (!levels && t->tiles == FRS_TILES_PLAIN &&
+	    (t->sw > t->mw || t->sh > t->mh || t->sd > t->md))
 		frs_warn("plain tiles: the window of %llux%llux%llu repeats the "
 		    "%ux%ux%u matrix as it is", (unsigned long long)t->sw,
 		    (unsigned long long)t->sh, (unsigned long long)t->sd, t->mw,

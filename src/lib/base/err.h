@@ -32,10 +32,11 @@ void frs_clearerr(void);
  * ceiling (mem.c) then sets MEM, imap_validate MAP, the importers
  * (frdimport.c) SIZE for a count that is no square and RANKS for values
  * that are no permutation, where a program names its options that mend
- * them. */
+ * them, and the procedural specs (spec.c) SPEC for one that does not
+ * parse, which a program reports as a usage error. */
 enum {
 	FRS_ERRKIND_OTHER, FRS_ERRKIND_MEM, FRS_ERRKIND_MAP,
-	FRS_ERRKIND_SIZE, FRS_ERRKIND_RANKS
+	FRS_ERRKIND_SIZE, FRS_ERRKIND_RANKS, FRS_ERRKIND_SPEC
 };
 void frs_set_errkind(int kind);
 int frs_errkind(void);

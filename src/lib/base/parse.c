@@ -4,6 +4,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -75,6 +76,20 @@ int parse_double(const char *what, const char *s, double min, double max,
 		return frs_fail("%s: %s overflows", what, s);
 	if (v < min || v > max)
 		return frs_fail("%s: %s is out of range [%g, %g]", what, s,
+		    min, max);
+	*out = v;
+	return 0;
+}
+
+int parse_double_above(const char *what, const char *s, double min,
+    double max, double *out)
+{
+	double v;
+
+	if (parse_double(what, s, -DBL_MAX, DBL_MAX, &v) < 0)
+		return -1;
+	if (!(v > min && v <= max))
+		return frs_fail("%s: %s is out of range (%g, %g]", what, s,
 		    min, max);
 	*out = v;
 	return 0;

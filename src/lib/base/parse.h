@@ -16,6 +16,9 @@ int parse_u64(const char *what, const char *s, uint64_t min, uint64_t max,
 /* Finite doubles in [min, max]. */
 int parse_double(const char *what, const char *s, double min, double max,
     double *out);
+/* Finite doubles in (min, max]: min itself is out of range too. */
+int parse_double_above(const char *what, const char *s, double min,
+    double max, double *out);
 /* "N" (square) or "WxH", each side in [1, max]. */
 int parse_size(const char *what, const char *s, uint32_t max, uint32_t *w,
     uint32_t *h);

@@ -11,10 +11,10 @@
  * convert to double ourselves.  Why so cautious: the unpacking fast paths
  * of OpenEXRCore 3.1 go wrong for us.  Interleaved RGBA has been seen to
  * mis-order channels, and a half channel decoded to float while its
- * neighbours are skipped makes 3.1.5 write through the skipped channels'
- * NULL pointers (unpack_half_to_float_3chan_planar).  Without a type
- * change, and with fewer channels filled than the part has, the library
- * takes its generic unpacker.
+ * neighbours are skipped makes OpenEXRCore 3.1.5 write through the
+ * skipped channels' NULL pointers (unpack_half_to_float_3chan_planar).
+ * Without a type change, and with fewer channels filled than the part
+ * has, the library takes its generic unpacker.
  *
  * Writing builds the whole file in memory, because the library writes at
  * offsets (the chunk offset table last) and the output may be a pipe.

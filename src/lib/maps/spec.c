@@ -356,6 +356,11 @@ static int set_param(const struct spec *sp, const char *spec, char *item,
 	if (parse_double(sp->p[k].key, v, sp->p[k].min, sp->p[k].max,
 	    &val[k]) < 0)
 		return frs_fail_context(spec);
+	/* An axis is a whole number: caught here, with the other errors
+	 * of the spec, not by the evaluating threads. */
+	if (strcmp(sp->p[k].key, "axis") == 0 && val[k] != floor(val[k]))
+		return frs_fail("%s: axis: %s is not 0 (x), 1 (y) or 2 (z)",
+		    spec, v);
 	return 0;
 }
 
@@ -367,9 +372,12 @@ static int parse_spec(const struct family *f, const char *spec,
 	char *copy, *item, *save = NULL;
 	int pos = 0, rc = 0;
 
-	if (sp == NULL)
-		return frs_fail("%s: unknown %s '%.*s' (%s)", spec, f->what,
+	if (sp == NULL) {
+		frs_fail("%s: unknown %s '%.*s' (%s)", spec, f->what,
 		    (int)nlen, spec, f->names);
+		frs_set_errkind(FRS_ERRKIND_SPEC);
+		return -1;
+	}
 	for (int i = 0; i < MAXPARAM; i++)
 		val[i] = sp->p[i].def;
 	*out = sp;
@@ -384,6 +392,8 @@ static int parse_spec(const struct family *f, const char *spec,
 	if (rc == 0 && pos == 0)
 		rc = frs_fail("%s: empty parameter list", spec);
 	free(copy);
+	if (rc < 0)
+		frs_set_errkind(FRS_ERRKIND_SPEC);
 	return rc;
 }
 
