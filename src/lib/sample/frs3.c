@@ -92,13 +92,6 @@ double frs3_unique(const struct frs3_setup *s)
 	return (double)s->mw * s->mh * s->md / (s->sigma * s->sigma * s->sigma);
 }
 
-uint64_t frs3_tiles(const struct frs3_setup *s)
-{
-	return frs_tiles_axis(s->wx, s->sw, s->mw) *
-	    frs_tiles_axis(s->wy, s->sh, s->mh) *
-	    frs_tiles_axis(s->wz, s->sd, s->md);
-}
-
 uint32_t frs3_block(const struct frs3_setup *s)
 {
 	uint32_t m = min3(s->mw, s->mh, s->md);

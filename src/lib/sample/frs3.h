@@ -64,8 +64,6 @@ void frs3_level_setup(struct frs3_setup *s, const struct frs3_setup *s0,
     unsigned l, double max);
 /* Samples the matrix gives without repetition: S_M / sigma^3. */
 double frs3_unique(const struct frs3_setup *s);
-/* Matrix tiles the window touches. */
-uint64_t frs3_tiles(const struct frs3_setup *s);
 /* Block side of the sorted lists that fit this setup (and its tiling). */
 uint32_t frs3_block(const struct frs3_setup *s);
 
