@@ -176,7 +176,7 @@ expect_fail "--for with -a stack" 2 "--for needs" "$T/x.frp" \
 imap convert --equirect -s 64x32 sky "$T/sky-eq.exr"
 frd-prep --for 100,3000 -i sky --size-map 64x32 --equirect "$T/f.frd" >"$T/fe.tsv" &&
     frd-prep --for 100,3000 -i "$T/sky-eq.exr" "$T/f.frd" >"$T/fc.tsv" &&
-    cmp -s "$T/fe.tsv" "$T/fc.tsv" && [ "$(wc -l <"$T/fe.tsv")" = 3 ] &&
+    cmp -s "$T/fe.tsv" "$T/fc.tsv" && [ "$(wc -l <"$T/fe.tsv")" -ge 3 ] &&
     ok "--for --equirect --size-map: the table of the converted map" ||
     nok "--for --equirect: $(cat "$T/fe.tsv" "$T/fc.tsv" | tr '\n' ' ')"
 frd-prep -a sorted --for 3000 -i sky --size-map 64x32 --equirect "$T/f.frd" -o "$T/eq.frp" &&

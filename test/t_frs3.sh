@@ -91,7 +91,7 @@ for a in "-m $M -s 4x4x4 -n 50" "-s 16x16x16 -n 1000"; do
 	    ok "no warning for a window the size of the matrix ($a)" ||
 	    nok "a window the size of the matrix ($a): $(cat "$T/warn")"
 done
-frs-sample -m "$M" -s 5x5x5 -n 30 --sigma 4 -T -o "$T/tw.txt" 2>"$T/warn" &&
+frs-sample -m "$M" -s 5x5x5 -n 30 --sigma 4 --tiles plain -T -o "$T/tw.txt" 2>"$T/warn" &&
     grep -q '20x20x20' "$T/warn" &&
     ok "plain tiles: a 20^3 window of a 16^3 matrix warns" ||
     nok "plain tiles: a 20^3 window of a 16^3 matrix warns: $(cat "$T/warn")"
