@@ -35,13 +35,16 @@ echo "demo: Forced Random Sampling with the default matrix, rendered"
     -o "$out/sunset.pts"
 "$BIN/pts-render" -i "$out/sunset-importance.exr" --log -s 1024x512 \
     "$out/sunset.pts" -o "$out/sunset-samples.png"
-echo "demo: tiles on sunset.exr, plain (the thesis: a lattice in the dark) and shuffled"
-for t in plain shuffled; do
-	"$BIN/frs-sample" -q -i data/sunset.exr --equirect -n 10000 --tiles $t \
+echo "demo: sunset.exr before and after: the thesis's window (plain: a lattice"
+echo "demo: in the dark), shuffled tiles (white noise) and levels (the default)"
+for t in plain shuffled levels; do
+	"$BIN/frs-sample" -q -i data/sunset.exr --equirect -n 16384 --tiles $t \
 	    -o "$out/sunset-$t.pts"
-	"$BIN/pts-render" -s 1024x512 "$out/sunset-$t.pts" \
-	    -o "$out/sunset-tiles-$t.png"
+	"$BIN/pts-render" -i data/sunset.exr --equirect --log -s 1024x512 \
+	    "$out/sunset-$t.pts" -o "$out/sunset-tiles-$t.png"
 done
+"$BIN/frs-sample" -i data/sunset.exr --equirect -n 16384 -v -o /dev/null 2>&1 |
+    grep -e level | sed 's/^frs-sample:/demo:/'
 "$BIN/frs-sample" -i aniso -n 2048 -o "$out/aniso.pts"
 "$BIN/pts-render" -i aniso "$out/aniso.pts" -o "$out/aniso-samples.png"
 "$BIN/frs-sample" -i blob --progressive 256,1024,4096 -o "$out/progressive.pts"

@@ -1462,8 +1462,8 @@ static void test_sampler_errors(void **state)
 	    0, NULL, E));
 	/* Options. */
 	{
-		static const double sig[] = { 0.0, -1.0, 0.5, NAN, -INFINITY,
-		    INFINITY };
+		static const double sig[] = { -1.0, 0.5, NAN, -INFINITY,
+		    INFINITY, 1025.0 };
 		for (size_t i = 0; i < sizeof sig / sizeof sig[0]; i++) {
 			frs_options_init(&o);
 			o.sigma = sig[i];
@@ -1485,6 +1485,16 @@ static void test_sampler_errors(void **state)
 	frs_options_init(&o);
 	o.threads = -1;
 	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	frs_options_init(&o);
+	o.tiling = (enum frs_tiling_mode)3;
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	frs_options_init(&o);
+	o.level_blur = -1.0;
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	o.level_blur = 1e4 + 1;
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	o.level_blur = NAN;
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
 	/* The defaults, and a good call clears err. */
 	frs_options_init(&o);
 	assert_true(o.sigma == 8.0);
@@ -1492,6 +1502,9 @@ static void test_sampler_errors(void **state)
 	assert_int_equal(o.jitter, FRS_JIT_NONE);
 	assert_int_equal(o.rule, FRS_RULE_UNBIASED);
 	assert_int_equal(o.threads, 1);
+	assert_int_equal(o.tiling, FRS_TILING_LEVELS);
+	assert_int_equal(FRS_TILING_LEVELS, 0);
+	assert_true(o.level_blur == 0.0);
 	EXPECT(FRS_OK, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E) ==
 	    FRS_OK ? (frs_sampler_free(s), FRS_OK) : FRS_E_ARG);
 	frs_sampler_free(NULL);
@@ -2899,6 +2912,157 @@ static void test_exact3(void **state)
 	frs_mask_free(m3);
 }
 
+/* ---- the levels and the map helpers of API 2.0 ------------------------ */
+
+/* A zeroed struct frs_options is an initialised one: the same samples,
+ * bit for bit, on a map of several levels. */
+static void test_zeroed_options(void **state)
+{
+	struct frs_options z, d;
+	frs_sampler *a, *b;
+	struct drawn x, y;
+	uint64_t n = 20000;
+
+	(void)state;
+	memset(&z, 0, sizeof z);
+	frs_options_init(&d);
+	a = sampler_f64(mask, &blob, &z);
+	b = sampler_f64(mask, &blob, &d);
+	x = draw(a, &n, 1, 3, 1);
+	y = draw(b, &n, 1, 3, 1);
+	assert_int_equal(x.n, y.n);
+	assert_memory_equal(x.xy, y.xy, 2 * x.n * sizeof *x.xy);
+	assert_memory_equal(x.pdf, y.pdf, x.n * sizeof *x.pdf);
+	drawn_free(&x);
+	drawn_free(&y);
+	frs_sampler_free(a);
+	frs_sampler_free(b);
+}
+
+/* frs_sampler_levels: the levels frs-sample -v lists (level, n_s,
+ * window, offset, pixels, tau), their pixels all the map's pixels of
+ * non-zero importance, tau 4^l times level 0's (frs_sampler_info's);
+ * cap and count; one level with plain tiles, level 0's setup. */
+static void test_levels(void **state)
+{
+	const char *err = tu_path("lv.txt");
+	frs_sampler *s = sampler_f64(mask, &blob, NULL);
+	struct frs_level_info lv[FRS_LEVELS_MAX];
+	struct frs_info in;
+	struct frs_options o;
+	char line[1024];
+	unsigned n = 0, k = 0, c1 = 0;
+	uint64_t cells = 0;
+	FILE *fp;
+
+	(void)state;
+	assert_int_equal(frs_sampler_levels(s, 20000, 7, lv, FRS_LEVELS_MAX, &n,
+	    NULL), FRS_OK);
+	assert_int_equal(frs_sampler_info(s, 20000, 7, &in, NULL), FRS_OK);
+	assert_true(n >= 3);
+	prog("frs-sample -m %s -i blob -n 20000 -S 7 -v -o /dev/null 2>%s",
+	    MATRIX, err);
+	fp = fopen(err, "r");
+	assert_non_null(fp);
+	while (fgets(line, sizeof line, fp) != NULL) {
+		unsigned l, ns;
+		unsigned long long ww, wh, ox, oy, px;
+		double tau;
+		if (sscanf(line, "frs-sample:   level %u: n_s %u, window %llux%llu "
+		    "at (%llu, %llu), tau %lg, %llu pixels", &l, &ns, &ww, &wh,
+		    &ox, &oy, &tau, &px) != 8)
+			continue;
+		assert_true(k < n);
+		assert_int_equal(lv[k].level, l);
+		assert_int_equal(lv[k].ns, ns);
+		assert_int_equal(lv[k].window[0], ww);
+		assert_int_equal(lv[k].window[1], wh);
+		assert_int_equal(lv[k].offset[0], ox);
+		assert_int_equal(lv[k].offset[1], oy);
+		assert_int_equal(lv[k].cells, px);
+		assert_near(lv[k].tau, tau, 1e-8 * tau);
+		assert_true(lv[k].tau == ldexp(in.tau, 2 * (int)l));
+		assert_int_equal(lv[k].ns << l, in.ns);
+		assert_true(k == 0 || lv[k].level > lv[k - 1].level);
+		cells += lv[k].cells;
+		k++;
+	}
+	fclose(fp);
+	assert_int_equal(k, n);
+	for (size_t i = 0; i < (size_t)blob.w * blob.h; i++)
+		cells -= blob.v[i] > 0.0;
+	assert_true(cells == 0);
+	/* cap 1: one filled, the count still all; cap 0 with NULL */
+	memset(lv, 0, sizeof lv);
+	assert_int_equal(frs_sampler_levels(s, 20000, 7, lv, 1, &c1, NULL),
+	    FRS_OK);
+	assert_int_equal(c1, n);
+	assert_true(lv[0].ns > 0 && lv[1].ns == 0);
+	assert_int_equal(frs_sampler_levels(s, 20000, 7, NULL, 0, &c1, NULL),
+	    FRS_OK);
+	EXPECT(FRS_E_ARG, frs_sampler_levels(s, 20000, 7, NULL, 1, &c1, E));
+	EXPECT(FRS_E_ARG, frs_sampler_levels(s, 20000, 7, lv, 1, NULL, E));
+	EXPECT(FRS_E_ARG, frs_sampler_levels(NULL, 20000, 7, lv, 1, &c1, E));
+	EXPECT(FRS_E_ARG, frs_sampler_levels(s, 0, 7, lv, 1, &c1, E));
+	frs_sampler_free(s);
+	frs_options_init(&o);
+	o.tiling = FRS_TILING_PLAIN;
+	s = sampler_f64(mask, &blob, &o);
+	assert_int_equal(frs_sampler_levels(s, 20000, 7, lv, FRS_LEVELS_MAX, &n,
+	    NULL), FRS_OK);
+	assert_int_equal(n, 1);
+	assert_int_equal(lv[0].level, 0);
+	assert_int_equal(lv[0].ns, in.ns);
+	assert_int_equal(lv[0].window[0], in.window_w);
+	assert_true(lv[0].tau == in.tau);
+	frs_sampler_free(s);
+}
+
+/* frs_map_equirect: row j times the mean of sin over its band, in
+ * closed form ((cos t0 - cos t1) / (t1 - t0)); the float and double
+ * forms alike, stride kept; and frs-sample --equirect's samples are
+ * those of a sampler of the weighted map. */
+static void test_equirect(void **state)
+{
+	float f[3 * 5];
+	double d[3 * 4];
+	struct frs_imap m;
+	frs_sampler *s;
+	uint64_t n = 3000;
+
+	(void)state;
+	for (int i = 0; i < 15; i++)
+		f[i] = 2.0f;
+	for (int i = 0; i < 12; i++)
+		d[i] = 1.0;
+	frs_map_equirect(f, 4, 3, 5);
+	frs_map_equirect_f64(d, 4, 3, 0);
+	for (int j = 0; j < 3; j++) {
+		const double pi = 3.14159265358979323846;
+		double t0 = pi * j / 3, t1 = pi * (j + 1) / 3;
+		double w = (cos(t0) - cos(t1)) / (t1 - t0);
+		for (int i = 0; i < 4; i++) {
+			assert_near(d[j * 4 + i], w, 1e-15);
+			assert_near(f[j * 5 + i], 2.0 * w, 1e-6);
+		}
+		assert_true(f[j * 5 + 4] == 2.0f);	/* past the width */
+	}
+	assert_int_equal(imap_load("data/sunset.exr", 128, 64, 0, &m), 0);
+	frs_map_equirect_f64(m.v, m.w, m.h, 0);
+	s = sampler_f64(mask, &m, NULL);
+	prog("frs-sample -q -m %s -i data/sunset.exr -s 128x64 --equirect -n "
+	    "3000 -S 2 -o %s", MATRIX, tu_path("eq.pts"));
+	{
+		struct drawn dr = draw(s, &n, 1, 2, 0);
+		double *rec = records(&dr, 0, 0);
+		same_as_file(tu_path("eq.pts"), rec, dr.n, 0);
+		free(rec);
+		drawn_free(&dr);
+	}
+	frs_sampler_free(s);
+	imap_free(&m);
+}
+
 TU_MAIN(setup, teardown,
 	cmocka_unit_test(test_code_names),
 	cmocka_unit_test(test_const_map),
@@ -2913,6 +3077,9 @@ TU_MAIN(setup, teardown,
 	cmocka_unit_test(test_lists_grow),
 	cmocka_unit_test(test_count),
 	cmocka_unit_test(test_info),
+	cmocka_unit_test(test_zeroed_options),
+	cmocka_unit_test(test_levels),
+	cmocka_unit_test(test_equirect),
 	cmocka_unit_test(test_wrap),
 	cmocka_unit_test(test_prepared),
 	cmocka_unit_test(test_mask_errors),

@@ -146,7 +146,7 @@ enum frs_rule_mode {
 				   (each step of progressive sampling) */
 };
 /* How the window is laid over the mask (since 1.1; the multi-level
- * window and these values since 2.0).  0 is the default, so that a
+ * window and these values since 2.0).  0 is the default: since 2.0 a
  * zeroed struct frs_options is an initialised one. */
 enum frs_tiling_mode {
 	FRS_TILING_LEVELS = 0,	/* the multi-level window: elements whose
@@ -166,7 +166,7 @@ enum frs_tiling_mode {
 
 struct frs_options {
 	double sigma;			/* sparsity, 1 .. FRS_SIGMA_MAX,
-					   default 8 */
+					   default 8 (0: 8, since 2.0) */
 	enum frs_algorithm algorithm;	/* default FRS_ALG_SORTED */
 	enum frs_jitter_mode jitter;	/* default FRS_JIT_NONE */
 	enum frs_rule_mode rule;	/* default FRS_RULE_UNBIASED */

@@ -114,6 +114,10 @@ static int check_options(const struct frs_options *o, frs_error *err)
 	return FRS_OK;
 }
 
+/* The caller's options, with the zeros that stand for a default made
+ * the default (sigma 0: 8; threads 0: 1; the enums' 0 and level_blur 0
+ * are their defaults as they are), so that a zeroed structure is an
+ * initialised one. */
 int api_options(struct frs_options *o, const struct frs_options *opt,
     frs_error *err)
 {
@@ -121,6 +125,8 @@ int api_options(struct frs_options *o, const struct frs_options *opt,
 		*o = *opt;
 	else
 		frs_options_init(o);
+	if (o->sigma == 0.0)
+		o->sigma = 8.0;
 	return check_options(o, err);
 }
 
