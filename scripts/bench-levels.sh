@@ -94,14 +94,14 @@ echo "targets: band levels/rdart <= 1.5: $(verdict $ok1); NN p1 >= 0.9 and p5 >=
 
 echo
 echo "3. integration: mc-error -f env, 24 sets of 1024 (relative RMSE)"
-printf '%-9s %9s %9s %9s %9s %9s %6s\n' map levels plain shuffled hsw hsw_jit lev/pl
+printf '%-9s %9s %9s %9s %9s %9s %6s\n' map levels plain shuffled hsw_rnd hsw_jit lev/pl
 ok3=1
 for m in $MAPS; do
 	for t in levels plain shuffled; do
 		frs "$m" 1024 1 "$t" "$T/mc.$t" --sets 24 --pdf
 	done
 	"$B/bin/hsw-sample" -q -i "data/$m.exr" --equirect -n 1024 --sets 24 \
-	    --pdf -o "$T/mc.hsw"
+	    --input random --pdf -o "$T/mc.hsw"
 	"$B/bin/hsw-sample" -q -i "data/$m.exr" --equirect -n 1024 --sets 24 \
 	    --input jittered --pdf -o "$T/mc.hswj"
 	for f in levels plain shuffled hsw hswj; do
