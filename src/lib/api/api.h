@@ -185,6 +185,7 @@ struct api_lev2 {
 	struct frs_imap map[FRS_LEVELS_MAX];	/* the sampler's, each */
 	struct frs_levels plan;	/* lev NULL with one level; the levels'
 				 * setups point to it */
+	uint32_t block[FRS_LEVELS_MAX];	/* Sorted's lists (api_lev2_block) */
 };
 /* The levels of level 0's setup s0 (for n, without exact taus) over the
  * sampler's map under the options o; the plan from cache when it has
@@ -201,6 +202,10 @@ void api_lev2_exact(struct api_lev2 *lv, const struct frs_xtau *x);
  * scans or walks its pixels, frs_sorted_walk, which costs less than
  * making the lists for a window of few elements). */
 uint32_t api_lev2_block(const struct api_lev2 *lv, unsigned i);
+/* The values the lists must hold for the last of steps, tau times
+ * margin: the most over the levels that read them (one block size). */
+uint64_t api_lev2_below(const struct api_lev2 *lv, const uint64_t *steps,
+    unsigned nsteps, double margin);
 
 /* The same in 3-D, over voxels, with 8^l. */
 struct api_lev3 {

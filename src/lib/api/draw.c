@@ -80,9 +80,9 @@ static int xcount_fn(void *ctx, double tau, uint64_t *count)
 		struct frs_result r;
 		uint32_t b = api_lev2_block(x->lv, i);
 		if (!x->have[i] || (b && x->view[i].below <
-		    api_lists_below(su, &su->n, 1))) {
+		    api_lev2_below(x->lv, &su->n, 1, 1.0))) {
 			if (api_mask_prep(x->s->mask, b == 0 || b < su->ns, b,
-			    b ? frs_lim_most(su, 1.0625 * frs_tau(su, su->n)) : 0,
+			    b ? api_lev2_below(x->lv, &su->n, 1, 1.0625) : 0,
 			    &x->view[i]) < 0)
 				return -1;
 			x->have[i] = 1;
@@ -145,8 +145,8 @@ int api_sampler_prep(const frs_sampler *s, const struct api_lev2 *lv,
 	int minmap = s->algo == FRS_SORTED ? b == 0 || b < su->ns :
 	    s->algo != FRS_NAIVE;
 
-	return api_mask_prep(s->mask, minmap, b, b ? api_lists_below(su, steps,
-	    nsteps) : 0, view);
+	return api_mask_prep(s->mask, minmap, b, b ? api_lev2_below(lv, steps,
+	    nsteps, 1.0) : 0, view);
 }
 
 /* The levels and the prepared matrix of each for a run of steps with

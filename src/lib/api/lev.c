@@ -137,6 +137,82 @@ static int plan_levels(const struct frs_options *o, unsigned dims,
 	return (int)frs_levels_used(L);
 }
 
+/*
+ * Sorted's lists for the levels of a multi-level run: one block size b
+ * for all the levels that read lists (made once, a read of the matrix,
+ * then read by every level whose n_s b divides), chosen with the levels
+ * that read them to cost least by this model, in nanoseconds measured on
+ * a 2-core x86-64 (forest.exr, 2^16 and 2^20 samples):
+ *   making lists:   1.5 a matrix element and 5 a value they hold
+ *                   (the largest threshold of the levels reading them);
+ *   reading lists:  25 a block of every pixel, 2 a sample;
+ *   scanning:       0.5 an element (n_s up to FRS_SCAN_NS);
+ *   walking:        5 a start block (8 x 8), 130 a sample.
+ * A level's samples: each level-0 element of a cell of value v expects
+ * t0 v / S_M of them, n_s0^2 elements a cell.
+ */
+static double walk_cost(double ns, double cells, double samples)
+{
+	return ns <= FRS_SCAN_NS ? 0.5 * cells * ns * ns :
+	    5.0 * cells * (ns / 8.0) * (ns / 8.0) + 130.0 * samples;
+}
+
+static double read_cost(double ns, double b, double cells, double samples)
+{
+	return 25.0 * cells * (ns / b) * (ns / b) + 2.0 * samples;
+}
+
+/* The cost of the run with lists of block b (0: none) into *cost, and
+ * the levels that read them into use. */
+static void cost_of(const struct api_lev2 *lv, uint32_t b, double *cost,
+    int *use)
+{
+	const struct frs_setup *b0 = &lv->base;
+	double nm = (double)b0->mw * b0->mh, ns0 = b0->ns, below = 0.0;
+	int any = 0;
+
+	*cost = 0.0;
+	for (unsigned i = 0; i < lv->n; i++) {
+		const struct frs_setup *su = &lv->su[i];
+		double cells = (double)lv->plan.cells[su->level], ns = su->ns;
+		double samples = b0->tau * b0->iscale * ns0 * ns0 *
+		    lv->plan.sum[su->level] / nm;
+		double w = walk_cost(ns, cells, samples), r;
+		use[i] = b != 0 && su->ns >= b &&
+		    (r = read_cost(ns, b, cells, samples)) < w;
+		*cost += use[i] ? r : w;
+		if (use[i]) {
+			double lim = (double)frs_lim_most(su, su->tau);
+			below = lim > below ? lim : below;
+			any = 1;
+		}
+	}
+	if (any)
+		*cost += 1.5 * nm + 5.0 * (below < nm ? below : nm);
+}
+
+/* The block of each level's lists into lv->block: the cheapest of none
+ * and the powers of two from 8 to the matrix's side. */
+static void choose_blocks(struct api_lev2 *lv)
+{
+	uint32_t m = lv->base.mw < lv->base.mh ? lv->base.mw : lv->base.mh;
+	int use[FRS_LEVELS_MAX], best_use[FRS_LEVELS_MAX];
+	double cost, best;
+	uint32_t bb = 0;
+
+	cost_of(lv, 0, &best, best_use);
+	for (uint32_t b = 8; b <= m; b *= 2) {
+		cost_of(lv, b, &cost, use);
+		if (cost < best) {
+			best = cost;
+			bb = b;
+			memcpy(best_use, use, sizeof use);
+		}
+	}
+	for (unsigned i = 0; i < lv->n; i++)
+		lv->block[i] = best_use[i] ? bb : 0;
+}
+
 int api_lev2_make(const struct frs_options *o, const struct frs_setup *s0,
     const struct frs_imap *map, struct api_plan *cache, struct api_lev2 *lv)
 {
@@ -170,6 +246,7 @@ int api_lev2_make(const struct frs_options *o, const struct frs_setup *s0,
 		su->cell1 = (uint64_t)(lv->plan.hi[l][1] + 1) * map->w;
 		lv->map[lv->n++] = *map;
 	}
+	choose_blocks(lv);
 	return 0;
 }
 
@@ -249,30 +326,26 @@ void api_lev3_exact(struct api_lev3 *lv, const struct frs_xtau *x)
 	}
 }
 
-/*
- * Sorted's lists for a level of a multi-level run: they cost about a
- * read of the matrix to make (once a block size), then a bisection a
- * pixel and a step a sample.  Without them, a level of at most
- * FRS_SCAN_NS^2 elements a pixel scans them (a few of them a step, along
- * rows), a larger one walks the minmap: a lookup per block of 8 x 8 at
- * the start, about 12 a sample (4 children at each of 3 levels).
- * Samples: each level-0 element of a cell of value v expects t0 v / S_M
- * of them, n_s^2 elements a cell.  A run of one level has the thesis's
- * lists, of blocks of n_s or the matrix's side.
- */
 uint32_t api_lev2_block(const struct api_lev2 *lv, unsigned i)
 {
-	const struct frs_setup *su = &lv->su[i], *b = &lv->base;
-	double nm = (double)su->mw * su->mh, ns = su->ns, ns0 = b->ns;
-	double cells, samples, walk;
+	return lv->plan.lev == NULL ? api_sorted_block(&lv->su[i]) :
+	    lv->block[i];
+}
 
-	if (lv->plan.lev == NULL)
-		return api_sorted_block(su);
-	cells = (double)lv->plan.cells[su->level];
-	samples = b->tau * b->iscale * ns0 * ns0 * lv->plan.sum[su->level] / nm;
-	walk = su->ns <= FRS_SCAN_NS ? cells * ns * ns / 4.0 :
-	    cells * ns * ns / 64.0 + 12.0 * samples;
-	return nm + 16.0 * cells + samples < walk ? api_sorted_block(su) : 0;
+uint64_t api_lev2_below(const struct api_lev2 *lv, const uint64_t *steps,
+    unsigned nsteps, double margin)
+{
+	uint64_t most = 0;
+
+	for (unsigned i = 0; i < lv->n; i++) {
+		const struct frs_setup *su = &lv->su[i];
+		uint64_t b;
+		if (api_lev2_block(lv, i) == 0)
+			continue;
+		b = frs_lim_most(su, margin * frs_tau(su, steps[nsteps - 1]));
+		most = b > most ? b : most;
+	}
+	return most;
 }
 
 void api_lev2_exact(struct api_lev2 *lv, const struct frs_xtau *x)

@@ -18,10 +18,10 @@ static uint64_t ncells(const struct frs_levels *L)
 	return (uint64_t)L->side[0] * L->side[1] * L->side[2];
 }
 
-/* The grid the levels are smoothed on: the cells in blocks of f per
- * side (f^k cells, fewer at the far ends). */
+/* The grid the levels are smoothed on: the cells in blocks of f = 2^lf
+ * per side (f^k cells, fewer at the far ends). */
 struct grid {
-	unsigned dims;
+	unsigned dims, lf;
 	uint64_t side[3], f;
 };
 
@@ -108,8 +108,20 @@ static uint64_t blur_radius(double blur)
  * (the levels must not depend on the math library). */
 static double log2_det(double x)
 {
+	uint64_t b;
 	int e;
-	double m = 2.0 * frexp(x, &e), u = (m - 1.0) / (m + 1.0), u2 = u * u;
+	double m, u, u2;
+
+	memcpy(&b, &x, sizeof b);
+	if ((b >> 52) != 0) {	/* normal: the exponent and mantissa bits */
+		e = (int)(b >> 52) - 1022;
+		b = (b & 0xfffffffffffffULL) | 0x3ff0000000000000ULL;
+		memcpy(&m, &b, sizeof m);
+	} else {
+		m = 2.0 * frexp(x, &e);
+	}
+	u = (m - 1.0) / (m + 1.0);
+	u2 = u * u;
 	/* ln m = 2 atanh u, |u| <= 1/3 */
 	double s = u * (1.0 + u2 * (1.0 / 3.0 + u2 * (1.0 / 5.0 + u2 * (1.0 /
 	    7.0 + u2 * (1.0 / 9.0 + u2 * (1.0 / 11.0 + u2 / 13.0))))));
@@ -143,8 +155,8 @@ static void add_cell(struct frs_levels *L, uint64_t i, const uint32_t *c,
 /* The block of the grid that cell c lies in. */
 static uint64_t block_of(const struct grid *g, const uint32_t *c)
 {
-	return (c[2] / g->f * g->side[1] + c[1] / g->f) * g->side[0] +
-	    c[0] / g->f;
+	return ((c[2] >> g->lf) * g->side[1] + (c[1] >> g->lf)) * g->side[0] +
+	    (c[0] >> g->lf);
 }
 
 /* The grid of blocks for smoothing over blur cells: as coarse as keeps
@@ -155,20 +167,24 @@ static void make_grid(struct grid *g, const struct frs_levels *L,
 {
 	g->dims = L->dims;
 	g->f = 1;
-	while (blur > 0.0 && (double)(2 * g->f) <= blur / 4.0)
+	g->lf = 0;
+	while (blur > 0.0 && (double)(2 * g->f) <= blur / 4.0) {
 		g->f *= 2;
+		g->lf++;
+	}
 	for (unsigned a = 0; a < 3; a++)
 		g->side[a] = (L->side[a] + g->f - 1) / g->f;
 }
 
-/* The coarsest level whose elements, of 2^(k l) t, hold at most nm / 4:
- * an element passes at most once, so its threshold must stay well below
- * the matrix's size for its count to stay unbiased. */
-static unsigned cap_level(double t, unsigned dims, double nm, unsigned top)
+/* The coarsest level up to top whose elements, of 2^(k l) t, hold at
+ * most nm / 4 (most[l] = nm / 4 / 2^(k l)): an element passes at most
+ * once, so its threshold must stay well below the matrix's size for its
+ * count to stay unbiased. */
+static unsigned cap_level(double t, const double *most, unsigned top)
 {
 	unsigned l = top;
 
-	while (l > 0 && ldexp(t, (int)(dims * l)) > nm / 4.0)
+	while (l > 0 && t > most[l])
 		l--;
 	return l;
 }
@@ -190,7 +206,7 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
     double nm, double sigma, double blur)
 {
 	double k = dims, bound = log2(nm) - k * log2(sigma);
-	double *g = NULL, *m = NULL, *p = NULL;
+	double *g = NULL, *m = NULL, *p = NULL, most[FRS_LEVELS_MAX];
 	uint8_t *cap = NULL;
 	struct grid gr;
 	uint64_t nb, i = 0;
@@ -203,6 +219,8 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
 		L->side[a] = a < dims ? side[a] : 1;
 	make_grid(&gr, L, blur);
 	nb = grid_n(&gr);
+	for (unsigned l = 0; l < FRS_LEVELS_MAX; l++)
+		most[l] = ldexp(nm / 4.0, -(int)(dims * l));
 	if ((L->lev = mem_calloc("levels", ncells(L), 1)) == NULL ||
 	    (g = mem_calloc("levels", nb, sizeof *g)) == NULL ||
 	    (m = mem_calloc("levels", nb, sizeof *m)) == NULL ||
@@ -225,7 +243,7 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
 					continue;
 				g[b] += log2_det(t0 * v[i]);
 				m[b] += 1.0;
-				l = cap_level(t0 * v[i], dims, nm, cap[b]);
+				l = cap_level(t0 * v[i], most, cap[b]);
 				cap[b] = (uint8_t)l;
 			}
 	if (blur > 0.0) {
