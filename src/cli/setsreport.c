@@ -46,6 +46,12 @@ static void report_levels(FILE *fp, const struct api_sets *o,
 
 	if (r->opt.tiling != FRS_TILING_LEVELS)
 		return;
+	if (n == 1 && (r->dims == 2 ? r->lv.su[0].level :
+	    r->lv3.su[0].level) == 0) {
+		fprintf(fp, "frs-sample: levels: every %s at level 0, the "
+		    "thesis's window\n", r->dims == 2 ? "pixel" : "voxel");
+		return;
+	}
 	fprintf(fp, "frs-sample: %u level%s of the multi-level window", n,
 	    n == 1 ? "" : "s");
 	if (blur > 0.0)
@@ -90,7 +96,10 @@ void cli_sets_report(FILE *fp, const struct api_sets *o,
 {
 	uint64_t tx = 0, ty = 0;
 	uint64_t nt = r->dims == 2 ? frs_tiles(&r->s0, &tx, &ty) : 0;
-	int levels = r->opt.tiling == FRS_TILING_LEVELS;
+	/* One level, level 0, is the thesis's window: its tiles line. */
+	int levels = r->opt.tiling == FRS_TILING_LEVELS &&
+	    (r->dims == 2 ? r->lv.n > 1 || r->lv.su[0].level > 0 :
+	    r->lv3.n > 1 || r->lv3.su[0].level > 0);
 
 	report_setup(fp, o, r);
 	report_levels(fp, o, r);
