@@ -24,6 +24,16 @@ trap 'exit 143' TERM
 
 ok() { echo "ok - $*"; }
 
+# man_example PAGE ERE: the literal block (.Bd -literal ... .Ed) of the
+# man page PAGE that has a line matching ERE, as a shell script (roff's
+# \e back to a backslash); nothing when no block has one.
+man_example() {
+	awk -v re="$2" '/^\.Bd -literal/ { n = 0; on = 1; next }
+	    /^\.Ed/ { if (hit) exit; on = 0; next }
+	    on { l[n++] = $0; if ($0 ~ re) hit = 1 }
+	    END { if (hit) for (i = 0; i < n; i++) { gsub(/\\e/, "\\", l[i]); print l[i] } }' "$1"
+}
+
 # done_testing: the last line of every test script.
 done_testing() { reached_end=1; }
 

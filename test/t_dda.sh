@@ -283,9 +283,7 @@ dda --density --sets 1024 -o "$T/one" "$T/d1024.pts" 2>"$T/err"
 
 # frs(7)'s example of --summary, as the page writes it: the commands that
 # make its files, then dda, with no message and a page of three columns.
-awk '/^\.Bd -literal/ { n = 0; on = 1; next } /^\.Ed/ { if (hit) exit; on = 0; next }
-    on { l[n++] = $0; if ($0 ~ /^dda --summary/) hit = 1 }
-    END { if (hit) for (i = 0; i < n; i++) print l[i] }' man/man7/frs.7 >"$T/ex.sh"
+man_example man/man7/frs.7 '^dda --summary' >"$T/ex.sh"
 if grep -q '^dda --summary --sets 1024 --png cmp.png frs.pts sobol.pts dart.pts$' "$T/ex.sh" &&
     (cd "$T" && mkdir ex && cd ex && sh -e ../ex.sh >table 2>err) && [ ! -s "$T/ex/err" ] &&
     [ "$(pngsize "$T/ex/cmp.png")" = 951x839 ]; then

@@ -332,4 +332,17 @@ grep -q 'see --list-devices$' "$T/err" &&
     ok "-a flat1, no such device: no advice to use the CPU" ||
     nok "-a flat1, no such device: $(cat "$T/err")"
 expect_fail "-a flat1 --device cpu" 2 "OpenCL" "$T/o.pts" frs-sample -m "$M" -n 10 -a flat1 --device cpu -o "$T/o.pts"
+# frs-sample(1)'s first example, as the page writes it: the shipped map
+# three ways, three different sets (issue 32: the "shuffled" one was the
+# default's bytes), and -v lists the levels.
+man_example man/man1/frs-sample.1 'tiles \$t' >"$T/ex1.sh"
+if [ -s "$T/ex1.sh" ] && (mkdir "$T/ex1" && cd "$T/ex1" && sh -e ../ex1.sh 2>err) &&
+    ! cmp -s "$T/ex1/levels.pts" "$T/ex1/plain.pts" &&
+    ! cmp -s "$T/ex1/levels.pts" "$T/ex1/shuffled.pts" &&
+    ! cmp -s "$T/ex1/plain.pts" "$T/ex1/shuffled.pts" &&
+    [ -s "$T/ex1/levels.png" ] && grep -q 'level [0-9]*: n_s' "$T/ex1/err"; then
+	ok "frs-sample(1)'s first example: levels, plain and shuffled, three sets"
+else
+	nok "frs-sample(1)'s first example: $(head -n 5 "$T/ex1.sh" "$T/ex1/err" 2>&1)"
+fi
 done_testing
