@@ -4,7 +4,9 @@
 # eps = 12) of adaptive sample distributions for the importance maps
 # Gaussian blob, linear gradient (ramp), the environment map ($ENVMAP)
 # and constant: relaxation dart throwing (the reference, ref-sample -k
-# relaxed-dart), FRS, jittered FRS (sigma 8, random jitter) and HSW with
+# relaxed-dart), FRS (the multi-level window, the default), FRS with the
+# thesis's window (--tiles plain), jittered FRS (sigma 8, random jitter)
+# and HSW with
 # random, regular, Halton (Cranley-Patterson rotated per seed, warped
 # from a file) and Poisson-disk (dart) input; Fig. 6.11, the radial means
 # of FRS and relaxation dart throwing for uniform (constant) sampling.
@@ -34,7 +36,7 @@ ES=256x256
 C=$CACHE/fig6.10-6.11
 mkdir -p "$C" "$OUT/dda"
 MAPS="blob ramp env const"
-DISTS="ref frs frs-jit hsw-random hsw-regular hsw-halton hsw-dart"
+DISTS="ref frs frs-plain frs-jit hsw-random hsw-regular hsw-halton hsw-dart"
 envname=$(basename "$ENVMAP" | sed 's/\.[^.]*$//')
 mapspec() {
 	case $1 in
@@ -63,6 +65,7 @@ for m in $MAPS; do
 	echo "$J $C/$k-ref-n$N-m$M.pts ref-sample -q -k relaxed-dart -i $i -n $N --sets $M -S 1"
 	for s in $(seq 1 "$M"); do
 		echo "$J $C/$k-frs-n$N-S$s.pts frs-sample -q -i $i -n $N -S $s"
+		echo "$J $C/$k-frs-plain-n$N-S$s.pts frs-sample -q -i $i -n $N -S $s --tiles plain"
 		echo "$J $C/$k-frs-jit-n$N-S$s.pts frs-sample -q -i $i -n $N -S $s --jitter random --sigma 8"
 		for inp in random regular dart; do
 			echo "$J $C/$k-hsw-$inp-n$N-S$s.pts hsw-sample -q -i $i -n $N -S $s --input $inp"
@@ -178,7 +181,7 @@ for m in blob ramp env; do
 	row "$m: first peak FRS / reference (dist)" "$(v $m frs peak1_dist) / $(v $m ref peak1_dist)" "very similar spectra for all maps"
 done
 for m in $MAPS; do
-	row "$m: mean anisotropy (dB) ref / FRS / jit. FRS / HSW dart / HSW Halton" "$(v $m ref mean_aniso_db) / $(v $m frs mean_aniso_db) / $(v $m frs-jit mean_aniso_db) / $(v $m hsw-dart mean_aniso_db) / $(v $m hsw-halton mean_aniso_db)" "FRS close to the reference; HSW distorts even Poisson-disk input"
+	row "$m: mean anisotropy (dB) ref / FRS / FRS plain / jit. FRS / HSW dart / HSW Halton" "$(v $m ref mean_aniso_db) / $(v $m frs mean_aniso_db) / $(v $m frs-plain mean_aniso_db) / $(v $m frs-jit mean_aniso_db) / $(v $m hsw-dart mean_aniso_db) / $(v $m hsw-halton mean_aniso_db)" "FRS close to the reference; HSW distorts even Poisson-disk input"
 done
 for m in blob ramp env; do
 	row "$m: first-peak power ref / FRS / HSW dart" "$(v $m ref peak1_power) / $(v $m frs peak1_power) / $(v $m hsw-dart peak1_power)" "FRS like the reference; HSW blurs the ring of its Poisson-disk input"
@@ -261,6 +264,6 @@ observe "$sp > $rsp + 0.02 && $RCUT > 0 && $se > 0.9 * $RCUT && $se < 1.1 * $RCU
     "FRS's strongest value beyond 2.2 spacings lies at $se window elements, within 10 % of the radius at which the matrix's force was cut off for this level ($RCUT cells, cutoff=$CUTOFF, from the header of $(basename "$FRS_MATRIX"); frd-gen(1): a force cut off at R leaves a ring at R)."
 env_w=$(awk -F '\t' '$1 == "env" { split($3, a, "x"); print a[1] }' "$OUT/frs-window.tsv")
 mat_w=$(awk -F '\t' '$1 == "env" { split($4, a, "x"); print a[1] }' "$OUT/frs-window.tsv")
-observe "$env_w > $mat_w" "On the environment map the FRS window (${env_w}x$env_w) exceeds the matrix (${mat_w}x$mat_w), so the matrix's tiles repeat (the limit of thesis Table 4.1); FRS's anisotropy there is $(v env frs mean_aniso_db) dB against the reference's $(v env ref mean_aniso_db)."
+observe "$env_w > $mat_w" "On the environment map the thesis's FRS window (${env_w}x$env_w) exceeds the matrix (${mat_w}x$mat_w), so with plain tiles the matrix's tiles repeat (the limit of thesis Table 4.1): FRS's anisotropy there is $(v env frs-plain mean_aniso_db) dB with plain tiles and $(v env frs mean_aniso_db) dB with the multi-level window (the default), against the reference's $(v env ref mean_aniso_db)."
 exp_note "The environment map is $ENVMAP resampled to $ES, not the thesis' Grace Cathedral probe; the DDA is dda(1), not Wei's tool."
 exp_end

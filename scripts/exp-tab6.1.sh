@@ -3,7 +3,9 @@
 # (dda --density, Eq. 6.21, 6.22; with -i the transformed distance of Wei
 # and Wang for adaptive sets) averaged over m sets of n ~ 1024, for the
 # distributions Reference (ref-sample -k dart for uniform, -k relaxed-dart
-# -i MAP for the maps), FRS, jittered FRS (--jitter random), and Poisson
+# -i MAP for the maps), FRS (the multi-level window, the default), FRS
+# with the thesis's window (--tiles plain), jittered FRS (--jitter
+# random), and Poisson
 # disk, Random, Regular, Halton warped by HSW (hsw-sample --input
 # dart|random|regular|halton), in the columns Uniform (no map: the plain
 # distance; for the HSW rows the unwarped input sets of ref-sample),
@@ -24,7 +26,7 @@
 
 N=$(pick 256 1024 1024)
 M=$(pick 3 10 10)
-DISTS="reference frs jfrs dart random regular halton"
+DISTS="reference frs pfrs jfrs dart random regular halton"
 MAPS="uniform constant blob ramp environment"
 D=$CACHE/tab6.1
 
@@ -54,11 +56,13 @@ density() {
 	b=$D/$1-$2-n$N-m$M
 	mo=$(spec "$2")
 	case $1 in
-	frs | jfrs)
-		j=none
+	frs | pfrs | jfrs)
+		j=none t=levels
 		[ "$1" = jfrs ] && j=random
+		[ "$1" = pfrs ] && t=plain
 		# shellcheck disable=SC2086
-		cached "$b/list" split_frs "$b" $mo -n "$N" --sets "$M" --jitter $j
+		cached "$b/list" split_frs "$b" $mo -n "$N" --sets "$M" --jitter $j \
+		    --tiles $t
 		# shellcheck disable=SC2046,SC2086
 		cached "$b.tsv" dda --density -q -j 1 $mo $(cat "$b/list") ;;
 	reference)
@@ -116,6 +120,7 @@ cat >"$OUT/thesis.tsv" <<'EOF'
 dist	uniform	constant	blob	ramp	environment
 reference	0.700	0.700	0.700	0.700	0.700
 frs	0.650	0.681	0.643	0.662	0.644
+pfrs	0.650	0.681	0.643	0.662	0.644
 jfrs	0.621	0.668	0.634	0.617	0.661
 dart	0.700	0.700	0.261	0.370	0.142
 random	0.014	0.003	0.004	0.001	0.008
@@ -126,6 +131,7 @@ EOF
 name() {
 	case $1 in
 	reference) echo "Reference" ;; frs) echo "FRS" ;;
+	pfrs) echo "FRS, the thesis's window (plain tiles)" ;;
 	jfrs) echo "Jittered FRS" ;; dart) echo "Poisson Disk" ;;
 	random) echo "Random" ;; regular) echo "Regular" ;;
 	halton) echo "Halton" ;;
@@ -232,7 +238,11 @@ observe "$fu == $fc" "Uniform and Constant give the same FRS value ($fu; the the
 cached "$D/env-128x64.exr" imap convert -q -s 128x64 --format exr "$ENVMAP" -
 cached "$D/env-128x64.info" imap info "$D/env-128x64.exr"
 pk=$(awk '$1 == "max" { m = $2 } $1 == "mean" { a = $2 } END { printf "%.0f", m / a }' "$D/env-128x64.info")
-fe=$(v frs environment)
+fe=$(v frs environment) pe=$(v pfrs environment)
 observe "$fe < 0.6" "FRS's rho on the environment map is $fe (the thesis 0.644); at 128x64 our map's maximum is $pk times its mean."
+vl=$(frs-sample -q -i "$ENVMAP" -s 128x64 -n "$N" --tiles plain -v -o /dev/null 2>&1)
+win=$(echo "$vl" | sed -n 's/.*window \([0-9x]*\) at.*/\1/p' | head -n 1)
+mat=$(echo "$vl" | sed -n 's/.*matrix [^ ]* \([0-9x]*\),.*/\1/p')
+observe "$fe > $pe" "On the environment map the multi-level window gives rho $fe, the thesis's window (plain tiles) $pe: the thesis's window is $win elements for a $mat matrix, repeated as it is where the map is dark."
 exp_note "Environment: $(basename "$ENVMAP") resampled to 128x64 for every tool, not the thesis' Grace Cathedral probe."
 exp_end
