@@ -108,24 +108,49 @@ static void cache_put(struct api_plan *c, double t0, uint32_t ns,
  * for one level (no levels asked, or every cell at level 0), with
  * nothing kept; -1 after frs_fail.
  */
+/*
+ * The coarsest level a run needs: the finest at which the window of the
+ * whole map (volume) fits the matrix (msize) on every axis, so that no
+ * level repeats the matrix; top (one element a cell) when the map is
+ * larger than the matrix.  Coarser levels would only add seams: at this
+ * one a dark region takes the matrix's first values over one tile, a
+ * prefix of the matrix, which is blue noise.  0: the thesis's window
+ * repeats nothing, and one level is all.
+ */
+static unsigned fit_level(unsigned dims, const uint32_t *side,
+    const uint32_t *msize, uint32_t ns)
+{
+	unsigned l = 0, top = log2u(ns);
+
+	for (; l < top; l++) {
+		int fits = 1;
+		for (unsigned a = 0; a < dims; a++)
+			fits &= (uint64_t)(ns >> l) * side[a] <= msize[a];
+		if (fits)
+			break;
+	}
+	return l;
+}
+
 static int plan_levels(const struct frs_options *o, unsigned dims,
-    const uint32_t *side, const double *v, double t0, uint32_t ns,
-    double nm, double sigma, struct api_plan *cache, struct frs_levels *L)
+    const uint32_t *side, const uint32_t *msize, const double *v,
+    double t0, uint32_t ns, double sigma, struct api_plan *cache,
+    struct frs_levels *L)
 {
 	uint32_t longest = side[0];
-	double blur;
+	unsigned top = fit_level(dims, side, msize, ns);
+	double blur, nm = (double)msize[0] * msize[1] * (dims == 3 ? msize[2] : 1);
+	int rc;
 
 	for (unsigned a = 1; a < dims; a++)
 		longest = side[a] > longest ? side[a] : longest;
 	blur = api_blur(o, longest);
-	int rc;
-
-	if (blur < 0.0 || ns == 1)
+	if (blur < 0.0 || top == 0)
 		return 0;
 	if ((rc = cache_get(cache, t0, ns, L)) < 0)
 		return -1;
 	if (rc == 0) {
-		if (frs_levels_plan(L, dims, side, v, t0, log2u(ns), nm, sigma,
+		if (frs_levels_plan(L, dims, side, v, t0, top, nm, sigma,
 		    blur) < 0)
 			return -1;
 		cache_put(cache, t0, ns, L);
@@ -216,13 +241,13 @@ static void choose_blocks(struct api_lev2 *lv)
 int api_lev2_make(const struct frs_options *o, const struct frs_setup *s0,
     const struct frs_imap *map, struct api_plan *cache, struct api_lev2 *lv)
 {
-	const uint32_t side[2] = { map->w, map->h };
+	const uint32_t side[2] = { map->w, map->h }, msize[2] = { s0->mw, s0->mh };
 	int k;
 
 	memset(lv, 0, sizeof *lv);
 	lv->base = *s0;
-	k = plan_levels(o, 2, side, map->v, s0->tau * s0->iscale, s0->ns,
-	    (double)s0->mw * s0->mh, s0->sigma, cache, &lv->plan);
+	k = plan_levels(o, 2, side, msize, map->v, s0->tau * s0->iscale,
+	    s0->ns, s0->sigma, cache, &lv->plan);
 	if (k < 0)
 		return -1;
 	if (k == 0) {
@@ -254,12 +279,13 @@ int api_lev3_make(const struct frs_options *o, const struct frs3_setup *s0,
     const struct frs_vol *vol, struct api_plan *cache, struct api_lev3 *lv)
 {
 	const uint32_t side[3] = { vol->w, vol->h, vol->d };
+	const uint32_t msize[3] = { s0->mw, s0->mh, s0->md };
 	int k;
 
 	memset(lv, 0, sizeof *lv);
 	lv->base = *s0;
-	k = plan_levels(o, 3, side, vol->v, s0->tau * s0->iscale, s0->ns,
-	    (double)s0->mw * s0->mh * s0->md, s0->sigma, cache, &lv->plan);
+	k = plan_levels(o, 3, side, msize, vol->v, s0->tau * s0->iscale,
+	    s0->ns, s0->sigma, cache, &lv->plan);
 	if (k < 0)
 		return -1;
 	if (k == 0) {

@@ -12,17 +12,20 @@
  * Level l instead gives a cell (n_s / 2^l)^k elements, each the union
  * of 2^l x 2^l (x 2^l) level-0 elements with their summed threshold
  * 2^(k l) T: fewer, larger elements where the map is dark, thresholded
- * at a density at which the matrix is blue noise, and a window 2^l times
- * smaller on each side, which repeats the matrix 4^l (8^l) times less.
- * Each cell takes the coarsest level whose elements stay at or below the
- * sparsity bound S_M / sigma^k (the matrix's element count over sigma^k,
- * the threshold of the brightest cell at level 0), judged on the log
- * threshold smoothed over a Gaussian of `blur` cells (so that level
- * regions are large and their borders few: where two levels meet, two
- * unrelated patterns meet), and capped twice: no element holds more than
+ * at a higher density, and a window 2^l times smaller on each side, which
+ * repeats the matrix 4^l (8^l) times less.  Each cell takes the coarsest
+ * level whose elements stay at or below the sparsity bound S_M / sigma^k
+ * (the matrix's element count over sigma^k, the threshold of the
+ * brightest cell at level 0), judged on the log threshold smoothed over a
+ * Gaussian of `blur` cells on a grid of blocks (so that level regions
+ * are large and their borders few: where two levels meet, two unrelated
+ * patterns meet), and capped: no element of its block holds more than
  * S_M / 4 (an element passes at most once, so its threshold must stay
- * well below S_M for the count to stay unbiased) and none is larger
- * than its cell (top).
+ * well below S_M for the count to stay unbiased), and none is coarser
+ * than top, which the caller sets to the coarsest level a run needs (at
+ * which the window of the whole map fits the matrix: a dark region then
+ * takes the first values of one tile, a prefix of the matrix, which is
+ * blue noise; coarser levels would only add seams).
  *
  * Every level is then a thresholding of its own: the map masked to the
  * level's cells (zero elsewhere), n_s / 2^l elements a cell side, tau
