@@ -145,7 +145,8 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 			    o->size);
 			break;
 		case OPT_SIGMA:
-			o->opt.sigma = cli_double("--sigma", optarg, 1.0, 1024.0);
+			o->opt.sigma = cli_double("--sigma", optarg, 1.0,
+			    FRS_SIGMA_MAX);
 			break;
 		case OPT_JITTER:
 			o->opt.jitter = (enum frs_jitter_mode)cli_choice("--jitter",

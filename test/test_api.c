@@ -273,6 +273,25 @@ struct olev {
 	struct frs_levels plan;
 };
 
+/* The coarsest level a run needs (frs-sample(1), Levels): the finest at
+ * which the window of the whole map, (n_s / 2^l) per pixel side, fits
+ * the mw x mh matrix, or one element a pixel. */
+static unsigned oracle_top(uint32_t ns, const uint32_t *side,
+    const uint32_t *m, unsigned dims)
+{
+	unsigned l = 0;
+
+	while ((ns >> l) > 1) {
+		int fits = 1;
+		for (unsigned a = 0; a < dims; a++)
+			fits &= (uint64_t)(ns >> l) * side[a] <= m[a];
+		if (fits)
+			break;
+		l++;
+	}
+	return l;
+}
+
 /* The same for a matrix of nm elements. */
 static void oracle_levels_of(const struct frs_imap *map,
     const struct frs_options *o, const struct frs_setup *s0, double nm,
@@ -285,10 +304,11 @@ static void oracle_levels_of(const struct frs_imap *map,
 	memset(lv, 0, sizeof *lv);
 	lv->n = 1;
 	lv->su[0] = *s0;
-	if (o->tiling != FRS_TILING_LEVELS || s0->ns == 1)
+	const uint32_t msz[2] = { s0->mw, s0->mh };
+
+	top = oracle_top(s0->ns, side, msz, 2);
+	if (o->tiling != FRS_TILING_LEVELS || top == 0)
 		return;
-	while ((1u << top) < s0->ns)
-		top++;
 	assert_int_equal(frs_levels_plan(&lv->plan, 2, side, map->v,
 	    s0->tau * s0->iscale, top, nm, s0->sigma, blur), 0);
 	if (frs_levels_used(&lv->plan) == 1 && lv->plan.cells[0] > 0)
@@ -397,7 +417,7 @@ static struct drawn oracle_draw(const struct frs_imap *map,
 	uint64_t count = 0;
 
 	oracle_setup(map, o, steps, nsteps, seed, &lv);
-	*exact_order = a != FRS_SORTED || lv.n == 1;
+	*exact_order = a != FRS_SORTED || lv.plan.lev == NULL;
 	frs_set_threads(1);
 	for (unsigned i = 0; i < lv.n; i++) {
 		const struct frs_setup *su = &lv.su[i];
@@ -2214,10 +2234,11 @@ static void oracle_levels3(const struct frs_vol *vol,
 	lv->none.m = &mat3;
 	lv->n = 1;
 	lv->su[0] = *s0;
-	if (o->tiling != FRS_TILING_LEVELS || s0->ns == 1)
+	const uint32_t msz[3] = { s0->mw, s0->mh, s0->md };
+
+	top = oracle_top(s0->ns, side, msz, 3);
+	if (o->tiling != FRS_TILING_LEVELS || top == 0)
 		return;
-	while ((1u << top) < s0->ns)
-		top++;
 	assert_int_equal(frs_levels_plan(&lv->plan, 3, side, vol->v,
 	    s0->tau * s0->iscale, top, (double)mat3.w * mat3.h * mat3.d,
 	    s0->sigma, blur), 0);
@@ -2946,7 +2967,8 @@ static void test_zeroed_options(void **state)
 static void test_levels(void **state)
 {
 	const char *err = tu_path("lv.txt");
-	frs_sampler *s = sampler_f64(mask, &blob, NULL);
+	struct frs_imap sky;
+	frs_sampler *s;
 	struct frs_level_info lv[FRS_LEVELS_MAX];
 	struct frs_info in;
 	struct frs_options o;
@@ -2956,11 +2978,13 @@ static void test_levels(void **state)
 	FILE *fp;
 
 	(void)state;
+	assert_int_equal(imap_load("sky", 0, 0, 0, &sky), 0);
+	s = sampler_f64(mask, &sky, NULL);
 	assert_int_equal(frs_sampler_levels(s, 20000, 7, lv, FRS_LEVELS_MAX, &n,
 	    NULL), FRS_OK);
 	assert_int_equal(frs_sampler_info(s, 20000, 7, &in, NULL), FRS_OK);
 	assert_true(n >= 3);
-	prog("frs-sample -m %s -i blob -n 20000 -S 7 -v -o /dev/null 2>%s",
+	prog("frs-sample -m %s -i sky -n 20000 -S 7 -v -o /dev/null 2>%s",
 	    MATRIX, err);
 	fp = fopen(err, "r");
 	assert_non_null(fp);
@@ -2989,8 +3013,8 @@ static void test_levels(void **state)
 	}
 	fclose(fp);
 	assert_int_equal(k, n);
-	for (size_t i = 0; i < (size_t)blob.w * blob.h; i++)
-		cells -= blob.v[i] > 0.0;
+	for (size_t i = 0; i < (size_t)sky.w * sky.h; i++)
+		cells -= sky.v[i] > 0.0;
 	assert_true(cells == 0);
 	/* cap 1: one filled, the count still all; cap 0 with NULL */
 	memset(lv, 0, sizeof lv);
@@ -3007,7 +3031,7 @@ static void test_levels(void **state)
 	frs_sampler_free(s);
 	frs_options_init(&o);
 	o.tiling = FRS_TILING_PLAIN;
-	s = sampler_f64(mask, &blob, &o);
+	s = sampler_f64(mask, &sky, &o);
 	assert_int_equal(frs_sampler_levels(s, 20000, 7, lv, FRS_LEVELS_MAX, &n,
 	    NULL), FRS_OK);
 	assert_int_equal(n, 1);
@@ -3016,6 +3040,7 @@ static void test_levels(void **state)
 	assert_int_equal(lv[0].window[0], in.window_w);
 	assert_true(lv[0].tau == in.tau);
 	frs_sampler_free(s);
+	imap_free(&sky);
 }
 
 /* frs_map_equirect: row j times the mean of sin over its band, in
@@ -3047,11 +3072,12 @@ static void test_equirect(void **state)
 		}
 		assert_true(f[j * 5 + 4] == 2.0f);	/* past the width */
 	}
-	assert_int_equal(imap_load("data/sunset.exr", 128, 64, 0, &m), 0);
+	/* (at the map's own size: --equirect weights it before resampling) */
+	assert_int_equal(imap_load("data/sunset.exr", 0, 0, 0, &m), 0);
 	frs_map_equirect_f64(m.v, m.w, m.h, 0);
 	s = sampler_f64(mask, &m, NULL);
-	prog("frs-sample -q -m %s -i data/sunset.exr -s 128x64 --equirect -n "
-	    "3000 -S 2 -o %s", MATRIX, tu_path("eq.pts"));
+	prog("frs-sample -q -m %s -i data/sunset.exr --equirect -n 3000 -S 2 "
+	    "-o %s", MATRIX, tu_path("eq.pts"));
 	{
 		struct drawn dr = draw(s, &n, 1, 2, 0);
 		double *rec = records(&dr, 0, 0);
