@@ -13,8 +13,10 @@
 #      least 0.9 (p1) and 0.95 (p5) of plain's; and the seams: the share
 #      of samples with a neighbour of another level within 1.5 spacings,
 #      their p1 and the others';
-#   3. integration: mc-error -f env over 24 sets of 1024 (relative
-#      RMSE), levels no worse than plain;
+#   3. integration: mc-error -f env over MC sets of 1024 (relative
+#      RMSE), levels no worse than plain within the noise of the two
+#      estimates (an RMSE of m sets has a relative standard error of
+#      about 1 / sqrt(2 m): ratio at most 1 + 2 sqrt(1 / m));
 #   4. counts: chi-square of 200000 samples in 32 x 16 blocks against the
 #      map, p above 1e-4;
 #   5. speed: Sorted, whole process, forest at 65536 and 2^20, the median
@@ -23,7 +25,7 @@
 #   6. 3-D: shell3 (the README's line, n 4096, sigma 4), the same band
 #      measure on the slab 0 < z < 0.2, outside the shell, against dart
 #      throwing (uniform, 3-D) with as many points.
-# usage: scripts/bench-levels.sh BUILD     (SEEDS=4, REPS=5)
+# usage: scripts/bench-levels.sh BUILD     (SEEDS=4, REPS=5, MC=96)
 set -eu
 cd "$(dirname "$0")/.."
 . scripts/benchlib.sh
@@ -34,6 +36,7 @@ bench_setup bench-levels "$FRS" "$REF" "$B/bin/ref-sample" \
     "$B/bin/hsw-sample" "$B/bin/mc-error"
 SEEDS=${SEEDS:-4}
 REPS=${REPS:-5}
+MC=${MC:-96}
 MAPS="forest sunset interior"
 
 # frs MAP N SEED TILES OUT [options]: FRS of data/MAP.exr, --equirect
@@ -93,16 +96,17 @@ done
 echo "targets: band levels/rdart <= 1.5: $(verdict $ok1); NN p1 >= 0.9 and p5 >= 0.95 of plain: $(verdict $ok2)"
 
 echo
-echo "3. integration: mc-error -f env, 24 sets of 1024 (relative RMSE)"
+tol=$(awk -v m="$MC" 'BEGIN { printf "%.2f", 1 + 2 * sqrt(1 / m) }')
+echo "3. integration: mc-error -f env, $MC sets of 1024 (relative RMSE)"
 printf '%-9s %9s %9s %9s %9s %9s %6s\n' map levels plain shuffled hsw_rnd hsw_jit lev/pl
 ok3=1
 for m in $MAPS; do
 	for t in levels plain shuffled; do
-		frs "$m" 1024 1 "$t" "$T/mc.$t" --sets 24 --pdf
+		frs "$m" 1024 1 "$t" "$T/mc.$t" --sets "$MC" --pdf
 	done
-	"$B/bin/hsw-sample" -q -i "data/$m.exr" --equirect -n 1024 --sets 24 \
+	"$B/bin/hsw-sample" -q -i "data/$m.exr" --equirect -n 1024 --sets "$MC" \
 	    --input random --pdf -o "$T/mc.hsw"
-	"$B/bin/hsw-sample" -q -i "data/$m.exr" --equirect -n 1024 --sets 24 \
+	"$B/bin/hsw-sample" -q -i "data/$m.exr" --equirect -n 1024 --sets "$MC" \
 	    --input jittered --pdf -o "$T/mc.hswj"
 	for f in levels plain shuffled hsw hswj; do
 		"$B/bin/mc-error" -q -f env --env "data/$m.exr" --group all \
@@ -110,12 +114,12 @@ for m in $MAPS; do
 	done
 	r=$(awk -v a="$(cat "$T/e.levels")" -v b="$(cat "$T/e.plain")" \
 	    'BEGIN { printf "%.2f", a / b }')
-	awk -v r="$r" 'BEGIN { exit !(r <= 1.0) }' || ok3=0
+	awk -v r="$r" -v t="$tol" 'BEGIN { exit !(r <= t) }' || ok3=0
 	printf '%-9s %9.5f %9.5f %9.5f %9.5f %9.5f %6s\n' "$m" "$(cat "$T/e.levels")" \
 	    "$(cat "$T/e.plain")" "$(cat "$T/e.shuffled")" "$(cat "$T/e.hsw")" \
 	    "$(cat "$T/e.hswj")" "$r"
 done
-echo "target: levels no worse than plain: $(verdict $ok3)"
+echo "target: levels no worse than plain (ratio at most $tol): $(verdict $ok3)"
 
 echo
 echo "4. counts: 200000 samples of levels in 32 x 16 blocks against the map"

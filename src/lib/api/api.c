@@ -157,6 +157,25 @@ int api_run_begin(int have_s, int threads, const uint64_t *steps,
 	return FRS_OK;
 }
 
+int api_query_args(const char *fn, int have_args, uint64_t n, int threads,
+    frs_error *err)
+{
+	char msg[96];
+
+	if (!have_args) {
+		snprintf(msg, sizeof msg, "%s: NULL argument", fn);
+		return api_arg_err(err, msg);
+	}
+	if (n == 0) {
+		snprintf(msg, sizeof msg, "%s: n must not be 0", fn);
+		return api_arg_err(err, msg);
+	}
+	if (n > API_MAX_N)
+		return api_set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
+	frs_set_threads(threads > 0 ? threads : 1);
+	return FRS_OK;
+}
+
 /* ---- the enums: public to internal, the one table of each ----------- */
 
 /* The programs' words for the public enums, in their order. */

@@ -108,6 +108,11 @@ int api_run_begin(int have_s, int threads, const uint64_t *steps,
     unsigned nsteps, frs_error *err);
 /* frs_sampler_info's and the draws' limit. */
 #define API_MAX_N ((uint64_t)1 << 40)
+/* The checks of frs_sampler_info and frs_sampler_levels (fn in
+ * messages): the pointers they need (have_args), n from 1 to API_MAX_N;
+ * then the sampler's threads are set.  A code. */
+int api_query_args(const char *fn, int have_args, uint64_t n, int threads,
+    frs_error *err);
 
 /*
  * The programs' algorithms: an enum frs_algorithm, or API_ALG_FLAT1

@@ -569,14 +569,11 @@ int frs_sampler_info(const frs_sampler *s, uint64_t n, uint64_t seed,
 {
 	struct api_lev2 lv;
 	const struct frs_setup *su = &lv.base;
+	int rc = api_query_args("frs_sampler_info", s != NULL && info != NULL, n,
+	    s != NULL ? s->opt.threads : 0, err);
 
-	if (s == NULL || info == NULL)
-		return api_arg_err(err, "frs_sampler_info: NULL argument");
-	if (n == 0)
-		return api_arg_err(err, "frs_sampler_info: n must not be 0");
-	if (n > API_MAX_N)
-		return api_set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
-	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
+	if (rc != FRS_OK)
+		return rc;
 	if (api_setup_steps(s, &n, 1, seed, &lv) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
 	*info = (struct frs_info){ su->ns, su->sw, su->sh, su->wx, su->wy,

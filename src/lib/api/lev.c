@@ -6,6 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -238,6 +239,33 @@ static void choose_blocks(struct api_lev2 *lv)
 		lv->block[i] = best_use[i] ? bb : 0;
 }
 
+/*
+ * The setups of the levels of plan L that have cells, into lv->su, of
+ * level 0's s0 (2-D and 3-D alike, level_setup their maker): level 0 is
+ * s0 with the largest value of its cells; each reads the cells of its
+ * level, within the slices (rows of pixels, planes of voxels) of axis
+ * ax that its cells span, slice cells apart.  A macro, as the setups are
+ * of two types (type).
+ */
+#define LEVEL_SETUPS(lv, s0, type, level_setup, ax, slice) do {	\
+	for (unsigned l_ = 0; l_ <= (lv)->plan.top; l_++) {		\
+		type *su_ = &(lv)->su[(lv)->n];				\
+		if ((lv)->plan.cells[l_] == 0)				\
+			continue;					\
+		if (l_ == 0) {						\
+			*su_ = *(s0);					\
+			su_->max = (lv)->plan.max[0];			\
+		} else {						\
+			level_setup(su_, (s0), l_, (lv)->plan.max[l_]);	\
+		}							\
+		su_->lev = (lv)->plan.lev;				\
+		su_->cell0 = (uint64_t)(lv)->plan.lo[l_][ax] * (slice);	\
+		su_->cell1 = (uint64_t)((lv)->plan.hi[l_][ax] + 1) *	\
+		    (slice);						\
+		(lv)->n++;						\
+	}								\
+} while (0)
+
 int api_lev2_make(const struct frs_options *o, const struct frs_setup *s0,
     const struct frs_imap *map, struct api_plan *cache, struct api_lev2 *lv)
 {
@@ -256,21 +284,9 @@ int api_lev2_make(const struct frs_options *o, const struct frs_setup *s0,
 		lv->map[0] = *map;
 		return 0;
 	}
-	for (unsigned l = 0; l <= lv->plan.top; l++) {
-		struct frs_setup *su = &lv->su[lv->n];
-		if (lv->plan.cells[l] == 0)
-			continue;
-		if (l == 0) {
-			*su = *s0;
-			su->max = lv->plan.max[0];
-		} else {
-			frs_level_setup(su, s0, l, lv->plan.max[l]);
-		}
-		su->lev = lv->plan.lev;
-		su->cell0 = (uint64_t)lv->plan.lo[l][1] * map->w;
-		su->cell1 = (uint64_t)(lv->plan.hi[l][1] + 1) * map->w;
-		lv->map[lv->n++] = *map;
-	}
+	LEVEL_SETUPS(lv, s0, struct frs_setup, frs_level_setup, 1, map->w);
+	for (unsigned i = 0; i < lv->n; i++)
+		lv->map[i] = *map;
 	choose_blocks(lv);
 	return 0;
 }
@@ -294,21 +310,10 @@ int api_lev3_make(const struct frs_options *o, const struct frs3_setup *s0,
 		lv->vol[0] = *vol;
 		return 0;
 	}
-	for (unsigned l = 0; l <= lv->plan.top; l++) {
-		struct frs3_setup *su = &lv->su[lv->n];
-		if (lv->plan.cells[l] == 0)
-			continue;
-		if (l == 0) {
-			*su = *s0;
-			su->max = lv->plan.max[0];
-		} else {
-			frs3_level_setup(su, s0, l, lv->plan.max[l]);
-		}
-		su->lev = lv->plan.lev;
-		su->cell0 = (uint64_t)lv->plan.lo[l][2] * vol->w * vol->h;
-		su->cell1 = (uint64_t)(lv->plan.hi[l][2] + 1) * vol->w * vol->h;
-		lv->vol[lv->n++] = *vol;
-	}
+	LEVEL_SETUPS(lv, s0, struct frs3_setup, frs3_level_setup, 2,
+	    (uint64_t)vol->w * vol->h);
+	for (unsigned i = 0; i < lv->n; i++)
+		lv->vol[i] = *vol;
 	return 0;
 }
 
@@ -389,15 +394,14 @@ int frs_sampler_levels(const frs_sampler *s, uint64_t n, uint64_t seed,
     frs_error *err)
 {
 	struct api_lev2 lv;
+	int rc;
 
-	if (s == NULL || count == NULL || (levels == NULL && cap > 0))
-		return api_arg_err(err, "frs_sampler_levels: NULL argument");
-	*count = 0;
-	if (n == 0)
-		return api_arg_err(err, "frs_sampler_levels: n must not be 0");
-	if (n > API_MAX_N)
-		return api_set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
-	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
+	if (count != NULL)
+		*count = 0;
+	if ((rc = api_query_args("frs_sampler_levels", s != NULL &&
+	    count != NULL && (levels != NULL || cap == 0), n, s ? s->opt.threads :
+	    0, err)) != FRS_OK)
+		return rc;
 	if (api_setup_steps(s, &n, 1, seed, &lv) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
 	for (unsigned i = 0; i < lv.n && i < cap; i++) {
@@ -418,15 +422,14 @@ int frs_sampler3_levels(const frs_sampler3 *s, uint64_t n, uint64_t seed,
     frs_error *err)
 {
 	struct api_lev3 lv;
+	int rc;
 
-	if (s == NULL || count == NULL || (levels == NULL && cap > 0))
-		return api_arg_err(err, "frs_sampler3_levels: NULL argument");
-	*count = 0;
-	if (n == 0)
-		return api_arg_err(err, "frs_sampler3_levels: n must not be 0");
-	if (n > API_MAX_N)
-		return api_set_err(err, FRS_E_LIMIT, "n: more than 2^40 samples");
-	frs_set_threads(s->opt.threads > 0 ? s->opt.threads : 1);
+	if (count != NULL)
+		*count = 0;
+	if ((rc = api_query_args("frs_sampler3_levels", s != NULL &&
+	    count != NULL && (levels != NULL || cap == 0), n, s ? s->opt.threads :
+	    0, err)) != FRS_OK)
+		return rc;
 	if (api_setup3(s, &n, 1, seed, 1, &lv) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
 	for (unsigned i = 0; i < lv.n && i < cap; i++) {

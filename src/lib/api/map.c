@@ -53,26 +53,28 @@ void frs_map_free(float *map)
 	free(map);
 }
 
+/* Row j of the map, rows stride elements apart (0: width), times
+ * imap_equirect_weight: for maps of floats and of doubles. */
+#define EQUIRECT_ROWS(type, map, width, height, stride) do {		\
+	size_t st_ = (stride) ? (stride) : (width);			\
+	for (uint32_t j_ = 0; (map) != NULL && j_ < (height); j_++) {	\
+		double w_ = imap_equirect_weight(j_, (height));		\
+		for (uint32_t i_ = 0; i_ < (width); i_++)		\
+			(map)[j_ * st_ + i_] = (type)((map)[j_ * st_ + i_] *	\
+			    w_);					\
+	}								\
+} while (0)
+
 void frs_map_equirect(float *map, uint32_t width, uint32_t height,
     size_t stride)
 {
-	stride = stride ? stride : width;
-	for (uint32_t j = 0; map != NULL && j < height; j++) {
-		double wgt = imap_equirect_weight(j, height);
-		for (uint32_t i = 0; i < width; i++)
-			map[j * stride + i] = (float)(map[j * stride + i] * wgt);
-	}
+	EQUIRECT_ROWS(float, map, width, height, stride);
 }
 
 void frs_map_equirect_f64(double *map, uint32_t width, uint32_t height,
     size_t stride)
 {
-	stride = stride ? stride : width;
-	for (uint32_t j = 0; map != NULL && j < height; j++) {
-		double wgt = imap_equirect_weight(j, height);
-		for (uint32_t i = 0; i < width; i++)
-			map[j * stride + i] *= wgt;
-	}
+	EQUIRECT_ROWS(double, map, width, height, stride);
 }
 
 /* The caller's map as the library's (doubles, validated: no NaN, no

@@ -194,16 +194,11 @@ void frs_level_setup(struct frs_setup *s, const struct frs_setup *s0,
     unsigned l, double max)
 {
 	*s = *s0;
-	s->level = l;
-	s->lfac = ldexp(1.0, 2 * (int)l);
-	s->ns = s0->ns >> l;
+	FRS_LEVEL_TAKE(s, l, 2, max);
 	s->sw = (uint64_t)s->ns * s->iw;
 	s->sh = (uint64_t)s->ns * s->ih;
-	s->seed = frs_level_seed(s0->seed, l);
 	s->wx = frs_window_offset(s->seed, 0, s->ns, s->mw);
 	s->wy = frs_window_offset(s->seed, 1, s->ns, s->mh);
-	s->max = max;
-	s->tiles = FRS_TILES_PLAIN;
 	s->tau = frs_tau(s, s->n);
 	s->level0 = (unsigned)floor(log2(fmin((double)s->ns, s->sigma)));
 }

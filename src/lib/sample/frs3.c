@@ -72,18 +72,13 @@ void frs3_level_setup(struct frs3_setup *s, const struct frs3_setup *s0,
     unsigned l, double max)
 {
 	*s = *s0;
-	s->level = l;
-	s->lfac = ldexp(1.0, 3 * (int)l);
-	s->ns = s0->ns >> l;
+	FRS_LEVEL_TAKE(s, l, 3, max);
 	s->sw = (uint64_t)s->ns * s->iw;
 	s->sh = (uint64_t)s->ns * s->ih;
 	s->sd = (uint64_t)s->ns * s->id;
-	s->seed = frs_level_seed(s0->seed, l);
 	s->wx = frs_window_offset(s->seed, 0, s->ns, s->mw);
 	s->wy = frs_window_offset(s->seed, 1, s->ns, s->mh);
 	s->wz = frs_window_offset(s->seed, 2, s->ns, s->md);
-	s->max = max;
-	s->tiles = FRS_TILES_PLAIN;
 	s->tau = frs3_tau(s, s->n);
 }
 

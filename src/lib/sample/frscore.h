@@ -130,6 +130,18 @@ int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
 	(s)->imean = (w).imean;						\
 	(s)->ns = (uint32_t)(w).ns;					\
 } while (0)
+/* What frs_level_setup and frs3_level_setup do alike to s, a copy of
+ * level 0's setup, for level l of k dimensions: n_s / 2^l elements a
+ * cell side, thresholds times 2^(k l), the level's seed and max; the
+ * window and its offset are the caller's, per axis. */
+#define FRS_LEVEL_TAKE(s, l, k, max_) do {				\
+	(s)->level = (l);						\
+	(s)->lfac = ldexp(1.0, (k) * (int)(l));				\
+	(s)->ns >>= (l);						\
+	(s)->seed = frs_level_seed((s)->seed, (l));			\
+	(s)->max = (max_);						\
+	(s)->tiles = FRS_TILES_PLAIN;					\
+} while (0)
 /* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);

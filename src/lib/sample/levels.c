@@ -152,6 +152,18 @@ static void add_cell(struct frs_levels *L, uint64_t i, const uint32_t *c,
 	}
 }
 
+/* The coordinates of the cell after c, x fastest. */
+static void next_cell(const struct frs_levels *L, uint32_t *c)
+{
+	if (++c[0] < L->side[0])
+		return;
+	c[0] = 0;
+	if (++c[1] < L->side[1])
+		return;
+	c[1] = 0;
+	c[2]++;
+}
+
 /* The block of the grid that cell c lies in. */
 static uint64_t block_of(const struct grid *g, const uint32_t *c)
 {
@@ -209,7 +221,7 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
 	double *g = NULL, *m = NULL, *p = NULL, most[FRS_LEVELS_MAX];
 	uint8_t *cap = NULL;
 	struct grid gr;
-	uint64_t nb, i = 0;
+	uint64_t nb, n, i = 0;
 
 	memset(L, 0, sizeof *L);
 	L->dims = dims;
@@ -219,9 +231,10 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
 		L->side[a] = a < dims ? side[a] : 1;
 	make_grid(&gr, L, blur);
 	nb = grid_n(&gr);
+	n = ncells(L);
 	for (unsigned l = 0; l < FRS_LEVELS_MAX; l++)
 		most[l] = ldexp(nm / 4.0, -(int)(dims * l));
-	if ((L->lev = mem_calloc("levels", ncells(L), 1)) == NULL ||
+	if ((L->lev = mem_calloc("levels", n, 1)) == NULL ||
 	    (g = mem_calloc("levels", nb, sizeof *g)) == NULL ||
 	    (m = mem_calloc("levels", nb, sizeof *m)) == NULL ||
 	    (p = mem_calloc("levels", nb + 1, sizeof *p)) == NULL ||
@@ -233,36 +246,26 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
 		return -1;
 	}
 	memset(cap, (int)L->top, nb);
-	for (uint32_t z = 0; z < L->side[2]; z++)
-		for (uint32_t y = 0; y < L->side[1]; y++)
-			for (uint32_t x = 0; x < L->side[0]; x++, i++) {
-				const uint32_t c[3] = { x, y, z };
-				uint64_t b = block_of(&gr, c);
-				unsigned l;
-				if (!(v[i] > 0.0))
-					continue;
-				g[b] += log2_det(t0 * v[i]);
-				m[b] += 1.0;
-				l = cap_level(t0 * v[i], most, cap[b]);
-				cap[b] = (uint8_t)l;
-			}
+	for (uint32_t c[3] = { 0, 0, 0 }; i < n; i++, next_cell(L, c)) {
+		uint64_t b = block_of(&gr, c);
+		if (!(v[i] > 0.0))
+			continue;
+		g[b] += log2_det(t0 * v[i]);
+		m[b] += 1.0;
+		cap[b] = (uint8_t)cap_level(t0 * v[i], most, cap[b]);
+	}
 	if (blur > 0.0) {
 		uint64_t r = blur_radius(blur / (double)gr.f);
 		blur_all(&gr, g, r, p);
 		blur_all(&gr, m, r, p);
 	}
 	i = 0;
-	for (uint32_t z = 0; z < L->side[2]; z++)
-		for (uint32_t y = 0; y < L->side[1]; y++)
-			for (uint32_t x = 0; x < L->side[0]; x++, i++) {
-				const uint32_t c[3] = { x, y, z };
-				uint64_t b = block_of(&gr, c);
-				unsigned l;
-				if (!(v[i] > 0.0))
-					continue;
-				l = clamp_level((bound - g[b] / m[b]) / k, cap[b]);
-				add_cell(L, i, c, v[i], l);
-			}
+	for (uint32_t c[3] = { 0, 0, 0 }; i < n; i++, next_cell(L, c)) {
+		uint64_t b = block_of(&gr, c);
+		if (v[i] > 0.0)
+			add_cell(L, i, c, v[i], clamp_level((bound - g[b] / m[b]) /
+			    k, cap[b]));
+	}
 	free(g);
 	free(m);
 	free(p);
