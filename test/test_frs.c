@@ -229,11 +229,13 @@ static void sorted_lists(void **state)
 }
 
 /* Lists of the values below a bound: exactly those elements, on 1 and 3
- * threads, for every block size; complete lists from half the values on
- * or when the values below repeat. */
+ * threads, for every block size, through the inverse (few values) and
+ * by bands (a 32nd of them and more, 8 bands or more); complete lists
+ * from half the values on, and when the values below repeat, lists of
+ * either kind. */
 static void lists_below(void **state)
 {
-	static const uint64_t below[] = { 0, 1, 37, 1000, 16383, 16384 };
+	static const uint64_t below[] = { 0, 1, 37, 1000, 4000, 16383, 16384 };
 	struct frs_matrix m;
 	(void)state;
 
@@ -241,14 +243,15 @@ static void lists_below(void **state)
 	for (int pass = 0; pass < 4; pass++) {
 		frs_deal_below = pass % 2 ? 0 : (uint64_t)1 << 20;
 		for (uint32_t b = 1; b <= 128; b *= 4)
-			for (size_t i = 0; i < 6; i++) {
+			for (size_t i = 0; i < 7; i++) {
 				struct frs_prep p;
+				uint64_t want = below[i] < m.n / 2 ? below[i] :
+				    FRS_ALL_VALUES;
 				frs_set_threads(1 + 2 * (int)(i % 2));
 				assert_int_equal(frs_prepare_below(&p, &m, 0, b,
 				    below[i]), 0);
-				assert_true(p.below == (below[i] < m.n / 2 &&
-				    (pass < 2 || below[i] == 0) ? below[i] :
-				    FRS_ALL_VALUES));
+				assert_true(p.below == want || (pass >= 2 &&
+				    below[i] > 0 && p.below == FRS_ALL_VALUES));
 				check_lists(&m, &p, b);
 				frs_prep_free(&p);
 			}

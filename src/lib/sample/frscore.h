@@ -217,7 +217,8 @@ int frs_prepare(struct frs_prep *p, const struct frs_matrix *m,
 /* The same with lists of the values below below only: a run whose thresholds stay
  * under it (frs_lim_most) reads nothing else, and they cost a pass over
  * the matrix and O(below), not O(S_M^2).  Complete lists when below is
- * not much smaller than the matrix or its values repeat. */
+ * half the matrix's values or more, or when the values below repeat and
+ * the lists come through the inverse (by_bands in frs.c chooses). */
 int frs_prepare_below(struct frs_prep *p, const struct frs_matrix *m,
     int minmap, uint32_t block, uint64_t below);
 /* Below this many values (or with many small blocks) the partial lists

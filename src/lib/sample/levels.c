@@ -136,39 +136,93 @@ static unsigned clamp_level(double x, unsigned top)
 	return x <= 0.0 ? 0 : x >= top ? top : (unsigned)x;
 }
 
-/* Cell i, at coordinates c, of value v, joins level l. */
-static void add_cell(struct frs_levels *L, uint64_t i, const uint32_t *c,
-    double v, unsigned l)
+/* The first block of the grid in the row of cells (y, z). */
+static uint64_t row_block(const struct grid *g, uint32_t y, uint32_t z)
 {
-	L->lev[i] = (uint8_t)l;
-	L->max[l] = v > L->max[l] ? v : L->max[l];
-	L->sum[l] += v;
-	if (L->cells[l]++ == 0)
-		for (unsigned a = 0; a < 3; a++)
-			L->lo[l][a] = L->hi[l][a] = c[a];
-	for (unsigned a = 0; a < 3; a++) {
-		L->lo[l][a] = c[a] < L->lo[l][a] ? c[a] : L->lo[l][a];
-		L->hi[l][a] = c[a] > L->hi[l][a] ? c[a] : L->hi[l][a];
+	return ((z >> g->lf) * g->side[1] + (y >> g->lf)) * g->side[0];
+}
+
+/* The cells of row (y, z) of the values v at their levels, from the
+ * level of each block (lev_b): each cell's level, and each level's
+ * count, box, largest value and sum, in the order of the cells. */
+static void add_row(struct frs_levels *L, const struct grid *g,
+    const uint8_t *lev_b, const double *v, uint32_t y, uint32_t z)
+{
+	uint64_t b0 = row_block(g, y, z), i0 = ((uint64_t)z * L->side[1] + y) *
+	    L->side[0];
+	uint32_t seen = 0;	/* the levels of this row, a bit each */
+
+	for (uint32_t x = 0; x < L->side[0]; x++) {
+		double c = v[i0 + x];
+		unsigned l = lev_b[b0 + (x >> g->lf)];
+		if (!(c > 0.0))
+			continue;
+		L->lev[i0 + x] = (uint8_t)l;
+		L->max[l] = c > L->max[l] ? c : L->max[l];
+		L->sum[l] += c;
+		if (L->cells[l]++ == 0) {
+			L->lo[l][0] = L->hi[l][0] = x;
+			L->lo[l][1] = L->hi[l][1] = y;
+			L->lo[l][2] = L->hi[l][2] = z;
+		}
+		L->lo[l][0] = x < L->lo[l][0] ? x : L->lo[l][0];
+		L->hi[l][0] = x > L->hi[l][0] ? x : L->hi[l][0];
+		seen |= 1u << l;
 	}
+	for (unsigned l = 0; seen != 0; l++, seen >>= 1)
+		if (seen & 1) {	/* rows come in order of y within z */
+			L->lo[l][1] = y < L->lo[l][1] ? y : L->lo[l][1];
+			L->hi[l][1] = y > L->hi[l][1] ? y : L->hi[l][1];
+			L->hi[l][2] = z;
+		}
 }
 
-/* The coordinates of the cell after c, x fastest. */
-static void next_cell(const struct frs_levels *L, uint32_t *c)
+/* The cells of row (y, z) of v into their blocks: the sum of log2 t
+ * (log2 t0 + log2 v), the count of the cells of non-zero importance and
+ * their largest value.  log2 v of a run of cells in one block from one
+ * logarithm: the sum of their exponents and log2 of the product of their
+ * mantissas (in [1, 2), the product kept below 2^513: close enough,
+ * where a logarithm a cell cost most of the plan). */
+static void sum_row(const struct frs_levels *L, const struct grid *gr,
+    const double *v, uint32_t y, uint32_t z, double log2_t0, double *g,
+    double *m, double *hi)
 {
-	if (++c[0] < L->side[0])
-		return;
-	c[0] = 0;
-	if (++c[1] < L->side[1])
-		return;
-	c[1] = 0;
-	c[2]++;
-}
+	uint64_t b0 = row_block(gr, y, z);
+	const double *r = v + ((uint64_t)z * L->side[1] + y) * L->side[0];
 
-/* The block of the grid that cell c lies in. */
-static uint64_t block_of(const struct grid *g, const uint32_t *c)
-{
-	return ((c[2] >> g->lf) * g->side[1] + (c[1] >> g->lf)) * g->side[0] +
-	    (c[0] >> g->lf);
+	for (uint32_t x0 = 0; x0 < L->side[0]; x0 += (uint32_t)gr->f) {
+		uint32_t x1 = L->side[0] - x0 < gr->f ? L->side[0] :
+		    x0 + (uint32_t)gr->f;
+		uint64_t b = b0 + (x0 >> gr->lf);
+		double prod = 1.0, sum = 0.0, cnt = 0.0, top = hi[b];
+		int64_t e = 0;
+		for (uint32_t x = x0; x < x1; x++) {
+			double c = r[x], mant;
+			uint64_t bits;
+			if (!(c > 0.0))
+				continue;
+			cnt += 1.0;
+			top = c > top ? c : top;
+			memcpy(&bits, &c, sizeof bits);
+			if ((bits >> 52) == 0) {	/* subnormal */
+				sum += log2_det(c);
+				continue;
+			}
+			e += (int64_t)(bits >> 52) - 1023;
+			bits = (bits & 0xfffffffffffffULL) | 0x3ff0000000000000ULL;
+			memcpy(&mant, &bits, sizeof mant);
+			prod *= mant;
+			if (prod >= 0x1p512) {	/* exact: a power of two */
+				prod *= 0x1p-512;
+				e += 512;
+			}
+		}
+		if (cnt > 0.0) {
+			g[b] += cnt * log2_t0 + (double)e + log2_det(prod) + sum;
+			m[b] += cnt;
+			hi[b] = top;
+		}
+	}
 }
 
 /* The grid of blocks for smoothing over blur cells: as coarse as keeps
@@ -218,10 +272,12 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
     double nm, double sigma, double blur)
 {
 	double k = dims, bound = log2(nm) - k * log2(sigma);
-	double *g = NULL, *m = NULL, *p = NULL, most[FRS_LEVELS_MAX];
-	uint8_t *cap = NULL;
+	double *g = NULL, *m = NULL, *p = NULL, *hi = NULL;
+	double most[FRS_LEVELS_MAX];
+	uint8_t *lev_b = NULL;
 	struct grid gr;
-	uint64_t nb, n, i = 0;
+	uint64_t nb;
+	int rc = -1;
 
 	memset(L, 0, sizeof *L);
 	L->dims = dims;
@@ -231,46 +287,42 @@ int frs_levels_plan(struct frs_levels *L, unsigned dims,
 		L->side[a] = a < dims ? side[a] : 1;
 	make_grid(&gr, L, blur);
 	nb = grid_n(&gr);
-	n = ncells(L);
 	for (unsigned l = 0; l < FRS_LEVELS_MAX; l++)
 		most[l] = ldexp(nm / 4.0, -(int)(dims * l));
-	if ((L->lev = mem_calloc("levels", n, 1)) == NULL ||
+	if ((L->lev = mem_calloc("levels", ncells(L), 1)) == NULL ||
 	    (g = mem_calloc("levels", nb, sizeof *g)) == NULL ||
 	    (m = mem_calloc("levels", nb, sizeof *m)) == NULL ||
+	    (hi = mem_calloc("levels", nb, sizeof *hi)) == NULL ||
 	    (p = mem_calloc("levels", nb + 1, sizeof *p)) == NULL ||
-	    (cap = mem_calloc("levels", nb, 1)) == NULL) {
-		free(g);
-		free(m);
-		free(p);
-		frs_levels_free(L);
-		return -1;
-	}
-	memset(cap, (int)L->top, nb);
-	for (uint32_t c[3] = { 0, 0, 0 }; i < n; i++, next_cell(L, c)) {
-		uint64_t b = block_of(&gr, c);
-		if (!(v[i] > 0.0))
-			continue;
-		g[b] += log2_det(t0 * v[i]);
-		m[b] += 1.0;
-		cap[b] = (uint8_t)cap_level(t0 * v[i], most, cap[b]);
-	}
+	    (lev_b = mem_calloc("levels", nb, 1)) == NULL)
+		goto out;
+	for (uint32_t z = 0; z < L->side[2]; z++)
+		for (uint32_t y = 0; y < L->side[1]; y++)
+			sum_row(L, &gr, v, y, z, log2_det(t0), g, m, hi);
 	if (blur > 0.0) {
 		uint64_t r = blur_radius(blur / (double)gr.f);
 		blur_all(&gr, g, r, p);
 		blur_all(&gr, m, r, p);
 	}
-	i = 0;
-	for (uint32_t c[3] = { 0, 0, 0 }; i < n; i++, next_cell(L, c)) {
-		uint64_t b = block_of(&gr, c);
-		if (v[i] > 0.0)
-			add_cell(L, i, c, v[i], clamp_level((bound - g[b] / m[b]) /
-			    k, cap[b]));
-	}
+	/* Each block's level: the cap of its brightest cell (the least of
+	 * its cells' caps: cap_level falls as t grows). */
+	for (uint64_t b = 0; b < nb; b++)
+		if (m[b] > 0.0)
+			lev_b[b] = (uint8_t)clamp_level((bound - g[b] / m[b]) / k,
+			    cap_level(t0 * hi[b], most, L->top));
+	for (uint32_t z = 0; z < L->side[2]; z++)
+		for (uint32_t y = 0; y < L->side[1]; y++)
+			add_row(L, &gr, lev_b, v, y, z);
+	rc = 0;
+out:
+	if (rc < 0)
+		frs_levels_free(L);
 	free(g);
 	free(m);
+	free(hi);
 	free(p);
-	free(cap);
-	return 0;
+	free(lev_b);
+	return rc;
 }
 
 unsigned frs_levels_used(const struct frs_levels *L)
