@@ -228,6 +228,40 @@ static void sorted_lists(void **state)
 	frd_free(&m);
 }
 
+/* The minmap: level l holds the least value of each 2^l x 2^l block,
+ * against a brute-force minimum, on 1 and 3 threads, on a matrix whose
+ * first levels are built in parallel (2^16 minima and more). */
+static void minmap_levels(void **state)
+{
+	struct frs_matrix m;
+	(void)state;
+
+	tu_perm_matrix(&m, 1024, 512, 7);
+	for (int t = 1; t <= 3; t += 2) {
+		struct frs_prep p;
+		frs_set_threads(t);
+		assert_int_equal(frs_prepare(&p, &m, 1, 0), 0);
+		assert_int_equal(p.nlev, 10);	/* down to 2 x 1 */
+		for (unsigned l = 1; l < p.nlev; l++) {
+			uint32_t w = m.w >> l, h = m.h >> l, s = 1u << l;
+			for (uint32_t y = 0; y < h; y += 1 + h / 37)
+				for (uint32_t x = 0; x < w; x += 1 + w / 41) {
+					uint32_t lo = UINT32_MAX;
+					for (uint32_t k = 0; k < s * s; k++) {
+						uint32_t v = m.v[(size_t)(y * s + k / s) *
+						    m.w + x * s + k % s];
+						lo = v < lo ? v : lo;
+					}
+					assert_int_equal(p.lev[l][(size_t)y * w + x],
+					    lo);
+				}
+		}
+		frs_prep_free(&p);
+	}
+	frs_set_threads(1);
+	frd_free(&m);
+}
+
 /* Lists of the values below a bound: exactly those elements, on 1 and 3
  * threads, for every block size, through the inverse (few values) and
  * by bands (a 32nd of them and more, 8 bands or more); complete lists
@@ -350,5 +384,6 @@ TU_MAIN(NULL, NULL,
 	cmocka_unit_test(thread_order),
 	cmocka_unit_test(progressive),
 	cmocka_unit_test(sorted_lists),
+	cmocka_unit_test(minmap_levels),
 	cmocka_unit_test(lists_below),
 	cmocka_unit_test(sorted_below))

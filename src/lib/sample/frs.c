@@ -438,6 +438,31 @@ void frs_prep_free(struct frs_prep *p)
 	memset(p, 0, sizeof *p);
 }
 
+/* One level of the minmap from the one below: rows [y0, y1) of up, of
+ * width w, from lo, of width pw. */
+struct halve {
+	const uint32_t *lo;
+	uint32_t *up;
+	uint32_t w, pw;
+};
+
+static int halve_rows(void *ctx, uint64_t y0, uint64_t y1)
+{
+	const struct halve *hv = ctx;
+
+	for (uint64_t y = y0; y < y1; y++)
+		for (uint32_t x = 0; x < hv->w; x++) {
+			const uint32_t *q = hv->lo + 2 * y * hv->pw + 2 * x;
+			uint32_t a = q[0] < q[1] ? q[0] : q[1];
+			uint32_t b = q[hv->pw] < q[hv->pw + 1] ? q[hv->pw] :
+			    q[hv->pw + 1];
+			hv->up[y * hv->w + x] = a < b ? a : b;
+		}
+	return 0;
+}
+
+/* The minmap, each level in parallel over rows of 2^16 minima or more
+ * (level 1 of a 2048^2 matrix: 2.5 ms on one thread). */
 static int make_minmap(struct frs_prep *p)
 {
 	const struct frs_matrix *m = p->m;
@@ -446,20 +471,15 @@ static int make_minmap(struct frs_prep *p)
 	p->nlev = 1;
 	while ((m->w >> p->nlev) > 0 && (m->h >> p->nlev) > 0 && p->nlev < 32) {
 		unsigned l = p->nlev;
-		uint32_t w = m->w >> l, h = m->h >> l, pw = m->w >> (l - 1);
-		const uint32_t *lo = p->lev[l - 1];
-		uint32_t *up = malloc((size_t)w * h * sizeof *up);
-		if (up == NULL)
+		uint32_t w = m->w >> l, h = m->h >> l;
+		struct halve hv = { p->lev[l - 1], NULL, w, m->w >> (l - 1) };
+		if ((hv.up = malloc((size_t)w * h * sizeof *hv.up)) == NULL)
 			return frs_fail("out of memory for the minmap");
-		for (uint32_t y = 0; y < h; y++)
-			for (uint32_t x = 0; x < w; x++) {
-				const uint32_t *q = lo + (size_t)2 * y * pw + 2 * x;
-				uint32_t a = q[0] < q[1] ? q[0] : q[1];
-				uint32_t b = q[pw] < q[pw + 1] ? q[pw] : q[pw + 1];
-				up[(size_t)y * w + x] = a < b ? a : b;
-			}
-		p->lev[l] = up;
+		p->lev[l] = hv.up;	/* frs_prep_free's, whatever comes */
 		p->nlev++;
+		if (frs_parallel_if((uint64_t)w * h >= 65536, h, (65535 + w) / w,
+		    halve_rows, &hv) < 0)
+			return -1;
 	}
 	return 0;
 }
