@@ -682,50 +682,7 @@ static void radix_pairs(uint32_t *k, uint32_t *i, uint32_t *tk, uint32_t *ti,
 	}
 }
 
-/* Small blocks, block rows r0 .. r1 - 1: each row's values (S_M b of
- * them) sorted in cache with their positions, then dealt to the row's
- * blocks in that order.  One pass over the whole matrix would scatter to
- * (S_M / b)^2 places at once. */
-static int sort_rows(void *ctx, uint64_t r0, uint64_t r1)
-{
-	const struct scatter *sc = ctx;
-	struct frs_prep *p = sc->p;
-	const struct frs_matrix *m = p->m;
-	uint32_t blk = p->block, bw = m->w / blk;
-	unsigned lb = log2u64(blk), lw = log2u64(m->w);
-	size_t per = (size_t)m->w * blk, bb = (size_t)blk * blk;
-	uint32_t *t = malloc(4 * per * sizeof *t);
-	size_t *fill = malloc(bw * sizeof *fill);
-
-	if (t == NULL || fill == NULL) {
-		free(t);
-		free(fill);
-		return frs_fail("out of memory for the sorted lists");
-	}
-	for (uint64_t r = r0; r < r1; r++) {
-		size_t base = (size_t)r * per;
-		uint32_t max = 0;
-		for (size_t j = 0; j < per; j++) {	/* the rows are contiguous */
-			t[j] = m->v[base + j];
-			t[per + j] = (uint32_t)(base + j);
-			max = t[j] > max ? t[j] : max;
-		}
-		radix_pairs(t, t + per, t + 2 * per, t + 3 * per, per, max);
-		for (uint32_t k = 0; k < bw; k++)
-			fill[k] = base + k * bb;
-		for (size_t j = 0; j < per; j++) {
-			uint32_t i = t[per + j], x = i & (m->w - 1), y = i >> lw;
-			size_t at = fill[x >> lb]++;
-			p->sval[at] = t[j];
-			p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
-		}
-	}
-	free(t);
-	free(fill);
-	return 0;
-}
-
-/* More blocks than this: sort_rows, no global inverse. */
+/* More blocks than this: complete lists by bands, no global inverse. */
 #define ONE_PASS_BLOCKS 4096
 
 /* The lists by counting over inv: count, place each range, put. */
@@ -795,18 +752,18 @@ static int deal_below(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
 }
 
 /*
- * Lists of the values below `below` alone, a band of blocks (b rows of
- * the matrix) at a time, in parallel over bands: a first read counts
- * each block's values below (soff), a second gathers a band's in the
- * order of the matrix, sorts them by value (radix_pairs, stable) and
- * deals them to its blocks, whose lists lie side by side.  Each band's
- * work stays in cache: dealing values in order over the whole matrix
- * (the inverse permutation) stored to every block's list at once.  Equal
- * values keep the matrix's order, as in the complete lists.
+ * Lists a band of blocks (b rows of the matrix) at a time, in parallel
+ * over bands: a band's values below lim gathered in the order of the
+ * matrix, sorted by value (radix_pairs, stable: equal values keep that
+ * order) and dealt to its blocks, whose lists lie side by side from
+ * soff.  Each band's work stays in cache, where dealing the values in
+ * order over the whole matrix (the inverse permutation) stores to every
+ * block's list at once.  Complete lists keep every value (lim 2^32);
+ * partial ones count each block's values below first (count_band).
  */
 struct bands {
 	struct frs_prep *p;
-	uint32_t lim;		/* the values below it */
+	uint64_t lim;		/* the values below it */
 	uint64_t most;		/* the most values of a band */
 };
 
@@ -866,18 +823,20 @@ static int place_band(void *ctx, uint64_t r0, uint64_t r1)
 		return frs_fail("out of memory for the sorted lists");
 	}
 	for (uint64_t r = r0; r < r1; r++) {
-		uint32_t *tk = t, *ti = t + bd->most + 1;
+		uint32_t *tk = t, *ti = t + bd->most + 1, max = 0;
 		size_t n = 0;
 		for (uint32_t y = 0; y < b; y++) {
 			const uint32_t *row = m->v + (r * b + y) * m->w;
 			for (uint32_t x = 0; x < m->w; x++) {
+				int keep = row[x] < bd->lim;
 				tk[n] = row[x];	/* kept when below: no branch */
 				ti[n] = y << lw | x;
-				n += row[x] < bd->lim;
+				max = keep && row[x] > max ? row[x] : max;
+				n += (size_t)keep;
 			}
 		}
 		sort_pairs(tk, ti, ti + bd->most + 1, ti + 2 * (bd->most + 1), n,
-		    bd->lim - 1);
+		    max);
 		memcpy(fill, p->soff + r * bw, bw * sizeof *fill);
 		for (size_t j = 0; j < n; j++) {
 			uint32_t x = ti[j] & (m->w - 1), y = ti[j] >> lw;
@@ -909,7 +868,7 @@ static int bands_below(struct frs_prep *p, uint64_t below)
 {
 	const struct frs_matrix *m = p->m;
 	uint32_t b = p->block, bw = m->w / b, nband = m->h / b;
-	struct bands bd = { p, (uint32_t)below, 0 };
+	struct bands bd = { p, below, 0 };
 	uint64_t nblk = (uint64_t)bw * nband;
 
 	memset(p->soff, 0, (nblk + 1) * sizeof *p->soff);
@@ -969,7 +928,7 @@ static int sorted_below(struct frs_prep *p, uint64_t below)
  * thesis's cap 2 n_s^2 / sigma^2 is 0 for n_s < sigma and too small for
  * some blocks, and a sample lost there is a bias).  O(S_M^2) for any
  * block size, in parallel over block rows: many small blocks by
- * sort_rows; few large ones of a permutation (every matrix read through
+ * bands (place_band); few large ones of a permutation (every matrix read through
  * frd(5)) by counting over the inverse permutation; others by qsort.
  * The values below `below` alone, when they are fewer than half, in
  * lists of just those values: by bands (bands_below) or through their
@@ -1012,8 +971,8 @@ static int make_sorted(struct frs_prep *p, uint32_t b, uint64_t below)
 	for (uint64_t k = 0; k <= nblk; k++)
 		p->soff[k] = (uint32_t)(k * bb);
 	if (nblk > ONE_PASS_BLOCKS) {
-		struct scatter sc = { p, NULL, 0, 0, 0, NULL };
-		rc = frs_parallel(m->h / b, 1, sort_rows, &sc, NULL);
+		struct bands bd = { p, (uint64_t)1 << 32, (uint64_t)m->w * b };
+		rc = frs_parallel(m->h / b, 1, place_band, &bd, NULL);
 	} else if ((inv = mem_big(m->n * sizeof *inv)) == NULL)
 		rc = frs_fail("out of memory for the sorted lists");
 	else if (is_permutation(m)) {
