@@ -135,7 +135,12 @@ expect_fail "--sets: a short dart set is an error" 1 "placed only" "$T/o.pts" \
 # count (and the sets), not with -q, none for a short run.
 # note_of CMD...: CMD's standard error in $T/note, CMD stopped once the
 # note is there (or after 20 s); its output must not be left.
+# The note and the output are cleared first: a note left from the case
+# before would stop the loop at once, and a stop before the exec would land
+# in this shell's TERM trap, not in CMD, which then runs to the end.
 note_of() {
+	: >"$T/note"
+	rm -f "$T/long.pts"
 	"$@" 2>"$T/note" &
 	pid=$!
 	i=0

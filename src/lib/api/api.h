@@ -187,7 +187,7 @@ struct api_lev2 {
 	unsigned n;
 	struct frs_setup base;
 	struct frs_setup su[FRS_LEVELS_MAX];
-	struct frs_imap map[FRS_LEVELS_MAX];	/* the sampler's, each */
+	struct frs_imap map;	/* the sampler's, for every level */
 	struct frs_levels plan;	/* lev NULL with one level; the levels'
 				 * setups point to it */
 	uint32_t block[FRS_LEVELS_MAX];	/* Sorted's lists (api_lev2_block) */
@@ -217,7 +217,7 @@ struct api_lev3 {
 	unsigned n;
 	struct frs3_setup base;
 	struct frs3_setup su[FRS_LEVELS_MAX];
-	struct frs_vol vol[FRS_LEVELS_MAX];
+	struct frs_vol vol;	/* the sampler's, for every level */
 	struct frs_levels plan;
 };
 int api_lev3_make(const struct frs_options *o, const struct frs3_setup *s0,

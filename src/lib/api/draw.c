@@ -87,7 +87,7 @@ static int xcount_fn(void *ctx, double tau, uint64_t *count)
 				return -1;
 			x->have[i] = 1;
 		}
-		if (frs_sample(su, &x->lv->map[i], &x->view[i], FRS_SORTED,
+		if (frs_sample(su, &x->lv->map, &x->view[i], FRS_SORTED,
 		    &su->n, 1, 1, &r) < 0)
 			return -1;
 		*count += r.count;
@@ -190,9 +190,9 @@ static int run(const void *vs, const uint64_t *steps, unsigned nsteps,
 	st->lv = lv;
 	for (unsigned i = 0; i < lv->n; i++) {
 		const struct frs_setup *su = &lv->su[i];
-		if ((s->ocl != NULL ? frs_sample_cl(s->ocl, su, &lv->map[i],
+		if ((s->ocl != NULL ? frs_sample_cl(s->ocl, su, &lv->map,
 		    &view[i], s->algo, steps, nsteps, count_only, &st->r[i]) :
-		    frs_sample(su, &lv->map[i], &view[i], (enum frs_impl)s->algo,
+		    frs_sample(su, &lv->map, &view[i], (enum frs_impl)s->algo,
 		    steps, nsteps, count_only, &st->r[i])) < 0) {
 			rc = api_lib_err(err, FRS_E_LIMIT);
 			api_store_set(st, 2, nsteps, i);
@@ -347,7 +347,7 @@ static int drun_begin(const frs_sampler *s, uint64_t n, uint64_t seed,
 	for (unsigned i = 0; i < d->lv.n; i++) {
 		struct dlev *dl = &d->l[i];
 		uint64_t m;
-		*dl = (struct dlev){ &d->lv.su[i], &d->lv.map[i], &d->view[i],
+		*dl = (struct dlev){ &d->lv.su[i], &d->lv.map, &d->view[i],
 		    NULL, 0, { 0 } };
 		if ((rc = chunk_starts(dl, err)) != FRS_OK) {
 			drun_end(d);

@@ -66,7 +66,7 @@ static int xcount3_fn(void *ctx, double tau, uint64_t *count)
 		struct frs3_prep view;
 		struct frs3_result r;
 		if (api_sampler3_prep(x->s, su, &view) < 0 ||
-		    frs3_sample(su, &x->lv->vol[i], &view, algo3(x->s), &su->n, 1,
+		    frs3_sample(su, &x->lv->vol, &view, algo3(x->s), &su->n, 1,
 		    1, &r) < 0)
 			return -1;
 		*count += r.count;
@@ -139,7 +139,7 @@ static int run3(const void *vs, const uint64_t *steps, unsigned nsteps,
 		struct frs3_prep view;
 		if (api_sampler3_prep(s, &lv->su[i], &view) < 0)
 			rc = api_lib_err(err, FRS_E_FORMAT);
-		else if (frs3_sample(&lv->su[i], &lv->vol[i], &view, algo3(s),
+		else if (frs3_sample(&lv->su[i], &lv->vol, &view, algo3(s),
 		    steps, nsteps, count_only, &st->r3[i]) < 0)
 			rc = api_lib_err(err, FRS_E_LIMIT);
 		if (rc != FRS_OK) {

@@ -156,7 +156,9 @@ static int plan_levels(const struct frs_options *o, unsigned dims,
 			return -1;
 		cache_put(cache, t0, ns, L);
 	}
-	if (frs_levels_used(L) == 1 && L->cells[0] > 0) {
+	/* One level, level 0's: the thesis's window, no plan (lev NULL). */
+	if (frs_levels_used(L) == 0 || (frs_levels_used(L) == 1 &&
+	    L->cells[0] > 0)) {
 		frs_levels_free(L);
 		return 0;
 	}
@@ -241,13 +243,19 @@ static void choose_blocks(struct api_lev2 *lv)
 
 /*
  * The setups of the levels of plan L that have cells, into lv->su, of
- * level 0's s0 (2-D and 3-D alike, level_setup their maker): level 0 is
- * s0 with the largest value of its cells; each reads the cells of its
- * level, within the slices (rows of pixels, planes of voxels) of axis
- * ax that its cells span, slice cells apart.  A macro, as the setups are
- * of two types (type).
+ * level 0's s0 (2-D and 3-D alike, level_setup their maker): s0 alone
+ * without a plan (one level); else level 0 is s0 with the largest value
+ * of its cells, and each level reads the cells of its level, within the
+ * slices (rows of pixels, planes of voxels) of axis ax that its cells
+ * span, slice cells apart.  A macro, as the setups are of two types
+ * (type).
  */
 #define LEVEL_SETUPS(lv, s0, type, level_setup, ax, slice) do {	\
+	if ((lv)->plan.lev == NULL) {					\
+		(lv)->su[0] = *(s0);					\
+		(lv)->n = 1;						\
+		break;							\
+	}								\
 	for (unsigned l_ = 0; l_ <= (lv)->plan.top; l_++) {		\
 		type *su_ = &(lv)->su[(lv)->n];				\
 		if ((lv)->plan.cells[l_] == 0)				\
@@ -270,24 +278,16 @@ int api_lev2_make(const struct frs_options *o, const struct frs_setup *s0,
     const struct frs_imap *map, struct api_plan *cache, struct api_lev2 *lv)
 {
 	const uint32_t side[2] = { map->w, map->h }, msize[2] = { s0->mw, s0->mh };
-	int k;
 
 	memset(lv, 0, sizeof *lv);
 	lv->base = *s0;
-	k = plan_levels(o, 2, side, msize, map->v, s0->tau * s0->iscale,
-	    s0->ns, s0->sigma, cache, &lv->plan);
-	if (k < 0)
+	lv->map = *map;
+	if (plan_levels(o, 2, side, msize, map->v, s0->tau * s0->iscale,
+	    s0->ns, s0->sigma, cache, &lv->plan) < 0)
 		return -1;
-	if (k == 0) {
-		lv->n = 1;
-		lv->su[0] = *s0;
-		lv->map[0] = *map;
-		return 0;
-	}
 	LEVEL_SETUPS(lv, s0, struct frs_setup, frs_level_setup, 1, map->w);
-	for (unsigned i = 0; i < lv->n; i++)
-		lv->map[i] = *map;
-	choose_blocks(lv);
+	if (lv->plan.lev != NULL)
+		choose_blocks(lv);
 	return 0;
 }
 
@@ -296,25 +296,26 @@ int api_lev3_make(const struct frs_options *o, const struct frs3_setup *s0,
 {
 	const uint32_t side[3] = { vol->w, vol->h, vol->d };
 	const uint32_t msize[3] = { s0->mw, s0->mh, s0->md };
-	int k;
 
 	memset(lv, 0, sizeof *lv);
 	lv->base = *s0;
-	k = plan_levels(o, 3, side, msize, vol->v, s0->tau * s0->iscale,
-	    s0->ns, s0->sigma, cache, &lv->plan);
-	if (k < 0)
+	lv->vol = *vol;
+	if (plan_levels(o, 3, side, msize, vol->v, s0->tau * s0->iscale,
+	    s0->ns, s0->sigma, cache, &lv->plan) < 0)
 		return -1;
-	if (k == 0) {
-		lv->n = 1;
-		lv->su[0] = *s0;
-		lv->vol[0] = *vol;
-		return 0;
-	}
 	LEVEL_SETUPS(lv, s0, struct frs3_setup, frs3_level_setup, 2,
 	    (uint64_t)vol->w * vol->h);
-	for (unsigned i = 0; i < lv->n; i++)
-		lv->vol[i] = *vol;
 	return 0;
+}
+
+/* most and the window elements of the cells of level l of plan L, n_s
+ * a cell side in dims dimensions: at most UINT64_MAX. */
+static uint64_t add_most(uint64_t most, const struct frs_levels *L,
+    unsigned l, uint64_t ns, unsigned dims)
+{
+	uint64_t e = L->cells[l] * ns * ns * (dims == 3 ? ns : 1);
+
+	return e > UINT64_MAX - most ? UINT64_MAX : most + e;
 }
 
 uint64_t api_lev2_most(const struct api_lev2 *lv)
@@ -322,13 +323,10 @@ uint64_t api_lev2_most(const struct api_lev2 *lv)
 	uint64_t most = 0;
 
 	if (lv->plan.lev == NULL)
-		return frs_exact_most(lv->map[0].v, (uint64_t)lv->map[0].w *
-		    lv->map[0].h, lv->su[0].ns, 2);
-	for (unsigned i = 0; i < lv->n; i++) {
-		uint64_t ns = lv->su[i].ns;
-		uint64_t e = lv->plan.cells[lv->su[i].level] * ns * ns;
-		most = e > UINT64_MAX - most ? UINT64_MAX : most + e;
-	}
+		return frs_exact_most(lv->map.v, (uint64_t)lv->map.w *
+		    lv->map.h, lv->su[0].ns, 2);
+	for (unsigned i = 0; i < lv->n; i++)
+		most = add_most(most, &lv->plan, lv->su[i].level, lv->su[i].ns, 2);
 	return most;
 }
 
@@ -337,24 +335,27 @@ uint64_t api_lev3_most(const struct api_lev3 *lv)
 	uint64_t most = 0;
 
 	if (lv->plan.lev == NULL)
-		return frs_exact_most(lv->vol[0].v, (uint64_t)lv->vol[0].w *
-		    lv->vol[0].h * lv->vol[0].d, lv->su[0].ns, 3);
-	for (unsigned i = 0; i < lv->n; i++) {
-		uint64_t ns = lv->su[i].ns;
-		uint64_t e = lv->plan.cells[lv->su[i].level] * ns * ns * ns;
-		most = e > UINT64_MAX - most ? UINT64_MAX : most + e;
-	}
+		return frs_exact_most(lv->vol.v, (uint64_t)lv->vol.w *
+		    lv->vol.h * lv->vol.d, lv->su[0].ns, 3);
+	for (unsigned i = 0; i < lv->n; i++)
+		most = add_most(most, &lv->plan, lv->su[i].level, lv->su[i].ns, 3);
 	return most;
 }
 
+/* The exact count's taus x into level 0's setup and every level's
+ * (tau_of: frs_tau or frs3_tau). */
+#define LEVEL_EXACT(lv, x, tau_of) do {				\
+	(lv)->base.exact = *(x);					\
+	(lv)->base.tau = tau_of(&(lv)->base, (lv)->base.n);		\
+	for (unsigned i_ = 0; i_ < (lv)->n; i_++) {			\
+		(lv)->su[i_].exact = *(x);				\
+		(lv)->su[i_].tau = tau_of(&(lv)->su[i_], (lv)->su[i_].n);	\
+	}								\
+} while (0)
+
 void api_lev3_exact(struct api_lev3 *lv, const struct frs_xtau *x)
 {
-	lv->base.exact = *x;
-	lv->base.tau = frs3_tau(&lv->base, lv->base.n);
-	for (unsigned i = 0; i < lv->n; i++) {
-		lv->su[i].exact = *x;
-		lv->su[i].tau = frs3_tau(&lv->su[i], lv->su[i].n);
-	}
+	LEVEL_EXACT(lv, x, frs3_tau);
 }
 
 uint32_t api_lev2_block(const struct api_lev2 *lv, unsigned i)
@@ -381,12 +382,7 @@ uint64_t api_lev2_below(const struct api_lev2 *lv, const uint64_t *steps,
 
 void api_lev2_exact(struct api_lev2 *lv, const struct frs_xtau *x)
 {
-	lv->base.exact = *x;
-	lv->base.tau = frs_tau(&lv->base, lv->base.n);
-	for (unsigned i = 0; i < lv->n; i++) {
-		lv->su[i].exact = *x;
-		lv->su[i].tau = frs_tau(&lv->su[i], lv->su[i].n);
-	}
+	LEVEL_EXACT(lv, x, frs_tau);
 }
 
 int frs_sampler_levels(const frs_sampler *s, uint64_t n, uint64_t seed,
@@ -409,7 +405,7 @@ int frs_sampler_levels(const frs_sampler *s, uint64_t n, uint64_t seed,
 		levels[i] = (struct frs_level_info){ su->level, su->ns,
 		    { su->sw, su->sh, 1 }, { su->wx, su->wy, 0 },
 		    lv.plan.lev != NULL ? lv.plan.cells[su->level] :
-		    frs_exact_most(lv.map[i].v, (uint64_t)su->iw * su->ih, 1, 2),
+		    frs_exact_most(lv.map.v, (uint64_t)su->iw * su->ih, 1, 2),
 		    su->tau };
 	}
 	*count = lv.n;
@@ -437,7 +433,7 @@ int frs_sampler3_levels(const frs_sampler3 *s, uint64_t n, uint64_t seed,
 		levels[i] = (struct frs_level_info){ su->level, su->ns,
 		    { su->sw, su->sh, su->sd }, { su->wx, su->wy, su->wz },
 		    lv.plan.lev != NULL ? lv.plan.cells[su->level] :
-		    frs_exact_most(lv.vol[i].v, (uint64_t)su->iw * su->ih * su->id,
+		    frs_exact_most(lv.vol.v, (uint64_t)su->iw * su->ih * su->id,
 		    1, 3), su->tau };
 	}
 	*count = lv.n;

@@ -71,7 +71,7 @@ static void points(const struct api_store *st, unsigned part, uint64_t c,
 		const struct frs_elem *e = st->r[part].chunk[c].e + i;
 		frs_points(su, e, k, p);
 		for (size_t j = 0; pdf != NULL && j < k; j++)
-			pdf[j] = api_pdf(su, &st->lv->map[part], &e[j]);
+			pdf[j] = api_pdf(su, &st->lv->map, &e[j]);
 		return;
 	}
 	for (size_t j = 0; j < k; j++) {
@@ -79,7 +79,7 @@ static void points(const struct api_store *st, unsigned part, uint64_t c,
 		const struct frs3_elem *e = st->r3[part].chunk[c].e + i + j;
 		frs3_point(su, e, p + 3 * j);
 		if (pdf != NULL)
-			pdf[j] = frs3_pdf(su, &st->lv3->vol[part], e);
+			pdf[j] = frs3_pdf(su, &st->lv3->vol, e);
 	}
 }
 
