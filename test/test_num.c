@@ -144,7 +144,59 @@ static void radical_closed_form(void **state)
 	assert_true(num_radical_inverse(0, 3) == 0.0);
 }
 
+/* num_radical_inverse_n: the bits of num_radical_inverse for every
+ * count (groups of 32 and tails), for indices of 1 to 32 bits (the
+ * vector paths), a group with one index past 2^32 or past 2^53 (the
+ * scalar ones), and a base without a vector path. */
+static void radical_n_bits(void **state)
+{
+	enum { N = 100 };
+	uint64_t idx[N];
+	double r[N];
+	unsigned bases[] = { 2, 3, 5 };
+
+	(void)state;
+	for (int kind = 0; kind < 3; kind++) {
+		uint64_t x = 88172645463325252u;
+		for (size_t q = 0; q < N; q++) {
+			x ^= x << 13;
+			x ^= x >> 7;
+			x ^= x << 17;
+			idx[q] = x >> (32 + q % 32);	/* 1 to 32 bits */
+		}
+		idx[3] = 0;
+		idx[4] = UINT32_MAX;
+		if (kind == 1)
+			idx[40] = (uint64_t)1 << 32;
+		if (kind == 2)
+			idx[70] = ((uint64_t)1 << 53) + 1;
+		for (size_t b = 0; b < 3; b++)
+			for (size_t n = 0; n <= N; n += n < 40 ? 1 : 29) {
+				num_radical_inverse_n(idx, n, bases[b], r);
+				for (size_t q = 0; q < n; q++) {
+					double o = num_radical_inverse(idx[q],
+					    bases[b]);
+					assert_true(memcmp(&r[q], &o, sizeof o) == 0);
+				}
+			}
+	}
+}
+
+/* num_u53 is the conversion, at the edges of its two parts and between. */
+static void u53_exact(void **state)
+{
+	uint64_t v[] = { 0, 1, ((uint64_t)1 << 52) - 1, (uint64_t)1 << 52,
+	    ((uint64_t)1 << 52) + 1, ((uint64_t)1 << 53) - 1,
+	    0x12345678abcdeu };
+
+	(void)state;
+	for (size_t i = 0; i < sizeof v / sizeof *v; i++)
+		assert_true(num_u53(v[i]) == (double)v[i]);
+}
+
 TU_MAIN(NULL, NULL,
 	cmocka_unit_test(sum_cancellations),
 	cmocka_unit_test(sum_exact),
-	cmocka_unit_test(radical_closed_form))
+	cmocka_unit_test(radical_closed_form),
+	cmocka_unit_test(radical_n_bits),
+	cmocka_unit_test(u53_exact))

@@ -82,8 +82,52 @@ static void below(void **state)
 	assert_true(frs_rng_below(&r, UINT64_MAX) < UINT64_MAX);
 }
 
+/* Indices for the batch checks: small, past 32 bits, the top ones. */
+static uint64_t some_index(size_t q)
+{
+	static const uint64_t edge[] = { 0, 1, 0xffffffffu, 0x100000000u,
+	    (uint64_t)1 << 53, (uint64_t)1 << 63, UINT64_MAX };
+
+	return q < 7 ? edge[q] : frs_rand64(3, 11, q) >> (q % 64);
+}
+
+/* frs_rand01_pair: the top 53 bits of words 0-1 and 2-3 of the block
+ * (the words straight from frs_philox4x32_10, the scaling written out);
+ * frs_rand01_pair_n: the same bits for every count, whole groups of 16
+ * and tails, whichever clone the processor runs. */
+static void pair_bits(void **state)
+{
+	enum { N = 75 };
+	uint64_t idx[N];
+	double a[N], b[N];
+
+	(void)state;
+	for (size_t q = 0; q < N; q++)
+		idx[q] = some_index(q);
+	for (size_t n = 0; n <= N; n += n < 40 ? 1 : 17) {
+		frs_rand01_pair_n(0x123456789abcdefu, 7, idx, n, a, b);
+		for (size_t q = 0; q < n; q++) {
+			uint32_t ctr[4] = { (uint32_t)idx[q],
+			    (uint32_t)(idx[q] >> 32), 7, 0 };
+			uint32_t key[2] = { 0x89abcdefu, 0x1234567u }, w[4];
+			double x, y;
+			frs_philox4x32_10(ctr, key, w);
+			x = (double)((w[0] | (uint64_t)w[1] << 32) >> 11) /
+			    9007199254740992.0;
+			y = (double)((w[2] | (uint64_t)w[3] << 32) >> 11) /
+			    9007199254740992.0;
+			assert_true(memcmp(&a[q], &x, sizeof x) == 0);
+			assert_true(memcmp(&b[q], &y, sizeof y) == 0);
+			frs_rand01_pair(0x123456789abcdefu, 7, idx[q], &x, &y);
+			assert_true(memcmp(&a[q], &x, sizeof x) == 0);
+			assert_true(memcmp(&b[q], &y, sizeof y) == 0);
+		}
+	}
+}
+
 TU_MAIN(NULL, NULL,
 	cmocka_unit_test(known_answers),
 	cmocka_unit_test(order_independent),
 	cmocka_unit_test(uniform01),
-	cmocka_unit_test(below))
+	cmocka_unit_test(below),
+	cmocka_unit_test(pair_bits))

@@ -3,6 +3,6 @@
 #ifndef FRS_VERSION_H
 #define FRS_VERSION_H
 
-#define FRS_VERSION "0.5.0"
+#define FRS_VERSION "0.6.0"
 
 #endif

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 /*
  * Neumaier's compensated sum (Neumaier 1974, Kahan-Babuska): s the
@@ -48,5 +49,35 @@ double num_sum(const double *v, size_t n);
  * bits (hsw.c's fast paths reproduce them); the value may round up to 1.
  */
 double num_radical_inverse(uint64_t i, unsigned b);
+/* num_radical_inverse(i[q], b) into out[q] for q < n, the same bits, in
+ * vectors for bases 2 and 3: base 2 as the mirrored bits of i, base 3 by
+ * digits of 32-bit words while every i of a group of 16 is below 2^32. */
+void num_radical_inverse_n(const uint64_t *i, size_t n, unsigned b,
+    double *out);
+/*
+ * (double)v for v < 2^53, as loops that vectorise want it: AVX2 has no
+ * conversion of 64-bit integers, so in two exact parts, the low 52 bits
+ * through the bits of 2^52 + v, then 2^52 where bit 52 is set.
+ */
+static inline double num_u53(uint64_t v)
+{
+	uint64_t b = (v & (((uint64_t)1 << 52) - 1)) | 0x4330000000000000u;
+	double d;
+
+	memcpy(&d, &b, sizeof d);
+	return (d - 0x1p52) + (double)(v >> 52) * 0x1p52;
+}
+
+/* x with its 64 bits in the mirror order (inline: the loops of the
+ * Halton points vectorise it). */
+static inline uint64_t num_bit_reverse(uint64_t x)
+{
+	x = (x >> 1 & 0x5555555555555555u) | (x & 0x5555555555555555u) << 1;
+	x = (x >> 2 & 0x3333333333333333u) | (x & 0x3333333333333333u) << 2;
+	x = (x >> 4 & 0x0f0f0f0f0f0f0f0fu) | (x & 0x0f0f0f0f0f0f0f0fu) << 4;
+	x = (x >> 8 & 0x00ff00ff00ff00ffu) | (x & 0x00ff00ff00ff00ffu) << 8;
+	x = (x >> 16 & 0x0000ffff0000ffffu) | (x & 0x0000ffff0000ffffu) << 16;
+	return x >> 32 | x << 32;
+}
 
 #endif

@@ -1,5 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "base/rng.h"
+#include "base/num.h"
+#include "base/wide.h"
 
 #define PHILOX_M0 0xD2511F53u
 #define PHILOX_M1 0xCD9E8D57u
@@ -58,6 +60,88 @@ uint64_t frs_rand64x(uint64_t seed, uint32_t stream, uint64_t index,
 double frs_rand01(uint64_t seed, uint32_t stream, uint64_t index)
 {
 	return (double)(frs_rand64(seed, stream, index) >> 11) * 0x1p-53;
+}
+
+/* 53 bits, the top of two words, as a double in [0, 1). */
+static double unit53(uint32_t lo, uint32_t hi)
+{
+	return (double)(((uint64_t)lo | (uint64_t)hi << 32) >> 11) * 0x1p-53;
+}
+
+void frs_rand01_pair(uint64_t seed, uint32_t stream, uint64_t index,
+    double *a, double *b)
+{
+	uint32_t ctr[4] = { (uint32_t)index, (uint32_t)(index >> 32), stream,
+	    0 };
+	uint32_t key[2] = { (uint32_t)seed, (uint32_t)(seed >> 32) };
+	uint32_t out[4];
+
+	frs_philox4x32_10(ctr, key, out);
+	*a = unit53(out[0], out[1]);
+	*b = unit53(out[2], out[3]);
+}
+
+/* Counters a group of frs_rand01_pair_n. */
+#define LANES 16
+
+/* unit53 in vector form (num_u53). */
+static inline double unit53v(uint32_t lo, uint32_t hi)
+{
+	return num_u53(((uint64_t)lo | (uint64_t)hi << 32) >> 11) * 0x1p-53;
+}
+
+/*
+ * frs_philox4x32_10 of LANES counters (index, stream, 0) under one key:
+ * the rounds outside, the lanes inside, so that a round of all lanes is a
+ * few vector instructions (32-bit products in 64-bit lanes).
+ */
+static inline void philox_group(uint32_t k0, uint32_t k1, uint32_t stream,
+    const uint64_t *index, double *a, double *b)
+{
+	uint32_t c0[LANES], c1[LANES], c2[LANES], c3[LANES];
+
+	for (size_t q = 0; q < LANES; q++) {
+		c0[q] = (uint32_t)index[q];
+		c1[q] = (uint32_t)(index[q] >> 32);
+		c2[q] = stream;
+		c3[q] = 0;
+	}
+	for (int round = 0; round < 10; round++) {
+		if (round > 0) {
+			k0 += PHILOX_W0;
+			k1 += PHILOX_W1;
+		}
+		for (size_t q = 0; q < LANES; q++) {
+			uint64_t p0 = (uint64_t)PHILOX_M0 * c0[q];
+			uint64_t p1 = (uint64_t)PHILOX_M1 * c2[q];
+			c0[q] = (uint32_t)(p1 >> 32) ^ c1[q] ^ k0;
+			c1[q] = (uint32_t)p1;
+			c2[q] = (uint32_t)(p0 >> 32) ^ c3[q] ^ k1;
+			c3[q] = (uint32_t)p0;
+		}
+	}
+	for (size_t q = 0; q < LANES; q++) {
+		a[q] = unit53v(c0[q], c1[q]);
+		b[q] = unit53v(c2[q], c3[q]);
+	}
+}
+
+FRS_WIDE static void pair_n(uint64_t seed, uint32_t stream,
+    const uint64_t *index, size_t n, double *a, double *b)
+{
+	uint32_t k0 = (uint32_t)seed, k1 = (uint32_t)(seed >> 32);
+	size_t p = 0;
+
+	for (; p + LANES <= n; p += LANES)
+		philox_group(k0, k1, stream, index + p, a + p, b + p);
+	for (; p < n; p++)
+		frs_rand01_pair(seed, stream, index[p], &a[p], &b[p]);
+}
+
+void frs_rand01_pair_n(uint64_t seed, uint32_t stream,
+    const uint64_t *index, size_t n, double *a, double *b)
+{
+	pair_n(seed, stream, index, n, a, b);
 }
 
 void frs_rng_init(struct frs_rng *r, uint64_t seed, uint32_t stream)

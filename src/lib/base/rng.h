@@ -15,6 +15,7 @@
 #ifndef FRS_RNG_H
 #define FRS_RNG_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "../../../cl/defs.cl"
@@ -31,6 +32,14 @@ uint64_t frs_rand64x(uint64_t seed, uint32_t stream, uint64_t index,
     uint32_t sub);
 /* Uniform double in [0, 1) with 53 random bits. */
 double frs_rand01(uint64_t seed, uint32_t stream, uint64_t index);
+/* Two uniform doubles in [0, 1) from one block: *a from words 0 and 1,
+ * *b from words 2 and 3 (53 bits each). */
+void frs_rand01_pair(uint64_t seed, uint32_t stream, uint64_t index,
+    double *a, double *b);
+/* frs_rand01_pair(seed, stream, index[q], &a[q], &b[q]) for q < n, the
+ * same bits, the blocks of 16 indices side by side in vectors. */
+void frs_rand01_pair_n(uint64_t seed, uint32_t stream,
+    const uint64_t *index, size_t n, double *a, double *b);
 
 /* A sequential stream over indices 0, 1, 2, ... of one (seed, stream), for
  * code whose order is fixed.  Each index gives 64 bits. */

@@ -4,6 +4,7 @@
 #include "base/err.h"
 #include "base/mem.h"
 #include "base/io.h"
+#include "base/wide.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -599,7 +600,7 @@ int pts_writer_begin(struct pts_writer *w, FILE *fp, const char *name,
 }
 
 /* Coordinates outside [0, 1) are the writer's caller's bug. */
-static int check_coords(const struct pts_writer *w, const double *recs,
+FRS_WIDE static int check_coords(const struct pts_writer *w, const double *recs,
     size_t n)
 {
 	unsigned ncol = w->dims + w->extra;

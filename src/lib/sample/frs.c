@@ -5,6 +5,7 @@
 #include "base/num.h"
 #include "base/par.h"
 #include "base/rng.h"
+#include "base/wide.h"
 #include "sample/tile.h"
 
 #include <math.h>
@@ -1818,8 +1819,8 @@ static void jitter2(const struct frs_setup *s, uint64_t id, double *jx,
 {
 	*jx = *jy = 0.5;
 	if (s->jitter == FRS_PLACE_RANDOM) {
-		*jx = frs_rand01(s->seed, FRS_STREAM_JITTER, 2 * id);
-		*jy = frs_rand01(s->seed, FRS_STREAM_JITTER, 2 * id + 1);
+		/* One block for both: half the cost of a block each. */
+		frs_rand01_pair(s->seed, FRS_STREAM_JITTER, id, jx, jy);
 	} else if (s->jitter == FRS_PLACE_HALTON) {
 		/* Halton (2, 3) by element, rotated by the seed
 		 * (Cranley-Patterson), so it depends on nothing but both. */
@@ -1848,14 +1849,66 @@ void frs_point(const struct frs_setup *s, const struct frs_elem *e,
 	*y = coord(e->y, jy, (double)s->sh);
 }
 
+/* Elements a piece of jittered_points: its arrays stay in the
+ * first-level cache. */
+#define JPIECE 256
+
+/* v[i] + r - floor(v[i] + r), jitter2's rotation of Halton points, for
+ * v[i] and r in [0, 1]: the sum is below 2, and where it is 1 or more the
+ * subtraction of 1 is exact (Sterbenz), as floor's would be, so a select
+ * gives floor's bits and vectorises without SSE4.1. */
+FRS_WIDE static void rotate_n(double *v, size_t n, double r)
+{
+	for (size_t i = 0; i < n; i++) {
+		double t = v[i] + r;
+		v[i] = t >= 1.0 ? t - 1.0 : t;
+	}
+}
+
+/* jitter2 of n <= JPIECE elements at once: the random numbers and the
+ * radical inverses in vectors (frs_rand01_n, num_radical_inverse_n), the
+ * same bits. */
+static void jitter_n(const struct frs_setup *s, const struct frs_elem *e,
+    size_t n, double *jx, double *jy)
+{
+	uint64_t ix[JPIECE];
+
+	for (size_t i = 0; i < n; i++) {
+		uint64_t id = (uint64_t)e[i].y * s->sw + e[i].x;
+		ix[i] = s->jitter == FRS_PLACE_RANDOM ? id : id + 1;
+	}
+	if (s->jitter == FRS_PLACE_RANDOM) {
+		frs_rand01_pair_n(s->seed, FRS_STREAM_JITTER, ix, n, jx, jy);
+		return;
+	}
+	num_radical_inverse_n(ix, n, 2, jx);
+	num_radical_inverse_n(ix, n, 3, jy);
+	rotate_n(jx, n, frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX));
+	rotate_n(jy, n, frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX - 1));
+}
+
+/* The n points of elements e with jitter jx, jy: coord of each. */
+FRS_WIDE static void coords_n(const struct frs_elem *e, size_t n,
+    const double *jx, const double *jy, double sw, double sh, double *xy)
+{
+	for (size_t i = 0; i < n; i++) {
+		xy[2 * i] = coord(e[i].x, jx[i], sw);
+		xy[2 * i + 1] = coord(e[i].y, jy[i], sh);
+	}
+}
+
 void frs_points(const struct frs_setup *s, const struct frs_elem *e,
     size_t n, double *xy)
 {
 	double sw = (double)s->sw, sh = (double)s->sh;
 
 	if (s->jitter != FRS_PLACE_CENTRE) {
-		for (size_t i = 0; i < n; i++)
-			frs_point(s, &e[i], &xy[2 * i], &xy[2 * i + 1]);
+		double jx[JPIECE], jy[JPIECE];
+		for (size_t p = 0; p < n; p += JPIECE) {
+			size_t m = n - p < JPIECE ? n - p : JPIECE;
+			jitter_n(s, e + p, m, jx, jy);
+			coords_n(e + p, m, jx, jy, sw, sh, xy + 2 * p);
+		}
 		return;
 	}
 	for (size_t i = 0; i < n; i++) {

@@ -11,6 +11,7 @@
 #include "base/mem.h"
 #include "base/num.h"
 #include "sample/hsw.h"
+#include "base/wide.h"
 #include "base/par.h"
 #include "base/rng.h"
 
@@ -132,22 +133,13 @@ double hsw_radical_inverse(uint64_t i, unsigned b)
 	return frs_below_one(num_radical_inverse(i, b));
 }
 
-static uint64_t bit_reverse(uint64_t x)
-{
-	x = (x >> 1 & 0x5555555555555555u) | (x & 0x5555555555555555u) << 1;
-	x = (x >> 2 & 0x3333333333333333u) | (x & 0x3333333333333333u) << 2;
-	x = (x >> 4 & 0x0f0f0f0f0f0f0f0fu) | (x & 0x0f0f0f0f0f0f0f0fu) << 4;
-	x = (x >> 8 & 0x00ff00ff00ff00ffu) | (x & 0x00ff00ff00ff00ffu) << 8;
-	x = (x >> 16 & 0x0000ffff0000ffffu) | (x & 0x0000ffff0000ffffu) << 16;
-	return x >> 32 | x << 32;
-}
-
 /* hsw_radical_inverse(i, 2) for i < 2^53: the digits are the bits of i
  * mirrored, and the sum of at most 53 powers of two that the loop adds is
- * exact, so it is the mirrored integer times 2^-64, exactly. */
-static double radical_inverse2(uint64_t i)
+ * exact, so it is the mirrored integer (its low 11 bits clear) times
+ * 2^-64, exactly. */
+static inline double radical_inverse2(uint64_t i)
 {
-	return (double)bit_reverse(i) * 0x1p-64;
+	return num_u53(num_bit_reverse(i) >> 11) * 0x1p-53;
 }
 
 /* Base-3 digits of a 64-bit integer. */
@@ -189,7 +181,7 @@ static void base3_init(struct base3 *b)
 
 /* hsw_radical_inverse(i, 3) for i = first .. first + m - 1 (m <= PIECE)
  * into out[0], out[2], ... */
-static void radical_inverse3(const struct base3 *b, uint64_t first, size_t m,
+FRS_WIDE static void radical_inverse3(const struct base3 *b, uint64_t first, size_t m,
     double *out)
 {
 	uint64_t hi = first / LOW3N;
@@ -249,7 +241,9 @@ static void grid_range(int jitter, uint64_t n, uint64_t seed, uint64_t begin,
 	}
 }
 
-static void piece_range(const struct base3 *b3, enum hsw_input kind,
+/* The input points begin .. end - 1, in vectors as wide as the processor
+ * has. */
+FRS_WIDE static void piece_range(const struct base3 *b3, enum hsw_input kind,
     uint64_t n, uint64_t seed, uint64_t begin, uint64_t end, double *out)
 {
 	uint64_t m = end - begin;
@@ -355,7 +349,7 @@ static inline double pick(int c, double x, double y)
 	return r;
 }
 
-static void descend_group(const struct hsw_tree *t, double *restrict u,
+FRS_WIDE static void descend_group(const struct hsw_tree *t, double *restrict u,
     double *restrict v, uint32_t *restrict i, uint32_t *restrict j)
 {
 	uint32_t k[GROUP];
@@ -399,7 +393,7 @@ static void descend_group(const struct hsw_tree *t, double *restrict u,
 
 /* place for a group: the division for all, place's corrections only
  * where rounding left a point outside its pixel (rare). */
-static void place_group(const uint32_t *i, const double *u, uint32_t n,
+FRS_WIDE static void place_group(const uint32_t *i, const double *u, uint32_t n,
     double *x)
 {
 	double dn = (double)n;

@@ -1,0 +1,78 @@
+#!/bin/sh
+# The build users get (issue 34): the programs of make (and make install,
+# BUILD, -O3 with the FRS_WIDE loops cloned for AVX2 and AVX-512 and
+# picked at run time) against the bench build beside it (build/bench,
+# -O3 -march=native) and against the make build of the commit this work
+# started from (BENCH_BUILD_BASE, 807ddb5), in one run, interleaved:
+# whole processes, blob 128x128, one thread, binary points to /dev/null,
+# medians of R runs.  Then the costs the issue bounds: jitter (random,
+# Halton) against none at 2^24, and HSW against FRS at 2^24.
+# BENCH_QUICK=1: fewer runs.
+set -eu
+. "$(dirname "$0")/benchlib.sh"
+BUILD=${1:-build/rel}
+OURS=$BUILD/bin
+WIDE=${BENCH_WIDE:-build/bench/bin}	# the -march=native build
+BASE_COMMIT=${BENCH_BUILD_BASE:-807ddb5}
+bench_setup bench-build "$OURS/frs-sample" "$OURS/hsw-sample"
+if [ -n "${BENCH_QUICK:-}" ]; then R=3; else R=5; fi
+[ -x "$WIDE/frs-sample" ] || WIDE=""
+BASE=$(baseline_build $BASE_COMMIT rel) || BASE=""
+
+# one FILE PROG ARGS...: one run's seconds, appended to FILE.
+one() {
+	_f=$1
+	shift
+	timed /dev/null "$@" -o /dev/null
+	echo "$SEC" >>"$_f"
+}
+median_of() { sort -g "$1" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (a > 0 && b > 0) ? a / b : 0 }'; }
+verdict() { awk -v v="$1" -v t="$2" 'BEGIN { print (v > 0 && v <= t) ? "met" : "missed" }'; }
+
+# three PROG ARGS...: "OURS WIDE BASE", the medians of R interleaved runs
+# of the three builds (0 for one that is missing).
+three() {
+	: >"$T/o"; : >"$T/w"; : >"$T/b"
+	for _r in $(seq $R); do
+		one "$T/o" "$OURS/$@"
+		[ -z "$WIDE" ] || one "$T/w" "$WIDE/$@"
+		[ -z "$BASE" ] || one "$T/b" "$BASE/$@"
+	done
+	for _x in w b; do [ -s "$T/$_x" ] || echo 0 >"$T/$_x"; done
+	echo "$(median_of "$T/o") $(median_of "$T/w") $(median_of "$T/b")"
+}
+
+echo "The make build ($OURS) against -march=native ($WIDE) and the make build"
+echo "of $BASE_COMMIT (the start of issue 34); whole processes, blob 128x128, -j 1,"
+echo "to /dev/null, medians of $R runs interleaved; load average $(cut -d' ' -f1-3 /proc/loadavg)"
+[ -n "$BASE" ] || echo "(the baseline could not be built: its column is 0)"
+[ -n "$WIDE" ] || echo "(no build/bench: make bench builds it; its column is 0)"
+printf '%-44s %8s %8s %8s %8s %7s %8s\n' command make_s native_s base_s \
+    make/nat target speedup
+N=16777216
+A="-q -i blob -s 128x128 -j 1 -n $N"
+for c in "hsw-sample $A" "frs-sample $A" \
+    "frs-sample $A --sigma 4 --jitter random" \
+    "frs-sample $A --sigma 4 --jitter halton" "frs-sample $A --sigma 4"; do
+	# shellcheck disable=SC2086
+	set -- $(three $c)
+	o=$1 w=$2 b=$3
+	r=$(ratio "$o" "$w")
+	printf '%-44s %8.3f %8.3f %8.3f %8s %7s %8s\n' \
+	    "$(echo "$c" | sed "s/ $A/ 2^24/; s/-q -i blob.*-n $N/2^24/")" \
+	    "$o" "$w" "$b" "$r" "1.10 $(verdict "$r" 1.10)" "$(ratio "$b" "$o")"
+	case $c in
+	"hsw-sample $A") hsw=$o ;;
+	"frs-sample $A") frs=$o ;;
+	*random) jr=$o ;;
+	*halton) jh=$o ;;
+	*) j0=$o ;;
+	esac
+done
+echo
+printf '%-44s %8s %8s %7s\n' "cost (make build, 2^24, -j 1)" ratio target verdict
+row() { printf '%-44s %8s %8s %7s\n' "$1" "$2" "$3" "$(verdict "$2" "$3")"; }
+row "jitter random / none (--sigma 4)" "$(ratio "$jr" "$j0")" 2
+row "jitter halton / none (--sigma 4)" "$(ratio "$jh" "$j0")" 2
+row "hsw-sample / frs-sample" "$(ratio "$hsw" "$frs")" 2
