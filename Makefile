@@ -5,7 +5,7 @@
 #                   every test (last line: "N passed, N failed")
 #   make demo       install missing packages, build, run the pipeline,
 #                   pictures in results/
-#   make bench      benchmarks, built with -O3 -march=native
+#   make bench      benchmarks of the make build (and -march=native beside)
 #   make fuzz       libFuzzer on every parser (mk/fuzz.mk)
 #   make install    PREFIX=/usr/local DESTDIR= (also BINDIR LIBDIR INCDIR
 #                   MANDIR PKGCONFIGDIR): programs, frs.h, libfrs.a,
@@ -220,10 +220,12 @@ demo: deps
 	@$(MAKE) --no-print-directory all
 	@sh scripts/demo.sh
 
+# The benchmarks time the build make install installs (build/rel); the
+# -march=native build beside it is for scripts/bench-build.sh's comparison.
 bench: deps
-	@$(MAKE) --no-print-directory VARIANT=bench progs \
-	    $(REFNAMES:%=build/bench/test/%)
-	@sh scripts/bench.sh build/bench
+	@$(MAKE) --no-print-directory all $(REFNAMES:%=build/rel/test/%)
+	@$(MAKE) --no-print-directory VARIANT=bench progs
+	@sh scripts/bench.sh build/rel
 
 # make experiments [ONLY=fig6.3,tab6.1] [QUICK=0] [-j2]: every thesis
 # experiment (scripts/exp-*.sh), results and results/REPORT.md; the rules

@@ -9,7 +9,7 @@
 # does once).  Best of R runs.  BENCH_QUICK=1: n = 10^6 only.
 set -eu
 . "$(dirname "$0")/benchlib.sh"
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 FRS=$BUILD/bin/frs-sample
 DRV=$BUILD/test/bench_api
 T=$(mktemp -d)

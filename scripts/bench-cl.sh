@@ -8,7 +8,7 @@
 # program, cached by the runtime, left out), in milliseconds.
 #   scripts/bench-cl.sh [BUILD]        BENCH_QUICK=1: fewer counts
 set -eu
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 FRS=$BUILD/bin/frs-sample
 HSW=$BUILD/bin/hsw-sample
 T=$(mktemp -d)

@@ -7,7 +7,7 @@
 # by the grid search, against the O(n^2) reference on 2^14 points.
 #   scripts/bench-dda.sh [BUILD]      BENCH_QUICK=1: no reference at 2^16
 set -eu
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 DDA=$BUILD/bin/dda
 GEN=$BUILD/bin/ref-sample
 REF=$BUILD/test/ref_dda

@@ -13,7 +13,7 @@
 #   BENCH_QUICK=1: no 2^20 in (a); in (b) sets predicted to take over 3 s
 #   are estimated from a cheaper setting; 50 sets in (c), scaled to 1000.
 set -eu
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 DISC=$BUILD/bin/discrepancy
 GEN=$BUILD/bin/ref-sample
 REF=$BUILD/test/ref_disc

@@ -11,7 +11,7 @@
 #  4. the brute-force reference, and void-and-cluster by size.
 #   scripts/bench-frd.sh [BUILD]      BENCH_QUICK=1 skips 2048^2 and int32
 set -eu
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 GEN=$BUILD/bin/frd-gen
 FRS=$BUILD/bin/frs-sample
 DDA=$BUILD/bin/dda

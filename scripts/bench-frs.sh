@@ -7,7 +7,7 @@
 # the whole process.  BENCH_QUICK=1: the blob map, fewer counts.
 set -eu
 . "$(dirname "$0")/benchlib.sh"
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 FRS=$BUILD/bin/frs-sample
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT

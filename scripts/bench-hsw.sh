@@ -8,7 +8,7 @@
 # interleaved runs of each.  BENCH_QUICK=1: the blob map, fewer counts.
 set -eu
 . "$(dirname "$0")/benchlib.sh"
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 HSW=$BUILD/bin/hsw-sample
 BASE_REV=${BENCH_HSW_BASE:-034c211}
 BASE_DIR=build/base-hsw
@@ -19,19 +19,20 @@ ALL=$(nproc)
 
 bench_sizes
 
-# base_hsw DIR REV: the path of hsw-sample built (VARIANT=bench) from the
+# base_hsw DIR REV: the path of hsw-sample built (VARIANT=rel, as make
+# bench builds ours) from the
 # tree of commit REV in DIR/src, made unless DIR/rev already names REV.
 base_hsw() {
 	_dir=$1 _rev=$(git rev-parse --verify -q "$2^{commit}" 2>/dev/null) || {
 		echo "bench-hsw: $2: no such commit" >&2
 		return 1
 	}
-	_bin=$_dir/src/build/bench/bin/hsw-sample
+	_bin=$_dir/src/build/rel/bin/hsw-sample
 	if [ ! -x "$_bin" ] || [ "$(cat "$_dir/rev" 2>/dev/null)" != "$_rev" ]; then
 		rm -rf "$_dir"
 		mkdir -p "$_dir/src"
 		git archive "$_rev" | tar -x -C "$_dir/src"
-		make -C "$_dir/src" -j"$ALL" VARIANT=bench progs >"$_dir/build.log" 2>&1 || {
+		make -C "$_dir/src" -j"$ALL" VARIANT=rel progs >"$_dir/build.log" 2>&1 || {
 			echo "bench-hsw: $_dir: building $2 failed (see $_dir/build.log)" >&2
 			return 1
 		}

@@ -2,7 +2,7 @@
 # Importance-map input: seconds per load by format and size, and what
 # resampling costs.  Each figure is the best of 3 whole-process runs.
 set -eu
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 IMAP=$BUILD/bin/imap
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT

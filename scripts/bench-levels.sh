@@ -29,7 +29,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 . scripts/benchlib.sh
-B=${1:-build/bench}
+B=${1:-build/rel}
 FRS=$B/bin/frs-sample
 REF=$B/test/ref_tiles
 bench_setup bench-levels "$FRS" "$REF" "$B/bin/ref-sample" \

@@ -2,7 +2,7 @@
 # ref-sample: seconds for 10 sets of 1024 points of each reference
 # distribution (the thesis measures against 10 sets, Table 6.1).
 set -eu
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 REF=$BUILD/bin/ref-sample
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT

@@ -12,7 +12,7 @@
 # BENCH_QUICK=1: fewer runs.
 set -eu
 . "$(dirname "$0")/benchlib.sh"
-BUILD=${1:-build/bench}
+BUILD=${1:-build/rel}
 OURS=$BUILD/bin
 BASE_COMMIT=${BENCH_BASE:-034c211}	# BENCH_BASE: another commit to compare with
 MAT=data/default.frd
@@ -23,7 +23,7 @@ export POCL_CACHE_DIR="${POCL_CACHE_DIR:-$T/pocl}"
 
 BASE=$(baseline_build $BASE_COMMIT) || BASE=""
 if [ -n "$BASE" ] && [ ! -x "$BASE/../test/bench_api" ]; then
-	make -C "$BASE/../../.." VARIANT=bench build/bench/test/bench_api \
+	make -C "$BASE/../../.." VARIANT=rel build/rel/test/bench_api \
 	    >/dev/null 2>&1 || true
 fi
 

@@ -13,7 +13,7 @@
 # usage: scripts/bench-tiles.sh BUILD
 set -eu
 cd "$(dirname "$0")/.."
-B=${1:-build/bench}
+B=${1:-build/rel}
 FRS=$B/bin/frs-sample
 REF=$B/test/ref_tiles
 ENV=data

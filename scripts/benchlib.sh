@@ -66,12 +66,12 @@ uniform_frs() {
 
 # baseline_build COMMIT [VARIANT]: the programs of COMMIT (a commit, tag
 # or branch of this repository), built once with its own Makefile from a
-# git archive into build/base/HASH/ (VARIANT bench by default, as make
-# bench builds ours), and its bin directory printed.  Later calls, from
+# git archive into build/base/HASH/ (VARIANT rel by default, the build
+# make bench times of ours), and its bin directory printed.  Later calls, from
 # any benchmark, reuse the build; a build that failed half-way is redone
 # (the stamp comes last).  Notes and errors go to standard error.
 baseline_build() {
-	_bc=$1 _bv=${2:-bench}
+	_bc=$1 _bv=${2:-rel}
 	_btop=$(git rev-parse --show-toplevel 2>/dev/null ||
 	    { cd "$(dirname "$0")/.." && pwd; })
 	_bh=$(git -C "$_btop" rev-parse --short=12 "$_bc^{commit}") || {

@@ -78,7 +78,7 @@ for m in $MAPS; do
 				function num(k,   i) { for (i = 1; i < NF; i++) if ($i == k) return $(i + 1) + 0; return -1 }
 				function mn(x, v) { return (x == "" || v < x) ? v : x }
 				/ n_s / { ns = $7 + 0 }
-				/samples \(/ { c = $2; s = mn(s, num("setup")); t = mn(t, num("thresholding")); o = mn(o, num("output")) }
+				/samples \([a-z0-9 ]*\); setup / { c = $2; s = mn(s, num("setup")); t = mn(t, num("thresholding")); o = mn(o, num("output")) }
 				/warping/ { c = 2^e; s = mn(s, num("setup")); t = mn(t, num("warping")); o = mn(o, num("output")) }
 				END { printf "%s\t%s\t%s\t%d\t%.0f\t%s\t%.6f\t%.6f\t%.6f\t%s\n", m, a, j, e, 2^e, c, s, t, o, (a == "hsw" ? "-" : ns) }' "$f" >>"$OUT/times.tsv"
 			done

@@ -75,7 +75,7 @@ for m in $MAPS; do
 			f=$D/${a}_${mk}_${TAG}_s8_n${e}_${DTAG}.v
 			cached "$f" meas $a $m "$e"
 			awk -v m=$m -v a=$a -v e="$e" '
-			/samples \(/ { c = $2 }
+			/samples \([a-z0-9 ]*\); setup / { c = $2 }
 			/OpenCL device/ {
 				for (i = 1; i <= NF; i++) {
 					if ($i == "device" && $(i + 1) ~ /^[0-9.]+$/) up = $(i + 1)

@@ -43,7 +43,7 @@ meas() { # frs|hsw sigma jitter e
 phases() {
 	awk 'function num(k,   i) { for (i = 1; i < NF; i++) if ($i == k) return $(i + 1) + 0; return -1 }
 	function mn(x, v) { return (x == "" || v < x) ? v : x }
-	/samples \(/ { s = mn(s, num("setup")); t = mn(t, num("thresholding")); o = mn(o, num("output")) }
+	/samples \([a-z0-9 ]*\); setup / { s = mn(s, num("setup")); t = mn(t, num("thresholding")); o = mn(o, num("output")) }
 	/warping/ { s = mn(s, num("setup")); t = mn(t, num("warping")); o = mn(o, num("output")) }
 	END { printf "%.6f\t%.6f\t%.6f", s, t, o }' "$1"
 }
