@@ -182,6 +182,54 @@ static void radical_n_bits(void **state)
 	}
 }
 
+/* num_radical3 within 3 ulps of the exact inverse (the mirrored digits
+ * as an integer over a power of 3, in long double), and
+ * num_radical3_n its bits for every count, groups below 2^32 (vectors)
+ * and groups with a larger index (the scalar path). */
+static void radical3_table(void **state)
+{
+	enum { N = 100 };
+	uint64_t idx[N], x = 88172645463325252u;
+	double r[N];
+	static const uint64_t edge[] = { 0, 1, 2, 2186, 2187, 4782968, 4782969,
+	    UINT32_MAX, (uint64_t)1 << 32, ((uint64_t)1 << 40) + 5,
+	    10460353202u, UINT64_MAX };
+
+	(void)state;
+	for (size_t q = 0; q < N; q++) {
+		x ^= x << 13;
+		x ^= x >> 7;
+		x ^= x << 17;
+		idx[q] = q < 12 ? edge[q] : x >> (32 + q % 32);
+	}
+	for (size_t q = 0; q < N; q++) {
+		uint64_t m = 0, v = idx[q];
+		long double den = 1.0L, exact;
+		double got = num_radical3(idx[q]), ulp;
+		for (; v > 0; v /= 3, den *= 3.0L)
+			m = 3 * m + v % 3;
+		exact = idx[q] == 0 ? 0.0L : (long double)m / den;
+		if (idx[q] == UINT64_MAX)	/* m overflows: 41 digits */
+			continue;
+		ulp = ldexp(1.0, ilogb(got > 0 ? got : 1.0) - 52);
+		assert_true(fabsl((long double)got - exact) <= 3.0L * ulp);
+	}
+	for (int big = 0; big < 2; big++) {
+		if (big)
+			idx[50] = ((uint64_t)1 << 33) + 7;	/* group 1 scalar */
+		else
+			for (size_t q = 0; q < 12; q++)
+				idx[q] = idx[q] >> 32 ? 5 : idx[q];
+		for (size_t n = 0; n <= N; n += n < 40 ? 1 : 29) {
+			num_radical3_n(idx, n, r);
+			for (size_t q = 0; q < n; q++) {
+				double o = num_radical3(idx[q]);
+				assert_true(memcmp(&r[q], &o, sizeof o) == 0);
+			}
+		}
+	}
+}
+
 /* num_u53 is the conversion, at the edges of its two parts and between. */
 static void u53_exact(void **state)
 {
@@ -199,4 +247,5 @@ TU_MAIN(NULL, NULL,
 	cmocka_unit_test(sum_exact),
 	cmocka_unit_test(radical_closed_form),
 	cmocka_unit_test(radical_n_bits),
+	cmocka_unit_test(radical3_table),
 	cmocka_unit_test(u53_exact))
