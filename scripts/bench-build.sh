@@ -76,3 +76,21 @@ row() { printf '%-44s %8s %8s %7s\n' "$1" "$2" "$3" "$(verdict "$2" "$3")"; }
 row "jitter random / none (--sigma 4)" "$(ratio "$jr" "$j0")" 2
 row "jitter halton / none (--sigma 4)" "$(ratio "$jh" "$j0")" 2
 row "hsw-sample / frs-sample" "$(ratio "$hsw" "$frs")" 2
+
+echo
+echo "Shuffled tiles on the HDR maps of data/ (--equirect, n = 262144, -j 1):"
+echo "whole processes against plain tiles, medians of $R runs (make build; base: $BASE_COMMIT's)"
+printf '%-44s %8s %8s %8s %8s %7s %8s\n' map shuf_s plain_s base_s shuf/pl \
+    target speedup
+for m in forest sunset interior; do
+	A2="-q -i data/$m.exr --equirect -n 262144 -j 1"
+	# shellcheck disable=SC2086
+	set -- $(three frs-sample $A2 --tiles shuffled)
+	o=$1 b=$3
+	# shellcheck disable=SC2086
+	set -- $(three frs-sample $A2 --tiles plain)
+	p=$1
+	r=$(ratio "$o" "$p")
+	printf '%-44s %8.3f %8.3f %8.3f %8s %7s %8s\n' "$m shuffled" "$o" "$p" \
+	    "$b" "$r" "1 $(verdict "$r" 1)" "$(ratio "$b" "$o")"
+done

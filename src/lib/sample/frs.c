@@ -362,8 +362,10 @@ uint32_t frs_tile_max_block(const struct frs_setup *s)
 
 /* The transforms of the tiles met last, direct-mapped by tile column:
  * a thread's rows of pixels cross a row of tiles again and again, and a
- * transform costs two Philox blocks. */
-#define TCACHE 64
+ * transform costs two Philox blocks.  1024 columns: a window of up to
+ * 1024 tiles a row (a sun's) computes each transform once a row of
+ * tiles, not once a row of pixels (interior.exr at 262144: 9 ms). */
+#define TCACHE 1024
 struct tcache {
 	struct {
 		uint64_t tx, ty;
@@ -1072,11 +1074,26 @@ struct run {
 	void *ctx;
 	unsigned start;		/* the minmap level Stack and Level N start
 				 * at (frs_impl_level), once a run */
+	/* Sorted with shuffled tiles: the values below npos by square of
+	 * side bside of the matrix (first_values), for pixels whose few
+	 * passing values are cheaper to look up than their blocks
+	 * (pix_few): square q holds bval[bstart[q] .. bstart[q + 1] - 1],
+	 * ascending, at matrix indices bpos[...]. */
+	uint32_t *bval, *bpos, *bstart;
+	uint64_t npos;
+	unsigned lside, lmw, lmh;	/* log2 of the squares' side, mw, mh */
+	double share;		/* of the matrix the squares of a pixel's
+				 * part of a tile cover, at most */
 };
 
 /* The most blocks a pixel's descent marks (64 x 64); a pixel of more
  * looks at each. */
 #define LIVE_MAX 4096
+/* The most values first_values sorts into squares. */
+#define FEW_MAX 65536
+/* The most values pix_few expects to look at: it sorts what passes by
+ * insertion. */
+#define FEW_SORT 256.0
 
 /* What one pixel's work needs. */
 struct pix {
@@ -1089,6 +1106,10 @@ struct pix {
 	struct tcache tc;
 	uint8_t live[LIVE_MAX];	/* Sorted, shuffled tiles: its blocks worth
 				 * a look (mark_live) */
+	struct few {
+		uint64_t key;	/* block of the pixel, then value */
+		uint32_t x, y;	/* window element */
+	} few[LIVE_MAX];	/* pix_few's elements */
 };
 
 /* Room for k more elements in c; a chunk in a caller's store
@@ -1460,6 +1481,169 @@ static void pixel_live(struct pix *px, uint32_t b, uint64_t nb)
 			mark_live(px, px->x0 + x, px->y0 + y, side, b, nb);
 }
 
+/* One element that passes, nsteps 1: take_block's work for a block of
+ * one. */
+static void take_one(struct pix *px, uint64_t x, uint64_t y)
+{
+	const struct frs_setup *s = px->run->s;
+	struct frs_chunk *c = px->c;
+
+	c->count++;
+	if (px->run->count_only)
+		return;
+	if (c->xy != NULL) {
+		if (c->n + 1 > c->cap) {
+			c->failed = 1;
+			return;
+		}
+		c->xy[2 * c->n] = coord(x, 0.5, (double)s->sw);
+		c->xy[2 * c->n + 1] = coord(y, 0.5, (double)s->sh);
+		if (c->pdf != NULL)
+			c->pdf[c->n] = px->pdf;
+		c->n++;
+		return;
+	}
+	if (c->n == c->cap && grow(c, 1) < 0)
+		return;
+	c->e[c->n++] = (struct frs_elem){ (uint32_t)x, (uint32_t)y, 0 };
+}
+
+/* The squares of side B on an axis of m (m / B of them) that the
+ * toroidal interval [a, a + len) meets: first *q0, count *nq. */
+static void squares_met(uint64_t a, uint64_t len, uint64_t m, unsigned lB,
+    uint64_t *q0, uint64_t *nq)
+{
+	uint64_t B = (uint64_t)1 << lB, n = ((a & (B - 1)) + len + B - 1) >> lB;
+
+	*q0 = a >> lB;
+	*nq = n < m >> lB ? n : m >> lB;
+}
+
+/* The values of square (qx, qy) below the limit that tile t shows in the
+ * pixel, into px->few from *k; 0, or -1 when px->few is full. */
+static int few_square(struct pix *px, const struct frs_tile *t,
+    uint64_t wx, uint64_t wy, uint64_t q, uint32_t b, uint64_t nb,
+    uint64_t *k)
+{
+	const struct run *run = px->run;
+	const struct frs_setup *s = run->s;
+	uint64_t m[2] = { s->mw, s->mh };
+	unsigned lw = run->lmw;
+
+	for (uint32_t i = run->bstart[q]; i < run->bstart[q + 1] &&
+	    run->bval[i] < px->lim; i++) {
+		uint64_t mv[2] = { run->bpos[i] & (s->mw - 1), run->bpos[i] >> lw },
+		    u[2], ex, ey;
+		/* frs_tile_block at level 0, backwards */
+		for (unsigned a = 0; a < 2; a++) {
+			uint64_t x = mv[a] >= t->off[a] ? mv[a] - t->off[a] :
+			    mv[a] + m[a] - t->off[a];
+			u[t->perm[a]] = (t->flip >> a & 1u) ? m[a] - 1 - x : x;
+		}
+		ex = wx + u[0];
+		ey = wy + u[1];
+		if (ex < px->x0 || ex >= px->x0 + s->ns || ey < px->y0 ||
+		    ey >= px->y0 + s->ns ||
+		    !passes(s, &px->th[0], run->bval[i], ex, ey))
+			continue;
+		if (*k == LIVE_MAX)
+			return -1;
+		px->few[(*k)++] = (struct few){ ((ey - px->y0) / b * nb +
+		    (ex - px->x0) / b) << 32 | run->bval[i], (uint32_t)ex,
+		    (uint32_t)ey };
+	}
+	return 0;
+}
+
+/* The elements of the part of the pixel in tile (tx, ty): the squares of
+ * the matrix that the part shows, through the tile's transform. */
+static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, uint32_t b,
+    uint64_t nb, uint64_t *k)
+{
+	const struct run *run = px->run;
+	const struct frs_setup *s = run->s;
+	uint64_t wx = (tx << run->lmw) - s->wx, wy = (ty << run->lmh) - s->wy;
+	uint64_t m[2] = { s->mw, s->mh }, lo[2], hi[2], lx, ly;
+	unsigned lB = run->lside;
+	uint64_t q0[2], nq[2], sq = s->mw >> lB, sqy = s->mh >> lB;
+	const struct frs_tile *t;
+
+	/* The part, in the tile's window coordinates: [lo, hi). */
+	lo[0] = px->x0 > wx ? px->x0 - wx : 0;
+	lo[1] = px->y0 > wy ? px->y0 - wy : 0;
+	hi[0] = px->x0 + s->ns - wx < s->mw ? px->x0 + s->ns - wx : s->mw;
+	hi[1] = px->y0 + s->ns - wy < s->mh ? px->y0 + s->ns - wy : s->mh;
+	t = tile_at(s, &px->tc, wx + lo[0], wy + lo[1], &lx, &ly);
+	/* Matrix axis a shows window axis perm[a], flipped or not, then
+	 * shifted: the interval it covers there. */
+	for (unsigned a = 0; a < 2; a++) {
+		uint64_t p = t->perm[a], f = (t->flip >> a & 1u) ?
+		    m[a] - hi[p] : lo[p];
+		squares_met((f + t->off[a]) & (m[a] - 1), hi[p] - lo[p], m[a],
+		    lB, &q0[a], &nq[a]);
+	}
+	for (uint64_t j = 0; j < nq[1]; j++)
+		for (uint64_t i = 0; i < nq[0]; i++) {
+			uint64_t q = ((q0[1] + j) & (sqy - 1)) * sq +
+			    ((q0[0] + i) & (sq - 1));
+			if (few_square(px, t, wx, wy, q, b, nb, k) < 0)
+				return -1;
+		}
+	return 0;
+}
+
+/*
+ * Shuffled tiles, a pixel whose limit is small against its blocks (a dark
+ * pixel of a wide window): the values below the limit are few, and where
+ * each sits in the matrix is known (run->bval, by square), so each tile
+ * the pixel meets is asked where it shows those of the squares its part
+ * covers, through its transform inverted, instead of the pixel's blocks
+ * being looked at one by one.  The elements then go out in pix_sorted's
+ * order: by block of side b in the pixel, row by row, and by value inside
+ * a block.  0, or -1 (nothing taken) when they are too many to hold.
+ */
+static int pix_few(struct pix *px, uint32_t b, uint64_t nb)
+{
+	const struct run *run = px->run;
+	const struct frs_setup *s = run->s;
+	uint64_t X0 = s->wx + px->x0, Y0 = s->wy + px->y0, k = 0;
+
+	for (uint64_t ty = Y0 >> run->lmh; ty <= (Y0 + s->ns - 1) >> run->lmh;
+	    ty++)
+		for (uint64_t tx = X0 >> run->lmw;
+		    tx <= (X0 + s->ns - 1) >> run->lmw; tx++)
+			if (few_tile(px, tx, ty, b, nb, &k) < 0)
+				return -1;
+	/* By key: insertion for the few a dark pixel has. */
+	for (uint64_t i = 1; i < k; i++) {
+		struct few f = px->few[i];
+		uint64_t j = i;
+		for (; j > 0 && px->few[j - 1].key > f.key; j--)
+			px->few[j] = px->few[j - 1];
+		px->few[j] = f;
+	}
+	for (uint64_t i = 0; i < k; i++)
+		take_one(px, px->few[i].x, px->few[i].y);
+	return 0;
+}
+
+/* Whether pix_few serves the pixel: one step, the values below its limit
+ * known, and fewer of them to place (the limit times the tiles it meets
+ * times the share of the matrix their squares cover) than blocks to look
+ * at, and few enough to sort by insertion. */
+static int few_serves(const struct pix *px, uint64_t nb)
+{
+	const struct run *run = px->run;
+	const struct frs_setup *s = run->s;
+	uint64_t X0 = s->wx + px->x0, Y0 = s->wy + px->y0;
+	uint64_t nt = (((X0 + s->ns - 1) >> run->lmw) - (X0 >> run->lmw) + 1) *
+	    (((Y0 + s->ns - 1) >> run->lmh) - (Y0 >> run->lmh) + 1);
+	double cost = (double)px->lim * (double)nt * run->share;
+
+	return run->nsteps == 1 && px->lim <= run->npos &&
+	    cost <= (double)(nb * nb) && cost <= FEW_SORT;
+}
+
 static void pix_sorted(struct pix *px)
 {
 	const struct run *run = px->run;
@@ -1472,6 +1656,8 @@ static void pix_sorted(struct pix *px)
 
 	while ((1u << lb) < b)
 		lb++;
+	if (live && few_serves(px, nb) && pix_few(px, b, nb) == 0)
+		return;
 	if (live)
 		pixel_live(px, b, nb);
 	else if (nb > 1 && region_bound(px, px->x0, px->y0, s->ns) >= px->lim)
@@ -1557,6 +1743,86 @@ static void pix_start(struct pix *px, const struct run *run)
 	px->run = run;
 	for (unsigned k = 0; k < TCACHE; k++)
 		px->tc.e[k].valid = 0;
+}
+
+
+/* run->bval, bpos, bstart, npos and lside for Sorted with shuffled tiles
+ * (pix_few): the first values of the matrix, from its sorted lists in
+ * O(blocks + values), by square of side bside (the pixel's side or the
+ * next power of two above, at most half the matrix's) and by value.  None
+ * (npos 0) without lists or memory, which costs only time. */
+static void first_values(struct run *run)
+{
+	const struct frs_setup *s = run->s;
+	const struct frs_prep *p = run->p;
+	uint64_t want = (uint64_t)s->mw * s->mh, nbx, nblk, B = 1, sq, nsq;
+	uint32_t *at;
+	unsigned lb;
+
+	run->bval = run->bpos = run->bstart = NULL;
+	run->npos = 0;
+	if (run->algo != FRS_SORTED || s->tiles == FRS_TILES_PLAIN ||
+	    p->block == 0 || s->ns / p->block < 2)
+		return;
+	while (B < s->ns && 2 * B <= s->mw / 2 && 2 * B <= s->mh / 2)
+		B *= 2;
+	B = B <= s->mw / 2 && B <= s->mh / 2 ? B : (s->mw < s->mh ? s->mw :
+	    s->mh);
+	sq = (s->ns + B - 1) / B + 1;	/* squares met on an axis, at most */
+	run->share = (double)(sq * sq) * (double)(B * B) /
+	    ((double)s->mw * (double)s->mh);
+	run->share = run->share < 1.0 ? run->share : 1.0;
+	/* No more values than a pixel that pix_few serves can pass. */
+	want = want < FEW_MAX ? want : FEW_MAX;
+	want = want < p->below ? want : p->below;
+	want = (double)want <= FEW_SORT / run->share ? want :
+	    (uint64_t)(FEW_SORT / run->share) + 1;
+	sq = s->mw / B;
+	nsq = sq * (s->mh / B);
+	run->bval = malloc(want * sizeof *run->bval);
+	run->bpos = malloc(want * sizeof *run->bpos);
+	run->bstart = calloc(nsq + 1, sizeof *run->bstart);
+	at = malloc(want * sizeof *at);
+	if (run->bval == NULL || run->bpos == NULL || run->bstart == NULL ||
+	    at == NULL) {
+		MEM_FREE(run->bval, run->bpos, run->bstart, at);
+		run->bval = run->bpos = run->bstart = NULL;
+		return;
+	}
+	lb = log2u64(p->block);
+	nbx = s->mw / p->block;
+	nblk = nbx * (s->mh / p->block);
+	for (uint64_t blk = 0; blk < nblk; blk++) {
+		uint64_t x = blk % nbx * p->block, y = blk / nbx * p->block;
+		for (uint32_t k = p->soff[blk]; k < p->soff[blk + 1] &&
+		    p->sval[k] < want; k++)
+			at[p->sval[k]] = (uint32_t)((y + (p->sidx[k] >> lb)) *
+			    s->mw + x + (p->sidx[k] & (p->block - 1)));
+	}
+	/* A counting sort by square; values in order within each. */
+	for (uint64_t v = 0; v < want; v++)
+		run->bstart[at[v] / s->mw / B * sq + at[v] % s->mw / B + 1]++;
+	for (uint64_t q = 0; q < nsq; q++)
+		run->bstart[q + 1] += run->bstart[q];
+	for (uint64_t v = 0; v < want; v++) {
+		uint64_t q = at[v] / s->mw / B * sq + at[v] % s->mw / B;
+		uint32_t i = run->bstart[q]++;
+		run->bval[i] = (uint32_t)v;
+		run->bpos[i] = at[v];
+	}
+	for (uint64_t q = nsq; q > 0; q--)
+		run->bstart[q] = run->bstart[q - 1];
+	run->bstart[0] = 0;
+	free(at);
+	run->npos = want;
+	run->lside = log2u64(B);
+	run->lmw = log2u64(s->mw);
+	run->lmh = log2u64(s->mh);
+}
+
+static void first_values_free(struct run *run)
+{
+	MEM_FREE(run->bval, run->bpos, run->bstart);
 }
 
 /* frs_sample: chunks [b, e) of the result's array. */
@@ -1667,7 +1933,8 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
 {
 	double tau;
 	struct run run = { s, map, p, algo, &tau, 1, 0, c0, at, store, NULL,
-	    NULL, fn, ctx, 0 };
+	    NULL, fn, ctx, 0, NULL, NULL, NULL, 0, 0, 0, 0, 0.0 };
+	int rc;
 
 	if (frs_sample_check(s, p, (int)algo, frs_impl_name(algo), &s->n, 1, 0,
 	    &tau) < 0)
@@ -1686,7 +1953,10 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
 		return frs_fail("frs_sample_each: chunks %llu to %llu of %llu",
 		    (unsigned long long)c0, (unsigned long long)c1,
 		    (unsigned long long)frs_nchunks(s));
-	return frs_parallel(c1 - c0, 1, each_task, &run, NULL);
+	first_values(&run);
+	rc = frs_parallel(c1 - c0, 1, each_task, &run, NULL);
+	first_values_free(&run);
+	return rc;
 }
 
 static const struct frs_chunk_kind chunk_kind =
@@ -1698,7 +1968,8 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
 {
 	double tau[16];
 	struct run run = { s, map, p, algo, tau, nsteps, count_only, 0,
-	    NULL, NULL, NULL, NULL, NULL, NULL, 0 };
+	    NULL, NULL, NULL, NULL, NULL, NULL, 0, NULL, NULL, NULL, 0, 0, 0, 0,
+	    0.0 };
 
 	memset(r, 0, sizeof *r);
 	if (frs_sample_check(s, p, (int)algo, frs_impl_name(algo), steps,
@@ -1707,8 +1978,10 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
 	if (algo == FRS_SORTED && p->block == 0)
 		run.algo = frs_sorted_walk(s);
 	run.start = frs_impl_level(s, p, run.algo);
+	first_values(&run);
 	r->chunk = frs_chunks_run(&chunk_kind, frs_nchunks(s), result_task,
 	    &run, &r->count);
+	first_values_free(&run);
 	r->nchunk = r->chunk != NULL ? frs_nchunks(s) : 0;
 	return r->chunk != NULL ? 0 : -1;
 }
