@@ -1320,7 +1320,7 @@ static double coord(uint64_t e, double j, double side)
  * jitter: the centre of the element) straight into the chunk's xy, with
  * the pixel's density: frs_point and api_pdf without the elements in
  * between, a third of the memory traffic. */
-static void take_points(struct pix *px, const struct frs_tile *t,
+FRS_WIDE static void take_points(struct pix *px, const struct frs_tile *t,
     const uint32_t *idx, uint32_t b, unsigned lb, uint64_t x, uint64_t y,
     uint64_t k)
 {
