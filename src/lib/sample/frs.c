@@ -1761,8 +1761,10 @@ static void first_values(struct run *run)
 
 	run->bval = run->bpos = run->bstart = NULL;
 	run->npos = 0;
+	/* pix_few's shifts and masks want powers of two (as lists do). */
 	if (run->algo != FRS_SORTED || s->tiles == FRS_TILES_PLAIN ||
-	    p->block == 0 || s->ns / p->block < 2)
+	    p->block == 0 || s->ns / p->block < 2 || (s->mw & (s->mw - 1)) ||
+	    (s->mh & (s->mh - 1)))
 		return;
 	while (B < s->ns && 2 * B <= s->mw / 2 && 2 * B <= s->mh / 2)
 		B *= 2;
