@@ -1519,45 +1519,48 @@ static void squares_met(uint64_t a, uint64_t len, uint64_t m, unsigned lB,
 	*nq = n < m >> lB ? n : m >> lB;
 }
 
-/* The values of square (qx, qy) below the limit that tile t shows in the
- * pixel, into px->few from *k; 0, or -1 when px->few is full. */
+/* The values of square q below the limit that tile t shows in the pixel,
+ * into px->few from *k (counted only, for a count); 0, or -1 when
+ * px->few is full. */
 static int few_square(struct pix *px, const struct frs_tile *t,
-    uint64_t wx, uint64_t wy, uint64_t q, uint32_t b, uint64_t nb,
+    uint64_t wx, uint64_t wy, uint64_t q, unsigned lb, uint64_t nb,
     uint64_t *k)
 {
 	const struct run *run = px->run;
 	const struct frs_setup *s = run->s;
-	uint64_t m[2] = { s->mw, s->mh };
-	unsigned lw = run->lmw;
+	/* frs_tile_block at level 0, backwards, without branches: the
+	 * matrix's sides are powers of two, so a coordinate wraps by a mask
+	 * and m - 1 - x is (m - 1) ^ x. */
+	uint64_t mx = s->mw - 1, my = s->mh - 1;
+	uint64_t fx = (t->flip & 1u) ? mx : 0, fy = (t->flip & 2u) ? my : 0;
+	int swap = t->perm[0] != 0;
 
 	for (uint32_t i = run->bstart[q]; i < run->bstart[q + 1] &&
 	    run->bval[i] < px->lim; i++) {
-		uint64_t mv[2] = { run->bpos[i] & (s->mw - 1), run->bpos[i] >> lw },
-		    u[2], ex, ey;
-		/* frs_tile_block at level 0, backwards */
-		for (unsigned a = 0; a < 2; a++) {
-			uint64_t x = mv[a] >= t->off[a] ? mv[a] - t->off[a] :
-			    mv[a] + m[a] - t->off[a];
-			u[t->perm[a]] = (t->flip >> a & 1u) ? m[a] - 1 - x : x;
-		}
-		ex = wx + u[0];
-		ey = wy + u[1];
-		if (ex < px->x0 || ex >= px->x0 + s->ns || ey < px->y0 ||
-		    ey >= px->y0 + s->ns ||
-		    !passes(s, &px->th[0], run->bval[i], ex, ey))
+		uint32_t pos = run->bpos[i], v = run->bval[i];
+		uint64_t a0 = (((pos & mx) - t->off[0]) & mx) ^ fx;
+		uint64_t a1 = (((pos >> run->lmw) - t->off[1]) & my) ^ fy;
+		/* inside the pixel: (ex, ey) from its corner, below n_s */
+		uint64_t ex = wx + (swap ? a1 : a0) - px->x0;
+		uint64_t ey = wy + (swap ? a0 : a1) - px->y0;
+		if (ex >= s->ns || ey >= s->ns ||
+		    !passes(s, &px->th[0], v, px->x0 + ex, px->y0 + ey))
 			continue;
+		if (run->count_only) {
+			px->c->count++;
+			continue;
+		}
 		if (*k == LIVE_MAX)
 			return -1;
-		px->few[(*k)++] = (struct few){ ((ey - px->y0) / b * nb +
-		    (ex - px->x0) / b) << 32 | run->bval[i], (uint32_t)ex,
-		    (uint32_t)ey };
+		px->few[(*k)++] = (struct few){ ((ey >> lb) * nb + (ex >> lb)) <<
+		    32 | v, (uint32_t)(px->x0 + ex), (uint32_t)(px->y0 + ey) };
 	}
 	return 0;
 }
 
 /* The elements of the part of the pixel in tile (tx, ty): the squares of
  * the matrix that the part shows, through the tile's transform. */
-static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, uint32_t b,
+static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, unsigned lb,
     uint64_t nb, uint64_t *k)
 {
 	const struct run *run = px->run;
@@ -1586,7 +1589,7 @@ static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, uint32_t b,
 		for (uint64_t i = 0; i < nq[0]; i++) {
 			uint64_t q = ((q0[1] + j) & (sqy - 1)) * sq +
 			    ((q0[0] + i) & (sq - 1));
-			if (few_square(px, t, wx, wy, q, b, nb, k) < 0)
+			if (few_square(px, t, wx, wy, q, lb, nb, k) < 0)
 				return -1;
 		}
 	return 0;
@@ -1602,7 +1605,7 @@ static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, uint32_t b,
  * order: by block of side b in the pixel, row by row, and by value inside
  * a block.  0, or -1 (nothing taken) when they are too many to hold.
  */
-static int pix_few(struct pix *px, uint32_t b, uint64_t nb)
+static int pix_few(struct pix *px, unsigned lb, uint64_t nb)
 {
 	const struct run *run = px->run;
 	const struct frs_setup *s = run->s;
@@ -1612,7 +1615,7 @@ static int pix_few(struct pix *px, uint32_t b, uint64_t nb)
 	    ty++)
 		for (uint64_t tx = X0 >> run->lmw;
 		    tx <= (X0 + s->ns - 1) >> run->lmw; tx++)
-			if (few_tile(px, tx, ty, b, nb, &k) < 0)
+			if (few_tile(px, tx, ty, lb, nb, &k) < 0)
 				return -1;
 	/* By key: insertion for the few a dark pixel has. */
 	for (uint64_t i = 1; i < k; i++) {
@@ -1656,7 +1659,7 @@ static void pix_sorted(struct pix *px)
 
 	while ((1u << lb) < b)
 		lb++;
-	if (live && few_serves(px, nb) && pix_few(px, b, nb) == 0)
+	if (live && few_serves(px, nb) && pix_few(px, lb, nb) == 0)
 		return;
 	if (live)
 		pixel_live(px, b, nb);
