@@ -53,7 +53,7 @@ FRS_WIDE static void radical2_n(const uint64_t *i, size_t n, double *out)
  * num_radical3: the base-3 digits of i mirrored at the point, 7 at a time
  * from a table of the 3^7 mirrors, summed by Horner's rule from the
  * highest chunk c_J down: r = (r + mirror(c_j)) / 3^7 with the quotient a
- * product by the rounded 1 / 3^7.  Three roundings a chunk against the
+ * product by the rounded 1 / 3^7.  Two roundings a chunk against the
  * loop's one a digit; chunks above the highest add 0 to 0 and leave r 0,
  * so every path that covers the index's chunks gives the same bits.
  */

