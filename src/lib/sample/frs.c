@@ -2090,28 +2090,6 @@ uint64_t frs_level_place(uint64_t seed, unsigned level, uint64_t id,
 	return (r >> (21 * axis)) & (((uint64_t)1 << level) - 1);
 }
 
-/* The jitter of element id in [0, 1)^2: the centre, or Halton or random
- * offsets by (seed, element). */
-static void jitter2(const struct frs_setup *s, uint64_t id, double *jx,
-    double *jy)
-{
-	*jx = *jy = 0.5;
-	if (s->jitter == FRS_PLACE_RANDOM) {
-		/* One block for both: half the cost of a block each. */
-		frs_rand01_pair(s->seed, FRS_STREAM_JITTER, id, jx, jy);
-	} else if (s->jitter == FRS_PLACE_HALTON) {
-		/* Halton (2, 3) by element, rotated by the seed
-		 * (Cranley-Patterson), so it depends on nothing but both;
-		 * base 3 from num_radical3's table, for speed. */
-		double rx = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX);
-		double ry = frs_rand01(s->seed, FRS_STREAM_JITTER, UINT64_MAX - 1);
-		*jx = num_radical_inverse(id + 1, 2) + rx;
-		*jy = num_radical3(id + 1) + ry;
-		*jx -= floor(*jx);
-		*jy -= floor(*jy);
-	}
-}
-
 /*
  * An element's point, at every level alike: each level's element grid is
  * as fine against its samples' spacing as level 0's (sigma elements at
@@ -2121,18 +2099,18 @@ static void jitter2(const struct frs_setup *s, uint64_t id, double *jx,
 void frs_point(const struct frs_setup *s, const struct frs_elem *e,
     double *x, double *y)
 {
-	double jx, jy;
+	double xy[2];
 
-	jitter2(s, (uint64_t)e->y * s->sw + e->x, &jx, &jy);
-	*x = coord(e->x, jx, (double)s->sw);
-	*y = coord(e->y, jy, (double)s->sh);
+	frs_points(s, e, 1, xy);
+	*x = xy[0];
+	*y = xy[1];
 }
 
 /* Elements a piece of jittered_points: its arrays stay in the
  * first-level cache. */
 #define JPIECE 256
 
-/* v[i] + r - floor(v[i] + r), jitter2's rotation of Halton points, for
+/* v[i] + r - floor(v[i] + r), the rotation of Halton points, for
  * v[i] and r in [0, 1]: the sum is below 2, and where it is 1 or more the
  * subtraction of 1 is exact (Sterbenz), as floor's would be, so a select
  * gives floor's bits and vectorises without SSE4.1. */
@@ -2144,9 +2122,14 @@ FRS_WIDE static void rotate_n(double *v, size_t n, double r)
 	}
 }
 
-/* jitter2 of n <= JPIECE elements at once: the random numbers and the
- * radical inverses in vectors (frs_rand01_n, num_radical_inverse_n), the
- * same bits. */
+/*
+ * The jitter of n <= JPIECE elements in [0, 1)^2, by (seed, element):
+ * random, both coordinates from one Philox block (half the cost of a
+ * block each); or the Halton point (2, 3) of the element's number + 1,
+ * rotated by the seed (Cranley-Patterson), so that it depends on nothing
+ * but both, base 3 from num_radical3's table.  The random numbers and
+ * the radical inverses are made in vectors.
+ */
 static void jitter_n(const struct frs_setup *s, const struct frs_elem *e,
     size_t n, double *jx, double *jy)
 {

@@ -352,7 +352,8 @@ int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
 /* v, or the double below 1 if v is 1. */
 double frs_below_one(double v);
 
-/* The point of an element, in [0, 1)^2, with the setup's jitter. */
+/* The point of an element, in [0, 1)^2, with the setup's jitter:
+ * frs_points of one. */
 void frs_point(const struct frs_setup *s, const struct frs_elem *e,
     double *x, double *y);
 /* The level-0 element, on axis 0, 1 or 2, that the sample of a volume's
@@ -360,8 +361,8 @@ void frs_point(const struct frs_setup *s, const struct frs_elem *e,
  * bits of (level seed, element). */
 uint64_t frs_level_place(uint64_t seed, unsigned level, uint64_t id,
     unsigned axis);
-/* frs_point of n elements into xy (x, y pairs): the same values, one
- * loop without calls when there is no jitter. */
+/* The points of n elements into xy (x, y pairs), the jitter made in
+ * vectors; one loop without calls when there is none. */
 void frs_points(const struct frs_setup *s, const struct frs_elem *e,
     size_t n, double *xy);
 
