@@ -26,7 +26,8 @@ PKG_CONFIG ?= pkg-config
 # On x86-64 the functions marked FRS_WIDE (src/lib/base/wide.h) also have
 # AVX2 and AVX-512 clones picked at run time; 256-bit vectors in the
 # latter, as GCC tunes for the processors that have it (512 were slower).
-OPT ?= -O3 -g $(if $(filter x86_64 amd64,$(shell uname -m)),-mprefer-vector-width=256)
+HOST_ARCH := $(shell uname -m)
+OPT ?= -O3 -g $(if $(filter x86_64 amd64,$(HOST_ARCH)),-mprefer-vector-width=256)
 WARN = -Wall -Wextra -Wshadow -Wconversion -Werror=implicit-function-declaration
 CSTD = -std=c11
 
