@@ -26,8 +26,6 @@ one() {
 	timed /dev/null "$@" -o /dev/null
 	echo "$SEC" >>"$_f"
 }
-median_of() { sort -g "$1" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (a > 0 && b > 0) ? a / b : 0 }'; }
 verdict() { awk -v v="$1" -v t="$2" 'BEGIN { print (v > 0 && v <= t) ? "met" : "missed" }'; }
 
 # three PROG ARGS...: "OURS WIDE BASE", the medians of R interleaved runs

@@ -27,9 +27,6 @@ if [ -n "$BASE" ] && [ ! -x "$BASE/../test/bench_api" ]; then
 	    >/dev/null 2>&1 || true
 fi
 
-# median_of FILE: the median of the numbers in FILE, one a line.
-median_of() { sort -g "$1" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
-
 # med CMD...: the median wall seconds of R runs of CMD (output dropped).
 med() {
 	: >"$T/runs"
@@ -79,7 +76,6 @@ phases() {
 	echo "$(median_of "$T/po") $(median_of "$T/pb")"
 }
 
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (a > 0 && b > 0) ? a / b : 0 }'; }
 verdict() { awk -v v="$1" -v t="$2" 'BEGIN { print (v <= t) ? "met" : "missed" }'; }
 
 echo "Speed of Sorted FRS, blob 128x128, $MAT (no .frp), one thread unless said;"

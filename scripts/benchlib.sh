@@ -16,6 +16,12 @@ bench_setup() {
 	done
 }
 
+# median_of FILE: the median of the numbers in FILE, one a line.
+median_of() { sort -g "$1" | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+
+# ratio A B: A / B to two places, 0 when either is not positive.
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (a > 0 && b > 0) ? a / b : 0 }'; }
+
 # timed OUT CMD...: run CMD once, standard output to OUT; seconds in SEC.
 timed() {
 	out=$1
