@@ -2,10 +2,11 @@
 # OpenCL: the analogue of thesis Table 6.3 and Fig. 6.14 on whatever
 # OpenCL device there is (PoCL on the CPU here; run it on a GPU machine
 # for the thesis' comparison: GTX 680, Sorted 2^24 in 21.3 ms, HSW
-# 145.5 ms).  128^2 blob, S_M = 2048 (data/default.frd prepared), sigma 8;
-# per implementation and n the CPU thresholding time (all threads) beside
-# the device's kernels alone and with the transfers (building the
-# program, cached by the runtime, left out), in milliseconds.
+# 145.5 ms).  128^2 blob, plain tiles (the thesis' one window), S_M =
+# 2048 (data/default.frd prepared), sigma 8; per implementation and n
+# the CPU thresholding time (all threads) beside the device's kernels
+# alone and with the transfers (building the program, cached by the
+# runtime, left out), in milliseconds.
 #   scripts/bench-cl.sh [BUILD]        BENCH_QUICK=1: fewer counts
 set -eu
 BUILD=${1:-build/rel}
@@ -32,7 +33,7 @@ fi
 "$HSW" -q -i blob -n 16 --device cl -o /dev/null
 
 echo "OpenCL device: $(head -n 1 "$T/dev" | cut -f 2-)"
-echo "FRS thresholding, 128^2 blob, S_M 2048, sigma 8, milliseconds"
+echo "FRS thresholding, 128^2 blob, plain tiles, S_M 2048, sigma 8, milliseconds"
 printf '%-7s %5s %10s %10s %10s %10s %8s\n' algo log2n samples cpu_ms \
     cl_kern_ms cl_total_ms total/cpu
 for e in $NS; do
@@ -42,13 +43,13 @@ for e in $NS; do
 		case $a in naive | level1 | level2) [ "$e" -gt 20 ] && continue ;; esac
 		cpu=-
 		if [ $a != flat1 ]; then
-			"$FRS" -q -m "$T/M.frp" -i blob -n $n -a $a -j "$ALL" -v \
+			"$FRS" -q -m "$T/M.frp" -i blob -n $n -a $a --tiles plain -j "$ALL" -v \
 			    -o /dev/null 2>"$T/v"
 			cpu=$(sed -n 's/.*thresholding \([0-9.]*\) s.*/\1/p' "$T/v")
 		fi
-		"$FRS" -q -m "$T/M.frp" -i blob -n $n -a $a --device cl -v \
+		"$FRS" -q -m "$T/M.frp" -i blob -n $n -a $a --tiles plain --device cl -v \
 		    -o /dev/null 2>"$T/v"
-		cnt=$(sed -n 's/.* \([0-9]*\) samples (.*/\1/p' "$T/v")
+		cnt=$(sed -n "s/^[^ ]*: \([0-9]*\) samples (.*/\1/p" "$T/v")
 		awk -v a=$a -v e=$e -v c="$cnt" -v cpu="$cpu" '
 			/OpenCL device/ {
 				for (i = 1; i <= NF; i++) {
