@@ -15,7 +15,6 @@
 #include "maps/imap.h"
 #include "base/par.h"
 
-#define PI 3.14159265358979323846
 #define CHUNK 2048		/* sorted points per parallel chunk */
 #define MAX_BINS ((size_t)1 << 24)
 
@@ -634,11 +633,11 @@ static double cdf_outer(double r, int torus)
 {
 	if (torus) {
 		double r2 = r * r;
-		return PI * r2 - 4 * (r2 * acos(0.5 / r) - 0.5 *
+		return NUM_PI * r2 - 4 * (r2 * acos(0.5 / r) - 0.5 *
 		    sqrt(r2 - 0.25));
 	} else {
 		double r2 = r * r, s = sqrt(r2 - 1), s2 = s * s, s3 = s2 * s;
-		return 2 * s - s2 + 2 * r2 * (2 * asin(1 / r) - PI / 2) -
+		return 2 * s - s2 + 2 * r2 * (2 * asin(1 / r) - NUM_PI / 2) -
 		    4.0 / 3 * (1 - s3) - r2 + 1.0 / 6 + 2 * r2 * (s - s2 / 2) -
 		    2.0 / 3 * s3 + 0.5 * s2 * s2;
 	}
@@ -653,8 +652,8 @@ double dens_pair_cdf(double r, int torus)
 	if (r >= dens_rdf_limit(torus))
 		return 1;
 	if (r <= t)
-		return torus ? PI * r * r :
-		    r * r * (PI - 8.0 / 3 * r + 0.5 * r * r);
+		return torus ? NUM_PI * r * r :
+		    r * r * (NUM_PI - 8.0 / 3 * r + 0.5 * r * r);
 	return cdf_outer(r, torus);
 }
 
@@ -668,8 +667,8 @@ static double cdf_diff(double a, double b, int torus)
 	lo = b < t ? b : t;
 	{
 		double s = a + lo, q = a * a + a * lo + lo * lo;
-		double d = torus ? PI * s :
-		    PI * s - 8.0 / 3 * q + 0.5 * s * (a * a + lo * lo);
+		double d = torus ? NUM_PI * s :
+		    NUM_PI * s - 8.0 / 3 * q + 0.5 * s * (a * a + lo * lo);
 		d *= lo - a;
 		if (b > t)
 			d += dens_pair_cdf(b, torus) - dens_pair_cdf(t, torus);

@@ -376,7 +376,7 @@ static int shape_chunk(void *ctx, uint64_t b, uint64_t e)
 			area = disc_quad_area(q);
 		} else {
 			cnt = disc_count_circle(&r->cols, q);
-			area = 3.14159265358979323846 * q[2] * q[2];
+			area = NUM_PI * q[2] * q[2];
 		}
 		v = fabs((double)cnt / r->n - area);
 		best = v > best ? v : best;

@@ -3,8 +3,8 @@
 #include <stdint.h>
 
 #include "analysis/integrand.h"
+#include "base/num.h"
 
-#define PI 3.14159265358979323846
 #define GAUSS_SIGMA 0.15
 #define DISC_R 0.35
 
@@ -35,7 +35,7 @@ static double exact_gauss(const struct frs_imap *env)
 {
 	/* int_0^1 exp(-(x-1/2)^2 / (2 s^2)) dx, squared */
 	double s = GAUSS_SIGMA;
-	double one = s * sqrt(2 * PI) * erf(0.5 / (s * sqrt(2.0)));
+	double one = s * sqrt(2 * NUM_PI) * erf(0.5 / (s * sqrt(2.0)));
 
 	(void)env;
 	return one * one;
@@ -44,7 +44,7 @@ static double exact_gauss(const struct frs_imap *env)
 static double exact_disc(const struct frs_imap *env)
 {
 	(void)env;
-	return PI * DISC_R * DISC_R;
+	return NUM_PI * DISC_R * DISC_R;
 }
 
 static double exact_step(const struct frs_imap *env)
@@ -61,7 +61,7 @@ static double exact_step(const struct frs_imap *env)
  */
 static double f_env(const struct frs_imap *env, double u, double v)
 {
-	double c = cos(PI * v);
+	double c = cos(NUM_PI * v);
 	size_t x = (size_t)(u * env->w), y = (size_t)(v * env->h);
 
 	if (!(c > 0))
@@ -70,7 +70,7 @@ static double f_env(const struct frs_imap *env, double u, double v)
 		x = env->w - 1;
 	if (y >= env->h)
 		y = env->h - 1;
-	return env->v[y * env->w + x] * c * sin(PI * v) * 2 * PI * PI;
+	return env->v[y * env->w + x] * c * sin(NUM_PI * v) * 2 * NUM_PI * NUM_PI;
 }
 
 /*
@@ -87,7 +87,7 @@ static double env_row_weight(uint32_t y, uint32_t h)
 		return 0.0;
 	if (b > 0.5)
 		b = 0.5;
-	return PI * sin(PI * (b - a)) * sin(PI * (a + b));
+	return NUM_PI * sin(NUM_PI * (b - a)) * sin(NUM_PI * (a + b));
 }
 
 /* The sum over pixels of L times its row's weight, in long double. */

@@ -17,7 +17,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define PI 3.14159265358979323846
 
 /* ---- images -------------------------------------------------------- */
 
@@ -110,7 +109,7 @@ static void cos_sin_2pi(const double *restrict t, double *restrict c,
 {
 	for (int p = 0; p < EX_PTS; p++) {
 		double q = (double)(int)(4.0 * t[p] + 0.5);
-		double x = 2.0 * PI * (t[p] - 0.25 * q), z = x * x;
+		double x = 2.0 * NUM_PI * (t[p] - 0.25 * q), z = x * x;
 		double d = q - 2.0, d2 = d * d;
 		double cq = (d2 * (7.0 - d2) - 6.0) / 6.0;
 		double sq = d * (d2 - 4.0) / 3.0;
@@ -437,7 +436,7 @@ int spec_fourier_approx(const double *xy, size_t n, int par,
 	for (c.N = 16; c.N < 4 * (size_t)c.K || c.N < 4 * NU_W; c.N *= 2)
 		;
 	rho = (double)c.K / (double)c.N;
-	c.s2 = NU_W / (2.0 * PI * (1.0 - rho));
+	c.s2 = NU_W / (2.0 * NUM_PI * (1.0 - rho));
 	for (int l = 1 - NU_W; l <= NU_W; l++)
 		c.e3[l + NU_W - 1] = exp(-(double)(l * l) / (2.0 * c.s2));
 	c.start = calloc(c.N + 1, sizeof *c.start);
@@ -480,8 +479,8 @@ int spec_fourier_approx(const double *xy, size_t n, int par,
 	 * transform s/N sqrt(2 pi) exp(-2 pi^2 s2 k^2 / N^2). */
 	for (size_t k = 0; k <= c.K; k++) {
 		double t = (double)k / (double)c.N;
-		c.dec[k] = exp(2.0 * PI * PI * c.s2 * t * t) /
-		    sqrt(2.0 * PI * c.s2);
+		c.dec[k] = exp(2.0 * NUM_PI * NUM_PI * c.s2 * t * t) /
+		    sqrt(2.0 * NUM_PI * c.s2);
 	}
 	rc = frs_parallel_if(par, c.N, NU_STRIP, nu_spread, &c);
 	if (rc == 0)

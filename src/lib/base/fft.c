@@ -1,11 +1,11 @@
 #define _POSIX_C_SOURCE 200809L
 #include "base/fft.h"
 #include "base/err.h"
+#include "base/num.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-#define PI 3.14159265358979323846
 
 int fft_is_pow2(size_t n)
 {
@@ -32,7 +32,7 @@ int fft1(double *x, size_t n, size_t stride, int sign)
 		}
 	}
 	for (size_t len = 2; len <= n; len <<= 1) {
-		double ang = sign * 2.0 * PI / (double)len;
+		double ang = sign * 2.0 * NUM_PI / (double)len;
 		for (size_t k = 0; k < len / 2; k++) {
 			/* Twiddles from sin/cos each time: exact enough, and
 			 * no drift from recurrences. */

@@ -33,9 +33,25 @@ static inline double num_total(const struct num_sum *a)
 	return a->s + a->c;
 }
 
+/* pi to more digits than a double holds (C11's math.h has no M_PI). */
+#define NUM_PI 3.14159265358979323846
+
 /* -1, 0 or 1 as a < b, a == b or a > b: the step of a qsort comparison
  * (a subtraction overflows, and a double's is not an int). */
 #define NUM_CMP(a, b) (((a) > (b)) - ((a) < (b)))
+
+/* A value and where it came from, for a qsort by value (the samplers'
+ * block lists). */
+struct num_vi {
+	uint32_t v, i;
+};
+
+static inline int num_vi_cmp(const void *a, const void *b)
+{
+	const struct num_vi *x = a, *y = b;
+
+	return NUM_CMP(x->v, y->v);
+}
 
 /* The compensated sum of v[0 .. n - 1], in order. */
 double num_sum(const double *v, size_t n);

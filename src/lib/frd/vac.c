@@ -9,6 +9,7 @@
 #include "base/mem.h"
 #include "base/progress.h"
 #include "base/rng.h"
+#include "base/num.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -84,7 +85,7 @@ int vac_scale_bits(const struct vac_params *pr)
 	 * (K is separable), each below 1 + sqrt(2 pi) sigma and below the
 	 * side; with 2^S times it under 2^61 the rounding of up to 2^32
 	 * terms cannot overflow either. */
-	double a = 1.0 + sqrt(2.0 * 3.14159265358979323846) * pr->sigma;
+	double a = 1.0 + sqrt(2.0 * NUM_PI) * pr->sigma;
 	double b = fmin((double)pr->w, a) * fmin((double)pr->h, a);
 	int e;
 

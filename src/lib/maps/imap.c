@@ -2,13 +2,13 @@
 #include "maps/imap.h"
 #include "base/err.h"
 #include "base/mem.h"
+#include "base/num.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define FRS_PI 3.14159265358979323846
 
 int imap_alloc(struct frs_imap *m, uint32_t w, uint32_t h)
 {
@@ -229,7 +229,7 @@ double imap_equirect_weight(uint32_t j, uint32_t h)
 {
 	/* Mean of sin(theta) over the row's band of polar angles:
 	 * (cos t0 - cos t1) / (t1 - t0). */
-	double t0 = FRS_PI * j / h, t1 = FRS_PI * (j + 1) / h;
+	double t0 = NUM_PI * j / h, t1 = NUM_PI * (j + 1) / h;
 
 	return (cos(t0) - cos(t1)) / (t1 - t0);
 }

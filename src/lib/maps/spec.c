@@ -3,6 +3,7 @@
 #include "maps/imap.h"
 #include "maps/vol.h"
 #include "base/err.h"
+#include "base/num.h"
 #include "base/parse.h"
 #include "base/par.h"
 #include "base/progress.h"
@@ -11,7 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define PI 3.14159265358979323846
 #define MAXPARAM 6
 
 struct param {
@@ -72,7 +72,7 @@ static double gauss_mean(double a, double b, double c, double s)
 		d = erfc(-v) - erfc(-u);
 	else
 		d = erf(v) - erf(u);
-	return d * s * sqrt(PI / 2.0) / (b - a);
+	return d * s * sqrt(NUM_PI / 2.0) / (b - a);
 }
 
 /* The Gaussian's means over the cells of axis a: g[i] over [i, i + 1) / m. */
@@ -118,7 +118,7 @@ static int eval_blob(const double *p, unsigned k, const uint32_t *n,
 static int eval_ramp(const double *p, unsigned k, const uint32_t *n,
     uint32_t y0, uint32_t y1, double *out)
 {
-	double a = p[2] * PI / 180.0, c = cos(a), s = sin(a);
+	double a = p[2] * NUM_PI / 180.0, c = cos(a), s = sin(a);
 	uint32_t w = n[0], h = n[1];
 	double norm = fabs(c) + fabs(s);
 
@@ -151,7 +151,7 @@ static void supersample(double (*f)(const double *, double, double),
 
 static double aniso_at(const double *p, double x, double y)
 {
-	double a = p[0] * PI / 180.0;
+	double a = p[0] * NUM_PI / 180.0;
 	/* Distance from the line through the centre at angle a. */
 	double d = -(x - 0.5) * sin(a) + (y - 0.5) * cos(a);
 	return p[2] + exp(-d * d / (2.0 * p[1] * p[1]));
@@ -181,12 +181,12 @@ static int eval_aniso(const double *p, unsigned k, const uint32_t *n,
  */
 static double sky_at(const double *p, double x, double y)
 {
-	double th = PI * y, ph = 2.0 * PI * x;
-	double ts = (90.0 - p[0]) * PI / 180.0, ps = p[1] * PI / 180.0;
+	double th = NUM_PI * y, ph = 2.0 * NUM_PI * x;
+	double ts = (90.0 - p[0]) * NUM_PI / 180.0, ps = p[1] * NUM_PI / 180.0;
 	double cg = sin(th) * sin(ts) * cos(ph - ps) + cos(th) * cos(ts);
 	double g = acos(cg > 1.0 ? 1.0 : cg < -1.0 ? -1.0 : cg);
-	double r = g / (p[2] * PI / 180.0);
-	double base = th < PI / 2.0 ? 1.0 + 1.5 * (1.0 - cos(th)) : p[4];
+	double r = g / (p[2] * NUM_PI / 180.0);
+	double base = th < NUM_PI / 2.0 ? 1.0 + 1.5 * (1.0 - cos(th)) : p[4];
 
 	return base + p[3] * exp(-r * r);
 }

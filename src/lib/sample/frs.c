@@ -487,18 +487,8 @@ static int make_minmap(struct frs_prep *p)
 	return 0;
 }
 
-struct pair {
-	uint32_t v, i;
-};
-
-static int pair_cmp(const void *a, const void *b)
-{
-	const struct pair *x = a, *y = b;
-	return x->v < y->v ? -1 : x->v > y->v;
-}
-
 /* The block lists by comparison sort: any matrix values. */
-static void sort_blocks(struct frs_prep *p, struct pair *tmp)
+static void sort_blocks(struct frs_prep *p, struct num_vi *tmp)
 {
 	const struct frs_matrix *m = p->m;
 	uint32_t b = p->block, bw = m->w / b, bh = m->h / b;
@@ -508,9 +498,9 @@ static void sort_blocks(struct frs_prep *p, struct pair *tmp)
 		for (uint32_t bx = 0; bx < bw; bx++) {
 			size_t base = ((size_t)by * bw + bx) * bb;
 			for (uint32_t k = 0; k < bb; k++)
-				tmp[k] = (struct pair){ m->v[((size_t)by * b + k / b) *
+				tmp[k] = (struct num_vi){ m->v[((size_t)by * b + k / b) *
 				    m->w + (size_t)bx * b + k % b], k };
-			qsort(tmp, bb, sizeof *tmp, pair_cmp);
+			qsort(tmp, bb, sizeof *tmp, num_vi_cmp);
 			for (size_t k = 0; k < bb; k++) {
 				p->sval[base + k] = tmp[k].v;
 				p->sidx[base + k] = tmp[k].i;
@@ -941,7 +931,7 @@ static int make_sorted(struct frs_prep *p, uint32_t b, uint64_t below)
 	const struct frs_matrix *m = p->m;
 	uint64_t nblk = (uint64_t)(m->w / b) * (m->h / b), bb = (uint64_t)b * b;
 	uint32_t *inv = NULL;
-	struct pair *tmp = NULL;
+	struct num_vi *tmp = NULL;
 	int rc = 0;
 
 	p->block = b;

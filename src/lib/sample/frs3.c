@@ -106,16 +106,6 @@ void frs3_prep_free(struct frs3_prep *p)
 	memset(p, 0, sizeof *p);
 }
 
-struct pair {
-	uint32_t v, i;
-};
-
-static int pair_cmp(const void *a, const void *b)
-{
-	const struct pair *x = a, *y = b;
-	return x->v < y->v ? -1 : x->v > y->v;
-}
-
 struct sort_job {
 	struct frs3_prep *p;
 	uint32_t bw, bh;	/* blocks per row and column */
@@ -128,7 +118,7 @@ static int sort_blocks(void *ctx, uint64_t b0, uint64_t b1)
 	const struct frs_matrix *m = j->p->m;
 	uint32_t b = j->p->block;
 	size_t bb = (size_t)b * b * b;
-	struct pair *tmp = malloc(bb * sizeof *tmp);
+	struct num_vi *tmp = malloc(bb * sizeof *tmp);
 
 	if (tmp == NULL)
 		return frs_fail("out of memory for the sorted lists");
@@ -138,9 +128,9 @@ static int sort_blocks(void *ctx, uint64_t b0, uint64_t b1)
 		for (uint32_t k = 0; k < bb; k++) {
 			uint64_t x = bx * b + k % b, y = by * b + k / b % b;
 			uint64_t z = bz * b + k / b / b;
-			tmp[k] = (struct pair){ m->v[(z * m->h + y) * m->w + x], k };
+			tmp[k] = (struct num_vi){ m->v[(z * m->h + y) * m->w + x], k };
 		}
-		qsort(tmp, bb, sizeof *tmp, pair_cmp);
+		qsort(tmp, bb, sizeof *tmp, num_vi_cmp);
 		for (size_t k = 0; k < bb; k++) {
 			j->p->sval[blk * bb + k] = tmp[k].v;
 			j->p->sidx[blk * bb + k] = tmp[k].i;
