@@ -183,5 +183,7 @@ int main(int argc, char **argv)
 		    thesis, seed);
 	} else
 		die("usage", "ref_frs setup|pass [options] MATRIX MAP ...");
+	frd_free(&m);
+	imap_free(&im);
 	return 0;
 }

@@ -367,6 +367,8 @@ uint32_t frs_tile_max_block(const struct frs_setup *s)
  * tiles, not once a row of pixels (interior.exr at 262144: 9 ms). */
 #define TCACHE 1024
 struct tcache {
+	unsigned sx, sy;	/* log2 of the matrix's sides, or 64 when
+				 * one is no power of two (tcache_init) */
 	struct {
 		uint64_t tx, ty;
 		int valid;
@@ -374,15 +376,22 @@ struct tcache {
 	} e[TCACHE];
 };
 
-/* The tile of window element (x, y) and the element's place in it. */
-static const struct frs_tile *tile_at(const struct frs_setup *s,
-    struct tcache *c, uint64_t x, uint64_t y, uint64_t *lx, uint64_t *ly)
+static void tcache_init(struct tcache *c, const struct frs_setup *s)
 {
-	uint64_t X = s->wx + x, Y = s->wy + y, tx = X / s->mw, ty = Y / s->mh;
+	int pow2 = (s->mw & (s->mw - 1)) == 0 && (s->mh & (s->mh - 1)) == 0;
+
+	c->sx = pow2 ? log2u64(s->mw) : 64;
+	c->sy = pow2 ? log2u64(s->mh) : 64;
+	for (unsigned k = 0; k < TCACHE; k++)
+		c->e[k].valid = 0;
+}
+
+/* The transform of tile (tx, ty), from the cache or made into it. */
+static const struct frs_tile *tile_get(const struct frs_setup *s,
+    struct tcache *c, uint64_t tx, uint64_t ty)
+{
 	unsigned k = (unsigned)(tx % TCACHE);
 
-	*lx = X - tx * s->mw;
-	*ly = Y - ty * s->mh;
 	if (!c->e[k].valid || c->e[k].tx != tx || c->e[k].ty != ty) {
 		uint64_t m[3] = { s->mw, s->mh, 1 };
 		if (s->tiles == FRS_TILES_PLAIN)
@@ -394,6 +403,26 @@ static const struct frs_tile *tile_at(const struct frs_setup *s,
 		c->e[k].valid = 1;
 	}
 	return &c->e[k].t;
+}
+
+/* The tile of window element (x, y) and the element's place in it.
+ * Matrices of power-of-two sides (all that frd-gen makes) divide by a
+ * shift: a 64-bit division is some 40 cycles, and this runs per block. */
+static const struct frs_tile *tile_at(const struct frs_setup *s,
+    struct tcache *c, uint64_t x, uint64_t y, uint64_t *lx, uint64_t *ly)
+{
+	uint64_t X = s->wx + x, Y = s->wy + y, tx, ty;
+
+	if (c->sx < 64) {
+		tx = X >> c->sx;
+		ty = Y >> c->sy;
+	} else {
+		tx = X / s->mw;
+		ty = Y / s->mh;
+	}
+	*lx = X - tx * s->mw;
+	*ly = Y - ty * s->mh;
+	return tile_get(s, c, tx, ty);
 }
 
 /* The index of the level-l matrix block that shows the level-l block of
@@ -1020,8 +1049,10 @@ void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule)
 	if (!(t < 0x1p33))
 		t = 0x1p33;
 	th->t = t;
-	th->tf = (uint64_t)floor(t);
-	th->frac = t - floor(t);
+	/* floor(t) for t >= 0 (and below 2^64): the conversion truncates,
+	 * exactly, and costs a library call less a pixel. */
+	th->tf = (uint64_t)t;
+	th->frac = t - (double)th->tf;
 	if (rule == FRS_THESIS)		/* v < T  <=>  v < ceil(T) */
 		th->lim = (uint64_t)ceil(t);
 	else
@@ -1068,8 +1099,9 @@ struct run {
 	 * side bside of the matrix (first_values), for pixels whose few
 	 * passing values are cheaper to look up than their blocks
 	 * (pix_few): square q holds bval[bstart[q] .. bstart[q + 1] - 1],
-	 * ascending, at matrix indices bpos[...]. */
-	uint32_t *bval, *bpos, *bstart;
+	 * ascending, at matrix indices bpos[...]; value v < npos is at
+	 * matrix index vpos[v]. */
+	uint32_t *bval, *bpos, *bstart, *vpos;
 	uint64_t npos;
 	unsigned lside, lmw, lmh;	/* log2 of the squares' side, mw, mh */
 	double share;		/* of the matrix the squares of a pixel's
@@ -1093,6 +1125,7 @@ struct pix {
 	uint64_t lim;
 	uint64_t x0, y0;	/* the pixel's first window element */
 	double pdf;		/* its density, for points made in place */
+	unsigned lblock;	/* log2 of the sorted lists' block side */
 	struct tcache tc;
 	uint8_t live[LIVE_MAX];	/* Sorted, shuffled tiles: its blocks worth
 				 * a look (mark_live) */
@@ -1509,12 +1542,12 @@ static void squares_met(uint64_t a, uint64_t len, uint64_t m, unsigned lB,
 	*nq = n < m >> lB ? n : m >> lB;
 }
 
-/* The values of square q below the limit that tile t shows in the pixel,
- * into px->few from *k (counted only, for a count); 0, or -1 when
- * px->few is full. */
-static int few_square(struct pix *px, const struct frs_tile *t,
-    uint64_t wx, uint64_t wy, uint64_t q, unsigned lb, uint64_t nb,
-    uint64_t *k)
+/* Value v at matrix index pos, if tile t shows it inside the pixel (and
+ * it passes), into px->few at *k (counted only, for a count); 0, or -1
+ * when px->few is full. */
+static inline int few_one(struct pix *px, const struct frs_tile *t,
+    uint64_t wx, uint64_t wy, uint32_t pos, uint32_t v, unsigned lb,
+    uint64_t nb, uint64_t *k)
 {
 	const struct run *run = px->run;
 	const struct frs_setup *s = run->s;
@@ -1524,27 +1557,39 @@ static int few_square(struct pix *px, const struct frs_tile *t,
 	uint64_t mx = s->mw - 1, my = s->mh - 1;
 	uint64_t fx = (t->flip & 1u) ? mx : 0, fy = (t->flip & 2u) ? my : 0;
 	int swap = t->perm[0] != 0;
+	uint64_t a0 = (((pos & mx) - t->off[0]) & mx) ^ fx;
+	uint64_t a1 = (((pos >> run->lmw) - t->off[1]) & my) ^ fy;
+	/* inside the pixel: (ex, ey) from its corner, below n_s */
+	uint64_t ex = wx + (swap ? a1 : a0) - px->x0;
+	uint64_t ey = wy + (swap ? a0 : a1) - px->y0;
+
+	if (ex >= s->ns || ey >= s->ns ||
+	    !passes(s, &px->th[0], v, px->x0 + ex, px->y0 + ey))
+		return 0;
+	if (run->count_only) {
+		px->c->count++;
+		return 0;
+	}
+	if (*k == LIVE_MAX)
+		return -1;
+	px->few[(*k)++] = (struct few){ ((ey >> lb) * nb + (ex >> lb)) << 32 |
+	    v, (uint32_t)(px->x0 + ex), (uint32_t)(px->y0 + ey) };
+	return 0;
+}
+
+/* The values of square q below the limit that tile t shows in the pixel,
+ * as few_one. */
+static int few_square(struct pix *px, const struct frs_tile *t,
+    uint64_t wx, uint64_t wy, uint64_t q, unsigned lb, uint64_t nb,
+    uint64_t *k)
+{
+	const struct run *run = px->run;
 
 	for (uint32_t i = run->bstart[q]; i < run->bstart[q + 1] &&
-	    run->bval[i] < px->lim; i++) {
-		uint32_t pos = run->bpos[i], v = run->bval[i];
-		uint64_t a0 = (((pos & mx) - t->off[0]) & mx) ^ fx;
-		uint64_t a1 = (((pos >> run->lmw) - t->off[1]) & my) ^ fy;
-		/* inside the pixel: (ex, ey) from its corner, below n_s */
-		uint64_t ex = wx + (swap ? a1 : a0) - px->x0;
-		uint64_t ey = wy + (swap ? a0 : a1) - px->y0;
-		if (ex >= s->ns || ey >= s->ns ||
-		    !passes(s, &px->th[0], v, px->x0 + ex, px->y0 + ey))
-			continue;
-		if (run->count_only) {
-			px->c->count++;
-			continue;
-		}
-		if (*k == LIVE_MAX)
+	    run->bval[i] < px->lim; i++)
+		if (few_one(px, t, wx, wy, run->bpos[i], run->bval[i], lb, nb,
+		    k) < 0)
 			return -1;
-		px->few[(*k)++] = (struct few){ ((ey >> lb) * nb + (ex >> lb)) <<
-		    32 | v, (uint32_t)(px->x0 + ex), (uint32_t)(px->y0 + ey) };
-	}
 	return 0;
 }
 
@@ -1556,7 +1601,7 @@ static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, unsigned lb,
 	const struct run *run = px->run;
 	const struct frs_setup *s = run->s;
 	uint64_t wx = (tx << run->lmw) - s->wx, wy = (ty << run->lmh) - s->wy;
-	uint64_t m[2] = { s->mw, s->mh }, lo[2], hi[2], lx, ly;
+	uint64_t m[2] = { s->mw, s->mh }, lo[2], hi[2];
 	unsigned lB = run->lside;
 	uint64_t q0[2], nq[2], sq = s->mw >> lB, sqy = s->mh >> lB;
 	const struct frs_tile *t;
@@ -1566,7 +1611,7 @@ static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, unsigned lb,
 	lo[1] = px->y0 > wy ? px->y0 - wy : 0;
 	hi[0] = px->x0 + s->ns - wx < s->mw ? px->x0 + s->ns - wx : s->mw;
 	hi[1] = px->y0 + s->ns - wy < s->mh ? px->y0 + s->ns - wy : s->mh;
-	t = tile_at(s, &px->tc, wx + lo[0], wy + lo[1], &lx, &ly);
+	t = tile_get(s, &px->tc, tx, ty);
 	/* Matrix axis a shows window axis perm[a], flipped or not, then
 	 * shifted: the interval it covers there. */
 	for (unsigned a = 0; a < 2; a++) {
@@ -1574,6 +1619,14 @@ static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, unsigned lb,
 		    m[a] - hi[p] : lo[p];
 		squares_met((f + t->off[a]) & (m[a] - 1), hi[p] - lo[p], m[a],
 		    lB, &q0[a], &nq[a]);
+	}
+	/* Fewer values below the limit than squares to ask (the darkest
+	 * pixels): each value where the matrix has it. */
+	if (px->lim < nq[0] * nq[1]) {
+		for (uint32_t v = 0; v < px->lim; v++)
+			if (few_one(px, t, wx, wy, run->vpos[v], v, lb, nb, k) < 0)
+				return -1;
+		return 0;
 	}
 	for (uint64_t j = 0; j < nq[1]; j++)
 		for (uint64_t i = 0; i < nq[0]; i++) {
@@ -1644,11 +1697,9 @@ static void pix_sorted(struct pix *px)
 	const struct frs_prep *p = run->p;
 	uint32_t b = p->block;
 	uint64_t nb = s->ns / b;
-	unsigned lb = 0;
+	unsigned lb = px->lblock;
 	int live = nb > 1 && nb * nb <= LIVE_MAX;
 
-	while ((1u << lb) < b)
-		lb++;
 	if (live && few_serves(px, nb) && pix_few(px, lb, nb) == 0)
 		return;
 	if (live)
@@ -1734,8 +1785,10 @@ static void run_chunk(struct pix *px, uint64_t ci)
 static void pix_start(struct pix *px, const struct run *run)
 {
 	px->run = run;
-	for (unsigned k = 0; k < TCACHE; k++)
-		px->tc.e[k].valid = 0;
+	px->lblock = 0;
+	while ((1u << px->lblock) < run->p->block)
+		px->lblock++;
+	tcache_init(&px->tc, run->s);
 }
 
 
@@ -1752,7 +1805,7 @@ static void first_values(struct run *run)
 	uint32_t *at;
 	unsigned lb;
 
-	run->bval = run->bpos = run->bstart = NULL;
+	run->bval = run->bpos = run->bstart = run->vpos = NULL;
 	run->npos = 0;
 	/* pix_few's shifts and masks want powers of two (as lists do). */
 	if (run->algo != FRS_SORTED || s->tiles == FRS_TILES_PLAIN ||
@@ -1808,7 +1861,7 @@ static void first_values(struct run *run)
 	for (uint64_t q = nsq; q > 0; q--)
 		run->bstart[q] = run->bstart[q - 1];
 	run->bstart[0] = 0;
-	free(at);
+	run->vpos = at;
 	run->npos = want;
 	run->lside = log2u64(B);
 	run->lmw = log2u64(s->mw);
@@ -1817,7 +1870,7 @@ static void first_values(struct run *run)
 
 static void first_values_free(struct run *run)
 {
-	MEM_FREE(run->bval, run->bpos, run->bstart);
+	MEM_FREE(run->bval, run->bpos, run->bstart, run->vpos);
 }
 
 /* frs_sample: chunks [b, e) of the result's array. */
@@ -1927,8 +1980,9 @@ int frs_sample_each(const struct frs_setup *s, const struct frs_imap *map,
     frs_chunk_fn fn, void *ctx)
 {
 	double tau;
-	struct run run = { s, map, p, algo, &tau, 1, 0, c0, at, store, NULL,
-	    NULL, fn, ctx, 0, NULL, NULL, NULL, 0, 0, 0, 0, 0.0 };
+	struct run run = { .s = s, .map = map, .p = p, .algo = algo,
+	    .tau = &tau, .nsteps = 1, .c0 = c0, .at = at, .store = store,
+	    .fn = fn, .ctx = ctx };
 	int rc;
 
 	if (frs_sample_check(s, p, (int)algo, frs_impl_name(algo), &s->n, 1, 0,
@@ -1962,9 +2016,8 @@ int frs_sample(const struct frs_setup *s, const struct frs_imap *map,
     unsigned nsteps, int count_only, struct frs_result *r)
 {
 	double tau[16];
-	struct run run = { s, map, p, algo, tau, nsteps, count_only, 0,
-	    NULL, NULL, NULL, NULL, NULL, NULL, 0, NULL, NULL, NULL, 0, 0, 0, 0,
-	    0.0 };
+	struct run run = { .s = s, .map = map, .p = p, .algo = algo,
+	    .tau = tau, .nsteps = nsteps, .count_only = count_only };
 
 	memset(r, 0, sizeof *r);
 	if (frs_sample_check(s, p, (int)algo, frs_impl_name(algo), steps,
