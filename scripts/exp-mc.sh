@@ -562,6 +562,15 @@ for mn in $MNAMES; do
 	row "env on $mn: relative rmse slope $(echo $ESAMPLERS | tr ' ' /)" "$o" \
 	    'not in the thesis; theory: independent samples -0.5; importance sampling by L sin(theta) leaves f/p ~ max(0, cos theta), smooth above the horizon'
 done
+# The cause's rows: the dispersion of the counts, per map, at the largest
+# n (hz is defined above, with the tables).
+DS="ifrs ifrs_plain ifrs_shuf ijfrs ihsw_rand ihsw_jit ihsw_dart irdart"
+for mn in $MNAMES; do
+	o=""
+	for s in $DS; do o="$o${o:+ / }$(hz $mn $s dispersion) ($(hz $mn $s bright_disp))"; done
+	row "env on $mn: dispersion var(K/n) n / (q (1 - q)) of the count above the horizon (in brackets: in the bright half) at n = 2^$EKMAX, $(echo $DS | tr ' ' /)" "$o" \
+	    'not in the thesis; theory: independent samples 1, stratified samples far below 1'
+done
 
 # The claims, checked on this run: plain Monte Carlo (random) converges
 # as n^-1/2 on gauss, disc and step (slope within 0.12), and so do
@@ -677,12 +686,19 @@ for mn in $MNAMES; do
 	h=$(hz $mn $bs horizon_rel)
 	sk=$(hz $mn $bs sky_rel)
 	r=$(hz $mn $bs rel_rmse)
+	observe "$sk <= 0.5 * $r" "On $mn the count above the horizon is what $(label $bs) loses by: were that count exact, its relative error would be $sk instead of $r."
+	observe "$h <= 0.5 * $r && $sk > 0.5 * $r" "On $mn it is not the count above the horizon that $(label $bs) loses by (that count alone would give a relative error of $h; its relative rmse is $r) but the distribution within the sky (were that count exact: $sk)."
+	observe "$sk > 0.5 * $r && $h > 0.5 * $r" "On $mn $(label $bs) loses both by its count above the horizon (that count alone would give a relative error of $h; its relative rmse is $r) and within the sky (were that count exact: $sk)."
+	# Its counts over large regions against stratified warping's and
+	# independent samples': said when its dispersion above the horizon is
+	# at least twice stratified warping's.
 	d=$(hz $mn $bs dispersion)
+	dj=$(hz $mn ihsw_jit dispersion)
+	dr=$(hz $mn ihsw_rand dispersion)
 	bd=$(hz $mn $bs bright_disp)
-	disp="the fraction of its samples above the horizon has dispersion $d over the sets (independent samples, HSW with random input: $(hz $mn ihsw_rand dispersion); HSW with jittered input: $(hz $mn ihsw_jit dispersion)), its count in the bright half of the map $bd ($(hz $mn ihsw_rand bright_disp); $(hz $mn ihsw_jit bright_disp))"
-	observe "$sk <= 0.5 * $r" "On $mn the count above the horizon is what $(label $bs) loses by: were that count exact, its relative error would be $sk instead of $r; $disp."
-	observe "$h <= 0.5 * $r && $sk > 0.5 * $r" "On $mn it is not the count above the horizon that $(label $bs) loses by (that count alone would give a relative error of $h; its relative rmse is $r) but the distribution within the sky (were that count exact: $sk); $disp."
-	observe "$sk > 0.5 * $r && $h > 0.5 * $r" "On $mn $(label $bs) loses both by its count above the horizon (that count alone would give a relative error of $h; its relative rmse is $r) and within the sky (were that count exact: $sk); $disp."
+	bj=$(hz $mn ihsw_jit bright_disp)
+	br=$(hz $mn ihsw_rand bright_disp)
+	observe "$d >= 2 * $dj" "On $mn the counts of $(label $bs) over large regions stray more than stratified warping's: the dispersion of its count above the horizon is $d, $(ratio "$d" "$dj") times that of HSW with jittered input ($dj; independent samples: $dr), and in the bright half of the map $bd ($bj; $br)."
 	# relaxed dart throwing's bias: its mean fraction above the horizon
 	# against q, in standard errors of that mean over the sets
 	rf=$(hz $mn irdart frac_mean)
