@@ -24,7 +24,8 @@
 
 static const char usage[] =
     "usage: mc-error [-f NAME[,NAME...]] [--sets N] [--group n|file|all]\n"
-    "                [--weights | --no-pdf] [--env MAP] [--strict] [-q]\n"
+    "                [--weights | --no-pdf | --pdf-map MAP] [--env MAP]\n"
+    "                [--strict] [-q]\n"
     "                [-o FILE]\n"
     "                FILE...\n"
     "\n"
@@ -42,16 +43,22 @@ static const char usage[] =
     "                    file column for several files\n"
     "      --weights     require a pdf column and divide by it\n"
     "      --no-pdf      ignore a pdf column: the plain mean\n"
+    "      --pdf-map MAP the density of a point: MAP's pixel there over\n"
+    "                    MAP's mean, in place of a pdf column\n"
     "  -o, --output F    output (default standard output)\n"
     "  -q, --quiet       no notes\n"
     "  -h, --help        this help;  --version  the version\n";
 
 /* env's map, when env is requested or --env given. */
 static struct frs_imap envmap;
+/* --pdf-map's map and its mean, the density of a point being its
+ * pixel's value over the mean (as frs-sample --pdf writes it). */
+static struct frs_imap pdfmap;
+static double pdfmean;
 
 #define ENV_BIT (1u << INTEGRAND_ENV)
 
-enum pdfmode { PDF_AUTO, PDF_REQUIRE, PDF_IGNORE };
+enum pdfmode { PDF_AUTO, PDF_REQUIRE, PDF_IGNORE, PDF_MAP };
 
 static void parse_functions(const char *arg, unsigned *mask)
 {
@@ -75,9 +82,23 @@ static void parse_functions(const char *arg, unsigned *mask)
 		cli_usage_error("-f: no integrand in '%s'", arg);
 }
 
+/* The density of point (x, y) from --pdf-map's map: its pixel's value
+ * over the map's mean; the pixel in pixel[2]. */
+static double map_pdf(double x, double y, size_t pixel[2])
+{
+	size_t px = (size_t)(x * pdfmap.w), py = (size_t)(y * pdfmap.h);
+
+	if (px >= pdfmap.w)
+		px = pdfmap.w - 1;
+	if (py >= pdfmap.h)
+		py = pdfmap.h - 1;
+	pixel[0] = px, pixel[1] = py;
+	return pdfmap.v[py * pdfmap.w + px] / pdfmean;
+}
+
 /* A file's sets (from first on) as the pdf mode wants them: a density
- * required by --weights, positive and finite when used.  -1 with a
- * message. */
+ * required by --weights, positive and finite when used (that of
+ * --pdf-map's map too).  -1 with a message. */
 static int check_pdf(void *ctx, const struct pt_sets *s, size_t file,
     size_t first)
 {
@@ -87,8 +108,20 @@ static int check_pdf(void *ctx, const struct pt_sets *s, size_t file,
 	(void)file;
 	if (mode == PDF_REQUIRE && s->set[first].w == NULL)
 		return frs_fail("%s: --weights: no pdf column", path);
+	/* --pdf-map: every point's pixel must have a positive density. */
+	for (size_t j = first; mode == PDF_MAP && j < s->n; j++)
+		for (size_t i = 0; i < s->set[j].n; i++) {
+			size_t px[2];
+			double d = map_pdf(s->set[j].xy[2 * i],
+			    s->set[j].xy[2 * i + 1], px);
+			if (!(d > 0) || !isfinite(d))
+				return frs_fail("%s: point %zu: --pdf-map: "
+				    "density %g in pixel (%zu, %zu) is not "
+				    "positive and finite", path,
+				    s->set[j].first + i, d, px[0], px[1]);
+		}
 	/* Points counted from 0 over the file, as its reader counts them. */
-	for (size_t j = first; mode != PDF_IGNORE && j < s->n; j++)
+	for (size_t j = first; mode < PDF_IGNORE && j < s->n; j++)
 		for (size_t i = 0; s->set[j].w != NULL && i < s->set[j].n; i++) {
 			double d = s->set[j].w[i];
 			if (!(d > 0) || !isfinite(d))
@@ -124,8 +157,14 @@ static void table(FILE *fp, unsigned mask, enum pt_group grp,
 {
 	int files = pt_group_files(grp, nfiles);
 	double *est = calloc(s->n, sizeof *est);
-	size_t *group = calloc(s->n, sizeof *group), ngroups;
+	size_t *group = calloc(s->n, sizeof *group), ngroups, most = 0;
+	double *w = NULL;
 
+	for (size_t i = 0; mode == PDF_MAP && i < s->n; i++)
+		if (s->set[i].n > most)
+			most = s->set[i].n;
+	if (mode == PDF_MAP && (w = malloc(most * sizeof *w)) == NULL)
+		cli_die("no memory for the densities of %zu points", most);
 	if (est == NULL || group == NULL)
 		cli_die("no memory for %zu sets", s->n);
 	ngroups = group_sets(grp, s->set, s->n, group);
@@ -134,14 +173,22 @@ static void table(FILE *fp, unsigned mask, enum pt_group grp,
 	for (size_t k = 0; k < INTEGRANDS; k++) {
 		if (!(mask & 1u << k))
 			continue;
-		for (size_t i = 0; i < s->n; i++)
+		for (size_t i = 0; i < s->n; i++) {
+			const double *d = mode == PDF_MAP ? w :
+			    mode == PDF_IGNORE ? NULL : s->set[i].w;
+			size_t px[2];
+			for (size_t p = 0; mode == PDF_MAP && p < s->set[i].n;
+			    p++)
+				w[p] = map_pdf(s->set[i].xy[2 * p],
+				    s->set[i].xy[2 * p + 1], px);
 			est[i] = integrand_estimate(&integrands[k], &envmap,
-			    s->set[i].xy, mode == PDF_IGNORE ? NULL :
-			    s->set[i].w, s->set[i].n);
+			    s->set[i].xy, d, s->set[i].n);
+		}
 		rows(fp, &integrands[k], s, group, ngroups, est, files);
 	}
 	free(est);
 	free(group);
+	free(w);
 }
 
 /* The default map: the shipped sunset.exr (datadir.h). */
@@ -170,7 +217,7 @@ static void load_env(const char *src, unsigned mask, int flags)
 
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
-    "f=function sets group weights no-pdf env strict";
+    "f=function sets group weights no-pdf pdf-map env strict";
 
 int main(int argc, char **argv)
 {
@@ -178,7 +225,7 @@ int main(int argc, char **argv)
 	enum pt_group grp = PT_GROUP_NFILE;
 	enum pdfmode mode = PDF_AUTO;
 	int c, weights = 0, nopdf = 0, flags = 0;
-	const char *env = NULL;
+	const char *env = NULL, *pmap = NULL;
 	size_t per = 0;
 	struct pt_sets s = { .max_dims = 2 };	/* the integrands are 2-D */
 	struct outfile of;
@@ -192,28 +239,39 @@ int main(int argc, char **argv)
 		case OPT_WEIGHTS: weights = 1; break;
 		case OPT_NO_PDF: nopdf = 1; break;
 		case OPT_ENV: env = optarg; break;
+		case OPT_PDF_MAP: pmap = optarg; break;
 		case OPT_STRICT: flags |= IMAP_STRICT; break;
 		default:
 			cli_common_only(c, optarg);
 		}
 	}
 	cli_need_files(argc);
-	if (weights && nopdf)
-		cli_usage_error("--weights and --no-pdf exclude each other");
-	mode = weights ? PDF_REQUIRE : nopdf ? PDF_IGNORE : PDF_AUTO;
+	if (weights + nopdf + (pmap != NULL) > 1)
+		cli_usage_error("--weights, --no-pdf and --pdf-map exclude each "
+		    "other");
+	mode = weights ? PDF_REQUIRE : nopdf ? PDF_IGNORE :
+	    pmap != NULL ? PDF_MAP : PDF_AUTO;
 	if (mask == 0)
 		mask = ((1u << INTEGRANDS) - 1) & (env ? ~0u : ~ENV_BIT);
-	if (flags && env == NULL && !(mask & ENV_BIT))
+	if (flags && env == NULL && !(mask & ENV_BIT) && pmap == NULL)
 		cli_usage_error("--strict: no map to read (it goes with env's, "
-		    "-f env or --env MAP)");
+		    "-f env or --env MAP, or with --pdf-map MAP)");
 	cli_options_done();
 
 	load_env(env, mask, flags);
+	if (pmap != NULL) {
+		struct frs_imap_stats st;
+		if (imap_load(pmap, 0, 0, flags, &pdfmap) < 0)
+			cli_die_lib();
+		imap_stats(&pdfmap, &st);
+		pdfmean = st.mean;
+	}
 	cli_read_sets(&s, argc, argv, per, check_pdf, &mode);
 	cli_out_open(&of, cli.out, 0);
 	table(of.fp, mask, grp, &s, mode, (size_t)(argc - optind));
 	cli_out_commit(&of, 0);
 	pt_sets_free(&s);
 	imap_free(&envmap);
+	imap_free(&pdfmap);
 	return 0;
 }

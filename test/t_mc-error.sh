@@ -304,4 +304,42 @@ mc-error -f env --env "$TD/interior.exr" "$T/grid.txt" >/dev/null 2>"$T/err" &&
     nok "negative env map without --strict: $(cat "$T/err")"
 expect_fail "--strict without env's map" 2 "--strict" - \
     mc-error -f disc --strict "$T/grid.txt"
+# (5) --pdf-map: the density of a point from a map.  A 2 x 1 ramp holds
+# 0.25 and 0.75 (imap info), mean 0.5: densities 0.5 and 1.5; the
+# estimate of gauss at two points, one a pixel, against awk's.
+imap gen -q -s 2x1 --format exr -o "$T/r21.exr" ramp
+printf '#pts dims=2 extra=0 version=2\n0.25 0.5\n0.75 0.4\n' >"$T/two.txt"
+orc=$(awk 'function g(x, y) { x -= 0.5; y -= 0.5
+	return exp(-(x * x + y * y) / (2 * 0.15 * 0.15)) }
+	BEGIN { printf "%.12g", (g(0.25, 0.5) / 0.5 + g(0.75, 0.4) / 1.5) / 2 }')
+mc-error -f gauss --pdf-map "$T/r21.exr" "$T/two.txt" >"$T/pm"
+near "$(col estimate_mean "$T/pm")" "$orc" 1e-8 &&
+    ok "--pdf-map: 2x1 ramp, f / p by hand $orc" ||
+    nok "--pdf-map: estimate $(col estimate_mean "$T/pm"), by hand $orc"
+# Against frs-sample's own pdf column: its sets without the column and
+# --pdf-map of the same map give --weights' table (the map's mean, as
+# frs-sample computes it, may differ in the last digits).
+frs-sample -q -i blob:floor=0.1 --pdf -n 512 --sets 4 -T -o "$T/bp.txt"
+awk '/^#pts/ { sub(/extra=2/, "extra=1"); sub(/names=pdf,set/, "names=set") }
+    !/^#/ && NF { $3 = $4; NF = 3 } { print }' "$T/bp.txt" >"$T/bn.txt"
+mc-error --group all --weights "$T/bp.txt" >"$T/pw"
+mc-error --group all --pdf-map blob:floor=0.1 "$T/bn.txt" >"$T/pn"
+same=1
+for f in rmse estimate_mean; do for r in 1 2 3; do
+	near "$(col $f "$T/pn" $r)" "$(col $f "$T/pw" $r)" 1e-9 || same=0
+done; done
+[ "$(col sets "$T/pn")" = 4 ] && [ $same = 1 ] &&
+    ok "--pdf-map blob = frs-sample's pdf column (--weights)" ||
+    nok "--pdf-map: $(cat "$T/pn") against $(cat "$T/pw")"
+# a point in a pixel of zero (blob:sigma=0.01's corners), exclusive
+# options, and --strict goes with --pdf-map's map
+printf '#pts dims=2 extra=0 version=2\n0.5 0.5\n0.001 0.001\n' >"$T/z.txt"
+expect_fail "--pdf-map: a point in a pixel of zero" 1 "point 1: --pdf-map" "$O" \
+    mc-error -f gauss --pdf-map blob:sigma=0.01 -o "$O" "$T/z.txt"
+expect_fail "--pdf-map with --weights" 2 "exclude each other" - \
+    mc-error --pdf-map blob --weights "$T/grid.txt"
+expect_fail "--pdf-map with --no-pdf" 2 "exclude each other" - \
+    mc-error --pdf-map blob --no-pdf "$T/grid.txt"
+expect_fail "--pdf-map --strict: a negative map" 1 "is negative" - \
+    mc-error -f gauss --strict --pdf-map "$TD/interior.exr" "$T/grid.txt"
 done_testing

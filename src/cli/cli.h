@@ -85,6 +85,7 @@
 	X(METHOD, "method", required_argument) \
 	X(NO_PDF, "no-pdf", no_argument) \
 	X(PDF, "pdf", no_argument) \
+	X(PDF_MAP, "pdf-map", required_argument) \
 	X(PER_SET, "per-set", no_argument) \
 	X(PNG, "png", required_argument) \
 	X(PROGRESSIVE, "progressive", required_argument) \
