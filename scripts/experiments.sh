@@ -34,7 +34,7 @@ select_ids() {
 
 # stamp ID: a line per input of the experiment, with its checksum: the
 # script, explib.sh, the programs it names, the matrices and the map
-# (when it names them), and the mode.
+# (when it names them), every file of data/ it names, and the mode.
 stamp() {
 	s=scripts/exp-$1.sh
 	[ -f "$s" ] || { echo "experiments: no experiment $1" >&2; exit 2; }
@@ -59,6 +59,10 @@ stamp() {
 		e=${ENVMAP:-data/sunset.exr}
 		echo "envmap $e $(sha1sum <"$e" | cut -c 1-40)"
 	fi
+	for f in $(grep -o 'data/[A-Za-z0-9_.-]*\.[a-z]*' "$s" | sort -u); do
+		[ -f "$f" ] && echo "data $f $(sha1sum <"$f" | cut -c 1-40)"
+	done
+	:
 }
 
 case ${1:-} in
