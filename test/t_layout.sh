@@ -78,4 +78,30 @@ else
 	sed 's/^/# /' "$T/cycle" | head -n 10
 fi
 
+# Calls: A calls B when A.o leaves undefined a symbol that B.o defines
+# (nm, on the build's own objects).  Includes can be in order while the
+# calls go round (draw.c calling lev.c calling back into draw.c): a
+# cycle of calls is a module that cannot be read or tested before
+# another that needs it.
+OBJ=$BIN/../lib
+if [ -d "$OBJ/api" ] && command -v nm >/dev/null 2>&1; then
+	(cd "$OBJ" && for o in */*.o; do
+		nm -g --defined-only "$o" | awk -v m="${o%.o}" \
+		    '$2 ~ /^[TDBR]$/ { print $3, m }'
+	done) | sort -u >"$T/defs"
+	(cd "$OBJ" && for o in */*.o; do
+		nm -u "$o" | awk -v m="${o%.o}" '{ print $2, m }'
+	done) | sort >"$T/uses"
+	join "$T/uses" "$T/defs" | awk '$2 != $3 { print $2, $3 }' |
+	    sort -u >"$T/calls"
+	if [ -s "$T/calls" ] && tsort "$T/calls" >/dev/null 2>"$T/cycle"; then
+		ok "no call cycle among the modules ($(wc -l <"$T/calls") calls between modules)"
+	else
+		nok "no call cycle among the modules"
+		sed 's/^/# /' "$T/cycle" | head -n 10
+	fi
+else
+	ok "# SKIP no objects in $OBJ or no nm: the call graph is not checked"
+fi
+
 done_testing

@@ -309,9 +309,6 @@ uint64_t api_lists_below(const struct frs_setup *su, const uint64_t *steps,
     unsigned nsteps);
 /* The block of the sorted lists that a setup uses. */
 uint32_t api_sorted_block(const struct frs_setup *su);
-/* Whether Sorted wants the minmap too: its blocks are smaller than a
- * pixel (shuffled tiles), and the minmap skips dark pixels and blocks. */
-int api_sorted_minmap(const struct frs_setup *su);
 /* A sample's density I / mean I. */
 double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
     const struct frs_elem *e);

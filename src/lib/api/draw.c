@@ -2,7 +2,7 @@
  * 2-D sampling (frs.h's frs_sampler): the setup of a run, the mask
  * prepared for it, the thresholding on the CPU or an OpenCL device, and
  * Sorted's direct path for one step, which converts each chunk where it
- * was made.
+ * was made; and frs_sampler_levels, the levels such a run would use.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
@@ -454,29 +454,32 @@ static int draw_direct(const frs_sampler *s, uint64_t n, uint64_t seed,
 	return rc != FRS_OK ? rc : api_ok(err);
 }
 
-uint32_t api_sorted_block(const struct frs_setup *su)
+int frs_sampler_levels(const frs_sampler *s, uint64_t n, uint64_t seed,
+    struct frs_level_info *levels, unsigned cap, unsigned *count,
+    frs_error *err)
 {
-	uint32_t b = su->ns < su->mw ? su->ns : su->mw, t = frs_tile_max_block(su);
-	b = b < su->mh ? b : su->mh;
-	return b < t ? b : t;
-}
+	struct api_lev2 lv;
+	int rc;
 
-int api_sorted_minmap(const struct frs_setup *su)
-{
-	return api_sorted_block(su) < su->ns;
-}
-
-uint64_t api_lists_below(const struct frs_setup *su, const uint64_t *steps,
-    unsigned nsteps)
-{
-	return frs_lim_most(su, frs_tau(su, steps[nsteps - 1]));
-}
-
-double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
-    const struct frs_elem *e)
-{
-	return map->v[(uint64_t)(e->y / su->ns) * su->iw + e->x / su->ns] /
-	    su->mean;
+	if (count != NULL)
+		*count = 0;
+	if ((rc = api_query_args("frs_sampler_levels", s != NULL &&
+	    count != NULL && (levels != NULL || cap == 0), n, s ? s->opt.threads :
+	    0, err)) != FRS_OK)
+		return rc;
+	if (api_setup_steps(s, &n, 1, seed, &lv) < 0)
+		return api_lib_err(err, FRS_E_LIMIT);
+	for (unsigned i = 0; i < lv.n && i < cap; i++) {
+		const struct frs_setup *su = &lv.su[i];
+		levels[i] = (struct frs_level_info){ su->level, su->ns,
+		    { su->sw, su->sh, 1 }, { su->wx, su->wy, 0 },
+		    lv.plan.lev != NULL ? lv.plan.cells[su->level] :
+		    frs_exact_most(lv.map.v, (uint64_t)su->iw * su->ih, 1, 2),
+		    su->tau };
+	}
+	*count = lv.n;
+	api_lev2_free(&lv);
+	return api_ok(err);
 }
 
 int frs_draw_progressive(const frs_sampler *s, const uint64_t *steps,

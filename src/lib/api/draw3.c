@@ -1,6 +1,7 @@
 /*
  * 3-D sampling (frs.h's frs_sampler3): a 3-D mask over a volume, through
- * frs3.h, its samples given out as the 2-D draws give theirs (store.c).
+ * frs3.h, its samples given out as the 2-D draws give theirs (store.c);
+ * and frs_sampler3_levels.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
@@ -179,4 +180,32 @@ int api_draw3_each(const frs_sampler3 *s, const uint64_t *steps,
 {
 	return api_each(run3, s, "frs_draw3_each", steps, nsteps, seed,
 	    want_pdf, fn, ctx, err);
+}
+
+int frs_sampler3_levels(const frs_sampler3 *s, uint64_t n, uint64_t seed,
+    struct frs_level_info *levels, unsigned cap, unsigned *count,
+    frs_error *err)
+{
+	struct api_lev3 lv;
+	int rc;
+
+	if (count != NULL)
+		*count = 0;
+	if ((rc = api_query_args("frs_sampler3_levels", s != NULL &&
+	    count != NULL && (levels != NULL || cap == 0), n, s ? s->opt.threads :
+	    0, err)) != FRS_OK)
+		return rc;
+	if (api_setup3(s, &n, 1, seed, 1, &lv) < 0)
+		return api_lib_err(err, FRS_E_LIMIT);
+	for (unsigned i = 0; i < lv.n && i < cap; i++) {
+		const struct frs3_setup *su = &lv.su[i];
+		levels[i] = (struct frs_level_info){ su->level, su->ns,
+		    { su->sw, su->sh, su->sd }, { su->wx, su->wy, su->wz },
+		    lv.plan.lev != NULL ? lv.plan.cells[su->level] :
+		    frs_exact_most(lv.vol.v, (uint64_t)su->iw * su->ih * su->id,
+		    1, 3), su->tau };
+	}
+	*count = lv.n;
+	api_lev3_free(&lv);
+	return api_ok(err);
 }

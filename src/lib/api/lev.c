@@ -1,7 +1,10 @@
 /*
  * The levels of a run (sample/levels.h): from level 0's setup, the
  * setup and the masked map of every level that has cells, 2-D and 3-D,
- * and frs_sampler_levels, which reports them.
+ * and the block of a level's sorted lists.  Below the draws (draw.c,
+ * draw3.c), which set runs up and report their levels
+ * (frs_sampler_levels): no module of api/ calls back into one above it
+ * (t_layout).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
@@ -358,6 +361,19 @@ void api_lev3_exact(struct api_lev3 *lv, const struct frs_xtau *x)
 	LEVEL_EXACT(lv, x, frs3_tau);
 }
 
+uint32_t api_sorted_block(const struct frs_setup *su)
+{
+	uint32_t b = su->ns < su->mw ? su->ns : su->mw, t = frs_tile_max_block(su);
+	b = b < su->mh ? b : su->mh;
+	return b < t ? b : t;
+}
+
+uint64_t api_lists_below(const struct frs_setup *su, const uint64_t *steps,
+    unsigned nsteps)
+{
+	return frs_lim_most(su, frs_tau(su, steps[nsteps - 1]));
+}
+
 uint32_t api_lev2_block(const struct api_lev2 *lv, unsigned i)
 {
 	return lv->plan.lev == NULL ? api_sorted_block(&lv->su[i]) :
@@ -383,60 +399,4 @@ uint64_t api_lev2_below(const struct api_lev2 *lv, const uint64_t *steps,
 void api_lev2_exact(struct api_lev2 *lv, const struct frs_xtau *x)
 {
 	LEVEL_EXACT(lv, x, frs_tau);
-}
-
-int frs_sampler_levels(const frs_sampler *s, uint64_t n, uint64_t seed,
-    struct frs_level_info *levels, unsigned cap, unsigned *count,
-    frs_error *err)
-{
-	struct api_lev2 lv;
-	int rc;
-
-	if (count != NULL)
-		*count = 0;
-	if ((rc = api_query_args("frs_sampler_levels", s != NULL &&
-	    count != NULL && (levels != NULL || cap == 0), n, s ? s->opt.threads :
-	    0, err)) != FRS_OK)
-		return rc;
-	if (api_setup_steps(s, &n, 1, seed, &lv) < 0)
-		return api_lib_err(err, FRS_E_LIMIT);
-	for (unsigned i = 0; i < lv.n && i < cap; i++) {
-		const struct frs_setup *su = &lv.su[i];
-		levels[i] = (struct frs_level_info){ su->level, su->ns,
-		    { su->sw, su->sh, 1 }, { su->wx, su->wy, 0 },
-		    lv.plan.lev != NULL ? lv.plan.cells[su->level] :
-		    frs_exact_most(lv.map.v, (uint64_t)su->iw * su->ih, 1, 2),
-		    su->tau };
-	}
-	*count = lv.n;
-	api_lev2_free(&lv);
-	return api_ok(err);
-}
-
-int frs_sampler3_levels(const frs_sampler3 *s, uint64_t n, uint64_t seed,
-    struct frs_level_info *levels, unsigned cap, unsigned *count,
-    frs_error *err)
-{
-	struct api_lev3 lv;
-	int rc;
-
-	if (count != NULL)
-		*count = 0;
-	if ((rc = api_query_args("frs_sampler3_levels", s != NULL &&
-	    count != NULL && (levels != NULL || cap == 0), n, s ? s->opt.threads :
-	    0, err)) != FRS_OK)
-		return rc;
-	if (api_setup3(s, &n, 1, seed, 1, &lv) < 0)
-		return api_lib_err(err, FRS_E_LIMIT);
-	for (unsigned i = 0; i < lv.n && i < cap; i++) {
-		const struct frs3_setup *su = &lv.su[i];
-		levels[i] = (struct frs_level_info){ su->level, su->ns,
-		    { su->sw, su->sh, su->sd }, { su->wx, su->wy, su->wz },
-		    lv.plan.lev != NULL ? lv.plan.cells[su->level] :
-		    frs_exact_most(lv.vol.v, (uint64_t)su->iw * su->ih * su->id,
-		    1, 3), su->tau };
-	}
-	*count = lv.n;
-	api_lev3_free(&lv);
-	return api_ok(err);
 }

@@ -2,7 +2,8 @@
  * A run's stored samples to the caller, 2-D and 3-D alike: into the
  * buffers of frs_draw_progressive, or in batches to frs_draw_each's
  * callback.  The order is the output order: the steps in turn, each in
- * chunk order (rows of pixels, slices of voxels).
+ * chunk order (rows of pixels, slices of voxels), with each sample's
+ * density where asked (api_pdf).
  */
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
@@ -40,6 +41,13 @@ void api_store_free(struct api_store *st)
 	st->lv = NULL;
 	st->lv3 = NULL;
 	st->nparts = 0;
+}
+
+double api_pdf(const struct frs_setup *su, const struct frs_imap *map,
+    const struct frs_elem *e)
+{
+	return map->v[(uint64_t)(e->y / su->ns) * su->iw + e->x / su->ns] /
+	    su->mean;
 }
 
 static uint64_t nchunks(const struct api_store *st, unsigned part)
