@@ -352,7 +352,8 @@ static void parse_opts(int argc, char **argv, struct gen_opts *g)
 			g->pr.dims = (unsigned)cli_ll("-k", optarg, 2, 3);
 			break;
 		case OPT_METHOD:
-			g->mo.vac = parse_choice("--method", optarg, "frd", "vac");
+			g->mo.vac = parse_choice("--method", optarg, "frd",
+			    "vac");
 			break;
 		case OPT_VAC_SIGMA:
 			g->mo.vac_sigma = cli_double_above("--vac-sigma", optarg,

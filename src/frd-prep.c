@@ -276,8 +276,8 @@ static void parse_opts(int argc, char **argv, struct prep_opts *o)
 			    FRS_SIGMA_MAX);
 			break;
 		case OPT_TILES:
-			o->opt.tiling = (enum frs_tiling_mode)cli_choice("--tiles",
-			    optarg, api_tiling_words);
+			o->opt.tiling = (enum frs_tiling_mode)cli_choice(
+			    "--tiles", optarg, api_tiling_words);
 			break;
 		case 'v': o->verbose = 1; break;
 		default:

@@ -194,8 +194,8 @@ static void check_opts(int argc, char **argv, struct render_opts *o)
 	if (argc - optind == 1)
 		o->in = argv[optind];
 	if ((uint64_t)o->w * o->h > IMAP_MAX_PIXELS)
-		cli_usage_error("-s: %ux%u has more than %llu pixels", o->w, o->h,
-		    (unsigned long long)IMAP_MAX_PIXELS);
+		cli_usage_error("-s: %ux%u has more than %llu pixels", o->w,
+		    o->h, (unsigned long long)IMAP_MAX_PIXELS);
 	if (o->imp != NULL && is_stdin(o->imp) && is_stdin(o->in))
 		cli_usage_error("the points and the importance map cannot both "
 		    "be standard input");
