@@ -229,85 +229,96 @@ static int warn_pdf(void *ctx, const struct pt_sets *s, size_t file,
 	return 0;
 }
 
+/* Everything the command line asked for. */
+struct prog_opts {
+	struct disc_opts o;
+	int have_grid;		/* --grid given */
+	int have_shapes;	/* --shapes given */
+	int per_set;		/* --per-set */
+	enum pt_group group;	/* --group */
+	size_t per;		/* --sets N, 0 for none */
+};
+
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
     "c=class grid shapes exact d2-only dinf-only sets per-set "
     "group";
 
-int main(int argc, char **argv)
+static void parse_opts(int argc, char **argv, struct prog_opts *a)
 {
-	struct disc_opts o = { .cls = DISC_STAR };
-	int c, have_grid = 0, have_shapes = 0, per_set = 0;
-	enum pt_group group = PT_GROUP_NFILE;
-	size_t per = 0, nsets;
-	struct pt_sets ps = { 0 };
-	const struct pt_set *sets;
-	double tests;
-	struct disc_result *res;
-	struct run run;
-	struct progress pr;
-	struct outfile of;
-	char meth[64];
+	struct disc_opts *o = &a->o;
+	int c;
 
-	cli_init("discrepancy", usage);
 	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 'c':
-			if (disc_parse_class(optarg, &o.cls) < 0)
+			if (disc_parse_class(optarg, &o->cls) < 0)
 				cli_usage_error("-c: %s", frs_errmsg());
 			break;
 		case OPT_GRID:
-			o.grid = (uint32_t)cli_u64("--grid", optarg, 2,
+			o->grid = (uint32_t)cli_u64("--grid", optarg, 2,
 			    DISC_MAX_GRID);
-			have_grid = 1;
+			a->have_grid = 1;
 			break;
 		case OPT_SHAPES:
-			o.shapes = cli_u64("--shapes", optarg, 1,
+			o->shapes = cli_u64("--shapes", optarg, 1,
 			    (uint64_t)1 << 40);
-			have_shapes = 1;
+			a->have_shapes = 1;
 			break;
-		case OPT_EXACT: o.exact_d2 = 1; break;
-		case OPT_D2_ONLY: o.no_dinf = 1; break;
-		case OPT_DINF_ONLY: o.no_d2 = 1; break;
-		case OPT_SETS: per = cli_sets(optarg); break;
-		case OPT_PER_SET: per_set = 1; break;
-		case OPT_GROUP: group = cli_group(optarg); break;
+		case OPT_EXACT: o->exact_d2 = 1; break;
+		case OPT_D2_ONLY: o->no_dinf = 1; break;
+		case OPT_DINF_ONLY: o->no_d2 = 1; break;
+		case OPT_SETS: a->per = cli_sets(optarg); break;
+		case OPT_PER_SET: a->per_set = 1; break;
+		case OPT_GROUP: a->group = cli_group(optarg); break;
 		default:
 			cli_common_only(c, optarg);
 		}
 	}
 	cli_need_files(argc);
-	if (o.exact_d2 && !disc_has_exact_d2(o.cls))
+}
+
+/* What the class allows, and the defaults that depend on it. */
+static void check_opts(struct prog_opts *a)
+{
+	struct disc_opts *o = &a->o;
+	int random_shapes = o->cls == DISC_QUAD || o->cls == DISC_CIRCLE;
+
+	if (o->exact_d2 && !disc_has_exact_d2(o->cls))
 		cli_usage_error("--exact: no closed form for class %s; use "
-		    "--shapes or --grid", disc_class_name(o.cls));
-	if (have_shapes && o.cls != DISC_QUAD && o.cls != DISC_CIRCLE)
+		    "--shapes or --grid", disc_class_name(o->cls));
+	if (a->have_shapes && !random_shapes)
 		cli_usage_error("--shapes: class %s tests a grid; use --grid",
-		    disc_class_name(o.cls));
-	if (have_grid && (o.cls == DISC_QUAD || o.cls == DISC_CIRCLE))
+		    disc_class_name(o->cls));
+	if (a->have_grid && random_shapes)
 		cli_usage_error("--grid: class %s tests random shapes; use "
-		    "--shapes", disc_class_name(o.cls));
-	if (o.cls == DISC_RECT && have_grid && o.grid > DISC_MAX_RECT_GRID)
+		    "--shapes", disc_class_name(o->cls));
+	if (o->cls == DISC_RECT && a->have_grid && o->grid > DISC_MAX_RECT_GRID)
 		cli_usage_error("--grid: at most %d for rect",
 		    DISC_MAX_RECT_GRID);
-	only_checks(&o, have_grid);
-	o.exact_dinf = o.exact_d2 && !have_grid && disc_has_exact_dinf(o.cls);
-	if (!have_grid)
-		o.grid = o.cls == DISC_RECT ? DISC_RECT_GRID :
-		    o.cls == DISC_HALF ? DISC_HALF_GRID : DISC_STAR_GRID;
-	if (!have_shapes)
-		o.shapes = DISC_SHAPES;
-	o.seed = cli.seed;
-	cli_options_done();
+	only_checks(o, a->have_grid);
+	o->exact_dinf = o->exact_d2 && !a->have_grid &&
+	    disc_has_exact_dinf(o->cls);
+	if (!a->have_grid)
+		o->grid = o->cls == DISC_RECT ? DISC_RECT_GRID :
+		    o->cls == DISC_HALF ? DISC_HALF_GRID : DISC_STAR_GRID;
+	if (!a->have_shapes)
+		o->shapes = DISC_SHAPES;
+	o->seed = cli.seed;
+}
 
-	ps.max_dims = 3;
-	cli_read_sets(&ps, argc, argv, per, warn_pdf, NULL);
-	sets = ps.set, nsets = ps.n;
-	if (ps.dims == 3 && !have_grid)
-		o.grid = DISC3_STAR_GRID;
-	check_sets(&o, sets, nsets);
+/* The discrepancies of the sets: several sets in parallel, one set with
+ * the threads inside it and its own progress bar. */
+static struct disc_result *measure(const struct disc_opts *o,
+    const struct pt_set *sets, size_t nsets)
+{
+	struct disc_result *res;
+	struct run run;
+	struct progress pr;
+
 	if ((res = calloc(nsets, sizeof *res)) == NULL)
 		cli_die("no memory for %zu sets", nsets);
-	if ((run.ctx = disc_ctx_new(&o)) == NULL)
+	if ((run.ctx = disc_ctx_new(o)) == NULL)
 		cli_die_lib();
 	run.sets = sets, run.res = res;
 	if (nsets > 1) {
@@ -326,17 +337,48 @@ int main(int argc, char **argv)
 		disc_set_progress(NULL);
 	}
 	disc_ctx_free(run.ctx);
+	return res;
+}
 
-	method(&o, meth, sizeof meth);
-	tests = o.exact_d2 && (o.exact_dinf || o.no_dinf) ? 0.0 :
-	    disc_tests_dims(&o, ps.dims);
+/* The table: a row per set or per group; nfiles, the input files. */
+static void write_table(const struct prog_opts *a, const struct pt_sets *ps,
+    const struct disc_result *res, size_t nfiles)
+{
+	const struct disc_opts *o = &a->o;
+	struct outfile of;
+	char meth[64];
+	double tests;
+
+	method(o, meth, sizeof meth);
+	tests = o->exact_d2 && (o->exact_dinf || o->no_dinf) ? 0.0 :
+	    disc_tests_dims(o, ps->dims);
 	cli_out_open(&of, cli.out, 0);
-	if (per_set)
-		per_set_rows(of.fp, &o, sets, res, nsets, meth, tests);
+	if (a->per_set)
+		per_set_rows(of.fp, o, ps->set, res, ps->n, meth, tests);
 	else
-		group_rows(of.fp, &o, group, sets, res, nsets, meth, tests,
-		    pt_group_files(group, (size_t)(argc - optind)));
+		group_rows(of.fp, o, a->group, ps->set, res, ps->n, meth, tests,
+		    pt_group_files(a->group, nfiles));
 	cli_out_commit(&of, 0);
+}
+
+int main(int argc, char **argv)
+{
+	struct prog_opts a = { .o = { .cls = DISC_STAR },
+	    .group = PT_GROUP_NFILE };
+	struct pt_sets ps = { 0 };
+	struct disc_result *res;
+
+	cli_init("discrepancy", usage);
+	parse_opts(argc, argv, &a);
+	check_opts(&a);
+	cli_options_done();
+	ps.max_dims = 3;
+	cli_read_sets(&ps, argc, argv, a.per, warn_pdf, NULL);
+	if (ps.dims == 3 && !a.have_grid)
+		a.o.grid = DISC3_STAR_GRID;
+	check_sets(&a.o, ps.set, ps.n);
+	res = measure(&a.o, ps.set, ps.n);
+	write_table(&a, &ps, res, (size_t)(argc - optind));
 	pt_sets_free(&ps);
 	free(res);
 	return 0;

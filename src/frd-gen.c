@@ -197,7 +197,8 @@ static int print_quality(FILE *fp, const struct frs_matrix *m,
 	return 0;
 }
 
-static int quality(const char *path)
+/* --quality: the figures of one matrix file on standard output. */
+static void quality(const char *path)
 {
 	struct frs_matrix m;
 
@@ -205,7 +206,13 @@ static int quality(const char *path)
 	    print_quality(stdout, &m, path) < 0)
 		cli_die_lib();
 	frd_free(&m);
-	return 0;
+}
+
+/* -v: the figures of the matrix just written, on standard error. */
+static void report_quality(const struct frs_matrix *m)
+{
+	if (print_quality(stderr, m, cli.out ? cli.out : "<stdout>") < 0)
+		cli_die_lib();
 }
 
 static void check_memory(const struct frdgen_params *pr, uint64_t bytes)
@@ -226,6 +233,17 @@ struct method_opts {
 	const char *dbl_only;	/* one that only --field double uses */
 };
 
+/* Everything the command line asked for. */
+struct gen_opts {
+	struct frdgen_params pr;
+	struct method_opts mo;
+	const char *size;	/* -s, read once -k is known */
+	const char *qfile;	/* --quality: the first file */
+	int verbose;
+	int use_cl, dev;	/* --device */
+	int s_set, q_set;	/* --force-s, --force-q given */
+};
+
 /* Which of two words an option names: 0 for a, 1 for b. */
 static int parse_choice(const char *opt, const char *s, const char *a,
     const char *b)
@@ -233,6 +251,122 @@ static int parse_choice(const char *opt, const char *s, const char *a,
 	const char *const w[] = { a, b, NULL };
 
 	return cli_choice(opt, s, w);
+}
+
+/* --tol: 0 would be --exact, which the hint names. */
+static void parse_tol(struct frdgen_params *pr, const char *s)
+{
+	if (parse_double_above("--tol", s, 0.0, 0.999999, &pr->tol) < 0)
+		cli_usage_error("%s%s", frs_errmsg(), strtod(s, NULL) <= 0.0 ?
+		    "; --exact keeps every contribution" : "");
+}
+
+/* The options that another method or field refuses (check_method), each
+ * noted as it comes: --tol and --exact are not for --field int32; -p,
+ * --field and the checkpoints not for --method vac; the force's options
+ * for neither.  1 if c is one of them. */
+static int parse_frd_opt(struct gen_opts *g, int c)
+{
+	struct frdgen_params *pr = &g->pr;
+	const char *opt;
+
+	switch (c) {
+	case OPT_TOL:
+		parse_tol(pr, optarg);
+		g->mo.tol_set = 1;
+		g->mo.dbl_only = "--tol";
+		return 1;
+	case OPT_EXACT:
+		pr->tol = 0.0;
+		g->mo.tol_set = 1;
+		g->mo.dbl_only = "--exact";
+		return 1;
+	case 'p':
+		pr->p = cli_double_above("-p", optarg, 0.0, 1.0);
+		g->mo.frd_only = "-p";
+		return 1;
+	case OPT_FIELD:
+		pr->field = parse_choice("--field", optarg, "double", "int32") ?
+		    FRDGEN_FIELD_INT32 : FRDGEN_FIELD_DOUBLE;
+		g->mo.frd_only = "--field";
+		return 1;
+	case OPT_CHECKPOINT:
+		pr->checkpoint = cli_outname("--checkpoint", optarg);
+		g->mo.frd_only = "--checkpoint";
+		return 1;
+	case OPT_CHECKPOINT_EVERY:
+		pr->checkpoint_every = cli_double("--checkpoint-every", optarg,
+		    0.0, 1e9);
+		g->mo.frd_only = "--checkpoint-every";
+		return 1;
+	case OPT_REACH:
+		opt = "--reach";
+		pr->reach = cli_double(opt, optarg, 0.0, 1e6);
+		break;
+	case OPT_REACH_CAP:
+		opt = "--reach-cap";
+		pr->cap = cli_double(opt, optarg, 0.0, 1e6);
+		break;
+	case OPT_CUTOFF:
+		opt = "--cutoff";
+		pr->taper = parse_choice(opt, optarg, "hard", "taper");
+		break;
+	case OPT_FORCE:
+		opt = "--force";
+		pr->force = parse_choice(opt, optarg, "power", "exp") ?
+		    FRDGEN_FORCE_EXP : FRDGEN_FORCE_POWER;
+		break;
+	case OPT_FORCE_S:
+		opt = "--force-s";
+		pr->s = cli_double(opt, optarg, 1e-6, 1e6);
+		g->s_set = 1;
+		break;
+	case OPT_FORCE_Q:
+		opt = "--force-q";
+		pr->q = cli_double(opt, optarg, 1e-3, 100.0);
+		g->q_set = 1;
+		break;
+	default:
+		return 0;
+	}
+	g->mo.frd_only = g->mo.dbl_only = opt;
+	return 1;
+}
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "s=size k=dims p=fraction tol exact reach force-s force-q "
+    "checkpoint checkpoint-every quality device list-devices "
+    "method vac-sigma field reach-cap cutoff force v=verbose";
+
+static void parse_opts(int argc, char **argv, struct gen_opts *g)
+{
+	int c;
+
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
+		if (parse_frd_opt(g, c))
+			continue;
+		switch (c) {
+		case 's': g->size = optarg; break;
+		case 'k':
+			g->pr.dims = (unsigned)cli_ll("-k", optarg, 2, 3);
+			break;
+		case OPT_METHOD:
+			g->mo.vac = parse_choice("--method", optarg, "frd",
+			    "vac");
+			break;
+		case OPT_VAC_SIGMA:
+			g->mo.vac_sigma = cli_double_above("--vac-sigma", optarg,
+			    0.0, 1e6);
+			break;
+		case OPT_QUALITY: g->qfile = optarg; break;
+		case OPT_DEVICE: g->use_cl = cli_device(optarg, &g->dev); break;
+		case OPT_LIST_DEVICES: cli_list_devices();
+		case 'v': g->verbose = 1; break;
+		default:
+			cli_common_only(c, optarg);
+		}
+	}
 }
 
 /* Options of the other method or field are refused, not silently
@@ -256,6 +390,33 @@ static void check_method(const struct method_opts *mo,
 		cli_usage_error("%s: not used by --method vac", mo->frd_only);
 	if (use_cl)
 		cli_usage_error("--device: --method vac runs on the CPU only");
+}
+
+/* The size, the seed and the defaults that depend on other options. */
+static void check_opts(int argc, char **argv, struct gen_opts *g)
+{
+	cli_no_operands(argc, argv);
+	if (g->size == NULL)
+		cli_usage_error("-s SIZE is required");
+	parse_dims(g->size, &g->pr);
+	g->pr.seed = cli.seed;
+	/* The thesis's force with its own parameters unless given. */
+	if (g->pr.force == FRDGEN_FORCE_EXP) {
+		g->pr.s = g->s_set ? g->pr.s : 0.5;
+		g->pr.q = g->q_set ? g->pr.q : 0.5;
+	}
+	check_method(&g->mo, &g->pr, g->use_cl);
+}
+
+/* After a run: the progress bar closed, and if the run failed the
+ * output removed. */
+static void end_run(int rc, struct progress *prog, struct outfile *of)
+{
+	progress_end(prog);
+	if (rc < 0) {
+		outfile_abort(of);
+		cli_die_lib();
+	}
 }
 
 /* Write a finished matrix to the open output, or die removing it. */
@@ -292,195 +453,96 @@ static int run_vac(const struct frdgen_params *pr,
 	cli_out_open(&of, cli.out, 1);
 	t0 = progress_now();
 	progress_begin(&prog, "void-and-cluster", (uint64_t)vp.w * vp.h * vp.d);
-	if (vac_run(&vp, &m, &prog, &st) < 0) {
-		progress_end(&prog);
-		outfile_abort(&of);
-		cli_die_lib();
-	}
-	progress_end(&prog);
+	end_run(vac_run(&vp, &m, &prog, &st), &prog, &of);
 	write_matrix(&of, &m);
 	if (verbose) {
 		fprintf(stderr, "frd-gen: void-and-cluster %ux%ux%u in %.3f s "
 		    "(sigma %g, radius %.1f, %llu initial cells, %llu moves)\n",
 		    vp.w, vp.h, vp.d, progress_now() - t0, vp.sigma, st.radius,
 		    (unsigned long long)st.ones, (unsigned long long)st.moves);
-		if (print_quality(stderr, &m, cli.out ? cli.out : "<stdout>") < 0)
-			cli_die_lib();
+		report_quality(&m);
 	}
 	frd_free(&m);
 	return 0;
 }
 
-/* The options it takes, besides the common ones (cli.h). */
-static const char options[] =
-    "s=size k=dims p=fraction tol exact reach force-s force-q "
-    "checkpoint checkpoint-every quality device list-devices "
-    "method vac-sigma field reach-cap cutoff force v=verbose";
-
-int main(int argc, char **argv)
+/* --device cl: the device before the output, so that a missing one
+ * fails at once. */
+static void open_device(struct ocl *o, int dev)
 {
-	struct frdgen_params pr;
+	if (ocl_open(o, dev) < 0)
+		cli_die_device(1);
+	if (!o->fp64)
+		cli_die("--device: OpenCL: %s has no double precision "
+		    "(cl_khr_fp64), which frd-gen needs to give the same matrix "
+		    "as --device cpu", o->name);
+}
+
+/* -v: the time and the radius at the first and the last value. */
+static void report_frd(const struct frdgen_params *pr,
+    const struct frs_matrix *m, double secs, const char *where)
+{
+	double rt = frdgen_radius(pr);
+
+	fprintf(stderr, "frd-gen: %ux%ux%u in %.3f s (radius %.1f to "
+	    "%.1f) on %s\n", pr->w, pr->h, pr->d, secs,
+	    frdgen_radius_after(pr, rt, 1), frdgen_radius_after(pr, rt, m->n),
+	    where);
+	report_quality(m);
+}
+
+/* --method frd (the default), on the CPU or the device. */
+static int run_frd(const struct gen_opts *g)
+{
+	const struct frdgen_params *pr = &g->pr;
 	struct frs_matrix m;
 	struct outfile of;
 	struct progress prog;
-	const char *size = NULL, *qfile = NULL;
-	int c, verbose = 0, use_cl = 0, dev = -1, s_set = 0, q_set = 0;
 	struct ocl o;
-	struct method_opts mo = { 0, 0, 0.0, NULL, NULL };
 	double t0;
 
-	cli_init("frd-gen", usage);
-	frdgen_defaults(&pr);
-	while ((c = cli_getopt(argc, argv, options)) != -1) {
-		switch (c) {
-		case 's':
-			size = optarg;
-			break;
-		case 'k':
-			pr.dims = (unsigned)cli_ll("-k", optarg, 2, 3);
-			break;
-		case 'p':
-			pr.p = cli_double_above("-p", optarg, 0.0, 1.0);
-			mo.frd_only = "-p";
-			break;
-		case OPT_TOL:
-			/* 0 would be --exact, which the hint names. */
-			if (parse_double_above("--tol", optarg, 0.0, 0.999999,
-			    &pr.tol) < 0)
-				cli_usage_error("%s%s", frs_errmsg(),
-				    strtod(optarg, NULL) <= 0.0 ? "; --exact "
-				    "keeps every contribution" : "");
-			mo.tol_set = 1;
-			mo.dbl_only = "--tol";
-			break;
-		case OPT_EXACT:
-			pr.tol = 0.0;
-			mo.tol_set = 1;
-			mo.dbl_only = "--exact";
-			break;
-		case OPT_REACH:
-			pr.reach = cli_double("--reach", optarg, 0.0, 1e6);
-			mo.frd_only = mo.dbl_only = "--reach";
-			break;
-		case OPT_REACH_CAP:
-			pr.cap = cli_double("--reach-cap", optarg, 0.0, 1e6);
-			mo.frd_only = mo.dbl_only = "--reach-cap";
-			break;
-		case OPT_CUTOFF:
-			pr.taper = parse_choice("--cutoff", optarg, "hard",
-			    "taper");
-			mo.frd_only = mo.dbl_only = "--cutoff";
-			break;
-		case OPT_FORCE:
-			pr.force = parse_choice("--force", optarg, "power", "exp") ?
-			    FRDGEN_FORCE_EXP : FRDGEN_FORCE_POWER;
-			mo.frd_only = mo.dbl_only = "--force";
-			break;
-		case OPT_FIELD:
-			pr.field = parse_choice("--field", optarg, "double",
-			    "int32") ? FRDGEN_FIELD_INT32 : FRDGEN_FIELD_DOUBLE;
-			mo.frd_only = "--field";
-			break;
-		case OPT_FORCE_S:
-			pr.s = cli_double("--force-s", optarg, 1e-6, 1e6);
-			mo.frd_only = mo.dbl_only = "--force-s";
-			s_set = 1;
-			break;
-		case OPT_FORCE_Q:
-			pr.q = cli_double("--force-q", optarg, 1e-3, 100.0);
-			mo.frd_only = mo.dbl_only = "--force-q";
-			q_set = 1;
-			break;
-		case OPT_CHECKPOINT:
-			pr.checkpoint = cli_outname("--checkpoint", optarg);
-			mo.frd_only = "--checkpoint";
-			break;
-		case OPT_CHECKPOINT_EVERY:
-			pr.checkpoint_every = cli_double("--checkpoint-every", optarg,
-			    0.0, 1e9);
-			mo.frd_only = "--checkpoint-every";
-			break;
-		case OPT_METHOD:
-			mo.vac = parse_choice("--method", optarg, "frd", "vac");
-			break;
-		case OPT_VAC_SIGMA:
-			mo.vac_sigma = cli_double_above("--vac-sigma", optarg,
-			    0.0, 1e6);
-			break;
-		case OPT_QUALITY:
-			qfile = optarg;
-			break;
-		case OPT_DEVICE:
-			use_cl = cli_device(optarg, &dev);
-			break;
-		case OPT_LIST_DEVICES:
-			cli_list_devices();
+	if (frdgen_check(pr) < 0)
+		cli_usage_error("%s", frs_errmsg());
+	if (g->use_cl && pr->checkpoint != NULL)
+		cli_usage_error("--checkpoint: not available with --device cl");
+	check_memory(pr, frdgen_memory(pr));
+	cli_options_done();
+	if (g->use_cl)
+		open_device(&o, g->dev);
+	/* Open the output first: a bad path fails before hours of work. */
+	cli_out_open(&of, cli.out, 1);
+	t0 = progress_now();
+	progress_begin(&prog, "inserting", (uint64_t)pr->w * pr->h * pr->d);
+	end_run(g->use_cl ? frdgen_run_cl(pr, &o, &m, &prog) :
+	    frdgen_run(pr, &m, &prog), &prog, &of);
+	if (g->use_cl)
+		ocl_close(&o);
+	write_matrix(&of, &m);
+	if (pr->checkpoint != NULL)
+		unlink(pr->checkpoint);
+	if (g->verbose)
+		report_frd(pr, &m, progress_now() - t0,
+		    g->use_cl ? o.name : "the CPU");
+	frd_free(&m);
+	return 0;
+}
 
-		case 'v':
-			verbose = 1;
-			break;
-		default:
-			cli_common_only(c, optarg);
-		}
-	}
-	if (qfile != NULL) {
+int main(int argc, char **argv)
+{
+	struct gen_opts g = { .dev = -1 };
+
+	cli_init("frd-gen", usage);
+	frdgen_defaults(&g.pr);
+	parse_opts(argc, argv, &g);
+	if (g.qfile != NULL) {
 		cli_options_done();
-		quality(qfile);
+		quality(g.qfile);
 		for (int i = optind; i < argc; i++)
 			quality(argv[i]);
 		return 0;
 	}
-	cli_no_operands(argc, argv);
-	if (size == NULL)
-		cli_usage_error("-s SIZE is required");
-	parse_dims(size, &pr);
-	pr.seed = cli.seed;
-	/* The thesis's force with its own parameters unless given. */
-	if (pr.force == FRDGEN_FORCE_EXP) {
-		pr.s = s_set ? pr.s : 0.5;
-		pr.q = q_set ? pr.q : 0.5;
-	}
-	check_method(&mo, &pr, use_cl);
-	if (mo.vac)
-		return run_vac(&pr, &mo, verbose);
-	if (frdgen_check(&pr) < 0)
-		cli_usage_error("%s", frs_errmsg());
-	if (use_cl && pr.checkpoint != NULL)
-		cli_usage_error("--checkpoint: not available with --device cl");
-	check_memory(&pr, frdgen_memory(&pr));
-	cli_options_done();
-	/* The device before the output: a missing one fails at once. */
-	if (use_cl && ocl_open(&o, dev) < 0)
-		cli_die_device(1);
-	if (use_cl && !o.fp64)
-		cli_die("--device: OpenCL: %s has no double precision "
-		    "(cl_khr_fp64), which frd-gen needs to give the same matrix "
-		    "as --device cpu", o.name);
-	/* Open the output first: a bad path fails before hours of work. */
-	cli_out_open(&of, cli.out, 1);
-	t0 = progress_now();
-	progress_begin(&prog, "inserting", (uint64_t)pr.w * pr.h * pr.d);
-	if ((use_cl ? frdgen_run_cl(&pr, &o, &m, &prog) :
-	    frdgen_run(&pr, &m, &prog)) < 0) {
-		progress_end(&prog);
-		outfile_abort(&of);
-		cli_die_lib();
-	}
-	progress_end(&prog);
-	if (use_cl)
-		ocl_close(&o);
-	write_matrix(&of, &m);
-	if (pr.checkpoint != NULL)
-		unlink(pr.checkpoint);
-	if (verbose) {
-		double rt = frdgen_radius(&pr);
-		fprintf(stderr, "frd-gen: %ux%ux%u in %.3f s (radius %.1f to "
-		    "%.1f) on %s\n", pr.w, pr.h, pr.d, progress_now() - t0,
-		    frdgen_radius_after(&pr, rt, 1), frdgen_radius_after(&pr, rt,
-		    m.n), use_cl ? o.name : "the CPU");
-		if (print_quality(stderr, &m, cli.out ? cli.out : "<stdout>") < 0)
-			cli_die_lib();
-	}
-	frd_free(&m);
-	return 0;
+	check_opts(argc, argv, &g);
+	if (g.mo.vac)
+		return run_vac(&g.pr, &g.mo, g.verbose);
+	return run_frd(&g);
 }

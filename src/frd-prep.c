@@ -92,13 +92,6 @@ static unsigned parse_blocks(const char *s, uint32_t *out)
 	return n;
 }
 
-/*
- * The setups of the counts on the map, as frs-sample makes them with the
- * options o (sigma, tiles), level by level: the block size of Sorted's
- * lists for each that has them, into blocks (each size once); a table of
- * them on fp when fp is not NULL (block 0: the level scans or walks its
- * pixels, with the minmap); *minmap set when a level reads the minmap.
- */
 /* --for's map, loaded as frs-sample loads it: its size (0: its own),
  * --equirect and --strict. */
 struct mapopt {
@@ -106,6 +99,14 @@ struct mapopt {
 	uint32_t w, h;
 	int flags;
 };
+
+/*
+ * The setups of the counts on the map, as frs-sample makes them with the
+ * options o (sigma, tiles), level by level: the block size of Sorted's
+ * lists for each that has them, into blocks (each size once); a table of
+ * them on fp when fp is not NULL (block 0: the level scans or walks its
+ * pixels, with the minmap); *minmap set when a level reads the minmap.
+ */
 
 static unsigned blocks_for(const struct frs_matrix *m, const struct mapopt *mo,
     const struct frs_options *o, const uint64_t *n, unsigned nn,
@@ -223,116 +224,187 @@ static const char *import_fix(void)
 	return "";
 }
 
+/* Everything the command line asked for. */
+struct prep_opts {
+	const char *fmt;	/* --import */
+	const char *algo;	/* -a */
+	const char *in;		/* IN, "-" for standard input */
+	const char *src;	/* its name in messages and the .frp */
+	uint32_t w, h;		/* -s */
+	uint32_t blocks[32];	/* --blocks, or those --for needs */
+	unsigned nblocks;
+	uint64_t counts[32];	/* --for */
+	unsigned ncounts;
+	struct mapopt mo;	/* --for's map */
+	struct frs_options opt;	/* --sigma, --tiles */
+	int rank, check, verbose;
+	int minmap, sorted;	/* what -a prepares */
+};
+
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
     "a=algo import rank s=size blocks check for i=importance size-map "
     "equirect strict sigma tiles v=verbose";
 
-int main(int argc, char **argv)
+static void parse_opts(int argc, char **argv, struct prep_opts *o)
 {
-	const char *fmt = "frd", *algo = "none", *in, *src;
-	struct mapopt mo = { "const", 0, 0, 0 };
-	uint32_t w = 0, h = 0, blocks[32];
-	uint64_t counts[32];
-	unsigned nblocks = 0, ncounts = 0;
-	struct frs_options opt;
-	int c, rank = 0, check = 0, verbose = 0, minmap, sorted, rc;
-	struct frs_matrix m;
-	struct outfile o;
+	int c;
 
-	cli_init("frd-prep", usage);
-	frs_options_init(&opt);
 	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
-		case 'a': algo = optarg; break;
-		case 's': cli_size("-s", optarg, 1u << 16, &w, &h); break;
-		case OPT_IMPORT: fmt = optarg; break;
-		case OPT_RANK: rank = 1; break;
-		case OPT_BLOCKS: nblocks = parse_blocks(optarg, blocks); break;
-		case OPT_CHECK: check = 1; break;
-		case OPT_FOR: ncounts = parse_list("--for", optarg, counts, 1,
-		    1LL << 40); break;
-		case 'i': mo.imp = optarg; break;
-		case OPT_SIZE_MAP:
-			cli_size("--size-map", optarg, IMAP_MAX_SIDE, &mo.w, &mo.h);
+		case 'a': o->algo = optarg; break;
+		case 's': cli_size("-s", optarg, 1u << 16, &o->w, &o->h); break;
+		case OPT_IMPORT: o->fmt = optarg; break;
+		case OPT_RANK: o->rank = 1; break;
+		case OPT_BLOCKS:
+			o->nblocks = parse_blocks(optarg, o->blocks);
 			break;
-		case OPT_EQUIRECT: mo.flags |= IMAP_EQUIRECT; break;
-		case OPT_STRICT: mo.flags |= IMAP_STRICT; break;
+		case OPT_CHECK: o->check = 1; break;
+		case OPT_FOR:
+			o->ncounts = parse_list("--for", optarg, o->counts, 1,
+			    1LL << 40);
+			break;
+		case 'i': o->mo.imp = optarg; break;
+		case OPT_SIZE_MAP:
+			cli_size("--size-map", optarg, IMAP_MAX_SIDE, &o->mo.w,
+			    &o->mo.h);
+			break;
+		case OPT_EQUIRECT: o->mo.flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: o->mo.flags |= IMAP_STRICT; break;
 		case OPT_SIGMA:
-			opt.sigma = cli_double("--sigma", optarg, 1.0, FRS_SIGMA_MAX);
+			o->opt.sigma = cli_double("--sigma", optarg, 1.0,
+			    FRS_SIGMA_MAX);
 			break;
 		case OPT_TILES:
-			opt.tiling = (enum frs_tiling_mode)cli_choice("--tiles",
-			    optarg, api_tiling_words);
+			o->opt.tiling = (enum frs_tiling_mode)cli_choice(
+			    "--tiles", optarg, api_tiling_words);
 			break;
-		case 'v': verbose = 1; break;
+		case 'v': o->verbose = 1; break;
 		default:
 			cli_common_only(c, optarg);
 		}
 	}
 	if (argc - optind > 1)
 		cli_usage_error("one input at most");
-	if ((mo.w || mo.flags) && ncounts == 0)
+	if ((o->mo.w || o->mo.flags) && o->ncounts == 0)
 		cli_usage_error("--size-map, --equirect and --strict are of "
 		    "--for's map: give --for LIST");
-	in = optind < argc ? argv[optind] : "-";
-	src = strcmp(in, "-") ? in : "<stdin>";
-	cli_options_done();
-	minmap = strcmp(algo, "all") == 0 || strcmp(algo, "stack") == 0 ||
-	    strcmp(algo, "level1") == 0 || strcmp(algo, "level2") == 0;
-	sorted = strcmp(algo, "all") == 0 || strcmp(algo, "sorted") == 0;
-	if (!minmap && !sorted && strcmp(algo, "none") != 0)
+	o->in = optind < argc ? argv[optind] : "-";
+	o->src = strcmp(o->in, "-") ? o->in : "<stdin>";
+}
+
+/* -a: a minmap (stack, level1, level2), sorted lists, both or none. */
+static void parse_algo(struct prep_opts *o)
+{
+	const char *a = o->algo;
+
+	o->minmap = strcmp(a, "all") == 0 || strcmp(a, "stack") == 0 ||
+	    strcmp(a, "level1") == 0 || strcmp(a, "level2") == 0;
+	o->sorted = strcmp(a, "all") == 0 || strcmp(a, "sorted") == 0;
+	if (!o->minmap && !o->sorted && strcmp(a, "none") != 0)
 		cli_usage_error("-a: '%s' is not none, stack, level1, level2, "
-		    "sorted or all", algo);
+		    "sorted or all", a);
+}
+
+/* The matrix in the format of --import; its values a permutation when
+ * --check asks, or when they were imported. */
+static void read_matrix(const struct prep_opts *o, struct frs_matrix *m)
+{
+	const char *fmt = o->fmt;
+	int rc;
+
 	if (strcmp(fmt, "frd") == 0)
-		rc = read_frd(in, &m, check, minmap || sorted || nblocks > 0 ||
-		    ncounts > 0, verbose);
+		rc = read_frd(o->in, m, o->check, o->minmap || o->sorted ||
+		    o->nblocks > 0 || o->ncounts > 0, o->verbose);
 	else if (strcmp(fmt, "raw32") == 0)
-		rc = frd_import_raw32(in, w, h, rank, &m);
+		rc = frd_import_raw32(o->in, o->w, o->h, o->rank, m);
 	else if (strcmp(fmt, "text") == 0)
-		rc = frd_import_text(in, rank, &m);
+		rc = frd_import_text(o->in, o->rank, m);
 	else if (strcmp(fmt, "png16") == 0 || strcmp(fmt, "png") == 0)
-		rc = frd_import_png(in, &m);
+		rc = frd_import_png(o->in, m);
 	else
 		cli_usage_error("--import: '%s' is not frd, raw32, png16 or text",
 		    fmt);
 	if (rc < 0)
 		cli_die("%s%s", frs_errmsg(), import_fix());
-	if ((check || strcmp(fmt, "frd") != 0) &&
-	    frd_check_permutation(&m, src) < 0)
+	if ((o->check || strcmp(fmt, "frd") != 0) &&
+	    frd_check_permutation(m, o->src) < 0)
 		cli_die_lib();
-	if (nblocks > 0 && !sorted)
+}
+
+/* --blocks and --for: which -a each needs. */
+static void check_lists(const struct prep_opts *o)
+{
+	if (o->nblocks > 0 && !o->sorted)
 		cli_usage_error("--blocks needs -a sorted or -a all");
-	if (nblocks > 0 && ncounts > 0)
+	if (o->nblocks > 0 && o->ncounts > 0)
 		cli_usage_error("--blocks and --for: one or the other");
-	if (ncounts > 0 && !sorted && minmap)
+	if (o->ncounts > 0 && !o->sorted && o->minmap)
 		cli_usage_error("--for needs -a sorted or -a all, or no -a");
-	if (ncounts > 0 && !sorted) {	/* the table only */
-		blocks_for(&m, &mo, &opt, counts, ncounts, blocks, &minmap,
-		    stdout);
-		frd_free(&m);
-		if (fflush(stdout) != 0 || ferror(stdout))
-			cli_die("<stdout>: write error");
-		return 0;
-	}
-	if (ncounts > 0)
-		nblocks = blocks_for(&m, &mo, &opt, counts, ncounts, blocks,
-		    &minmap, verbose ? stderr : NULL);
-	if (sorted && nblocks == 0 && ncounts == 0)
-		for (uint32_t b = 1; b <= 256 && b <= m.w && b <= m.h; b *= 2)
-			blocks[nblocks++] = b;
-	for (unsigned i = 0; i < nblocks; i++)
-		if (blocks[i] > m.w || blocks[i] > m.h)
-			cli_die("--blocks: %u exceeds the %ux%u matrix", blocks[i],
-			    m.w, m.h);
-	cli_out_open(&o, cli.out, 1);
-	rc = minmap || sorted ? frp_write(o.fp, o.name, src, &m, minmap,
-	    sorted && nblocks ? blocks : NULL, sorted ? nblocks : 0) :
-	    frd_write(o.fp, o.name, &m);
-	cli_out_commit(&o, rc);
-	if (verbose)
-		fprintf(stderr, "frd-prep: %ux%u matrix, checksum %016llx\n", m.w,
-		    m.h, (unsigned long long)frd_checksum(&m));
+}
+
+/* --for without -a: the table of the levels' setups alone. */
+static int print_table(struct prep_opts *o, struct frs_matrix *m)
+{
+	blocks_for(m, &o->mo, &o->opt, o->counts, o->ncounts, o->blocks,
+	    &o->minmap, stdout);
+	frd_free(m);
+	if (fflush(stdout) != 0 || ferror(stdout))
+		cli_die("<stdout>: write error");
+	return 0;
+}
+
+/* The block sizes of the sorted lists: those --for needs, those of
+ * --blocks, or by default 1, 2, 4 ... 256 up to the matrix size. */
+static void choose_blocks(struct prep_opts *o, const struct frs_matrix *m)
+{
+	if (o->ncounts > 0)
+		o->nblocks = blocks_for(m, &o->mo, &o->opt, o->counts,
+		    o->ncounts, o->blocks, &o->minmap,
+		    o->verbose ? stderr : NULL);
+	if (o->sorted && o->nblocks == 0 && o->ncounts == 0)
+		for (uint32_t b = 1; b <= 256 && b <= m->w && b <= m->h; b *= 2)
+			o->blocks[o->nblocks++] = b;
+	for (unsigned i = 0; i < o->nblocks; i++)
+		if (o->blocks[i] > m->w || o->blocks[i] > m->h)
+			cli_die("--blocks: %u exceeds the %ux%u matrix",
+			    o->blocks[i], m->w, m->h);
+}
+
+/* The .frp of what -a asked for, or with -a none the .frd. */
+static void write_matrix(const struct prep_opts *o,
+    const struct frs_matrix *m)
+{
+	struct outfile of;
+	int rc;
+
+	cli_out_open(&of, cli.out, 1);
+	rc = o->minmap || o->sorted ? frp_write(of.fp, of.name, o->src, m,
+	    o->minmap, o->sorted && o->nblocks ? o->blocks : NULL,
+	    o->sorted ? o->nblocks : 0) : frd_write(of.fp, of.name, m);
+	cli_out_commit(&of, rc);
+	if (o->verbose)
+		fprintf(stderr, "frd-prep: %ux%u matrix, checksum %016llx\n",
+		    m->w, m->h, (unsigned long long)frd_checksum(m));
+}
+
+int main(int argc, char **argv)
+{
+	struct prep_opts o = { .fmt = "frd", .algo = "none",
+	    .mo = { "const", 0, 0, 0 } };
+	struct frs_matrix m;
+
+	cli_init("frd-prep", usage);
+	frs_options_init(&o.opt);
+	parse_opts(argc, argv, &o);
+	cli_options_done();
+	parse_algo(&o);
+	read_matrix(&o, &m);
+	check_lists(&o);
+	if (o.ncounts > 0 && !o.sorted)
+		return print_table(&o, &m);
+	choose_blocks(&o, &m);
+	write_matrix(&o, &m);
 	frd_free(&m);
 	return 0;
 }

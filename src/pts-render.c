@@ -63,6 +63,23 @@ static const char usage[] =
 
 enum fmt { FMT_NONE, FMT_PNG, FMT_PNM };
 
+/* Everything the command line asked for. */
+struct render_opts {
+	const char *in;		/* PTS, "-" for standard input */
+	const char *imp;	/* -i, NULL for none */
+	uint32_t w, h;		/* -s */
+	double rad;		/* -r, 0 for each dot's from the spacing */
+	double alpha;		/* --alpha */
+	int logscale, color;	/* --log, --color */
+	int flags;		/* the map's: --srgb, --equirect, --strict */
+	enum fmt format;	/* --format */
+	unsigned axis[2];	/* --axes, as indices */
+	const char *axes;	/* --axes, as given */
+	int have_set;		/* --set K given */
+	uint64_t set;		/* K */
+	size_t per;		/* --sets N, 0 for none */
+};
+
 static int is_stdin(const char *path)
 {
 	return path == NULL || strcmp(path, "-") == 0;
@@ -127,141 +144,157 @@ static const char options[] =
     "s=size r=radius i=importance log color colour srgb equirect strict "
     "format axes alpha set sets";
 
-int main(int argc, char **argv)
+static void parse_opts(int argc, char **argv, struct render_opts *o)
 {
-	const char *in = "-", *imp = NULL, *name;
-	uint32_t w = 512, h = 512;
-	double rad = 0.0, alpha = 1.0;
-	struct raster_spacing sp;
-	int c, logscale = 0, color = 0, flags = IMAP_ALLOW_ZERO;
-	struct frs_points p;
-	struct frs_raster r;
-	struct outfile o;
-	enum fmt format = FMT_NONE;
-	size_t ncol;
-	unsigned axis[2] = { 0, 1 };
-	const char *axes = "xy";
-	int rc, have_set = 0;
-	uint64_t set = 0;
-	size_t per = 0, first = 0, count;
+	int c;
 
-	cli_init("pts-render", usage);
 	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 's':
-			cli_size("-s", optarg, IMAP_MAX_SIDE, &w, &h);
+			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->w, &o->h);
 			break;
 		case 'r':
-			rad = cli_double("-r", optarg, 0.01, 65536.0);
+			o->rad = cli_double("-r", optarg, 0.01, 65536.0);
 			break;
-		case 'i':
-			imp = optarg;
-			break;
-		case OPT_LOG:
-			logscale = 1;
-			break;
-		case OPT_COLOR:
-			color = 1;
-			break;
-		case OPT_SRGB:
-			flags |= IMAP_SRGB;
-			break;
-		case OPT_EQUIRECT:
-			flags |= IMAP_EQUIRECT;
-			break;
-		case OPT_STRICT:
-			flags |= IMAP_STRICT;
-			break;
+		case 'i': o->imp = optarg; break;
+		case OPT_LOG: o->logscale = 1; break;
+		case OPT_COLOR: o->color = 1; break;
+		case OPT_SRGB: o->flags |= IMAP_SRGB; break;
+		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
 		case OPT_ALPHA:
-			alpha = cli_double("--alpha", optarg, 0.0, 1.0);
+			o->alpha = cli_double("--alpha", optarg, 0.0, 1.0);
 			break;
 		case OPT_AXES:
-			parse_axes(optarg, axis);
-			axes = optarg;
+			parse_axes(optarg, o->axis);
+			o->axes = optarg;
 			break;
 		case OPT_SET:
-			set = cli_u64("--set", optarg, 0, (uint64_t)1 << 53);
-			have_set = 1;
+			o->set = cli_u64("--set", optarg, 0, (uint64_t)1 << 53);
+			o->have_set = 1;
 			break;
-		case OPT_SETS:
-			per = cli_sets(optarg);
-			break;
+		case OPT_SETS: o->per = cli_sets(optarg); break;
 		case OPT_FORMAT:
-			format = (enum fmt)(FMT_PNG + cli_choice("--format",
+			o->format = (enum fmt)(FMT_PNG + cli_choice("--format",
 			    optarg, (const char *const[]){ "png", "pnm", NULL }));
 			break;
 		default:
 			cli_common_only(c, optarg);
 		}
 	}
+}
+
+/* The operand, and the checks between options. */
+static void check_opts(int argc, char **argv, struct render_opts *o)
+{
 	if (argc - optind > 1)
 		cli_usage_error("one point file at most");
-	if (per && !have_set)
+	if (o->per && !o->have_set)
 		cli_usage_error("--sets N: give --set K, the set to draw");
 	if (argc - optind == 1)
-		in = argv[optind];
-	if ((uint64_t)w * h > IMAP_MAX_PIXELS)
-		cli_usage_error("-s: %ux%u has more than %llu pixels", w, h,
-		    (unsigned long long)IMAP_MAX_PIXELS);
-	if (imp != NULL && is_stdin(imp) && is_stdin(in))
+		o->in = argv[optind];
+	if ((uint64_t)o->w * o->h > IMAP_MAX_PIXELS)
+		cli_usage_error("-s: %ux%u has more than %llu pixels", o->w,
+		    o->h, (unsigned long long)IMAP_MAX_PIXELS);
+	if (o->imp != NULL && is_stdin(o->imp) && is_stdin(o->in))
 		cli_usage_error("the points and the importance map cannot both "
 		    "be standard input");
-	if (imp == NULL && (logscale || (flags & ~IMAP_ALLOW_ZERO)))
+	if (o->imp == NULL && (o->logscale || (o->flags & ~IMAP_ALLOW_ZERO)))
 		cli_usage_error("--log, --srgb, --equirect and --strict need -i");
+}
 
+/* The points, with the coordinates --axes draws; their name for
+ * messages. */
+static const char *read_points(const struct render_opts *o,
+    struct frs_points *p)
+{
+	const char *name = is_stdin(o->in) ? "<stdin>" : o->in;
+
+	if (pts_read(o->in, p) < 0)
+		cli_die_lib();
+	if (p->dims < 2)
+		cli_die("%s: points have %u coordinate%s, need 2", name, p->dims,
+		    p->dims == 1 ? "" : "s");
+	if (o->axis[1] >= p->dims)
+		cli_die("%s: --axes %s: points have %u coordinates, no z; "
+		    "2-D sets take only xy", name, o->axes, p->dims);
+	return name;
+}
+
+/* -i: the importance map under the dots. */
+static void draw_map(const struct render_opts *o, struct frs_raster *r)
+{
+	struct frs_imap m;
+
+	if (imap_load(o->imp, o->w, o->h, o->flags, &m) < 0)
+		cli_die_lib();
+	if (raster_fill_imap(r, &m, o->logscale) < 0)
+		cli_die_lib();
+	imap_free(&m);
+}
+
+/* The dots of the points drawn (of set K with --set), in file order. */
+static void draw_points(const struct render_opts *o,
+    const struct frs_points *p, const char *name, struct frs_raster *r)
+{
+	struct raster_spacing sp;
+	size_t first = 0, count = p->n, ncol = (size_t)p->dims + p->extra;
+
+	if (o->have_set)
+		pick_set(p, name, o->per, o->set, &first, &count);
+	/* No -r: each dot's radius from the spacing around it. */
+	if (o->rad == 0.0 && raster_spacing_init(&sp, p->x + first * ncol,
+	    count, ncol, o->axis[0], o->axis[1], o->w, o->h) < 0)
+		cli_die_lib();
+	for (size_t k = 0; k < count; k++) {
+		const double *x = p->x + (first + k) * ncol;
+		double cx = x[o->axis[0]] * o->w, cy = x[o->axis[1]] * o->h;
+		uint8_t ink[3] = { 0, 0, 0 };
+
+		if (o->color)
+			raster_ramp(k, count, ink);
+		raster_disc_alpha(r, cx, cy, o->rad > 0.0 ? o->rad :
+		    raster_spacing_radius(&sp, cx, cy), ink, o->alpha);
+	}
+	if (o->rad == 0.0)
+		raster_spacing_free(&sp);
+}
+
+/* The image to the output opened before the work, as PNG or PNM. */
+static void write_image(const struct render_opts *o, struct outfile *of,
+    const struct frs_raster *r)
+{
+	int rc = format_of(o->format, cli.out) == FMT_PNM ?
+	    raster_write_pnm(of->fp, of->name, r) :
+	    raster_write_png(of->fp, of->name, r);
+
+	cli_out_commit(of, rc);
+}
+
+int main(int argc, char **argv)
+{
+	struct render_opts o = { .in = "-", .w = 512, .h = 512, .alpha = 1.0,
+	    .flags = IMAP_ALLOW_ZERO, .axis = { 0, 1 }, .axes = "xy" };
+	struct frs_points p;
+	struct frs_raster r;
+	struct outfile of;
+	const char *name;
+
+	cli_init("pts-render", usage);
+	parse_opts(argc, argv, &o);
+	check_opts(argc, argv, &o);
 	/* The output first: a bad path fails before any work, and standard
 	 * output is never a terminal. */
 	cli_options_done();
-	cli_out_open(&o, cli.out, 1);
-
-	name = is_stdin(in) ? "<stdin>" : in;
-	if (pts_read(in, &p) < 0)
+	cli_out_open(&of, cli.out, 1);
+	name = read_points(&o, &p);
+	if (raster_alloc(&r, o.w, o.h, o.color ? 3 : 1) < 0)
 		cli_die_lib();
-	if (p.dims < 2)
-		cli_die("%s: points have %u coordinate%s, need 2", name, p.dims,
-		    p.dims == 1 ? "" : "s");
-	if (axis[1] >= p.dims)
-		cli_die("%s: --axes %s: points have %u coordinates, no z; "
-		    "2-D sets take only xy", name, axes, p.dims);
-
-	if (raster_alloc(&r, w, h, color ? 3 : 1) < 0)
-		cli_die_lib();
-	if (imp != NULL) {
-		struct frs_imap m;
-
-		if (imap_load(imp, w, h, flags, &m) < 0)
-			cli_die_lib();
-		if (raster_fill_imap(&r, &m, logscale) < 0)
-			cli_die_lib();
-		imap_free(&m);
-	}
-
-	count = p.n;
-	if (have_set)
-		pick_set(&p, name, per, set, &first, &count);
-	ncol = (size_t)p.dims + p.extra;
-	/* No -r: each dot's radius from the spacing around it. */
-	if (rad == 0.0 && raster_spacing_init(&sp, p.x + first * ncol, count,
-	    ncol, axis[0], axis[1], w, h) < 0)
-		cli_die_lib();
-	for (size_t k = 0; k < count; k++) {
-		const double *x = p.x + (first + k) * ncol;
-		double cx = x[axis[0]] * w, cy = x[axis[1]] * h;
-		uint8_t ink[3] = { 0, 0, 0 };
-
-		if (color)
-			raster_ramp(k, count, ink);
-		raster_disc_alpha(&r, cx, cy, rad > 0.0 ? rad :
-		    raster_spacing_radius(&sp, cx, cy), ink, alpha);
-	}
-	if (rad == 0.0)
-		raster_spacing_free(&sp);
+	if (o.imp != NULL)
+		draw_map(&o, &r);
+	draw_points(&o, &p, name, &r);
 	pts_free(&p);
-
-	format = format_of(format, cli.out);
-	rc = format == FMT_PNM ? raster_write_pnm(o.fp, o.name, &r) :
-	    raster_write_png(o.fp, o.name, &r);
-	cli_out_commit(&o, rc);
+	write_image(&o, &of, &r);
 	raster_free(&r);
 	return 0;
 }

@@ -54,19 +54,26 @@ static const char usage[] =
     "  -q, --quiet          no notes\n"
     "  -h, --help           this help;  --version  the version\n";
 
-/* One set with the given seed into xy; *placed gets its size. */
-static int make_set(enum refsamp_kind kind, unsigned dims, uint64_t n,
-    uint64_t seed, uint64_t maxf, const struct frs_imap *map, double *xy,
-    uint64_t *placed)
-{
-	if (kind == REFSAMP_RELAXED_DART) {
-		if (refsamp_relaxed_dart(n, seed, maxf, map, xy, NULL) < 0)
-			return -1;
-		*placed = n;
-		return 0;
-	}
-	return refsamp_gen_dims(kind, dims, n, seed, maxf, xy, placed);
-}
+/* Everything the command line asked for. */
+struct ref_opts {
+	enum refsamp_kind kind;
+	unsigned dims;		/* -d */
+	uint64_t n;		/* -n, 0 when not given */
+	uint64_t maxf;		/* --max-failures, 0 for the kind's default */
+	uint64_t sets;		/* --sets M */
+	uint64_t count;		/* the points of a set: n, or its grid's */
+	const char *imp;	/* -i */
+	uint32_t mw, mh;	/* -s */
+	int flags;		/* --strict, --equirect */
+};
+
+/* A run: the points of the set at hand, and the map of relaxed-dart. */
+struct ref_run {
+	double *xy;
+	uint64_t placed;	/* the points of xy */
+	struct frs_imap map;
+	int have_map;
+};
 
 /*
  * Dart throwing's time a point, in microseconds, measured with the
@@ -191,143 +198,176 @@ static const char options[] =
     "n=count d=dims k=kind max-failures i=importance s=size "
     "strict equirect sets";
 
-int main(int argc, char **argv)
+static void parse_opts(int argc, char **argv, struct ref_opts *o)
 {
-	enum refsamp_kind kind = REFSAMP_RANDOM;
-	uint64_t n = 0, maxf = 0, count, placed, sets = 1;
-	unsigned dims = 2;
-	int c, have_n = 0, flags = 0;
-	const char *imp = NULL;
-	uint32_t mw = 0, mh = 0;
-	double *xy;
-	char what[48];
-	struct frs_imap map;
-	int have_map = 0;
-	struct outfile of;
-	struct sets_writer w;
-	struct progress pr;
+	int c;
 
-	cli_init("ref-sample", usage);
 	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 'n':
-			n = cli_u64("-n", optarg, 1, REFSAMP_MAX_N);
-			have_n = 1;
+			o->n = cli_u64("-n", optarg, 1, REFSAMP_MAX_N);
 			break;
-		case 'd': dims = parse_dims(optarg); break;
+		case 'd': o->dims = parse_dims(optarg); break;
 		case 'k':
-			if (refsamp_parse(optarg, &kind) < 0)
+			if (refsamp_parse(optarg, &o->kind) < 0)
 				cli_usage_error("-k: %s", frs_errmsg());
 			break;
 		case OPT_MAX_FAILURES:
-			maxf = cli_u64("--max-failures", optarg, 1,
+			o->maxf = cli_u64("--max-failures", optarg, 1,
 			    (uint64_t)1 << 40);
 			break;
-		case 'i': imp = optarg; break;
+		case 'i': o->imp = optarg; break;
 		case 's':
-			cli_size("-s", optarg, IMAP_MAX_SIDE, &mw, &mh);
+			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->mw, &o->mh);
 			break;
-		case OPT_STRICT: flags |= IMAP_STRICT; break;
-		case OPT_EQUIRECT: flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
+		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
 		case OPT_SETS:
-			sets = cli_sets_m(optarg);
+			o->sets = cli_sets_m(optarg);
 			break;
 		default:
 			cli_common_only(c, optarg);
 		}
 	}
 	cli_no_operands(argc, argv);
-	if (!have_n)
+}
+
+/* The checks between options, the defaults that depend on the kind and
+ * the count of a set. */
+static void check_opts(struct ref_opts *o)
+{
+	if (o->n == 0)
 		cli_usage_error("-n COUNT is required");
-	check_dims(dims, kind, imp);
-	if (maxf == 0)
-		maxf = kind == REFSAMP_RELAXED_DART ? REFSAMP_RELAXED_FAILURES :
-		    REFSAMP_DART_FAILURES;
-	count = refsamp_count_dims(kind, n, dims);
-	cli_sets_check(sets, count);
-	if (count != n)
-		note_grid(kind, dims, n, count);
-	cli_options_done();
-	note_time(kind, dims, n, sets);
-	snprintf(what, sizeof what, "%llu points", (unsigned long long)count);
-	if ((xy = mem_calloc(what, count, dims * sizeof *xy)) == NULL)
+	check_dims(o->dims, o->kind, o->imp);
+	if (o->maxf == 0)
+		o->maxf = o->kind == REFSAMP_RELAXED_DART ?
+		    REFSAMP_RELAXED_FAILURES : REFSAMP_DART_FAILURES;
+	o->count = refsamp_count_dims(o->kind, o->n, o->dims);
+	cli_sets_check(o->sets, o->count);
+	if (o->count != o->n)
+		note_grid(o->kind, o->dims, o->n, o->count);
+}
+
+/* The room for a set's points and relaxed-dart's map. */
+static void open_run(const struct ref_opts *o, struct ref_run *r)
+{
+	char what[48];
+
+	snprintf(what, sizeof what, "%llu points",
+	    (unsigned long long)o->count);
+	if ((r->xy = mem_calloc(what, o->count, o->dims * sizeof *r->xy)) ==
+	    NULL)
 		cli_die_lib();
-	if (kind == REFSAMP_RELAXED_DART) {
-		if (imap_load(imp ? imp : "const", mw, mh, flags, &map) < 0) {
-			free(xy);
-			cli_die_lib();
-		}
-		have_map = 1;
+	if (o->kind != REFSAMP_RELAXED_DART)
+		return;
+	if (imap_load(o->imp ? o->imp : "const", o->mw, o->mh, o->flags,
+	    &r->map) < 0) {
+		free(r->xy);
+		cli_die_lib();
 	}
-	/* Set 0 before the output opens: with one set its size goes into
-	 * the header, as without --sets. */
-	if (make_set(kind, dims, n, cli.seed, maxf, have_map ? &map : NULL,
-	    xy, &placed) < 0) {
-		if (have_map)
-			imap_free(&map);
-		free(xy);
+	r->have_map = 1;
+}
+
+static void close_run(struct ref_run *r)
+{
+	if (r->have_map)
+		imap_free(&r->map);
+	free(r->xy);
+}
+
+/* Before dying: the output, if open, removed and the run freed. */
+static void drop_run(struct ref_run *r, struct outfile *of)
+{
+	if (of != NULL)
+		outfile_abort(of);
+	close_run(r);
+}
+
+/* Set i, made with seed S+i, into r->xy.  Dart throwing may place fewer
+ * points than asked: a note with one set, the end of the run with
+ * several, whose sets must all have the same count.  of: the output,
+ * once open. */
+static void make_set(const struct ref_opts *o, struct ref_run *r,
+    uint64_t set, struct outfile *of)
+{
+	uint64_t seed = cli.seed + set;
+	int rc;
+
+	if (o->kind == REFSAMP_RELAXED_DART) {
+		rc = refsamp_relaxed_dart(o->n, seed, o->maxf, &r->map, r->xy,
+		    NULL);
+		r->placed = o->n;
+	} else
+		rc = refsamp_gen_dims(o->kind, o->dims, o->n, seed, o->maxf,
+		    r->xy, &r->placed);
+	if (rc < 0) {
+		drop_run(r, of);
 		cli_die("%s", frs_errmsg());
 	}
-	if (placed < count) {
-		if (sets > 1) {
-			free(xy);
-			if (have_map)
-				imap_free(&map);
-			cli_die("dart, seed %llu: placed only %llu of %llu points "
-			    "(%llu candidates in a row rejected); with --sets "
-			    "every set needs them all: raise --max-failures or "
-			    "lower -n", (unsigned long long)cli.seed,
-			    (unsigned long long)placed, (unsigned long long)count,
-			    (unsigned long long)maxf);
-		}
+	if (r->placed >= o->count)
+		return;
+	if (o->sets == 1) {
 		cli_note("dart: placed %llu of %llu points (%llu candidates in a "
-		    "row rejected)", (unsigned long long)placed,
-		    (unsigned long long)count, (unsigned long long)maxf);
+		    "row rejected)", (unsigned long long)r->placed,
+		    (unsigned long long)o->count, (unsigned long long)o->maxf);
+		return;
 	}
+	drop_run(r, of);
+	cli_die("dart, seed %llu: placed only %llu of %llu points (%llu "
+	    "candidates in a row rejected); with --sets every set needs them "
+	    "all: raise --max-failures or lower -n", (unsigned long long)seed,
+	    (unsigned long long)r->placed, (unsigned long long)o->count,
+	    (unsigned long long)o->maxf);
+}
+
+/* A failed write: the output removed. */
+static noreturn void write_failed(struct ref_run *r, struct outfile *of)
+{
+	drop_run(r, of);
+	cli_die_lib();
+}
+
+/* The sets, set 0 already made; the others one after another. */
+static void write_sets(const struct ref_opts *o, struct ref_run *r)
+{
+	struct outfile of;
+	struct sets_writer w;
+	struct progress pr;
+
 	cli_out_open(&of, cli.out, !cli.text);
-	if (sets_writer_begin(&w, of.fp, of.name, dims, 0, NULL, sets,
-	    sets > 1 ? sets * count : placed, cli.text) < 0)
-		goto fail;
-	progress_begin(&pr, "sets", sets);
-	for (uint64_t set = 0; set < sets; set++) {
-		if (set > 0) {
-			uint64_t seed = cli.seed + set;
-			if (make_set(kind, dims, n, seed, maxf,
-			    have_map ? &map : NULL, xy, &placed) < 0) {
-				outfile_abort(&of);
-				free(xy);
-				cli_die("%s", frs_errmsg());
-			}
-			if (placed < count) {
-				outfile_abort(&of);
-				free(xy);
-				cli_die("dart, seed %llu: placed only %llu of %llu "
-				    "points (%llu candidates in a row rejected); "
-				    "with --sets every set needs them all: raise "
-				    "--max-failures or lower -n",
-				    (unsigned long long)seed,
-				    (unsigned long long)placed,
-				    (unsigned long long)count,
-				    (unsigned long long)maxf);
-			}
-		}
+	if (sets_writer_begin(&w, of.fp, of.name, o->dims, 0, NULL, o->sets,
+	    o->sets > 1 ? o->sets * o->count : r->placed, cli.text) < 0)
+		write_failed(r, &of);
+	progress_begin(&pr, "sets", o->sets);
+	for (uint64_t set = 0; set < o->sets; set++) {
+		if (set > 0)
+			make_set(o, r, set, &of);
 		w.set = set;
-		if (sets_writer_put(&w, xy, (size_t)placed) < 0)
-			goto fail;
+		if (sets_writer_put(&w, r->xy, (size_t)r->placed) < 0)
+			write_failed(r, &of);
 		progress_update(&pr, set + 1);
 	}
 	progress_end(&pr);
 	if (sets_writer_end(&w) < 0)
-		goto fail;
+		write_failed(r, &of);
 	cli_out_commit(&of, 0);
-	if (have_map)
-		imap_free(&map);
-	free(xy);
+}
+
+int main(int argc, char **argv)
+{
+	struct ref_opts o = { .kind = REFSAMP_RANDOM, .dims = 2, .sets = 1 };
+	struct ref_run r = { 0 };
+
+	cli_init("ref-sample", usage);
+	parse_opts(argc, argv, &o);
+	check_opts(&o);
+	cli_options_done();
+	note_time(o.kind, o.dims, o.n, o.sets);
+	open_run(&o, &r);
+	/* Set 0 before the output opens: with one set its size goes into
+	 * the header, as without --sets. */
+	make_set(&o, &r, 0, NULL);
+	write_sets(&o, &r);
+	close_run(&r);
 	return 0;
-fail:
-	outfile_abort(&of);
-	if (have_map)
-		imap_free(&map);
-	free(xy);
-	cli_die_lib();
 }
