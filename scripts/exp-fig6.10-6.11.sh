@@ -28,11 +28,9 @@ exp_begin fig6.10-6.11 "DDA power spectra of adaptive sampling" \
 N=$(pick 128 1024 1024)
 M=$(pick 1 6 10)
 K=$(pick 32 256 512)
-# The environment map is resampled to a square, as the thesis' light
-# probe (an angular map) is: FRS spaces its points evenly in pixels, so
-# on a 2:1 map they would be anisotropic in the unit square the DDA
-# measures, unlike relaxation dart throwing.
-ES=256x256
+# The environment map: explib.sh's one setup (env_map, ENV_SIZE), shared
+# with Table 6.1.
+ES=$ENV_SIZE
 C=$CACHE/fig6.10-6.11
 mkdir -p "$C" "$OUT/dda"
 MAPS="blob ramp env const"
@@ -40,7 +38,7 @@ DISTS="ref frs frs-plain frs-jit hsw-random hsw-regular hsw-halton hsw-dart"
 envname=$(basename "$ENVMAP" | sed 's/\.[^.]*$//')
 mapspec() {
 	case $1 in
-	env) echo "$ENVMAP -s $ES" ;;
+	env) env_map ;;
 	*) echo "$1" ;;
 	esac
 }
@@ -265,5 +263,6 @@ observe "$sp > $rsp + 0.02 && $RCUT > 0 && $se > 0.9 * $RCUT && $se < 1.1 * $RCU
 env_w=$(awk -F '\t' '$1 == "env" { split($3, a, "x"); print a[1] }' "$OUT/frs-window.tsv")
 mat_w=$(awk -F '\t' '$1 == "env" { split($4, a, "x"); print a[1] }' "$OUT/frs-window.tsv")
 observe "$env_w > $mat_w" "On the environment map the thesis's FRS window (${env_w}x$env_w) exceeds the matrix (${mat_w}x$mat_w), so with plain tiles the matrix's tiles repeat (the limit of thesis Table 4.1): FRS's anisotropy there is $(v env frs-plain mean_aniso_db) dB with plain tiles and $(v env frs mean_aniso_db) dB with the multi-level window (the default), against the reference's $(v env ref mean_aniso_db)."
-exp_note "The environment map is $ENVMAP resampled to $ES, not the thesis' Grace Cathedral probe; the DDA is dda(1), not Wei's tool."
+env_setup
+exp_note "The DDA is dda(1), not Wei's tool."
 exp_end
