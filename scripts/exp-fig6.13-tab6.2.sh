@@ -287,14 +287,14 @@ if [ "$NMAPS" -gt 1 ]; then
 		row "$a 2^$x, slowest / fastest map of $MAPS" "$sp (slowest: $3)" "almost identical for the four maps"
 		cause=
 		[ $a != hsw ] && cause="window $3 $(win "$3" "$x"), $4 $(win "$4" "$x"): Eq. 4.12 sizes it for the map's maximum"
-		check "$(pretty $a): about the same time on every map (2^$x, slowest within 1.5x of the fastest)" \
+		check "$(pretty $a), 2^$x: \"the results for all four importance maps are almost identical\" (Sec. 6.4, Single-Threaded CPU Implementations): the slowest map within 1.5x of the fastest" \
 		    "$sp ($3 / $4)" "$1 <= 1.5 * $2" "$cause"
 	done
 fi
 # (2) HSW the fastest up to 2^9 (here at 2^8)
 if has 8; then
 	set -- $(awk -F'\t' 'NR > 1 && $1 == 8 { n = split("naive level1 stack sorted", A, " "); for (i = 1; i <= n; i++) if ($(i + 2) != "-" && (b == "" || $(i + 2) < b)) { b = $(i + 2); ba = A[i] } print b, ba }' "$OUT/avg.tsv")
-	order "HSW faster than every FRS implementation at 2^8 (at least 1.2x; thesis: $(ratio "$(thv 8 sorted)" "$(thv 8 hsw)")x ahead of Sorted)" \
+	order "2^8: \"Up until n=2^9 samples, HSW is the best among the tested algorithms\" (Sec. 6.4, Single-Threaded CPU Implementations): faster than every FRS implementation (at least 1.2x; thesis: $(ratio "$(thv 8 sorted)" "$(thv 8 hsw)")x ahead of Sorted)" \
 	    HSW "$(get 8 hsw)" "$(pretty "${2:-FRS}")" "${1:-}" 1.2 "$(get 8 hsw_spread)" "$([ -n "${2:-}" ] && get 8 "${2}_spread")"
 fi
 # (3) Sorted the fastest FRS implementation, at 2^8 and at the largest n
@@ -303,25 +303,25 @@ for e in $(printf '8\n%s\n' "$ES" | sort -un); do
 	has "$e" || continue
 	set -- $(awk -F'\t' -v x="$e" 'NR > 1 && $1 == x { n = split("naive level1 stack", A, " "); for (i = 1; i <= n; i++) if ($(i + 2) != "-" && (b == "" || $(i + 2) < b)) { b = $(i + 2); ba = A[i] } print b, ba }' "$OUT/avg.tsv")
 	[ $# = 2 ] || continue
-	order "Sorted the fastest FRS implementation at 2^$e (at least 1.2x ahead of the next; thesis: $(ratio "$(thv "$e" $2)" "$(thv "$e" sorted)")x ahead of $(pretty $2))" \
+	order "2^$e: \"The most efficient FRS implementation on the CPU is Sorted\" (Sec. 6.4, Single-Threaded CPU Implementations) (at least 1.2x ahead of the next; thesis: $(ratio "$(thv "$e" $2)" "$(thv "$e" sorted)")x ahead of $(pretty $2))" \
 	    Sorted "$(get "$e" sorted)" "$(pretty $2)" "$1" 1.2 "$(get "$e" sorted_spread)" "$(get "$e" "${2}_spread")"
 done
 # (4) Level 1 and Stack faster than Naive, Stack slower than Level 1
 if [ -n "$ES" ]; then
-	order "Level 1 faster than Naive at 2^$ES (thesis: $(ratio "$(thv "$ES" naive)" "$(thv "$ES" level1)")x)" \
+	order "2^$ES: \"The Level 1 and Stack implementations perform slightly better than Naive\" (Sec. 6.4, Single-Threaded CPU Implementations): Level 1 (thesis: $(ratio "$(thv "$ES" naive)" "$(thv "$ES" level1)")x)" \
 	    "Level 1" "$(get "$ES" level1)" Naive "$(get "$ES" naive)" 1 "$(get "$ES" level1_spread)" "$(get "$ES" naive_spread)"
-	order "Stack faster than Naive at 2^$ES (thesis: $(ratio "$(thv "$ES" naive)" "$(thv "$ES" stack)")x)" \
+	order "2^$ES: \"The Level 1 and Stack implementations perform slightly better than Naive\" (Sec. 6.4, Single-Threaded CPU Implementations): Stack (thesis: $(ratio "$(thv "$ES" naive)" "$(thv "$ES" stack)")x)" \
 	    Stack "$(get "$ES" stack)" Naive "$(get "$ES" naive)" 1 "$(get "$ES" stack_spread)" "$(get "$ES" naive_spread)"
-	order "Level 1 faster than Stack at 2^$ES (thesis: $(ratio "$(thv "$ES" stack)" "$(thv "$ES" level1)")x)" \
+	order "2^$ES: \"the overall performance of Stack is worse than the one of Level 1\" (Sec. 6.4, Single-Threaded CPU Implementations) (thesis: $(ratio "$(thv "$ES" stack)" "$(thv "$ES" level1)")x)" \
 	    "Level 1" "$(get "$ES" level1)" Stack "$(get "$ES" stack)" 1 "$(get "$ES" level1_spread)" "$(get "$ES" stack_spread)"
 fi
 # (5) Sorted faster than HSW from 2^10 on, and below 1 % of it at 2^24
 if [ "$EMAX" -ge 10 ]; then
-	check_order "Sorted faster than HSW at every n from 2^10 on" \
+	check_order "\"significantly faster than HSW for n>2^9\" (Sorted; Sec. 6.4, Single-Threaded CPU Implementations): at every n from 2^10 on" \
 	    "$CR" "${CROSS:-99} <= 10"
 fi
 if [ "$EMAX" -ge 24 ]; then
-	check "Sorted takes less than 1 % of HSW's time at 2^24" "$SH" "$SH < 0.01"
+	check "2^24: \"Sorted FRS was able to create over 16 million samples on the CPU in less than one percent of the time it took HSW\" (Sec. 6.4, Single-Threaded CPU Implementations)" "$SH" "$SH < 0.01"
 	rs=$(ratio "$(thv 24 sorted)" "$(get 24 sorted)")
 	rh=$(ratio "$(thv 24 hsw)" "$(get 24 hsw)")
 	observe "$rh > 3 * $rs" "Against Table 6.2 at 2^24, our HSW is ${rh}x faster than the thesis' and our Sorted only ${rs}x, so HSW keeps up with Sorted to larger n here."
@@ -333,11 +333,11 @@ lin() { # ALGO E1 E2: the exponent of t ~ n^x between 2^E1 and 2^E2
 E1=$(for e in $NS; do [ "$e" -ge 8 ] && [ "$e" -ge $((EMAX - 8)) ] && echo "$e"; done | head -n 1)
 if [ -n "$E1" ] && [ "$E1" != "$EMAX" ]; then
 	x=$(lin hsw "$E1" "$EMAX")
-	isnum "$x" && check "HSW's time grows linearly with n (t ~ n^x, x in 0.8..1.2, 2^$E1 to 2^$EMAX)" "x = $x" "$x >= 0.8 && $x <= 1.2"
+	isnum "$x" && check "HSW: \"its computational effort grows linearly with the number of samples\" (Sec. 6.4, Single-Threaded CPU Implementations): t ~ n^x, x in 0.8..1.2, 2^$E1 to 2^$EMAX" "x = $x" "$x >= 0.8 && $x <= 1.2"
 fi
 if [ "$EMAX" -ge 20 ] && has $((EMAX - 4)); then
 	x=$(lin sorted $((EMAX - 4)) "$EMAX")
-	isnum "$x" && check "Sorted's time grows linearly at large n (x in 0.8..1.2, 2^$((EMAX - 4)) to 2^$EMAX)" "x = $x" "$x >= 0.8 && $x <= 1.2"
+	isnum "$x" && check "Sorted: \"a transition from constant to linear growth\" (Sec. 6.4, Single-Threaded CPU Implementations): x in 0.8..1.2, 2^$((EMAX - 4)) to 2^$EMAX" "x = $x" "$x >= 0.8 && $x <= 1.2"
 fi
 # (7) on the first map (const): Naive flat up to 2^14, then stairs (x4
 # at every second doubling) for Naive, Level 1 and Stack, none for Sorted

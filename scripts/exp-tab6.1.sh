@@ -393,6 +393,7 @@ done
 pk=$(sort -g "$(pdf_file environment)" | tail -n 1 | awk '{ printf "%.0f", $1 }')
 fe=$(v frs environment) pe=$(v pfrs environment)
 observe "$fe < 0.64" "FRS's rho on the environment map is $fe (the thesis 0.644); at $ENV_SIZE our map's maximum is $pk times its mean."
+# shellcheck disable=SC2046
 vl=$(frs-sample -q -i $(env_map) -n "$N" --tiles plain -v -o /dev/null 2>&1)
 win=$(echo "$vl" | sed -n 's/.*window \([0-9x]*\) at.*/\1/p' | head -n 1)
 mat=$(echo "$vl" | sed -n 's/.*matrix [^ ]* \([0-9x]*\),.*/\1/p')

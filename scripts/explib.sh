@@ -117,8 +117,9 @@ file_sum() {
 # fn_body CMD...: the text of shell function CMD's first word and of
 # every function of the script and explib.sh that it calls, in turn
 # (each function from "NAME() {" to the first "}" alone on a line, the
-# script's before explib's); the command itself when it is no function
-# (sh -c "...").
+# script's before explib's; a name joined to a "-" is an option or part
+# of a program's name, awk -v or pts-render, not a call); the command
+# itself when it is no function (sh -c "...").
 fn_body() {
 	awk -v start="$1" '
 	FNR == 1 { on = "" }
@@ -135,7 +136,7 @@ fn_body() {
 			t = text[todo[i]]
 			printf "%s", t
 			for (f in text)
-				if (!(f in seen) && t ~ ("(^|[^A-Za-z0-9_])" f "([^A-Za-z0-9_]|$)")) {
+				if (!(f in seen) && t ~ ("(^|[^A-Za-z0-9_-])" f "([^A-Za-z0-9_-]|$)")) {
 					seen[f] = 1; todo[++nt] = f
 				}
 		}

@@ -116,7 +116,7 @@ verdict() { sed -n 's/^\*\*Verdict: \([^.]*\)\.\*\*.*/\1/p' "$R/$1/summary.md"; 
 
 # A planted wrong number: regular's density of 0.1 instead of 0.930
 # fails the check of the regular grid, and the verdict names it.
-plant "$(ls "$R"/cache/tab6.1/regular-uniform-*.tsv)" 0.100
+plant "$(ls "$R"/cache/tab6.1/regular-uniform-n*-m*[0-9].tsv)" 0.100
 sh "$TOP/scripts/exp-tab6.1.sh" >/dev/null 2>&1
 c=$(awk -F '\t' '$2 ~ /0\.100/ && $3 == "fails"' "$R/tab6.1/checks.tsv" |
     awk 'END { print NR }')
