@@ -134,6 +134,21 @@ sh "$TOP/scripts/exp-3d.sh" >/dev/null 2>&1
     ok "planted 3-D FRS rho 0.010: confirmed turns to not confirmed, reversal first" ||
     nok "planted 3-D FRS rho 0.010: verdict $v0 -> $(verdict 3d)"
 
+# Every check prints its condition, the numbers in it, beside it; a
+# planted change to a tolerance shows in the report's text.
+bad=0
+for c in "$R"/*/checks.tsv; do
+	awk -F '\t' 'NR == 1 { exit !($5 == "condition") } $5 == "" { exit 1 }' "$c" || bad=$((bad + 1))
+done
+[ $bad = 0 ] && ok "checks.tsv: every check has its condition" || nok "checks.tsv: $bad files lack conditions"
+mkdir -p "$T/plant/scripts"
+cp "$TOP/scripts/explib.sh" "$T/plant/scripts/"
+sed 's/x >= 0\.67 && x <= 0\.73/x >= 0.61 \&\& x <= 0.73/' "$TOP/scripts/exp-tab6.1.sh" >"$T/plant/scripts/exp-tab6.1.sh"
+ENVMAP=$TOP/data/sunset.exr nolsan sh "$T/plant/scripts/exp-tab6.1.sh" >/dev/null 2>&1
+grep -q '^| "The reference sample distribution.*`.*>= 0\.61 && .* <= 0\.73.*`' "$R/tab6.1/summary.md" &&
+    ok "a planted tolerance (0.61 for 0.67) shows in the report's text" ||
+    nok "a planted tolerance does not show in tab6.1's summary"
+
 # Another environment map: tab6.1 recomputes its Environment column and
 # nothing else (its cells once were named without the map).
 imap gen ramp -s 128x64 -o "$T/env2.exr"
