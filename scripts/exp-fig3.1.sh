@@ -167,21 +167,21 @@ exp_note "The thesis does not say which cells become the 2.5 % dots: the checks 
 exp_note "Blue noise here means a lowpass of at most 0.6 and a peak of at least 1.2 over the plateau (white noise: 1 and 1)."
 l5=$(st last 0.5 lowpass)
 k5=$(st last 0.5 peak)
-check "p = 0.5: distinct blue noise (lowpass <= 0.6, peak >= 1.2)" "$l5 / $k5" "$l5 <= 0.6 && $k5 >= 1.2"
+check 'p = 0.5: "As shown already by Purgathofer et al. for p=0.5, the power spectra of the results show very distinct blue-noise properties" (Sec. 3.2): blue noise, lowpass at most 0.6 and peak at least 1.2' "$l5 / $k5" "$l5 <= 0.6 && $k5 >= 1.2"
 for p in 0.01 0.05; do
 	l=$(st last $p lowpass)
-	check "p = $p: outer annulus lost in noise (lowpass >= 0.8)" "$l" "$l >= 0.8"
+	check "p = $p: \"For p <= 0.05, the outer annulus of high energy is almost completely lost in uncorrelated noise\" (Sec. 3.2): lowpass at least 0.8 (white noise 1)" "$l" "$l >= 0.8"
 done
 for p in 0.1 0.25; do
 	l=$(st last $p lowpass)
-	check "p = $p: more random than p = 0.5 (lowpass >= 1.1 x its $l5)" "$l" "$l >= 1.1 * $l5"
+	check "p = $p: \"the placement of values in M becomes more random as p decreases\" (Sec. 3.2): lowpass at least 1.1 times p = 0.5's" "$l" "$l >= 1.1 * $l5"
 done
 amax=$(awk -v b=$bg 'BEGIN { printf "%.2f", b + 3 }')
 for p in 0.75 1; do
 	l=$(st last $p lowpass)
 	k=$(st last $p peak)
 	a=$(st last $p aniso_db)
-	check "p = $p: blue noise without regular patterns or anisotropy (lowpass <= 0.6, 1.2 <= peak <= 2.5, anisotropy <= background + 3 = $amax dB)" \
+	check "p = $p: \"More surprising are the blue-noise properties of matrices for p>0.5 ... there are no noticeable regular patterns or other anisotropic artifacts\" (Sec. 3.2): lowpass at most 0.6, peak 1.2 to 2.5, anisotropy within 3 dB of the background of $MATS matrices" \
 	    "$l / $k / $a dB" "$l <= 0.6 && $k >= 1.2 && $k <= 2.5 && $a <= $amax"
 done
 l1=$(st last 0.01 lowpass)
@@ -190,10 +190,10 @@ observe "$l1 < 0.8 && $l1 < 1.1 * $l5 && $l1 > $l5 / 1.1" \
 f1=$(st first 0.01 lowpass)
 g1=$(st first 0.01 peak)
 observe "$f1 <= 0.6 && $g1 >= 1.2" \
-    "The first 2.5 % stay blue noise even at p = 0.01 (lowpass $f1, peak $g1): frd-gen takes the minimum over a random p-subset of the free cells, in law the K-th smallest free cell with K geometric of mean 1/p, which among the S^2 free cells of the first values is still a selective choice."
+    "The first 2.5 % stay blue noise even at p = 0.01 (lowpass $f1, peak $g1)."
 f5=$(st first 0.5 lowpass)
 observe "$l5 > 2 * $f5" \
-    "The last 2.5 % are noisier than the first (lowpass $l5 against $f5 at p = 0.5): the subset loses its selectivity as the free cells run out ($DOTS down to 1)."
+    "The last 2.5 % are noisier than the first (lowpass $l5 against $f5 at p = 0.5)."
 observe "$l1 < 0.8" \
     "Why the thesis saw the annulus vanish at p <= 0.05 we cannot tell: it describes its selection as the same random subset."
 exp_end

@@ -158,17 +158,17 @@ for s in $SIZES; do
 	rf=$(st frs $s rms_vs_dart)
 	rj=$(st frs-jitter $s rms_vs_dart)
 	if [ $s -le 256 ]; then
-		check "S_M = $s: FRS strongly regular (anisotropy >= 3 dB above S_M >= 512's largest, $amax dB)" \
+		check "S_M = $s: \"For small matrix sizes, the power spectra of FRS exhibit strong regularities\" (Sec. 4.7): anisotropy at least 3 dB above the largest of S_M >= 512, $amax dB" \
 		    "$af dB" "$af >= $amax + 3"
-		check_order "S_M = $s: jittered FRS less regular than FRS (anisotropy)" \
+		check_order "S_M = $s: \"Jittering adds variation to the differentials and leads to a more random distribution\" (Sec. 4.7): jittered FRS less anisotropic than FRS" \
 		    "$aj / $af dB" "$aj < $af"
-		check "S_M = $s: jittered FRS deviates strongly from dart (RMS >= 1.2 x the largest of S_M >= 512, $rmax)" \
+		check "S_M = $s: \"Still, the results of S_M <= 256 strongly deviate from the reference and seem too random\" (Sec. 4.7): jittered FRS's RMS to dart at least 1.2 times the largest of S_M >= 512, $rmax" \
 		    "$rj" "$rj >= 1.2 * $rmax"
 	else
 		t=$(st frs $s rms_frs_jitter)
-		check "S_M = $s: FRS and jittered FRS close to dart (RMS < 0.1)" \
+		check "S_M = $s: \"From a matrix size of 512 on, the results of FRS ... are also close to the reference\" (Sec. 4.7): FRS's and jittered FRS's RMS to dart below 0.1" \
 		    "$rf / $rj" "$rf < 0.1 && $rj < 0.1"
-		check "S_M = $s: FRS matches jittered FRS (RMS between them < half jittered's RMS to dart)" \
+		check "S_M = $s: \"From a matrix size of 512 on, the results of FRS closely match those of jittered FRS\" (Sec. 4.7): their RMS below half jittered FRS's to dart" \
 		    "$t / $rj" "$t < 0.5 * $rj"
 		sf=$(st frs $s spike)
 		sj=$(st frs-jitter $s spike)

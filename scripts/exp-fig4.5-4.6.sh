@@ -161,16 +161,16 @@ done
 exp_note "S_M = $SM, $SETS sets of n = $N per sigma; the window is 32 sigma elements a side; close to dart means an RMS of the radial mean below 0.1 (a tenth of the Poisson level) from 0 to 6 spacings."
 g=$(st frs 1 rms_vs_grid)
 gr=$(st regular 0 rms_vs_dart)
-check "sigma = 1: FRS equals regular sampling (RMS to the grid < a tenth of the grid's to dart, $gr)" "$g" "$g < 0.1 * $gr"
+check "sigma = 1: \"Unsurprisingly, the power spectra for sigma=1 equal those of regular sampling\" (Sec. 4.7): FRS's RMS to the grid below a tenth of the grid's to dart, $gr" "$g" "$g < 0.1 * $gr"
 g=$(st frs-jitter 1 rms_vs_grid)
 gr=$(st jittered-grid 0 rms_vs_dart)
-check "sigma = 1: jittered FRS equals jittered grid sampling (RMS to it < a tenth of its to dart, $gr)" "$g" "$g < 0.1 * $gr"
+check "sigma = 1: \"... resp. jittered grid sampling\" (Sec. 4.7): jittered FRS's RMS to the jittered grid below a tenth of its to dart, $gr" "$g" "$g < 0.1 * $gr"
 prev=
 for sig in $SIGMAS; do
 	if [ -n "$prev" ]; then
 		a=$(st frs $prev aniso_db)
 		b=$(st frs $sig aniso_db)
-		check_order "FRS less regular at sigma = $sig than at $prev (anisotropy)" "$b / $a dB" "$b < $a"
+		check_order "\"it can be seen how the regularity of the samples decreases as sigma increases\" (Sec. 4.7): FRS less anisotropic at sigma = $sig than at $prev" "$b / $a dB" "$b < $a"
 		# a window of the matrix's size or more: the same elements
 		[ $((32 * sig)) -ge "$SM" ] && observe "$b >= $a" \
 		    "At sigma = $sig the window ($((32 * sig)) elements a side) covers the whole $SM^2 matrix (n_max = S_M^2 / sigma^2 = $((SM * SM / (sig * sig))), n = $N; Table 4.1): every set thresholds the same matrix elements, shifted$([ $((32 * sig)) -gt "$SM" ] && echo ' and tiled'), so the average over the sets keeps the anisotropy of one ($b dB against $a at sigma $prev)."
@@ -180,11 +180,11 @@ done
 for sig in 2 4; do
 	f=$(st frs $sig rms_vs_dart)
 	j=$(st frs-jitter $sig rms_vs_dart)
-	check_order "sigma = $sig: jittered FRS closer to dart than FRS (RMS)" "$j / $f" "$j < $f"
+	check_order "sigma = $sig: \"the power spectrum of jittered FRS looks acceptable for smaller sigma as compared to FRS\" (Sec. 4.7): jittered FRS closer to dart than FRS (RMS)" "$j / $f" "$j < $f"
 done
 f=$(st frs 8 rms_vs_dart)
 j=$(st frs-jitter 8 rms_vs_dart)
-check "sigma = 8: FRS and jittered FRS close to dart (RMS < 0.1)" "$f / $j" "$f < 0.1 && $j < 0.1"
+check "sigma = 8: \"sigma=8 seems like a fair compromise between quality and computational effort\" (Sec. 4.7): FRS and jittered FRS within an RMS of 0.1 of dart" "$f / $j" "$f < 0.1 && $j < 0.1"
 dsp=$(st dart 0 spike)
 lim=$(dart_limit)
 f=$(st frs 8 spike)

@@ -144,16 +144,16 @@ re=$(v ref elongation) fe=$(v frs elongation) he=$(v hsw-dart elongation)
 rd=$(v ref peak1_dist) rp=$(v ref peak1_power)
 fd=$(v frs peak1_dist) fp=$(v frs peak1_power)
 hd=$(v hsw-dart peak1_dist) hp=$(v hsw-dart peak1_power)
-check "HSW's set highly anisotropic even from Poisson-disk input (its DDA's empty disc elongated beyond 1.5 : 1)" \
+check "\"Although the input sample distribution has optimal blue-noise properties, the sample distribution after warping is highly anisotropic\" (Sec. 6.3, Differential Domain Analysis): HSW's empty disc elongated beyond 1.5 : 1" \
     "$he : 1 (long axis at $(v hsw-dart angle_deg) deg)" "$he > 1.5"
-check "FRS close to the reference: a round empty disc (elongation within 0.15 of the reference's)" \
+check "\"FRS, in contrast, is able to achieve a result close to the reference\" (Sec. 6.3, Differential Domain Analysis): its empty disc's elongation within 0.15 of the reference's" \
     "$fe / $re" "$fe - $re < 0.15 && $re - $fe < 0.15"
-check_order "FRS closer to the reference than HSW (elongation of the empty disc)" \
+check_order "\"FRS, in contrast, is able to achieve a result close to the reference\" (Sec. 6.3, Differential Domain Analysis): closer than HSW (elongation of the empty disc)" \
     "FRS $fe, HSW $he / reference $re" "($fe - $re) * ($fe - $re) < ($he - $re) * ($he - $re)"
-check "FRS's ring like the reference's (first peak's distance and height within 20 %)" \
+check "\"a result close to the reference\" (Sec. 6.3, Differential Domain Analysis): FRS's first peak within 20 % of the reference's distance and height" \
     "$fd, $fp / $rd, $rp" \
     "$fd >= 0.8 * $rd && $fd <= 1.2 * $rd && $fp >= 0.8 * $rp && $fp <= 1.2 * $rp"
-check "HSW's ring distorted (its first peak 20 % off the reference's distance, or 0.2 lower)" \
+check "\"distorted anisotropically\" (HSW, Sec. 6.3, Differential Domain Analysis): its first peak 20 % off the reference's distance, or 0.2 lower" \
     "$hd, $hp / $rd, $rp" "$hd < 0.8 * $rd || $hd > 1.2 * $rd || $hp < $rp - 0.2"
 check "no isolated peaks in FRS (its sharpest peak beyond the first ring at most 0.05 higher above its surroundings than the reference's)" \
     "$fsp at $fsd / $rsp at $rsd spacings" "$fsp <= $rsp + 0.05"

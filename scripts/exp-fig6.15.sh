@@ -124,13 +124,13 @@ SS=$(sh_ "Sorted s4" "$E0" 9)
 ST=$(sh_ "Sorted s4" "$E0" 10)
 SJ=$(sh_ "Sorted s4" "$E0" 11)
 SO=$(sh_ "Sorted s4" "$E0" 12)
-check "Sorted, smallest n (2^$E0): the setup is the largest task" \
+check "Sorted, 2^$E0: \"for small n, these calculations are the most expensive tasks of sampling with both methods\" (Sec. 6.4, GPU Implementations, on Fig. 6.15): the setup the largest task" \
     "setup $SS %; thresholding $ST %, jitter $SJ %, output $SO %" \
     "$SS > $ST && $SS > $SJ && $SS > $SO"
 HS=$(sh_ HSW "$E0" 9)
 HW=$(sh_ HSW "$E0" 10)
 HO=$(sh_ HSW "$E0" 12)
-check "HSW, smallest n (2^$E0): the setup (Haar basis) is the largest task" \
+check "HSW, 2^$E0: \"for small n, these calculations are the most expensive tasks of sampling with both methods\" (Sec. 6.4, GPU Implementations, on Fig. 6.15): the setup (Haar basis) the largest task" \
     "setup $HS %; warping $HW %, output $HO %" \
     "$HS > $HW && $HS > $HO"
 JM=$(sh_ "Sorted s4" "$EM" 11)
@@ -141,10 +141,10 @@ JS=$(sh_ "Sorted s4" "$EM" 6)
 # table of 7 digits at a time).
 JWHY=$(awk -v j="$JS" -v t="$TJ" -v n=$((1 << EM)) 'BEGIN {
 	printf "here the jitter costs %.1f ns a sample against %.1f ns for the thresholding proper (Halton offsets made in vectors, base 3 from a table of 7 digits at a time)", j / n * 1e9, t / n * 1e9 }')
-check "Sorted s4: the jitter takes more than a third of the time (largest n, 2^$EM)" \
+check "Sorted s4, 2^$EM: \"subpixel jittering for FRS takes more than a third of the overall computation time\" (Sec. 6.4, GPU Implementations, on Fig. 6.15)" \
     "$JM %" "$JM > 100 / 3" "$JWHY"
 T8=$(sh_ "Sorted s4" "$EM" 13)
-check_order "thresholding with sigma 8 and no jitter faster than sigma 4 with Halton jitter (2^$EM)" \
+check_order "2^$EM: \"it is therefore faster to threshold with a higher sparsity (sigma >= 8) than to apply subpixel jittering\" (Sec. 6.4, GPU Implementations, on Fig. 6.15): sigma 8 without jitter faster than sigma 4 with Halton jitter" \
     "$T8 s / $(awk -v a="$TJ" -v b="$JS" 'BEGIN { printf "%.6f", a + b }') s" \
     "$T8 < $TJ + $JS"
 observe "$SJ < 1" "At 2^$E0 the jitter is $SJ % of Sorted's time."

@@ -274,13 +274,14 @@ rn=$(for d in $DISTS; do [ $d = random ] || echo "$(at star $d 4) $d"; done | so
 check_order "star: uniform random highest D2 of all" \
     "$(g3 "$rs") / next $(label "${rn#* }") $(g3 "${rn% *}")" "$rs > ${rn% *}"
 for ms in D2 Dinf; do
-	below star $ms halton frs "FRS between Poisson disk and Halton"
-	below star $ms frs dart "FRS between Poisson disk and Halton"
+	below star $ms halton frs "\"Both FRS and the slightly better jittered FRS range well between Poisson disk and Halton sampling\", Sec. 6.1"
+	below star $ms frs dart "\"Both FRS and the slightly better jittered FRS range well between Poisson disk and Halton sampling\", Sec. 6.1"
 done
-below star D2 halton jfrs "jittered FRS between Poisson disk and Halton"
-below star D2 jfrs dart "jittered FRS between Poisson disk and Halton"
-below star D2 jfrs frs "jittered FRS slightly better"
-below star Dinf jfrs frs "jittered FRS slightly better"
+QS='"Both FRS and the slightly better jittered FRS range well between Poisson disk and Halton sampling", Sec. 6.1'
+below star D2 halton jfrs "$QS"
+below star D2 jfrs dart "$QS"
+below star D2 jfrs frs "$QS"
+below star Dinf jfrs frs "$QS"
 # Fig. 6.4: like star; Halton the best for axis-aligned shapes, its slope
 # less steep than for star; jittering impairs only non-axis-parallel shapes.
 for ms in D2 Dinf; do
@@ -289,7 +290,7 @@ for ms in D2 Dinf; do
 	below rect $ms frs dart "as for star"
 	below rect $ms jfrs frs "as for star"
 done
-check "rect: Halton's D2 slope less steep than for star" \
+check 'rect: "the slope of the Halton samples'"'"' discrepancy is less steep" than for star (Sec. 6.1, Rectangle Discrepancy)' \
     "$(sl rect halton) / star $(sl star halton)" "$(sl rect halton) > $(sl star halton)"
 # Fig. 6.5: FRS and jittered FRS below Halton in D2 and Dinf, much closer
 # to Halton than to Poisson disk; jittering impairs the discrepancy.
@@ -328,29 +329,29 @@ check "circle: D2 of FRS and jittered FRS significantly below Poisson disk's (by
     "$(g3 "$cf"), $(g3 "$cj") / $(g3 "$cdd")" "$cf < 0.8 * $cdd && $cj < 0.8 * $cdd"
 below circle D2 frs jfrs "jittering impairs"
 # Every class: FRS below random; the slopes against n.
-fr=""
-fc=1
+# (each condition the conjunction over the classes, the numbers in it,
+# so that the report prints what was tested)
+fr="" fx=""
 for c in $CLASSES; do
 	a=$(at $c frs 4) b=$(at $c random 4) e=$(at $c frs 6) f=$(at $c random 6)
 	fr="$fr${fr:+; }$c D2 $(g3 "$a")/$(g3 "$b"), Dinf $(g3 "$e")/$(g3 "$f")"
-	holds "$a < $b && $e < $f" || fc=0
+	fx="$fx${fx:+ && }$a < $b && $e < $f"
 done
-check_order "FRS below uniform random in D2 and Dinf, every class" "$fr" "$fc == 1"
-sr="" sd="" sh="" cr=1 cdr=1 chr=1
+check_order "FRS below uniform random in D2 and Dinf, every class" "$fr" "$fx"
+sr="" sd="" sh="" xr="" xd="" xh=""
 for c in $CLASSES; do
 	r=$(sl $c random) d=$(sl $c dart) h=$(sl $c halton)
 	sr="$sr${sr:+, }$c $r"
 	sd="$sd${sd:+, }$c $d/$r"
 	sh="$sh${sh:+, }$c $h/$r"
-	holds "$r > -0.6 && $r < -0.4" || cr=0
-	holds "$d - $r < 0.1 && $r - $d < 0.1" || cdr=0
-	holds "$h < $r - 0.1" || chr=0
+	xr="$xr${xr:+ && }$r > -0.6 && $r < -0.4"
+	xd="$xd${xd:+ && }$d - ($r) < 0.1 && $r - ($d) < 0.1"
+	xh="$xh${xh:+ && }$h < $r - 0.1"
 done
-check "uniform random's D2 slope about -0.5 (within 0.1), every class" "$sr" "$cr == 1"
-check "Poisson disk's D2 asymptotics very similar to random's (slopes within 0.1), every class" \
-    "Poisson disk/random $sd" "$cdr == 1" \
-    "the thesis' dart sets were not necessarily maximal (its words); ours are n points at 0.7 of the densest packing's distance (ref-sample(1))"
-check "Halton's D2 slope steeper than random's (by 0.1), every class" "Halton/random $sh" "$chr == 1"
+check "uniform random's D2 slope about -0.5 (within 0.1), every class" "$sr" "$xr"
+check '"Although it has a high spatial uniformity, the asymptotic behavior of its discrepancy is very similar to the one of uniform random sampling" (Poisson disk; Sec. 6.1, Summary): D2 slopes within 0.1 of random'"'"'s, every class' \
+    "Poisson disk/random $sd" "$xd"
+check 'Halton a low-discrepancy sequence ("this is what low-discrepancy sequences are designed for", Sec. 6.1, Star Discrepancy): its D2 slope steeper than random'"'"'s by 0.1, every class' "Halton/random $sh" "$xh"
 observe "$NNOISY > 0" "Of the D2 reversals, $NNOISY lie within 2 standard errors of the means of the $M sets: $NOISY."
 
 exp_note "m = $M sets (the thesis: 1000), n up to 2^$KMAX (2^13); FRS's n is the mean size of its sets, the regular grid's the nearest square."

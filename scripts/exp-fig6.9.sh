@@ -132,33 +132,33 @@ j1=$(v frs-jit peak1_freq) jp1=$(v frs-jit peak1_power) ja=$(v frs-jit mean_anis
 d1=$(v dart peak1_freq) dp1=$(v dart peak1_power) dp2=$(v dart peak2_power) dp3=$(v dart peak3_power) da=$(v dart mean_aniso_db)
 rp1=$(v random peak1_power) ra=$(v random mean_aniso_db)
 ga=$(v regular mean_aniso_db) ha=$(v halton mean_aniso_db)
-check "FRS and jittered FRS blue noise: a dark centre (mean power below half the first peak's frequency under 0.5)" \
+check "\"the power spectra of both FRS variants have distinct blue-noise characteristics\" (Sec. 6.3, Fourier Analysis): a dark centre, the mean power below half the first peak's frequency under 0.5" \
     "$fc, $jc (dart $dc)" "$fc >= 0 && $fc < 0.5 && $jc >= 0 && $jc < 0.5"
-check "FRS's first radial-mean peak almost identical to dart throwing's (frequency and power within 15 %)" \
+check "\"While the first peak is almost identical in both plots\" (Sec. 6.3, Fourier Analysis): FRS's first radial-mean peak within 15 % of dart throwing's in frequency and power" \
     "$fp1 at $f1 / $dp1 at $d1" \
     "$f1 >= 0.85 * $d1 && $f1 <= 1.15 * $d1 && $fp1 >= 0.85 * $dp1 && $fp1 <= 1.15 * $dp1"
-check_order "FRS's second peak weaker than dart throwing's" "$fp2 / $dp2" "$fp2 < $dp2"
+check_order "\"the second and third peak ... are significantly weaker in the case of FRS\" (Sec. 6.3, Fourier Analysis): the second below dart throwing's" "$fp2 / $dp2" "$fp2 < $dp2"
 # (no third peak within 3.5 times the first's frequency: -1 in peaks.tsv)
 if holds "$fp3 >= 0 && $dp3 >= 0"; then
-	check_order "FRS's third peak weaker than dart throwing's" "$fp3 / $dp3" "$fp3 < $dp3"
+	check_order "\"the second and third peak ... are significantly weaker in the case of FRS\" (Sec. 6.3, Fourier Analysis): the third below dart throwing's" "$fp3 / $dp3" "$fp3 < $dp3"
 else
-	check "FRS's third peak weaker than dart throwing's" "$fp3 / $dp3 (-1: none)" "0" \
+	check "\"the second and third peak ... are significantly weaker in the case of FRS\" (Sec. 6.3, Fourier Analysis): the third below dart throwing's" "$fp3 / $dp3 (-1: none)" "0" \
 	    "no third peak within 3.5 times the first's frequency (the spectra end at $K)"
 fi
-check "FRS's second and third peaks significantly weaker: their excess over white noise at most 3/4 of dart's" \
+check "\"significantly weaker\" (Sec. 6.3, Fourier Analysis): the excess of FRS's second and third peaks over white noise at most 3/4 of dart's" \
     "$fp2, $fp3 / $dp2, $dp3" "$fp2 - 1 <= 0.75 * ($dp2 - 1) && $fp3 >= 0 && $fp3 - 1 <= 0.75 * ($dp3 - 1)"
-check "FRS's third annulus barely distinguishable from noise (at most 0.02 above uniform random's strongest annulus)" \
+check "\"In its power spectrum, the third annulus is barely distinguishable from uncorrelated noise\" (Sec. 6.3, Fourier Analysis): at most 0.02 above uniform random's strongest annulus" \
     "$fp3 / random $rp1" "$fp3 >= 0 && $fp3 <= $rp1 + 0.02"
-check_order "FRS's anisotropy lower than dart throwing's" "$fa / $da dB" "$fa < $da"
-check_order "jittered FRS's anisotropy lower than dart throwing's" "$ja / $da dB" "$ja < $da"
+check_order "FRS: \"the anisotropy is lower\" (than the reference's, dart throwing; Sec. 6.3, Fourier Analysis)" "$fa / $da dB" "$fa < $da"
+check_order "jittered FRS: \"the anisotropy is lower\" (than the reference's, dart throwing; Sec. 6.3, Fourier Analysis)" "$ja / $da dB" "$ja < $da"
 check "FRS and jittered FRS artifact-free: mean anisotropy at the $BG dB background of $M periodograms (within 1 dB)" \
     "$fa, $ja dB" "$fa - $BG < 1 && $BG - $fa < 1 && $ja - $BG < 1 && $BG - $ja < 1"
-check "no significant difference between FRS and jittered FRS (first peak: frequency and power within 10 %; anisotropy within 1 dB)" \
+check "\"there is no significant difference between the results of FRS and jittered FRS\" (Sec. 6.3, Fourier Analysis): first peak's frequency and power within 10 %, anisotropy within 1 dB" \
     "$fp1 at $f1, $fa dB / $jp1 at $j1, $ja dB" \
     "$j1 >= 0.9 * $f1 && $j1 <= 1.1 * $f1 && $jp1 >= 0.9 * $fp1 && $jp1 <= 1.1 * $fp1 && $ja - $fa < 1 && $fa - $ja < 1"
 check "dart throwing and uniform random at the $BG dB background (within 1 dB)" \
     "$da / $ra dB" "$da - $BG < 1 && $BG - $da < 1 && $ra - $BG < 1 && $BG - $ra < 1"
-check "Halton highly anisotropic (mean anisotropy 6 dB above the background)" "$ha dB" "$ha > $BG + 6"
+check "\"Halton sampling is highly anisotropic\" (Sec. 6.3, Fourier Analysis): mean anisotropy 6 dB above the background" "$ha dB" "$ha > $BG + 6"
 check "regular highly anisotropic (mean anisotropy 6 dB above the background)" "$ga dB" "$ga > $BG + 6"
 observe "$fa >= $da && $fa - $da < 0.5" "FRS's mean anisotropy is above dart throwing's by less than 0.5 dB ($fa against $da dB)."
 observe "$fp2 < $dp2 && $fp2 - 1 > 0.75 * ($dp2 - 1)" "FRS's second peak is weaker than dart throwing's, but only slightly ($fp2 against $dp2)."

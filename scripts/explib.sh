@@ -41,6 +41,22 @@ tiny | quick | full) ;;
 *) echo "explib: MODE must be tiny, quick or full" >&2; exit 2 ;;
 esac
 
+# The environment map of Table 6.1 and Figs. 6.10-6.11, one setup for
+# both: ENVMAP resampled to ENV_SIZE for every tool (env_map: the words
+# after -i).  Square, as the thesis's light probe (an angular map) is: FRS
+# spaces its points evenly in pixels, so on a 2:1 map they would be
+# anisotropic in the unit square that the DDA measures.  env_setup, in an
+# experiment that uses it, states it once for the report (report.sh) and
+# points there from the experiment's setup notes.
+ENV_SIZE=256x256
+env_map() { echo "$ENVMAP -s $ENV_SIZE"; }
+env_setup() {
+	mkdir -p "$RES/.setup"
+	printf '%s\n' "Environment map (Table 6.1, Figs. 6.10-6.11): $(basename "$ENVMAP") resampled to $ENV_SIZE for every tool (-i $(basename "$ENVMAP") -s $ENV_SIZE), square as the thesis's light probe (an angular map) is, so that FRS's evenly spaced pixels are not stretched 2:1 in the unit square the DDA measures; not the thesis's Grace Cathedral probe." \
+	    >"$RES/.setup/env.txt"
+	exp_note "Environment map: the report's environment setup ($(basename "$ENVMAP") at $ENV_SIZE; see the top of the report)."
+}
+
 # pick TINY QUICK FULL: the value for the mode.
 pick() {
 	case $MODE in
@@ -56,7 +72,7 @@ exp_begin() {
 	OUT=$RES/$ID
 	mkdir -p "$OUT" "$CACHE"
 	: >"$OUT/summary.md"
-	printf 'claim\tours\tresult\tcause\n' >"$OUT/checks.tsv"
+	printf 'claim\tours\tresult\tcause\tcondition\n' >"$OUT/checks.tsv"
 	rm -f "$OUT/observed.txt" "$OUT/hw.txt" "$OUT/notes.txt"
 	EXP_T0=$(date +%s.%N)
 	{
@@ -101,8 +117,9 @@ file_sum() {
 # fn_body CMD...: the text of shell function CMD's first word and of
 # every function of the script and explib.sh that it calls, in turn
 # (each function from "NAME() {" to the first "}" alone on a line, the
-# script's before explib's); the command itself when it is no function
-# (sh -c "...").
+# script's before explib's; a name joined to a "-" is an option or part
+# of a program's name, awk -v or pts-render, not a call); the command
+# itself when it is no function (sh -c "...").
 fn_body() {
 	awk -v start="$1" '
 	FNR == 1 { on = "" }
@@ -119,7 +136,7 @@ fn_body() {
 			t = text[todo[i]]
 			printf "%s", t
 			for (f in text)
-				if (!(f in seen) && t ~ ("(^|[^A-Za-z0-9_])" f "([^A-Za-z0-9_]|$)")) {
+				if (!(f in seen) && t ~ ("(^|[^A-Za-z0-9_-])" f "([^A-Za-z0-9_-]|$)")) {
 					seen[f] = 1; todo[++nt] = f
 				}
 		}
@@ -564,7 +581,15 @@ row() {
 # "reproduced" when every check holds, "differs" when one fails, and
 # "not comparable" when the claim is about hardware we lack (exp_hw).
 # A failed check of an order (check_order: A beats B) is a reversal of
-# the thesis, named in the verdict's first sentence.
+# the thesis, named in the verdict's first sentence.  The experiments of
+# OWN_CLAIMS test claims of ours that the thesis does not make: their
+# verdict is "confirmed" or "not confirmed", and the report gives them a
+# section of their own.
+OWN_CLAIMS="3d mc vac"
+own_claim() {
+	case " $OWN_CLAIMS " in *" $1 "*) return 0 ;; esac
+	return 1
+}
 
 # holds EXPR: the awk condition EXPR (numbers already in it) is true.
 holds() {
@@ -583,9 +608,12 @@ check_order() {
 	_check reversed "$@"
 }
 
+# checks.tsv: claim, ours, result, the cause (when it fails) and the
+# condition as tested, its numbers in it: the tolerance the report prints
+# beside the check.
 _check() {
 	if holds "$4"; then _st=holds; else _st=$1; fi
-	printf '%s\t%s\t%s\t%s\n' "$2" "$3" "$_st" "${5:-}" >>"$OUT/checks.tsv"
+	printf '%s\t%s\t%s\t%s\t%s\n' "$2" "$3" "$_st" "${5:-}" "$4" >>"$OUT/checks.tsv"
 }
 
 # observe EXPR "sentence": a sentence of the verdict that holds only
@@ -629,6 +657,13 @@ verdict() {
 	else
 		VERDICT=differs
 	fi
+	if own_claim "$ID"; then
+		case $VERDICT in
+		reproduced) VERDICT=confirmed ;;
+		differs) VERDICT="not confirmed"
+		    [ "$_nc" = 0 ] && WHY="No claim was checked." ;;
+		esac
+	fi
 	if [ "$_nc" -gt 0 ]; then
 		if [ "$_nf" = 0 ]; then
 			WHY="${WHY:+$WHY  }All $_nc checks hold."
@@ -657,9 +692,14 @@ exp_end() {
 		done
 		[ -s "$OUT/rows.md" ] && cat "$OUT/rows.md" && echo
 		if [ "$_nc" -gt 0 ]; then
-			echo "| check (thesis) | ours | result |"
-			echo "| --- | --- | --- |"
-			awk -F '\t' 'NR > 1 { printf "| %s | %s | %s |\n", $1, $2, $3 }' "$OUT/checks.tsv"
+			if own_claim "$ID"; then
+				echo "| check (our claim) | ours | condition | result |"
+			else
+				echo "| check (thesis) | ours | condition | result |"
+			fi
+			echo "| --- | --- | --- | --- |"
+			awk -F '\t' 'NR > 1 { c = $5; gsub(/\|/, "\\|", c)
+			    printf "| %s | %s | `%s` | %s |\n", $1, $2, c, $3 }' "$OUT/checks.tsv"
 			echo
 		fi
 		if [ -s "$OUT/notes.txt" ]; then

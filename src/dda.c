@@ -27,6 +27,7 @@
 
 static const char usage[] =
     "usage: dda [--fourier | --dda | --density | --rdf] [--summary]\n"
+    "           [--density-rule geometric | max]\n"
     "           [-i IMPORTANCE] [-s WxH] [--equirect] [--strict] [--size K]\n"
     "           [--approx] [--eps E]\n"
     "           [--sigma S] [--bin W] [--torus] [--rmax R] [--bins B]\n"
@@ -37,6 +38,10 @@ static const char usage[] =
     "  --dda             differential domain analysis (Wei and Wang 2011)\n"
     "  --density         minimum distance and density rho (Eq. 6.21);\n"
     "                    the only analysis of 3-D sets (uniform, no -i)\n"
+    "  --density-rule R  --density with -i: a pair's distance in the\n"
+    "                    geometric mean of the two points' local spacings\n"
+    "                    (geometric, default) or in the denser point's\n"
+    "                    spacing (max: the larger scale)\n"
     "  --rdf             radial distribution function\n"
     "  --summary         all of them per file, one table (and one PNG page\n"
     "                    with --png): --fourier (or --dda), its radial\n"
@@ -80,6 +85,8 @@ struct opts {
 	uint32_t mw, mh, size;
 	double eps, sigma, bin, rmax, lo_db, hi_db;
 	size_t bins, per;
+	enum dens_rule rule;	/* --density-rule */
+	int have_rule;
 };
 
 static void set_mode(struct opts *o, enum mode m)
@@ -103,7 +110,7 @@ static void parse_db(struct opts *o, const char *s)
 
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
-    "fourier dda density rdf i=importance s=size-map equirect strict size "
+    "fourier dda density density-rule rdf i=importance s=size-map equirect strict size "
     "approx "
     "eps sigma bin torus rmax bins png radial db sets summary";
 
@@ -116,6 +123,14 @@ static void parse(int argc, char **argv, struct opts *o)
 		case OPT_FOURIER: set_mode(o, FOURIER); break;
 		case OPT_DDA: set_mode(o, DDA); break;
 		case OPT_DENSITY: set_mode(o, DENSITY); break;
+		case OPT_DENSITY_RULE: {
+			static const char *const rules[] = { "geometric",
+			    "max", NULL };
+			o->rule = cli_choice("--density-rule", optarg, rules) ?
+			    DENS_MAX : DENS_GEOMETRIC;
+			o->have_rule = 1;
+			break;
+		}
 		case OPT_RDF: set_mode(o, RDF); break;
 		case OPT_SUMMARY: o->summary = 1; break;
 		case 'i': o->imp = optarg; break;
@@ -165,6 +180,8 @@ static void parse(int argc, char **argv, struct opts *o)
 		    "in its table");
 	if ((o->png || o->radial) && (o->mode == DENSITY || o->mode == RDF))
 		cli_usage_error("--png and --radial go with --fourier or --dda");
+	if (o->have_rule && (o->mode != DENSITY || o->summary))
+		cli_usage_error("--density-rule goes with --density");
 	if (o->flags && o->imp == NULL)
 		cli_usage_error("--equirect and --strict go with -i");
 	if (o->imp && o->mode == FOURIER)
@@ -334,7 +351,8 @@ static void min_distance(const struct opts *o, const struct pt_set *s,
 {
 	int rc = s->dims == 3 ?
 	    dens_min_distance3(s->xy, s->n, o->torus, 1, dmin) :
-	    dens_min_distance(s->xy, s->n, f, o->torus, 1, dmin);
+	    dens_min_distance_rule(s->xy, s->n, f, o->rule, o->torus, 1,
+	    dmin);
 
 	if (rc < 0) {
 		frs_fail_context(s->file);

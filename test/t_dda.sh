@@ -316,4 +316,36 @@ dda --density -i "$TD/interior.exr" -s 64x32 -o "$T/o8" "$T/r300.pts" 2>"$T/err"
 for o in --equirect --strict; do
 	expect_fail "$o without -i" 2 "$o" - dda --density $o "$T/r300.pts"
 done
+# --density-rule: a pair's scale is the geometric mean of its points'
+# scales (default) or the larger one (max).  Six points on a ramp of 4 x 1
+# pixels (importance 2, 4, 6, 8; mean 5), against a loop over the pairs.
+printf '%s\n' "0.1 0.5" "0.3 0.52" "0.55 0.1" "0.62 0.3" "0.9 0.9" \
+    "0.8 0.7" >"$T/rule.txt"
+# rule_oracle RULE: rho of the six points under RULE (geometric or max).
+rule_oracle() {
+	awk -v rule="$1" '{ x[NR] = $1; y[NR] = $2
+	    f[NR] = sqrt((2 + 2 * int($1 * 4)) / 5) }
+	END { n = NR; best = -1
+	    for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) {
+		d = sqrt((x[i] - x[j]) ^ 2 + (y[i] - y[j]) ^ 2)
+		s = rule == "max" ? (f[i] > f[j] ? f[i] : f[j]) : sqrt(f[i] * f[j])
+		if (best < 0 || d * s < best) best = d * s }
+	    printf "%.9g\n", best / sqrt(2 / (sqrt(3) * n)) }' "$T/rule.txt"
+}
+for r in geometric max; do
+	dda --density --density-rule $r -i ramp:from=1,to=9 -s 4x1 -o "$T/rule-$r" "$T/rule.txt"
+	got=$(awk -F '\t' '$1 == "mean" { print $4 }' "$T/rule-$r")
+	near "$got" "$(rule_oracle $r)" 1e-7 && ok "--density-rule $r: the pairs' minimum" ||
+	    nok "--density-rule $r: rho $got, a loop over the pairs $(rule_oracle $r)"
+done
+dda --density -i ramp:from=1,to=9 -s 4x1 -o "$T/rule-default" "$T/rule.txt"
+cmp -s "$T/rule-default" "$T/rule-geometric" && ok "--density-rule: geometric the default" ||
+    nok "--density-rule: the default is not geometric"
+near "$(rule_oracle geometric)" "$(rule_oracle max)" 1e-3 &&
+    nok "--density-rule: the test's points do not tell the rules apart" ||
+    ok "--density-rule: the rules differ on the test's points"
+expect_fail "--density-rule bad value" 2 "dda: --density-rule: 'larger' is not geometric or max" - \
+    dda --density --density-rule larger -i ramp "$T/rule.txt"
+expect_fail "--density-rule without --density" 2 "dda: --density-rule goes with --density" - \
+    dda --dda --density-rule max -i ramp "$T/rule.txt"
 done_testing

@@ -33,6 +33,11 @@ for s in "$TOP"/scripts/exp-*.sh; do
 	v=$(sed -n 's/^\*\*Verdict: \([^.]*\)\.\*\*.*/\1/p' "$d/summary.md" 2>/dev/null)
 	case $v in
 	reproduced | differs | "not comparable") ok "$id: verdict $v" ;;
+	confirmed | "not confirmed")
+		# our own claims: their own words, their own section
+		sed -n '/^## Our own claims, checked$/,$p' "$R/REPORT.md" | grep -q "^| $id |" &&
+		    ok "$id: verdict $v, in the section of our own claims" ||
+		    nok "$id: verdict $v, not in the section of our own claims" ;;
 	*) nok "$id: no verdict in $d/summary.md" ;;
 	esac
 	# the verdict follows from the checks: reproduced exactly when
@@ -44,8 +49,8 @@ for s in "$TOP"/scripts/exp-*.sh; do
 	    awk 'END { print NR }')
 	why=
 	[ "${nc:-0}" -ge 1 ] || why="no checks"
-	{ [ "$v" = reproduced ] && [ "$nf" != 0 ]; } && why="reproduced with $nf failing checks"
-	{ [ "$v" = differs ] && [ "$nf" = 0 ]; } && why="differs with every check holding"
+	{ { [ "$v" = reproduced ] || [ "$v" = confirmed ]; } && [ "$nf" != 0 ]; } && why="$v with $nf failing checks"
+	{ { [ "$v" = differs ] || [ "$v" = "not confirmed" ]; } && [ "$nf" = 0 ]; } && why="$v with every check holding"
 	if [ "$rv" -gt 0 ] && ! grep -q '^\*\*Verdict: [^.]*\.\*\* Reversed here: ' "$d/summary.md"; then
 		why="$why; $rv reversals not said first"
 	fi
@@ -111,22 +116,38 @@ verdict() { sed -n 's/^\*\*Verdict: \([^.]*\)\.\*\*.*/\1/p' "$R/$1/summary.md"; 
 
 # A planted wrong number: regular's density of 0.1 instead of 0.930
 # fails the check of the regular grid, and the verdict names it.
-plant "$(ls "$R"/cache/tab6.1/regular-uniform-*.tsv)" 0.100
+plant "$(ls "$R"/cache/tab6.1/regular-uniform-n*-m*[0-9].tsv)" 0.100
 sh "$TOP/scripts/exp-tab6.1.sh" >/dev/null 2>&1
 c=$(awk -F '\t' '$2 ~ /0\.100/ && $3 == "fails"' "$R/tab6.1/checks.tsv" |
     awk 'END { print NR }')
 [ "$c" -ge 1 ] && grep -q '^\*\*Verdict: differs\.\*\* .*0\.100' "$R/tab6.1/summary.md" &&
     ok "planted regular rho 0.100: its check fails, the verdict says so" ||
     nok "planted regular rho 0.100: not caught"
-# 3-D FRS's density planted at 0.1, below random's: 3d's verdict turns
-# from reproduced to differs, with the reversal said first.
+# 3-D FRS's density planted at 0.1, below random's: 3d's verdict (a
+# claim of ours) turns from confirmed to not confirmed, with the reversal
+# said first.
 v0=$(verdict 3d)
 plant "$(ls "$R"/cache/3d/frs-n*-rho.tsv)" 0.010
 sh "$TOP/scripts/exp-3d.sh" >/dev/null 2>&1
-[ "$v0" = reproduced ] && [ "$(verdict 3d)" = differs ] &&
-    grep -q '^\*\*Verdict: differs\.\*\* Reversed here: 3-D FRS denser' "$R/3d/summary.md" &&
-    ok "planted 3-D FRS rho 0.010: reproduced turns to differs, reversal first" ||
+[ "$v0" = confirmed ] && [ "$(verdict 3d)" = "not confirmed" ] &&
+    grep -q '^\*\*Verdict: not confirmed\.\*\* Reversed here: 3-D FRS denser' "$R/3d/summary.md" &&
+    ok "planted 3-D FRS rho 0.010: confirmed turns to not confirmed, reversal first" ||
     nok "planted 3-D FRS rho 0.010: verdict $v0 -> $(verdict 3d)"
+
+# Every check prints its condition, the numbers in it, beside it; a
+# planted change to a tolerance shows in the report's text.
+bad=0
+for c in "$R"/*/checks.tsv; do
+	awk -F '\t' 'NR == 1 { exit !($5 == "condition") } $5 == "" { exit 1 }' "$c" || bad=$((bad + 1))
+done
+[ $bad = 0 ] && ok "checks.tsv: every check has its condition" || nok "checks.tsv: $bad files lack conditions"
+mkdir -p "$T/plant/scripts"
+cp "$TOP/scripts/explib.sh" "$T/plant/scripts/"
+sed 's/x >= 0\.67 && x <= 0\.73/x >= 0.61 \&\& x <= 0.73/' "$TOP/scripts/exp-tab6.1.sh" >"$T/plant/scripts/exp-tab6.1.sh"
+ENVMAP=$TOP/data/sunset.exr nolsan sh "$T/plant/scripts/exp-tab6.1.sh" >/dev/null 2>&1
+grep -q '^| "The reference sample distribution.*`.*>= 0\.61 && .* <= 0\.73.*`' "$R/tab6.1/summary.md" &&
+    ok "a planted tolerance (0.61 for 0.67) shows in the report's text" ||
+    nok "a planted tolerance does not show in tab6.1's summary"
 
 # Another environment map: tab6.1 recomputes its Environment column and
 # nothing else (its cells once were named without the map).

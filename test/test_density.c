@@ -21,9 +21,10 @@ static double now(void)
 	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-/* The pair key as density.h defines it, written out independently. */
-static double key(const double *xy, const double *f, size_t i, size_t j,
-    int torus)
+/* The pair key as density.h defines it, written out independently;
+ * larger != 0: the DENS_MAX rule, the larger scale squared. */
+static double key_rule(const double *xy, const double *f, size_t i,
+    size_t j, int torus, int larger)
 {
 	double dx = xy[2 * i] - xy[2 * j], dy = xy[2 * i + 1] - xy[2 * j + 1];
 	double xx, yy, d2, ff;
@@ -38,21 +39,39 @@ static double key(const double *xy, const double *f, size_t i, size_t j,
 	xx = dx * dx;
 	yy = dy * dy;
 	d2 = xx + yy;
-	ff = f != NULL ? f[i] * f[j] : 1.0;
+	if (f == NULL)
+		ff = 1.0;
+	else if (larger) {
+		double m = f[i] < f[j] ? f[j] : f[i];
+		ff = m * m;
+	} else
+		ff = f[i] * f[j];
 	return d2 * ff;
+}
+
+static double key(const double *xy, const double *f, size_t i, size_t j,
+    int torus)
+{
+	return key_rule(xy, f, i, j, torus, 0);
+}
+
+static double brute_min_rule(const double *xy, size_t n, const double *f,
+    int torus, int larger)
+{
+	double best = INFINITY;
+	for (size_t i = 0; i < n; i++)
+		for (size_t j = i + 1; j < n; j++) {
+			double k = key_rule(xy, f, i, j, torus, larger);
+			if (k < best)
+				best = k;
+		}
+	return sqrt(best);
 }
 
 static double brute_min(const double *xy, size_t n, const double *f,
     int torus)
 {
-	double best = INFINITY;
-	for (size_t i = 0; i < n; i++)
-		for (size_t j = i + 1; j < n; j++) {
-			double k = key(xy, f, i, j, torus);
-			if (k < best)
-				best = k;
-		}
-	return sqrt(best);
+	return brute_min_rule(xy, n, f, torus, 0);
 }
 
 static double dmin_of(const double *xy, size_t n, const double *f, int torus,
@@ -148,6 +167,18 @@ static void brute_one(size_t n, uint64_t seed, int mode, int fm, int torus)
 	assert_true(dmin_of(xy, n, f, torus, 0) == r);
 	if (mode == 2 && n >= 4)
 		assert_true(d == 0);
+	/* the larger-scale rule (dda --density-rule max): its own brute
+	 * force, and never below the geometric mean's */
+	if (f != NULL) {
+		double dm = -1, rm = brute_min_rule(xy, n, f, torus, 1);
+		assert_int_equal(dens_min_distance_rule(xy, n, f, DENS_MAX,
+		    torus, 1, &dm), 0);
+		if (dm != rm)
+			print_error("max rule: n %zu mode %d f %d torus %d: "
+			    "%.17g != %.17g\n", n, mode, fm, torus, dm, rm);
+		assert_true(dm == rm);
+		assert_true(dm >= d);
+	}
 	if (mode == 3 && n >= 4 && torus && f == NULL)
 		assert_true(d == 0x1p-53);
 	free(f);
@@ -523,6 +554,9 @@ static void errors(void **state)
 	(void)state;
 	assert_int_equal(dens_min_distance(xy, 1, NULL, 0, 1, &d), -1);
 	assert_err_has("1 point");
+	assert_int_equal(dens_min_distance_rule(xy, 3, NULL, (enum dens_rule)7,
+	    0, 1, &d), -1);
+	assert_err_has("unknown pair rule 7");
 	assert_int_equal(dens_min_distance(xy, 3, f, 0, 1, &d), -1);
 	assert_err_has("point 1", "scale");
 	xy[4] = 1.0;

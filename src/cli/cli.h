@@ -52,6 +52,7 @@
 	X(DB, "db", required_argument) \
 	X(DDA, "dda", no_argument) \
 	X(DENSITY, "density", no_argument) \
+	X(DENSITY_RULE, "density-rule", required_argument) \
 	X(DEVICE, "device", required_argument) \
 	X(DIMS, "dims", required_argument) \
 	X(DINF_ONLY, "dinf-only", no_argument) \

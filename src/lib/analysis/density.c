@@ -127,6 +127,7 @@ static inline double fold(double d, int torus)
 struct grid {
 	size_t n, g;
 	int torus;
+	enum dens_rule rule;	/* the scale of a pair's key */
 	size_t *start;		/* g * g + 1 offsets into p */
 	struct pt *p;		/* sorted by cell, then input index */
 };
@@ -165,6 +166,7 @@ static int grid_build(struct grid *gr, const double *xy, size_t n,
 	gr->n = n;
 	gr->g = g;
 	gr->torus = torus != 0;
+	gr->rule = DENS_GEOMETRIC;
 	cells = g * g;
 	gr->start = calloc(cells + 1, sizeof *gr->start);
 	gr->p = malloc(n * sizeof *gr->p);
@@ -193,17 +195,22 @@ static int grid_build(struct grid *gr, const double *xy, size_t n,
 	return 0;
 }
 
-/* The pair key k_ij of density.h: each product rounded on its own. */
+/* The pair key k_ij of density.h: each product rounded on its own;
+ * under DENS_MAX the larger scale squared instead of f_i f_j. */
 static inline double pair_key(const struct pt *a, const struct pt *b,
-    int torus)
+    int torus, enum dens_rule rule)
 {
 	double dx = fold(a->x - b->x, torus), dy = fold(a->y - b->y, torus);
-	double xx, yy, d2, ff;
+	double xx, yy, d2, ff, fm;
 
 	xx = dx * dx;
 	yy = dy * dy;
 	d2 = xx + yy;
-	ff = a->f * b->f;
+	if (rule == DENS_MAX) {
+		fm = a->f > b->f ? a->f : b->f;
+		ff = fm * fm;
+	} else
+		ff = a->f * b->f;
 	return d2 * ff;
 }
 
@@ -289,7 +296,7 @@ static void visit_cell(struct visit *v, size_t s, size_t cell)
 		double k;
 		if (t == s || !owns(p, s, t))
 			continue;
-		k = pair_key(&p[s], &p[t], gr->torus);
+		k = pair_key(&p[s], &p[t], gr->torus, gr->rule);
 		if (v->hist == NULL) {
 			if (k < v->best)
 				v->best = k;
@@ -392,20 +399,31 @@ static int min_chunk(void *ctx, uint64_t b, uint64_t e)
 int dens_min_distance(const double *xy, size_t n, const double *f, int torus,
     int par, double *dmin)
 {
+	return dens_min_distance_rule(xy, n, f, DENS_GEOMETRIC, torus, par,
+	    dmin);
+}
+
+int dens_min_distance_rule(const double *xy, size_t n, const double *f,
+    enum dens_rule rule, int torus, int par, double *dmin)
+{
 	struct grid gr;
 	struct min_job j;
 	int rc;
 
 	if (min_args(n, dmin) < 0)
 		return -1;
+	if (rule != DENS_GEOMETRIC && rule != DENS_MAX)
+		return frs_fail("minimum distance: unknown pair rule %d",
+		    (int)rule);
 	if (grid_build(&gr, xy, n, f, torus) < 0)
 		return -1;
+	gr.rule = rule;
 	/* Start from the smallest key of neighbours in cell order: any
 	 * pair's key bounds the minimum from above. */
 	j.gr = &gr;
 	j.start = HUGE_VAL;
 	for (size_t s = 1; s < n; s++) {
-		double k = pair_key(&gr.p[s - 1], &gr.p[s], gr.torus);
+		double k = pair_key(&gr.p[s - 1], &gr.p[s], gr.torus, gr.rule);
 		if (k < j.start)
 			j.start = k;
 	}

@@ -76,6 +76,22 @@ int dens_scales(const double *xy, size_t n, const struct frs_imap *map,
 int dens_min_distance(const double *xy, size_t n, const double *f, int torus,
     int par, double *dmin);
 
+/*
+ * The scale of a pair's key.  DENS_GEOMETRIC: f_i f_j, the key above (the
+ * distance in the geometric mean of the two points' local spacings; what
+ * dens_min_distance uses).  DENS_MAX: max(f_i, f_j)^2, i.e.
+ * k_ij = d2 * (m * m), m = max(f_i, f_j): the distance in the local
+ * spacing of the denser point (the larger scale), never smaller than the
+ * geometric one.  Eq. 6.21 of the thesis leaves the choice open.  The
+ * search bound above holds for both (each key >= d2 min(f_i, f_j)^2).
+ */
+enum dens_rule { DENS_GEOMETRIC, DENS_MAX };
+
+/* dens_min_distance under RULE: exactly the brute-force minimum of the
+ * keys of RULE; -1 with frs_fail for an unknown RULE. */
+int dens_min_distance_rule(const double *xy, size_t n, const double *f,
+    enum dens_rule rule, int torus, int par, double *dmin);
+
 /* rho = dmin / r_u(n) (Eq. 6.21); the mean over m sets is Eq. 6.22. */
 double dens_rho(double dmin, size_t n);
 
