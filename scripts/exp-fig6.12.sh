@@ -155,7 +155,7 @@ check "\"a result close to the reference\" (Sec. 6.3, Differential Domain Analys
     "$fd >= 0.8 * $rd && $fd <= 1.2 * $rd && $fp >= 0.8 * $rp && $fp <= 1.2 * $rp"
 check "\"distorted anisotropically\" (HSW, Sec. 6.3, Differential Domain Analysis): its first peak 20 % off the reference's distance, or 0.2 lower" \
     "$hd, $hp / $rd, $rp" "$hd < 0.8 * $rd || $hd > 1.2 * $rd || $hp < $rp - 0.2"
-check "no isolated peaks in FRS (its sharpest peak beyond the first ring at most 0.05 higher above its surroundings than the reference's)" \
+check "\"no isolated peaks of high energy or any other anisotropic artifacts could be observed\" (Sec. 6.3, Summary): FRS's sharpest peak beyond the first ring at most 0.05 higher above its surroundings than the reference's" \
     "$fsp at $fsd / $rsp at $rsd spacings" "$fsp <= $rsp + 0.05"
 observe "$fsp > $rsp + 0.05 && $RSP > 0 && $fsd > 0.9 * $RSP && $fsd < 1.1 * $RSP" \
     "FRS's sharpest peak beyond its first ring, at $fsd spacings, lies within 10 % of where the matrix's force was cut off, seen from the ridge: $RCELLS cells, $RSP spacings of the ridge's points (cutoff=$(frd_param cutoff), from the header of $(basename "$FRS_MATRIX"); frd-gen(1): a force cut off at R leaves a ring at R)."
