@@ -184,6 +184,20 @@ static inline double *records(const struct drawn *d, int pdf, int steps)
 	return r;
 }
 
+/* Two samplers' draws of n with seed and the densities: the same
+ * count, points and densities. */
+static inline void same_draw(const frs_sampler *s, const frs_sampler *t,
+    uint64_t n, uint64_t seed)
+{
+	struct drawn a = draw(s, &n, 1, seed, 1), b = draw(t, &n, 1, seed, 1);
+
+	assert_int_equal(a.n, b.n);
+	assert_memory_equal(a.xy, b.xy, 2 * a.n * sizeof *a.xy);
+	assert_memory_equal(a.pdf, b.pdf, a.n * sizeof *a.pdf);
+	drawn_free(&a);
+	drawn_free(&b);
+}
+
 /* "1000,3000" for --progressive. */
 static inline const char *step_list(const uint64_t *steps, unsigned nsteps)
 {

@@ -229,6 +229,14 @@ static frs_sampler *blob_sampler(void)
 	return sampler_f64(mask, &blob, NULL);
 }
 
+/* frs_sampler_new with the default options but FIELD = VALUE: FRS_E_ARG
+ * (EXPECT). */
+#define EXPECT_BAD_OPTION(field, value) do { \
+	frs_options_init(&o); \
+	o.field = (value); \
+	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E)); \
+} while (0)
+
 static void test_sampler_errors(void **state)
 {
 	static const double one[16] = { 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
@@ -255,37 +263,18 @@ static void test_sampler_errors(void **state)
 	{
 		static const double sig[] = { -1.0, 0.5, NAN, -INFINITY,
 		    INFINITY, 1025.0 };
-		for (size_t i = 0; i < sizeof sig / sizeof sig[0]; i++) {
-			frs_options_init(&o);
-			o.sigma = sig[i];
-			EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0,
-			    &o, E));
-		}
+		for (size_t i = 0; i < sizeof sig / sizeof sig[0]; i++)
+			EXPECT_BAD_OPTION(sigma, sig[i]);
 	}
-	frs_options_init(&o);
-	o.algorithm = (enum frs_algorithm)5;
-	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
-	o.algorithm = (enum frs_algorithm)-1;
-	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
-	frs_options_init(&o);
-	o.jitter = (enum frs_jitter_mode)3;
-	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
-	frs_options_init(&o);
-	o.rule = (enum frs_rule_mode)3;
-	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
-	frs_options_init(&o);
-	o.threads = -1;
-	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
-	frs_options_init(&o);
-	o.tiling = (enum frs_tiling_mode)3;
-	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
-	frs_options_init(&o);
-	o.level_blur = -1.0;
-	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
-	o.level_blur = 1e4 + 1;
-	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
-	o.level_blur = NAN;
-	EXPECT(FRS_E_ARG, frs_sampler_new(&s, mask, NULL, 8, 8, 0, &o, E));
+	EXPECT_BAD_OPTION(algorithm, (enum frs_algorithm)5);
+	EXPECT_BAD_OPTION(algorithm, (enum frs_algorithm)-1);
+	EXPECT_BAD_OPTION(jitter, (enum frs_jitter_mode)3);
+	EXPECT_BAD_OPTION(rule, (enum frs_rule_mode)3);
+	EXPECT_BAD_OPTION(threads, -1);
+	EXPECT_BAD_OPTION(tiling, (enum frs_tiling_mode)3);
+	EXPECT_BAD_OPTION(level_blur, -1.0);
+	EXPECT_BAD_OPTION(level_blur, 1e4 + 1);
+	EXPECT_BAD_OPTION(level_blur, NAN);
 	/* The defaults, and a good call clears err. */
 	frs_options_init(&o);
 	assert_true(o.sigma == 8.0);
