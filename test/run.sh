@@ -50,7 +50,7 @@ if [ -z "${FRS_TEST_CHILD:-}" ] && [ "$jobs" -gt 1 ]; then
 	fi
 	export FRS_TEST_CHILD=1
 	# The slow ones first, so that they do not end the run alone.
-	for n in t_experiments t_frs-sample test_api t_faults; do
+	for n in t_experiments t_frs-sample test_api3 test_api_exact t_faults; do
 		case " $names " in *" $n "*)
 			names="$n $(echo " $names " | sed "s/ $n / /")" ;;
 		esac
