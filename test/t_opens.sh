@@ -13,6 +13,12 @@ strace -f -e trace=openat -o "$T/probe" true 2>/dev/null ||
 frd-prep -a all -o "$T/m.frp" "$TD/default.frd" 2>/dev/null
 cp "$TD/default3.frd" "$T/m3.frd"
 cp "$TD/default.frd" "$T/m.frd"
+# A small matrix whose runs below take its sorted lists from the .frp
+# (half the values or more pass), which is not opened again for them.
+frd-gen -s 64 -S 1 -o "$T/s.frd" 2>/dev/null
+frd-prep -a all -o "$T/s.frp" "$T/s.frd" 2>/dev/null
+mkdir "$T/t"
+cp "$T/s.frd" "$T/s.frp" "$T/t/"
 
 # opens WHAT FILE WANT ARGS...: frs-sample ARGS opens FILE WANT times.
 opens() {
@@ -36,6 +42,10 @@ opens ".frd with its twin .frp" "$T/m.frd" 1 -m "$T/m.frd" -i blob
 opens "the twin .frp of a .frd" "$T/m.frp" 1 -m "$T/m.frd" -i blob
 opens ".frp" "$T/m.frp" 1 -m "$T/m.frp" -i blob
 opens "3-D .frd" "$T/m3.frd" 1 -m "$T/m3.frd" -i blob3
+opens ".frp, its sorted lists too" "$T/s.frp" 1 -m "$T/s.frp" -i const \
+    --tiles plain --sigma 1 -n 10000
+opens "a twin .frp, its sorted lists too" "$T/t/s.frp" 1 -m "$T/t/s.frd" \
+    -i const --tiles plain --sigma 1 -n 10000
 opens "-a naive" "$TD/default.frd" 1 -m "$TD/default.frd" -i blob -a naive
 FRS_MATRIX=$T/m.frd
 export FRS_MATRIX

@@ -32,6 +32,8 @@ struct frs_mask {
 	int wrapped;		/* m.v is the caller's */
 	char *name;		/* the path it was loaded from, for messages */
 	char *frp;		/* prepared file to take sorted lists from */
+	FILE *frp_fp;		/* it, kept open since the load (a regular
+				 * file), or NULL: opened again */
 	int twin;		/* frp lies beside the .frd loaded */
 	char note[1024];
 	pthread_mutex_t lock;	/* over the lazily made parts below */

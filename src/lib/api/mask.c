@@ -32,6 +32,16 @@ static unsigned log2u(uint32_t v)
 	return l;
 }
 
+/* Forget the prepared file (and close it). */
+static void drop_frp(frs_mask *mk)
+{
+	if (mk->frp_fp != NULL)
+		fclose(mk->frp_fp);
+	mk->frp_fp = NULL;
+	free(mk->frp);
+	mk->frp = NULL;
+}
+
 static void mask_free_parts(frs_mask *mk)
 {
 	for (unsigned l = 1; l < mk->nlev; l++)
@@ -48,7 +58,7 @@ static void mask_free_parts(frs_mask *mk)
 	}
 	if (!mk->wrapped)
 		frd_free(&mk->m);
-	free(mk->frp);
+	drop_frp(mk);
 	free(mk->name);
 }
 
@@ -85,7 +95,8 @@ static void take_minmap(frs_mask *mk, struct frs_prep *p)
 }
 
 /* A .frp from fp (its first npre bytes in pre): the matrix and its
- * minmap now, its sorted lists when asked. */
+ * minmap now, its sorted lists when asked (from fp, kept open, when a
+ * regular file). */
 static int load_frp(frs_mask *mk, FILE *fp, const char *path,
     const unsigned char *pre, size_t npre)
 {
@@ -97,6 +108,8 @@ static int load_frp(frs_mask *mk, FILE *fp, const char *path,
 	frs_prep_free(&p);
 	if ((mk->frp = strdup(path)) == NULL)
 		return frs_fail("%s: out of memory", path);
+	if (io_file_size(fp) >= 0)
+		mk->frp_fp = fp;
 	return 0;
 }
 
@@ -123,7 +136,7 @@ static void load_twin(frs_mask *mk, const char *path)
 	char *sib = sibling_frp(path);
 	struct frs_prep tp;
 	int rc = sib == NULL || strcmp(sib, path) == 0 ? 1 :
-	    frp_read_twin(sib, &mk->m, &tp);
+	    frp_read_twin(sib, &mk->m, &tp, &mk->frp_fp);
 
 	if (rc == 2)
 		snprintf(mk->note, sizeof mk->note, "%s is stale (made from "
@@ -185,7 +198,8 @@ int api_mask_load(frs_mask **mask, const char *path, unsigned *dims,
 		return api_nomem(err);
 	}
 	rc = read_matrix(mk, fp, name, path, &got);
-	io_close_in(fp);
+	if (fp != mk->frp_fp)
+		io_close_in(fp);
 	if (dims != NULL)
 		*dims = got;
 	if (rc == 0 && mk->frp == NULL && mk->m.dims == 2)
@@ -348,7 +362,8 @@ static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
 
 	if (mk->frp != NULL && api_lists_from_frp(&mk->m, below)) {
 		struct frs_matrix tm;
-		if (frp_read_known(mk->frp, &mk->m, &tm, &p, b) == 0) {
+		if (frp_read_known(mk->frp_fp, mk->frp, &mk->m, &tm, &p,
+		    b) == 0) {
 			frd_free(&tm);
 			if (p.block == b) {
 				for (unsigned k = 1; k < p.nlev; k++)
@@ -362,8 +377,7 @@ static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
 		} else {
 			snprintf(mk->note, sizeof mk->note, "%s; ignored",
 			    frs_errmsg());
-			free(mk->frp);
-			mk->frp = NULL;
+			drop_frp(mk);
 		}
 		frs_clearerr();		/* make them instead */
 	}

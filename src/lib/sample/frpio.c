@@ -429,30 +429,35 @@ int frp_read_pre(FILE *fp, const char *name, const unsigned char *pre,
 	return frp_load(fp, name, pre, npre, NULL, m, p, block, NULL);
 }
 
-int frp_read_known(const char *path, const struct frs_matrix *known,
-    struct frs_matrix *m, struct frs_prep *p, uint32_t block)
+int frp_read_known(FILE *fp, const char *path,
+    const struct frs_matrix *known, struct frs_matrix *m, struct frs_prep *p,
+    uint32_t block)
 {
-	const char *name;
-	FILE *fp = io_open_in(path, &name);
+	const char *name = path;
+	FILE *in = fp != NULL ? fp : io_open_in(path, &name);
 	int rc;
 
 	memset(m, 0, sizeof *m);
 	memset(p, 0, sizeof *p);
-	if (fp == NULL)
+	if (in == NULL)
 		return -1;
-	rc = frp_load(fp, name, NULL, 0, known, m, p, block, NULL);
-	io_close_in(fp);
+	clearerr(in);
+	if (fp != NULL && fseeko(fp, 0, SEEK_SET) != 0)
+		return frs_fail_errno("%s: seek", name);
+	rc = frp_load(in, name, NULL, 0, known, m, p, block, NULL);
+	if (fp == NULL)
+		io_close_in(in);
 	return rc;
 }
 
 int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
     uint32_t block)
 {
-	return frp_read_known(path, NULL, m, p, block);
+	return frp_read_known(NULL, path, NULL, m, p, block);
 }
 
 int frp_read_twin(const char *path, const struct frs_matrix *m,
-    struct frs_prep *p)
+    struct frs_prep *p, FILE **keep)
 {
 	const char *name;
 	FILE *fp = io_open_in(path, &name);
@@ -460,12 +465,16 @@ int frp_read_twin(const char *path, const struct frs_matrix *m,
 	struct frs_matrix tm;
 	int rc = 1;
 
+	*keep = NULL;
 	memset(&tm, 0, sizeof tm);
 	memset(p, 0, sizeof *p);
 	if (fp != NULL && read_header(fp, name, NULL, 0, &f) == 0)
 		rc = f.sum != frd_checksum(m) ? 2 :
 		    load_body(fp, name, &f, m, &tm, p, 0, NULL);
-	io_close_in(fp);
+	if (rc == 0 && io_file_size(fp) >= 0)
+		*keep = fp;
+	else
+		io_close_in(fp);
 	if (rc == 1)
 		frs_clearerr();
 	if (rc != 0)
