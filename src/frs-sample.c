@@ -12,7 +12,6 @@
 #include "cli/setsreport.h"
 #include "base/datadir.h"
 #include "base/mem.h"
-#include "formats/frdio.h"
 #include "maps/imap.h"
 #include "maps/vol.h"
 #include "maps/mapload.h"
@@ -238,7 +237,7 @@ static void check_matrix(struct api_sets *o)
 		cli_die("no default %smatrix (%s); give -m MATRIX",
 		    volume ? "3-D " : "", frs_errmsg());
 	o->matrix = o->matrix != NULL ? o->matrix : path;
-	o->dims = frd_peek_dims(o->matrix) == 3 ? 3 : 2;
+	api_sets_matrix(o);
 	if (o->dims == 2 && o->nsize == 3)
 		cli_die("-s %ux%ux%u: a volume size, but %s is a 2-D matrix",
 		    o->size[0], o->size[1], o->size[2], o->matrix);

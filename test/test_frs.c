@@ -12,7 +12,8 @@
  * w_min = 8 sqrt(1024) = 256, n_s = 2, tau = 1024 * 2048^2 / 256^2. */
 static void setup_closed_form(void **state)
 {
-	struct frs_matrix m = { 2, 2048, 2048, 1, (size_t)2048 * 2048, NULL, NULL };
+	struct frs_matrix m = { .dims = 2, .w = 2048, .h = 2048, .d = 1,
+	    .n = (size_t)2048 * 2048 };
 	struct frs_imap map;
 	struct frs_setup s;
 	(void)state;

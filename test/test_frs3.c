@@ -32,7 +32,8 @@ static void vol_of(const char *spec, uint32_t w, uint32_t h, uint32_t d,
  * needs 8^3 * 512 = 2^18 elements, 64^3, so n_s = 4; tau = n S_M / S_W. */
 static void setup_closed_form(void **state)
 {
-	struct frs_matrix m = { 3, 64, 64, 64, (size_t)1 << 18, NULL, NULL };
+	struct frs_matrix m = { .dims = 3, .w = 64, .h = 64, .d = 64,
+	    .n = (size_t)1 << 18 };
 	struct frs_vol v;
 	struct frs3_setup s;
 	(void)state;

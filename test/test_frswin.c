@@ -310,9 +310,9 @@ static void each_input(const uint32_t (*shape)[3], size_t nshape,
 			for (unsigned c = 0; c < NCOUNTS + 8; c++)
 				for (size_t g = 0; g < NSIGMAS + 2; g++) {
 					const uint32_t *ms = msize[(c + g + sh) % nm];
-					struct input in = { &vol, { ms[2] ? 3 : 2,
-					    ms[0], ms[1], ms[2] ? ms[2] : 1, 0, NULL,
-					    NULL }, count_at(c, seed), g < NSIGMAS ?
+					struct input in = { &vol, { .dims = ms[2] ? 3 : 2,
+					    .w = ms[0], .h = ms[1],
+					    .d = ms[2] ? ms[2] : 1 }, count_at(c, seed), g < NSIGMAS ?
 					    sigmas[g] : g == NSIGMAS ? NAN : INFINITY,
 					    seed + c };
 					one(&in) == 0 ? ok++ : failed++;

@@ -163,7 +163,7 @@ static void tiny_prep(void **state)
 {
 	static const uint32_t sz[][3] = { { 2, 2, 2 }, { 2, 2, 1 }, { 4, 2, 2 },
 	    { 2, 8, 2 }, { 8, 2, 1 }, { 4, 4, 4 }, { 1, 1, 1 } };
-	struct frs_matrix m = { 2, 2, 2, 1, 4, NULL, NULL };
+	struct frs_matrix m = { .dims = 2, .w = 2, .h = 2, .d = 1, .n = 4 };
 	uint32_t v[4] = { 1, 3, 0, 2 };
 	struct frs_prep p;
 	(void)state;

@@ -297,8 +297,8 @@ static void huge_values(void **state)
  */
 static void setup_closed_form(const struct frs_imap *map, uint64_t n)
 {
-	struct frs_matrix m = { 2, 2048, 2048, 1, (size_t)2048 * 2048, NULL,
-	    NULL };
+	struct frs_matrix m = { .dims = 2, .w = 2048, .h = 2048, .d = 1,
+	    .n = (size_t)2048 * 2048 };
 	struct frs_imap_stats st;
 	struct frs_setup s;
 	long double x, q, tau, tmax, cap = 2048.0L * 2048 / 64;
@@ -356,8 +356,8 @@ static void huge_setup(void **state)
  * double). */
 static void huge_setup_limit(void **state)
 {
-	struct frs_matrix m = { 2, 2048, 2048, 1, (size_t)2048 * 2048, NULL,
-	    NULL };
+	struct frs_matrix m = { .dims = 2, .w = 2048, .h = 2048, .d = 1,
+	    .n = (size_t)2048 * 2048 };
 	struct frs_imap map;
 	struct frs_setup s;
 	(void)state;

@@ -32,6 +32,8 @@ struct frs_mask {
 	int wrapped;		/* m.v is the caller's */
 	char *name;		/* the path it was loaded from, for messages */
 	char *frp;		/* prepared file to take sorted lists from */
+	FILE *frp_fp;		/* it, kept open since the load (a regular
+				 * file), or NULL: opened again */
 	int twin;		/* frp lies beside the .frd loaded */
 	char note[1024];
 	pthread_mutex_t lock;	/* over the lazily made parts below */
@@ -89,6 +91,10 @@ int api_ok(frs_error *err);
 int api_nomem(frs_error *err);
 /* FRS_E_IO when path cannot be opened for reading, else FRS_OK. */
 int api_readable(const char *path, frs_error *err);
+/* frs_mask_load, and in *dims (when not NULL) the dimension count the
+ * header of a .frd gives, also when the rest fails (0: none). */
+int api_mask_load(frs_mask **mask, const char *path, unsigned *dims,
+    frs_error *err);
 /* The caller's options (NULL: the defaults) into o, checked.  A code. */
 int api_options(struct frs_options *o, const struct frs_options *opt,
     frs_error *err);
@@ -355,6 +361,12 @@ struct api_sets {
 	int pdf, count_only, text, verbose;
 	int level_col;		/* a column of each sample's level */
 	const char *out;	/* NULL or "-": standard output */
+	/* the matrix as api_sets_matrix loaded it */
+	int loaded;		/* 0: api_sets_open loads it */
+	frs_mask *mask;		/* taken by api_sets_open's run */
+	int mask_rc;		/* frs_mask_load's code, its message: */
+	frs_error mask_err;
+	double tload;		/* seconds, counted in the run's setup */
 };
 
 /* What came of them, for the -v report and the warnings. */
@@ -388,14 +400,20 @@ struct api_sets_run {
 };
 
 /*
- * Load the matrix, the map or volume and the device, make the sampler
- * and set 0's setup, with the mask prepared for it (so that -v counts
- * that in the setup); with FRS_RULE_EXACT the exact taus of set 0 only
+ * Take the matrix (api_sets_matrix's; standard input loaded here), load
+ * the map or volume and the device, make the sampler and set 0's setup,
+ * with the mask prepared for it (so that -v counts that in the setup,
+ * with the matrix's loading); with FRS_RULE_EXACT the exact taus of set 0 only
  * with verbose (each set's run finds its own).  Warns of a stale twin
  * .frp and of patterns that repeat.  0; -1 after frs_fail; -2 when the
  * device could not be opened.
  */
 int api_sets_open(const struct api_sets *a, struct api_sets_run *run);
+/* Load a->matrix, opening it once, and set a->dims from its header (2
+ * when it tells none); a failure is told by api_sets_open, where the
+ * run needs the matrix.  Standard input is left to api_sets_open, which
+ * may read a map from it before. */
+void api_sets_matrix(struct api_sets *a);
 /* Draw the sets and write them (--count-only: their counts, a line
  * each).  0; -1 after frs_fail. */
 int api_sets_write(const struct api_sets *a, struct api_sets_run *run);

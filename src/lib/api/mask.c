@@ -14,6 +14,7 @@
 #include "api/api.h"
 #include "base/datadir.h"
 #include "base/err.h"
+#include "base/io.h"
 #include "formats/frdio.h"
 #include "sample/frpio.h"
 
@@ -29,6 +30,16 @@ static unsigned log2u(uint32_t v)
 	while ((1u << l) < v)
 		l++;
 	return l;
+}
+
+/* Forget the prepared file (and close it). */
+static void drop_frp(frs_mask *mk)
+{
+	if (mk->frp_fp != NULL)
+		fclose(mk->frp_fp);
+	mk->frp_fp = NULL;
+	free(mk->frp);
+	mk->frp = NULL;
 }
 
 static void mask_free_parts(frs_mask *mk)
@@ -47,7 +58,7 @@ static void mask_free_parts(frs_mask *mk)
 	}
 	if (!mk->wrapped)
 		frd_free(&mk->m);
-	free(mk->frp);
+	drop_frp(mk);
 	free(mk->name);
 }
 
@@ -83,17 +94,22 @@ static void take_minmap(frs_mask *mk, struct frs_prep *p)
 	p->nlev = 1;
 }
 
-/* A .frp: the matrix and its minmap now, its sorted lists when asked. */
-static int load_frp(frs_mask *mk, const char *path)
+/* A .frp from fp (its first npre bytes in pre): the matrix and its
+ * minmap now, its sorted lists when asked (from fp, kept open, when a
+ * regular file). */
+static int load_frp(frs_mask *mk, FILE *fp, const char *path,
+    const unsigned char *pre, size_t npre)
 {
 	struct frs_prep p;
 
-	if (frp_read(path, &mk->m, &p, 0) < 0)
+	if (frp_read_pre(fp, path, pre, npre, &mk->m, &p, 0) < 0)
 		return -1;
 	take_minmap(mk, &p);
 	frs_prep_free(&p);
 	if ((mk->frp = strdup(path)) == NULL)
 		return frs_fail("%s: out of memory", path);
+	if (io_file_size(fp) >= 0)
+		mk->frp_fp = fp;
 	return 0;
 }
 
@@ -112,67 +128,82 @@ static char *sibling_frp(const char *path)
 	return s;
 }
 
-/* A .frd, and the prepared twin beside it when it was made from it. */
-static int load_frd(frs_mask *mk, const char *path)
+/* The prepared twin beside the 2-D .frd at path, when it was made from
+ * its matrix: opened and read whole once, a stale or damaged one noted
+ * and ignored. */
+static void load_twin(frs_mask *mk, const char *path)
 {
-	char *sib;
-	uint32_t w, h;
-	uint64_t sum;
-	struct frs_matrix tm;
+	char *sib = sibling_frp(path);
 	struct frs_prep tp;
+	int rc = sib == NULL || strcmp(sib, path) == 0 ? 1 :
+	    frp_read_twin(sib, &mk->m, &tp, &mk->frp_fp);
 
-	if (frd_read(path, &mk->m) < 0)
-		return -1;
-	if (mk->m.dims != 2)
-		return 0;	/* prepared files are 2-D */
-	sib = sibling_frp(path);
-	if (sib == NULL || strcmp(sib, path) == 0 || frp_is(sib) != 1 ||
-	    frp_info(sib, &w, &h, &sum) < 0) {
-		free(sib);
-		frs_clearerr();
-		return 0;
-	}
-	if (sum != frd_checksum(&mk->m)) {
+	if (rc == 2)
 		snprintf(mk->note, sizeof mk->note, "%s is stale (made from "
 		    "another matrix than %s); ignored", sib, path);
-		free(sib);
-		return 0;
-	}
-	/* Read it whole once: a damaged twin is noted and ignored. */
-	if (frp_read(sib, &tm, &tp, 0) < 0) {
+	if (rc < 0) {
 		snprintf(mk->note, sizeof mk->note, "%s; ignored", frs_errmsg());
 		frs_clearerr();
+	}
+	if (rc != 0) {
 		free(sib);
-		return 0;
+		return;
 	}
 	take_minmap(mk, &tp);
-	mk->lev[0] = mk->m.v;
 	frs_prep_free(&tp);
-	frd_free(&tm);
 	mk->frp = sib;
 	mk->twin = 1;
+}
+
+/* The matrix at path, opened once: a .frp (a named file that starts
+ * with its magic) or a .frd, whose values one pass checks and finds a
+ * permutation or not (the message of one that is not is the check's,
+ * naming path).  *dims: what a .frd header says, also when the rest
+ * fails. */
+static int read_matrix(frs_mask *mk, FILE *fp, const char *name,
+    const char *path, unsigned *dims)
+{
+	unsigned char h[FRD_HEADER];
+	size_t got = fread(h, 1, sizeof h, fp);
+
+	if (got == sizeof h && memcmp(h, FRD_MAGIC, 8) == 0)
+		*dims = io_get_u32(h + 12);
+	if (fp != stdin && got >= 8 && memcmp(h, FRP_MAGIC, 8) == 0)
+		return load_frp(mk, fp, path, h, got);
+	if (frd_read_pre(fp, name, h, got, &mk->m, 1) < 0 ||
+	    frd_check_permutation(&mk->m, path) < 0)
+		return -1;
 	return 0;
 }
 
-int frs_mask_load(frs_mask **mask, const char *path, frs_error *err)
+int api_mask_load(frs_mask **mask, const char *path, unsigned *dims,
+    frs_error *err)
 {
+	const char *name;
+	unsigned got = 0;
 	frs_mask *mk;
+	FILE *fp;
 	int rc;
 
+	if (dims != NULL)
+		*dims = 0;
 	if (mask == NULL || path == NULL)
 		return api_arg_err(err, "frs_mask_load: NULL argument");
 	*mask = NULL;
-	if (api_readable(path, err) != FRS_OK)
-		return err ? (int)err->code : FRS_E_IO;
-	if ((mk = mask_new()) == NULL)
-		return api_nomem(err);
-	if ((mk->name = strdup(path)) == NULL) {
+	if ((fp = io_open_in(path, &name)) == NULL)
+		return api_lib_err(err, FRS_E_IO);
+	if ((mk = mask_new()) == NULL || (mk->name = strdup(path)) == NULL) {
+		io_close_in(fp);
 		frs_mask_free(mk);
 		return api_nomem(err);
 	}
-	rc = frp_is(path) == 1 ? load_frp(mk, path) : load_frd(mk, path);
-	if (rc == 0 && frd_check_permutation(&mk->m, path) < 0)
-		rc = -1;
+	rc = read_matrix(mk, fp, name, path, &got);
+	if (fp != mk->frp_fp)
+		io_close_in(fp);
+	if (dims != NULL)
+		*dims = got;
+	if (rc == 0 && mk->frp == NULL && mk->m.dims == 2)
+		load_twin(mk, path);	/* prepared files are 2-D */
 	if (rc < 0) {
 		int code = api_lib_err(err, FRS_E_FORMAT);
 		frs_mask_free(mk);
@@ -184,6 +215,11 @@ int frs_mask_load(frs_mask **mask, const char *path, frs_error *err)
 	}
 	*mask = mk;
 	return api_ok(err);
+}
+
+int frs_mask_load(frs_mask **mask, const char *path, frs_error *err)
+{
+	return api_mask_load(mask, path, NULL, err);
 }
 
 int api_default_matrix(unsigned dims, char *path, size_t cap)
@@ -252,12 +288,13 @@ int frs_mask_wrap(frs_mask **mask, const uint32_t *values, uint32_t width,
 	if ((mk = mask_new()) == NULL)
 		return api_nomem(err);
 	mk->wrapped = 1;
-	mk->m = (struct frs_matrix){ 2, width, height, 1,
-	    (size_t)width * height, NULL, (uint32_t *)values };
+	mk->m = (struct frs_matrix){ .dims = 2, .w = width, .h = height,
+	    .d = 1, .n = (size_t)width * height, .v = (uint32_t *)values };
 	if (frd_check_permutation(&mk->m, "frs_mask_wrap") < 0) {
 		frs_mask_free(mk);
 		return api_lib_err(err, FRS_E_ARG);
 	}
+	mk->m.perm = 1;		/* the values stay as they are (frs.h) */
 	mk->nlev = 1;
 	mk->lev[0] = mk->m.v;
 	*mask = mk;
@@ -325,7 +362,8 @@ static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
 
 	if (mk->frp != NULL && api_lists_from_frp(&mk->m, below)) {
 		struct frs_matrix tm;
-		if (frp_read(mk->frp, &tm, &p, b) == 0) {
+		if (frp_read_known(mk->frp_fp, mk->frp, &mk->m, &tm, &p,
+		    b) == 0) {
 			frd_free(&tm);
 			if (p.block == b) {
 				for (unsigned k = 1; k < p.nlev; k++)
@@ -339,8 +377,7 @@ static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
 		} else {
 			snprintf(mk->note, sizeof mk->note, "%s; ignored",
 			    frs_errmsg());
-			free(mk->frp);
-			mk->frp = NULL;
+			drop_frp(mk);
 		}
 		frs_clearerr();		/* make them instead */
 	}

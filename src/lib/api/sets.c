@@ -289,12 +289,30 @@ static void warn3(const struct api_sets_run *r, int levels)
 		    t->mh, t->md);
 }
 
-/* The mask, its note (a stale twin .frp) as a warning. */
+void api_sets_matrix(struct api_sets *a)
+{
+	double t0 = progress_now();
+	unsigned dims = 0;
+
+	a->loaded = strcmp(a->matrix, "-") != 0;
+	if (a->loaded)
+		a->mask_rc = api_mask_load(&a->mask, a->matrix, &dims,
+		    &a->mask_err);
+	a->dims = dims == 3 ? 3 : 2;
+	a->tload = progress_now() - t0;
+}
+
+/* The mask (as api_sets_matrix loaded it), its note (a stale twin .frp)
+ * as a warning. */
 static int load_mask(const struct api_sets *a, struct api_sets_run *run)
 {
-	frs_error err;
+	frs_error err = a->mask_err;
+	int rc = a->loaded ? a->mask_rc : frs_mask_load(&run->mask, a->matrix,
+	    &err);
 
-	if (frs_mask_load(&run->mask, a->matrix, &err) != FRS_OK)
+	if (a->loaded)
+		run->mask = a->mask;
+	if (rc != FRS_OK)
 		return frs_fail("%s", err.message);
 	if ((run->note = frs_mask_note(run->mask)) != NULL)
 		frs_warn("%s", run->note);
@@ -359,7 +377,7 @@ static int open2(const struct api_sets *a, struct api_sets_run *run)
 		    &view) < 0)
 			return -1;
 	warn2(run, run->opt.tiling == FRS_TILING_LEVELS);
-	run->tsetup = progress_now() - t0;
+	run->tsetup = progress_now() - t0 + a->tload;
 	plain = run->s0;
 	plain.exact.n = 0;
 	run->tau0 = frs_tau(&plain, plain.n);
@@ -396,7 +414,7 @@ static int open3(const struct api_sets *a, struct api_sets_run *run)
 	plain = run->s3;
 	plain.exact.n = 0;
 	run->tau0 = frs3_tau(&plain, plain.n);
-	run->tsetup = progress_now() - t0;
+	run->tsetup = progress_now() - t0 + a->tload;
 	return 0;
 }
 

@@ -95,23 +95,57 @@ static int read_params(FILE *fp, const char *name, uint32_t plen,
 	return 0;
 }
 
-static int check_values(const struct frs_matrix *m, const char *name)
+/* One pass over the values: the index of the first not below the
+ * element count (*over) and, given seen (a zeroed bit per value), of
+ * the first that repeats an earlier one (*rep); m->n where none is. */
+static void scan_values(const struct frs_matrix *m, uint64_t *seen,
+    size_t *over, size_t *rep)
 {
-	for (size_t i = 0; i < m->n; i++)
-		if (m->v[i] >= m->n)
-			return frs_fail("%s: value %u at element %zu is not "
-			    "below the element count %zu", name, m->v[i], i,
-			    m->n);
+	*over = *rep = m->n;
+	for (size_t i = 0; i < m->n; i++) {
+		uint32_t v = m->v[i];
+		if (v >= m->n) {
+			*over = *over < i ? *over : i;
+			continue;
+		}
+		if (seen == NULL)
+			continue;
+		if (seen[v / 64] >> (v % 64) & 1)
+			*rep = *rep < i ? *rep : i;
+		seen[v / 64] |= (uint64_t)1 << (v % 64);
+	}
+}
+
+/* A zeroed bit per value of m, NULL (no message) when out of memory. */
+static uint64_t *value_bits(const struct frs_matrix *m)
+{
+	size_t words = (m->n + 63) / 64;
+
+	return calloc(words ? words : 1, sizeof(uint64_t));
+}
+
+/* Every value below n; with perm, m->perm found in the same pass. */
+static int check_values(struct frs_matrix *m, const char *name, int perm)
+{
+	uint64_t *seen = perm ? value_bits(m) : NULL;
+	size_t over, rep;
+
+	scan_values(m, seen, &over, &rep);
+	m->perm = seen != NULL && over == m->n && rep == m->n;
+	free(seen);
+	if (over < m->n)
+		return frs_fail("%s: value %u at element %zu is not below the "
+		    "element count %zu", name, m->v[over], over, m->n);
 	return 0;
 }
 
 int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m)
 {
-	return frd_read_pre(fp, name, NULL, 0, m);
+	return frd_read_pre(fp, name, NULL, 0, m, 0);
 }
 
 int frd_read_pre(FILE *fp, const char *name, const unsigned char *pre,
-    size_t npre, struct frs_matrix *m)
+    size_t npre, struct frs_matrix *m, int perm)
 {
 	unsigned char h[FRD_HEADER];
 	unsigned dims = 0;
@@ -147,7 +181,7 @@ int frd_read_pre(FILE *fp, const char *name, const unsigned char *pre,
 		frs_fail("%s: trailing data after the values", name);
 		goto fail;
 	}
-	if (check_values(m, name) < 0)
+	if (check_values(m, name, perm) < 0)
 		goto fail;
 	return 0;
 fail:
@@ -163,21 +197,6 @@ static int read_matrix(FILE *fp, const char *name, void *m)
 int frd_read(const char *path, struct frs_matrix *m)
 {
 	return io_read_path(path, read_matrix, m);
-}
-
-int frd_peek_dims(const char *path)
-{
-	unsigned char h[FRD_HEADER];
-	FILE *fp;
-	size_t got;
-
-	if (strcmp(path, "-") == 0 || (fp = fopen(path, "rb")) == NULL)
-		return 0;
-	got = fread(h, 1, sizeof h, fp);
-	fclose(fp);
-	if (got != sizeof h || memcmp(h, FRD_MAGIC, 8) != 0)
-		return 0;
-	return (int)io_get_u32(h + 12);
 }
 
 int frd_write(FILE *fp, const char *name, const struct frs_matrix *m)
@@ -213,27 +232,22 @@ int frd_write(FILE *fp, const char *name, const struct frs_matrix *m)
 
 int frd_check_permutation(const struct frs_matrix *m, const char *name)
 {
-	size_t words = (m->n + 63) / 64;
-	uint64_t *seen = calloc(words ? words : 1, sizeof *seen);
+	uint64_t *seen;
+	size_t over, rep;
 
-	if (seen == NULL)
+	if (m->perm)
+		return 0;
+	if ((seen = value_bits(m)) == NULL)
 		return frs_fail("%s: out of memory", name);
-	for (size_t i = 0; i < m->n; i++) {
-		uint32_t v = m->v[i];
-		if (v >= m->n) {
-			free(seen);
-			return frs_fail("%s: value %u at element %zu is out of "
-			    "range", name, v, i);
-		}
-		if (seen[v / 64] >> (v % 64) & 1) {
-			free(seen);
-			return frs_fail("%s: not a permutation: value %u repeats "
-			    "at (%zu, %zu, %zu)", name, v, i % m->w,
-			    i / m->w % m->h, i / ((size_t)m->w * m->h));
-		}
-		seen[v / 64] |= (uint64_t)1 << (v % 64);
-	}
+	scan_values(m, seen, &over, &rep);
 	free(seen);
+	if (over < rep)
+		return frs_fail("%s: value %u at element %zu is out of range", name,
+		    m->v[over], over);
+	if (rep < m->n)
+		return frs_fail("%s: not a permutation: value %u repeats at (%zu, "
+		    "%zu, %zu)", name, m->v[rep], rep % m->w, rep / m->w % m->h,
+		    rep / ((size_t)m->w * m->h));
 	return 0;
 }
 

@@ -33,6 +33,8 @@ struct frs_matrix {
 	size_t n;		/* w * h * d */
 	char *params;		/* NUL-terminated, never NULL after read */
 	uint32_t *v;		/* n values */
+	int perm;		/* 1: found to be a permutation of 0..n-1,
+				 * which the values stay */
 };
 
 /* Allocate a matrix of the given sizes with zeroed values. */
@@ -45,16 +47,16 @@ void frd_free(struct frs_matrix *m);
 int frd_read(const char *path, struct frs_matrix *m);
 int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m);
 /* The same for a stream of which the first npre bytes (pre) were read
- * already. */
+ * already; with perm, the pass that checks the values also finds
+ * whether they are a permutation (m->perm: 1 if so, 0 if not or when
+ * it could not tell; frd_check_permutation says why). */
 int frd_read_pre(FILE *fp, const char *name, const unsigned char *pre,
-    size_t npre, struct frs_matrix *m);
-/* The dimension count in a .frd file's header; 0 when it cannot tell
- * (standard input, unreadable, not a .frd): the reader will say why. */
-int frd_peek_dims(const char *path);
+    size_t npre, struct frs_matrix *m, int perm);
 int frd_write(FILE *fp, const char *name, const struct frs_matrix *m);
 
-/* Check that the values are a permutation of 0..n-1; the message names
- * the first repeated value and where it is. */
+/* Check that the values are a permutation of 0..n-1 (at once when
+ * m->perm says so); the message names the first repeated value and
+ * where it is. */
 int frd_check_permutation(const struct frs_matrix *m, const char *name);
 
 /* 64-bit FNV-1a of the sizes and values, to tie prepared data to its

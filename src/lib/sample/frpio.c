@@ -81,10 +81,15 @@ static int read_u32s(FILE *fp, const char *name, uint32_t **out, size_t n,
 	return 0;
 }
 
+/* A .frp's header fields. */
+struct frp_head {
+	uint32_t w, h, flags, nblocks;
+	uint64_t sum;
+};
+
 /* The header, of which the first npre bytes were read already (pre). */
 static int read_header(FILE *fp, const char *name, const unsigned char *pre,
-    size_t npre, uint32_t *w, uint32_t *h, uint32_t *flags, uint64_t *sum,
-    uint32_t *nblocks)
+    size_t npre, struct frp_head *f)
 {
 	unsigned char hd[FRP_HEADER];
 
@@ -95,13 +100,13 @@ static int read_header(FILE *fp, const char *name, const unsigned char *pre,
 	if (io_get_u32(hd + 8) != FRP_VERSION)
 		return frs_fail("%s: unsupported format version %u (this program "
 		    "reads version %d)", name, io_get_u32(hd + 8), FRP_VERSION);
-	*w = io_get_u32(hd + 12);
-	*h = io_get_u32(hd + 16);
-	*flags = io_get_u32(hd + 20);
-	*sum = io_get_u64(hd + 24);
-	*nblocks = io_get_u32(hd + 32);
-	if (*w == 0 || *h == 0 || (uint64_t)*w * *h > UINT32_MAX ||
-	    *nblocks > 32 || (*flags & ~3u))
+	f->w = io_get_u32(hd + 12);
+	f->h = io_get_u32(hd + 16);
+	f->flags = io_get_u32(hd + 20);
+	f->sum = io_get_u64(hd + 24);
+	f->nblocks = io_get_u32(hd + 32);
+	if (f->w == 0 || f->h == 0 || (uint64_t)f->w * f->h > UINT32_MAX ||
+	    f->nblocks > 32 || (f->flags & ~3u))
 		return frs_fail("%s: impossible header", name);
 	return 0;
 }
@@ -110,14 +115,19 @@ int frp_info(const char *path, uint32_t *w, uint32_t *h, uint64_t *sum)
 {
 	const char *name;
 	FILE *fp = io_open_in(path, &name);
-	uint32_t flags = 0, nb = 0;
+	struct frp_head f;
 	int rc;
 
 	if (fp == NULL)
 		return -1;
-	rc = read_header(fp, name, NULL, 0, w, h, &flags, sum, &nb);
+	rc = read_header(fp, name, NULL, 0, &f);
 	io_close_in(fp);
-	return rc;
+	if (rc < 0)
+		return -1;
+	*w = f.w;
+	*h = f.h;
+	*sum = f.sum;
+	return 0;
 }
 
 int frp_is(const char *path)
@@ -344,36 +354,39 @@ static int check_length(long long fsize, const char *name, uint32_t w,
 	}
 }
 
-static int frp_load(FILE *fp, const char *name, const unsigned char *pre,
-    size_t npre, struct frs_matrix *m, struct frs_prep *p, uint32_t block,
-    struct frp_summary *all)
+/*
+ * The rest of a .frp after its header f.  known: a matrix the file was
+ * read for before (the .frd it is the twin of, the mask it came from):
+ * when the values read are known's, and known is a permutation, they
+ * are not checked again.
+ */
+static int load_body(FILE *fp, const char *name, const struct frp_head *f,
+    const struct frs_matrix *known, struct frs_matrix *m, struct frs_prep *p,
+    uint32_t block, struct frp_summary *all)
 {
-	uint32_t w = 0, h = 0, flags = 0, nb = 0, nsets;
-	uint64_t sum = 0;
+	uint32_t nsets = f->flags & 2 ? f->nblocks : 0;
 	long long fsize = io_file_size(fp);
 	int regular = fsize >= 0;
 
-	memset(m, 0, sizeof *m);
-	memset(p, 0, sizeof *p);
-	if (read_header(fp, name, pre, npre, &w, &h, &flags, &sum, &nb) < 0)
-		return -1;
-	nsets = flags & 2 ? nb : 0;
-	if ((regular && check_length(fsize, name, w, h, flags & 1, nsets) < 0) ||
-	    frd_alloc(m, 2, w, h, 1, "prepared") < 0 ||
+	if ((regular && check_length(fsize, name, f->w, f->h, f->flags & 1,
+	    nsets) < 0) || frd_alloc(m, 2, f->w, f->h, 1, "prepared") < 0 ||
 	    io_read_exact(fp, name, m->v, m->n * 4, "matrix") < 0)
 		goto fail;
 	io_le_u32(m->v, m->n);
-	if (frd_checksum(m) != sum) {
+	if (frd_checksum(m) != f->sum) {
 		frs_fail("%s: the matrix does not match its recorded checksum "
 		    "(damaged file)", name);
 		goto fail;
 	}
+	m->perm = known != NULL && known->perm && known->n == m->n &&
+	    memcmp(known->v, m->v, m->n * sizeof *m->v) == 0;
 	if (frd_check_permutation(m, name) < 0)
 		goto fail;
+	m->perm = 1;
 	p->m = m;
 	p->lev[0] = m->v;
 	p->nlev = 1;
-	if ((flags & 1) && (read_levels(fp, name, m, p) < 0 ||
+	if ((f->flags & 1) && (read_levels(fp, name, m, p) < 0 ||
 	    check_levels(name, m, p) < 0))
 		goto fail;
 	if (nsets > 0 && read_sorted(fp, name, m, p, nsets, block, regular,
@@ -385,10 +398,10 @@ static int frp_load(FILE *fp, const char *name, const unsigned char *pre,
 		goto fail;
 	}
 	if (all != NULL) {
-		all->w = w;
-		all->h = h;
-		all->sum = sum;
-		all->minmap = flags & 1;
+		all->w = f->w;
+		all->h = f->h;
+		all->sum = f->sum;
+		all->minmap = f->flags & 1;
 	}
 	return 0;
 fail:
@@ -397,20 +410,79 @@ fail:
 	return -1;
 }
 
-int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
+static int frp_load(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, const struct frs_matrix *known, struct frs_matrix *m,
+    struct frs_prep *p, uint32_t block, struct frp_summary *all)
+{
+	struct frp_head f;
+
+	memset(m, 0, sizeof *m);
+	memset(p, 0, sizeof *p);
+	if (read_header(fp, name, pre, npre, &f) < 0)
+		return -1;
+	return load_body(fp, name, &f, known, m, p, block, all);
+}
+
+int frp_read_pre(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frs_matrix *m, struct frs_prep *p, uint32_t block)
+{
+	return frp_load(fp, name, pre, npre, NULL, m, p, block, NULL);
+}
+
+int frp_read_known(FILE *fp, const char *path,
+    const struct frs_matrix *known, struct frs_matrix *m, struct frs_prep *p,
     uint32_t block)
 {
-	const char *name;
-	FILE *fp = io_open_in(path, &name);
+	const char *name = path;
+	FILE *in = fp != NULL ? fp : io_open_in(path, &name);
 	int rc;
 
 	memset(m, 0, sizeof *m);
 	memset(p, 0, sizeof *p);
-	if (fp == NULL)
+	if (in == NULL)
 		return -1;
-	rc = frp_load(fp, name, NULL, 0, m, p, block, NULL);
-	io_close_in(fp);
+	clearerr(in);
+	if (fp != NULL && fseeko(fp, 0, SEEK_SET) != 0)
+		return frs_fail_errno("%s: seek", name);
+	rc = frp_load(in, name, NULL, 0, known, m, p, block, NULL);
+	if (fp == NULL)
+		io_close_in(in);
 	return rc;
+}
+
+int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
+    uint32_t block)
+{
+	return frp_read_known(NULL, path, NULL, m, p, block);
+}
+
+int frp_read_twin(const char *path, const struct frs_matrix *m,
+    struct frs_prep *p, FILE **keep)
+{
+	const char *name;
+	FILE *fp = io_open_in(path, &name);
+	struct frp_head f;
+	struct frs_matrix tm;
+	int rc = 1;
+
+	*keep = NULL;
+	memset(&tm, 0, sizeof tm);
+	memset(p, 0, sizeof *p);
+	if (fp != NULL && read_header(fp, name, NULL, 0, &f) == 0)
+		rc = f.sum != frd_checksum(m) ? 2 :
+		    load_body(fp, name, &f, m, &tm, p, 0, NULL);
+	if (rc == 0 && io_file_size(fp) >= 0)
+		*keep = fp;
+	else
+		io_close_in(fp);
+	if (rc == 1)
+		frs_clearerr();
+	if (rc != 0)
+		return rc;
+	frd_free(&tm);
+	p->m = m;
+	p->lev[0] = m->v;
+	return 0;
 }
 
 int frp_check_fp(FILE *fp, const char *name, const unsigned char *pre,
@@ -420,7 +492,7 @@ int frp_check_fp(FILE *fp, const char *name, const unsigned char *pre,
 	struct frs_prep p;
 
 	memset(s, 0, sizeof *s);
-	if (frp_load(fp, name, pre, npre, &m, &p, 0, s) < 0)
+	if (frp_load(fp, name, pre, npre, NULL, &m, &p, 0, s) < 0)
 		return -1;
 	frs_prep_free(&p);
 	frd_free(&m);

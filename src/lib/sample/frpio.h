@@ -39,6 +39,24 @@ int frp_write(FILE *fp, const char *name, const char *src,
  * its end). */
 int frp_read(const char *path, struct frs_matrix *m, struct frs_prep *p,
     uint32_t block);
+/* The same from fp, of which the first npre bytes (pre) were read
+ * already. */
+int frp_read_pre(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frs_matrix *m, struct frs_prep *p, uint32_t block);
+/* frp_read of a file read before for the matrix known, from fp (kept
+ * open since, read again from its start) or, when fp is NULL, from path
+ * opened again: when its values are known's and known->perm, they are
+ * not checked again. */
+int frp_read_known(FILE *fp, const char *path,
+    const struct frs_matrix *known, struct frs_matrix *m, struct frs_prep *p,
+    uint32_t block);
+/* The twin .frp at path of the 2-D matrix m (a .frd's), opened once: 0
+ * with its minmap in p (p->m = m; no sorted lists) and in *keep the
+ * file, left open for its lists when it is a regular file (else NULL);
+ * 1 when it is none (not there, not a .frp: nothing to say); 2 when it
+ * is stale (made from another matrix); -1 when damaged (the message). */
+int frp_read_twin(const char *path, const struct frs_matrix *m,
+    struct frs_prep *p, FILE **keep);
 /* What frp_check_fp found in a valid .frp. */
 struct frp_summary {
 	uint32_t w, h;
