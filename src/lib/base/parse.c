@@ -84,7 +84,7 @@ int parse_double(const char *what, const char *s, double min, double max,
 int parse_double_above(const char *what, const char *s, double min,
     double max, double *out)
 {
-	double v;
+	double v = 0.0;	/* set on success; gcc -O3 cannot tell */
 
 	if (parse_double(what, s, -DBL_MAX, DBL_MAX, &v) < 0)
 		return -1;
