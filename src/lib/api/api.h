@@ -168,10 +168,14 @@ struct api_values {
 	const double *d;
 	uint32_t w, h, depth;
 	size_t stride;
+	/* Or a map the library loaded and validated itself (imap_load):
+	 * taken over as it is, neither copied nor checked again; zeroed
+	 * when the sampler has it. */
+	struct frs_imap *own;
 };
 /* frs_sampler_new (dims 2, into *s2) and frs_sampler3_new (3, *s3): the
- * checks, the values copied and validated.  A code; the sampler NULL on
- * failure. */
+ * checks, the values copied and validated (or own taken).  A code; the
+ * sampler NULL on failure. */
 int api_sampler_make(unsigned dims, const frs_mask *mask,
     const struct api_values *v, const struct frs_options *opt,
     frs_sampler **s2, frs_sampler3 **s3, frs_error *err);

@@ -20,7 +20,8 @@ int frs_sampler_new(frs_sampler **sampler, const frs_mask *mask,
     const float *map, uint32_t width, uint32_t height, size_t stride,
     const struct frs_options *opt, frs_error *err)
 {
-	struct api_values v = { map, NULL, width, height, 0, stride };
+	struct api_values v = { .f = map, .w = width, .h = height,
+	    .stride = stride };
 
 	return api_sampler_make(2, mask, &v, opt, sampler, NULL, err);
 }
@@ -29,7 +30,8 @@ int frs_sampler_new_f64(frs_sampler **sampler, const frs_mask *mask,
     const double *map, uint32_t width, uint32_t height, size_t stride,
     const struct frs_options *opt, frs_error *err)
 {
-	struct api_values v = { NULL, map, width, height, 0, stride };
+	struct api_values v = { .d = map, .w = width, .h = height,
+	    .stride = stride };
 
 	return api_sampler_make(2, mask, &v, opt, sampler, NULL, err);
 }

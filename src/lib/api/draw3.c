@@ -17,7 +17,8 @@ int frs_sampler3_new(frs_sampler3 **sampler, const frs_mask *mask,
     const float *volume, uint32_t width, uint32_t height, uint32_t depth,
     const struct frs_options *opt, frs_error *err)
 {
-	struct api_values v = { volume, NULL, width, height, depth, 0 };
+	struct api_values v = { .f = volume, .w = width, .h = height,
+	    .depth = depth };
 
 	return api_sampler_make(3, mask, &v, opt, NULL, sampler, err);
 }
@@ -26,7 +27,8 @@ int frs_sampler3_new_f64(frs_sampler3 **sampler, const frs_mask *mask,
     const double *volume, uint32_t width, uint32_t height, uint32_t depth,
     const struct frs_options *opt, frs_error *err)
 {
-	struct api_values v = { NULL, volume, width, height, depth, 0 };
+	struct api_values v = { .d = volume, .w = width, .h = height,
+	    .depth = depth };
 
 	return api_sampler_make(3, mask, &v, opt, NULL, sampler, err);
 }

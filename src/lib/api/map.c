@@ -7,6 +7,7 @@
 #include "frs.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "api/api.h"
 #include "base/err.h"
@@ -172,7 +173,10 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
 		*s3 = NULL;
 	rc = sampler_check(dims == 2 ? s2 != NULL : s3 != NULL, mask, dims, opt,
 	    &o, err);
-	if (rc == FRS_OK)
+	if (rc == FRS_OK && dims == 2 && v->own != NULL) {
+		map = *v->own;
+		memset(v->own, 0, sizeof *v->own);
+	} else if (rc == FRS_OK)
 		rc = dims == 2 ? api_copy_map(&map, v->f, v->d, v->w, v->h,
 		    v->stride, IMAP_STRICT, err) : copy_vol(&vol, v->f, v->d,
 		    v->w, v->h, v->depth, err);

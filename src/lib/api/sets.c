@@ -353,8 +353,11 @@ static int open2(const struct api_sets *a, struct api_sets_run *run)
 	}
 	t0 = progress_now();
 	rc = load_mask(a, run);
-	if (rc == 0 && frs_sampler_new_f64(&run->smp, run->mask, map.v, map.w,
-	    map.h, 0, &run->opt, &err) != FRS_OK)
+	/* The map as imap_load checked it, handed over: no copy, no second
+	 * check. */
+	if (rc == 0 && api_sampler_make(2, run->mask,
+	    &(struct api_values){ .own = &map }, &run->opt, &run->smp, NULL,
+	    &err) != FRS_OK)
 		rc = frs_fail("%s", err.message);
 	imap_free(&map);
 	if (rc < 0)
