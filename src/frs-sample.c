@@ -136,7 +136,7 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 		case 'i': o->imp = optarg; break;
 		case 'm': o->matrix = optarg; break;
 		case 'a':
-			if (api_algo_parse(optarg, &o->alg) < 0)
+			if (frs_impl_parse(optarg, &o->alg) < 0)
 				cli_usage_error("-a: %s", frs_errmsg());
 			break;
 		case 's':
@@ -188,7 +188,7 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 	}
 	if (optind != argc)
 		cli_usage_error("unexpected argument '%s'", argv[optind]);
-	if (o->alg == API_ALG_FLAT1 && !o->cl)
+	if (o->alg == FRS_FLAT1 && !o->cl)
 		cli_usage_error("-a flat1 runs on OpenCL only (--device cl)");
 	if (exact && o->opt.rule == FRS_RULE_THESIS)
 		cli_usage_error("--exact-count needs --threshold unbiased: under "
@@ -246,9 +246,9 @@ static void check_matrix(struct api_sets *o)
 	if (o->cl)
 		cli_die("--device: %s is a 3-D matrix; 3-D sampling runs on the "
 		    "CPU only", o->matrix);
-	if (o->alg != FRS_ALG_NAIVE && o->alg != FRS_ALG_SORTED)
+	if (o->alg != FRS_NAIVE && o->alg != FRS_SORTED)
 		cli_die("-a %s: %s is a 3-D matrix; 3-D sampling has naive and "
-		    "sorted", api_algo_name(o->alg), o->matrix);
+		    "sorted", frs_impl_name(o->alg), o->matrix);
 	if (o->flags & IMAP_EQUIRECT)
 		cli_die("--equirect: %s is a 3-D matrix; volumes have no "
 		    "equirectangular form", o->matrix);
@@ -261,7 +261,7 @@ static void check_matrix(struct api_sets *o)
 
 int main(int argc, char **argv)
 {
-	struct api_sets o = { .alg = FRS_ALG_SORTED, .sets = 1, .device = -1 };
+	struct api_sets o = { .alg = FRS_SORTED, .sets = 1, .device = -1 };
 	struct api_sets_run run;
 	int rc;
 
@@ -272,7 +272,7 @@ int main(int argc, char **argv)
 	cli_options_done();
 	check_matrix(&o);
 	if ((rc = api_sets_open(&o, &run)) < 0)
-		rc == -2 ? cli_die_device(o.alg != API_ALG_FLAT1) : cli_die_lib();
+		rc == -2 ? cli_die_device(o.alg != FRS_FLAT1) : cli_die_lib();
 	cli_out_check(o.out, !o.count_only && !o.text);
 	if (api_sets_write(&o, &run) < 0)
 		cli_die_lib();

@@ -113,9 +113,11 @@ static void implementations_agree(void **state)
 			naive_case(mi, ni, &map, &m, &s, &ref);
 			n = s.n;
 			re = tu_elems(&ref, 1);
-			for (int a = FRS_STACK; a < FRS_NALGO; a++) {
+			for (int a = 0; a < FRS_NALGO; a++) {
 				struct frs_result r;
 				struct frs_elem *e;
+				if (a == FRS_NAIVE)
+					continue;	/* the reference */
 				frs_set_threads(1 + a % 3);
 				run(&s, &map, &m, (enum frs_impl)a, &n, 1, &r);
 				if (r.count != ref.count)

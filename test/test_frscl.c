@@ -81,11 +81,11 @@ static void implementations_match_cpu(void **state)
 				assert_int_equal(frs_sample(&s, &map, a == FRS_SORTED ?
 				    &ps : &pm, (enum frs_impl)a, steps, nsteps, 0,
 				    &cpu[a]), 0);
-			for (int a = 0; a < FRSCL_NALGO; a++) {
+			for (int a = 0; a <= FRS_FLAT1; a++) {
 				struct frs_result r;
-				int ref = a == FRSCL_FLAT1 ? FRS_STACK : a;
+				int ref = a == FRS_FLAT1 ? FRS_STACK : a;
 				snprintf(what, sizeof what, "%s on %s, n %llu, %u steps, "
-				    "%s", frscl_algo_name(a), maps[mi],
+				    "%s", frs_impl_name((enum frs_impl)a), maps[mi],
 				    (unsigned long long)steps[nsteps - 1], nsteps,
 				    s.rule == FRS_THESIS ? "thesis" : "unbiased");
 				if (frs_sample_cl(&tu_ocl, &s, &map, a == FRS_SORTED ? &ps :
@@ -156,7 +156,7 @@ static void large_counts(void **state)
 	assert_int_equal(frs_prepare(&pm, &m, 1, 0), 0);
 	assert_int_equal(frs_sample(&s, &map, &ps, FRS_SORTED, &n2, 1, 1, &a),
 	    0);
-	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &pm, FRSCL_FLAT1, &n2, 1, 1,
+	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &pm, FRS_FLAT1, &n2, 1, 1,
 	    &b), 0);
 	assert_true(a.count == b.count);
 	frs_result_free(&a);
@@ -176,14 +176,14 @@ static void refusals(void **state)
 	struct frs_prep p;
 	struct frs_result r;
 	uint64_t n = 1000, bad[2] = { 500, 400 };
-	int a;
+	enum frs_impl a;
 	(void)state;
 
 	tu_perm_matrix(&m, 64, 64, 1);
 	tu_map_of("blob", 16, 16, &map);
 	assert_int_equal(frs_setup(&s, &map, &m, n, 8.0, 1), 0);
 	assert_int_equal(frs_prepare(&p, &m, 0, 0), 0);
-	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRSCL_FLAT1, &n, 1, 0,
+	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRS_FLAT1, &n, 1, 0,
 	    &r), -1);
 	assert_err_has("no minmap");
 	/* Sorted without lists walks the minmap, which p lacks too; lists
@@ -204,12 +204,12 @@ static void refusals(void **state)
 	assert_int_equal(frs_sample_cl(&tu_ocl, &s, &map, &p, FRS_NAIVE, bad, 2, 0,
 	    &r), -1);
 	assert_err_has("increase");
-	assert_int_equal(frscl_algo_parse("flat1", &a), 0);
-	assert_int_equal(a, FRSCL_FLAT1);
-	assert_int_equal(frscl_algo_parse("level2", &a), 0);
+	assert_int_equal(frs_impl_parse("flat1", &a), 0);
+	assert_int_equal(a, FRS_FLAT1);
+	assert_int_equal(frs_impl_parse("level2", &a), 0);
 	assert_int_equal(a, FRS_LEVEL2);
-	assert_int_equal(frscl_algo_parse("flat2", &a), -1);
-	assert_string_equal(frscl_algo_name(FRSCL_FLAT1), "flat1");
+	assert_int_equal(frs_impl_parse("flat2", &a), -1);
+	assert_string_equal(frs_impl_name(FRS_FLAT1), "flat1");
 	frs_prep_free(&p);
 	imap_free(&map);
 	frd_free(&m);

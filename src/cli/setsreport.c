@@ -126,7 +126,7 @@ void cli_sets_report(FILE *fp, const struct api_sets *o,
 		    (unsigned long long)(o->seed + o->sets - 1));
 	fprintf(fp, "frs-sample: %llu samples (%s); setup %.6f s, "
 	    "thresholding %.6f s, output %.6f s", (unsigned long long)r->total,
-	    api_algo_name(o->alg), r->tsetup, r->tthr, r->tout);
+	    frs_impl_name(o->alg), r->tsetup, r->tthr, r->tout);
 	if (r->tnote > 0.0)
 		fprintf(fp, " (and %.6f s for -v's share)", r->tnote);
 	fputc('\n', fp);

@@ -184,31 +184,13 @@ const char *const api_rule_words[] = { "unbiased", "thesis", NULL };
 const char *const api_tiling_words[] = { "levels", "shuffled", "plain",
     NULL };
 
-/* By enum frs_algorithm, then Flat 1. */
-static const int algos[] = {
-	FRS_SORTED, FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2, FRSCL_FLAT1
-};
-
-int api_algo(int alg)
-{
-	return algos[alg];
-}
-
-const char *api_algo_name(int alg)
-{
-	return frscl_algo_name(algos[alg]);
-}
-
-int api_algo_parse(const char *s, int *alg)
-{
-	int a;
-
-	if (frscl_algo_parse(s, &a) < 0)
-		return -1;
-	for (*alg = 0; algos[*alg] != a; ++*alg)
-		;
-	return 0;
-}
+/* One vocabulary: the public algorithms are the implementations' values
+ * (enum frs_impl), so that a public value is taken as it is. */
+_Static_assert((int)FRS_ALG_SORTED == (int)FRS_SORTED &&
+    (int)FRS_ALG_NAIVE == (int)FRS_NAIVE &&
+    (int)FRS_ALG_STACK == (int)FRS_STACK &&
+    (int)FRS_ALG_LEVEL1 == (int)FRS_LEVEL1 &&
+    (int)FRS_ALG_LEVEL2 == (int)FRS_LEVEL2, "enum frs_algorithm is enum frs_impl");
 
 /* FRS_RULE_EXACT is the unbiased rule with its taus moved. */
 enum frs_rule api_rule(const struct frs_options *o)

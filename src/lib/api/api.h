@@ -60,7 +60,7 @@ struct frs_sampler {
 	const frs_mask *mask;
 	struct frs_imap map;
 	struct frs_options opt;
-	int algo;		/* enum frs_impl, or FRSCL_FLAT1 on a device */
+	int algo;		/* enum frs_impl, FRS_FLAT1 on a device only */
 	struct ocl *ocl;	/* the device of api_sampler_device, or NULL */
 	struct api_plan plan;
 };
@@ -120,20 +120,10 @@ int api_run_begin(int have_s, int threads, const uint64_t *steps,
 int api_query_args(const char *fn, int have_args, uint64_t n, int threads,
     frs_error *err);
 
-/*
- * The programs' algorithms: an enum frs_algorithm, or API_ALG_FLAT1
- * (Flat 1, on OpenCL only).  api_algo_parse reads "naive" ... "sorted",
- * "flat1" (-1 after frs_fail); api_algo gives the enum frs_impl (or
- * FRSCL_FLAT1) that the implementations take, api_algo_name its name.
- */
-#define API_ALG_FLAT1 ((int)FRS_ALG_LEVEL2 + 1)
 /* The words for enum frs_jitter_mode, frs_rule_mode (but EXACT) and
  * frs_tiling_mode, in their order; NULL after the last. */
 extern const char *const api_jitter_words[], *const api_rule_words[],
     *const api_tiling_words[];
-int api_algo_parse(const char *s, int *alg);
-int api_algo(int alg);
-const char *api_algo_name(int alg);
 
 /* ---- masks (mask.c) ------------------------------------------------ */
 
@@ -311,7 +301,7 @@ int api_sampler_prep(const frs_sampler *s, const struct api_lev2 *lv,
     struct frs_prep *view);
 
 /* Draw on OpenCL device ocl (kept open by the caller) with algorithm alg
- * (an enum frs_algorithm or API_ALG_FLAT1), the same samples as on the
+ * (an enum frs_impl, FRS_FLAT1 too), the same samples as on the
  * CPU; frscl_last_times has the last run's phases. */
 void api_sampler_device(frs_sampler *s, struct ocl *ocl, int alg);
 /* The values Sorted's lists need for the last of steps: frs_lim_most. */
@@ -357,7 +347,7 @@ struct api_sets {
 	unsigned nsize;		/* sides given: 0, 1 (N), 2 or 3 */
 	int flags;		/* imap_load's, vol_load's */
 	struct frs_options opt;	/* its algorithm is alg's */
-	int alg;		/* an enum frs_algorithm or API_ALG_FLAT1 */
+	enum frs_impl alg;	/* FRS_FLAT1 with a device only */
 	int cl, device;		/* OpenCL, its index (-1: the first) */
 	uint64_t steps[16];
 	unsigned nsteps;

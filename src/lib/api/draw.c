@@ -44,7 +44,7 @@ void frs_sampler_free(frs_sampler *s)
 void api_sampler_device(frs_sampler *s, struct ocl *ocl, int alg)
 {
 	s->ocl = ocl;
-	s->algo = api_algo(alg);
+	s->algo = alg;
 }
 
 int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,

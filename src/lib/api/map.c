@@ -184,7 +184,7 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
 		return rc;
 	if (dims == 2 && (*s2 = malloc(sizeof **s2)) != NULL) {
 		**s2 = (struct frs_sampler){ .mask = mask, .map = map, .opt = o,
-		    .algo = api_algo((int)o.algorithm) };
+		    .algo = (int)o.algorithm };
 		if (api_plan_init(&(*s2)->plan) == 0)
 			return api_ok(err);
 		free(*s2);

@@ -363,7 +363,7 @@ static int open2(const struct api_sets *a, struct api_sets_run *run)
 	if (rc < 0)
 		return -1;
 	if (run->ocl != NULL)
-		api_sampler_device(run->smp, run->ocl, a->alg);
+		api_sampler_device(run->smp, run->ocl, (int)a->alg);
 	/* Exact counts: set 0's taus only for -v (each set finds its own). */
 	if (exact && a->verbose)
 		rc = api_setup_steps(run->smp, a->steps, a->nsteps, a->seed,
@@ -427,9 +427,10 @@ int api_sets_open(const struct api_sets *a, struct api_sets_run *run)
 	run->dims = a->dims;
 	run->reused = -1.0;
 	/* Flat 1, no public algorithm, is the device's (api_sampler_device):
-	 * the sampler's options name Sorted. */
+	 * the sampler's options name Sorted.  The others are the public
+	 * values (api.c). */
 	run->opt = a->opt;
-	run->opt.algorithm = a->alg == API_ALG_FLAT1 ? FRS_ALG_SORTED :
+	run->opt.algorithm = a->alg == FRS_FLAT1 ? FRS_ALG_SORTED :
 	    (enum frs_algorithm)a->alg;
 	return run->dims == 3 ? open3(a, run) : open2(a, run);
 }

@@ -16,27 +16,6 @@ static struct {
 
 static struct frscl_times last;
 
-const char *frscl_algo_name(int algo)
-{
-	if (algo == FRSCL_FLAT1)
-		return "flat1";
-	return frs_impl_name((enum frs_impl)algo);
-}
-
-int frscl_algo_parse(const char *s, int *algo)
-{
-	enum frs_impl a;
-
-	if (strcmp(s, "flat1") == 0) {
-		*algo = FRSCL_FLAT1;
-		return 0;
-	}
-	if (frs_impl_parse(s, &a) < 0)
-		return frs_fail("unknown implementation '%s' (naive, stack, "
-		    "level1, level2, sorted, flat1)", s);
-	*algo = (int)a;
-	return 0;
-}
 
 void frscl_last_times(struct frscl_times *t)
 {
@@ -464,9 +443,9 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 	memset(&c, 0, sizeof c);
 	c.o = o;
 	c.t = progress_now();
-	if (algo < 0 || algo >= FRSCL_NALGO)
+	if (algo < 0 || algo > FRS_FLAT1)
 		return frs_fail("no implementation %d", algo);
-	if (frs_sample_check(s, p, algo, frscl_algo_name(algo), steps, nsteps,
+	if (frs_sample_check(s, p, algo, frs_impl_name((enum frs_impl)algo), steps, nsteps,
 	    count_only, tau) < 0)
 		return -1;
 	/* Sorted without lists visits the pixels as on the CPU. */
@@ -493,7 +472,7 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 		t[FRSCL_REC_PIXEL] = (i % s->iw) | (i / s->iw) << 32;
 		c.nact++;
 	}
-	if (algo == FRS_STACK || algo == FRSCL_FLAT1)
+	if (algo == FRS_STACK || algo == FRS_FLAT1)
 		L = frs_start_level(s, p, s->level0);
 	else if (algo == FRS_LEVEL1)
 		L = frs_start_level(s, p, 1);
@@ -530,7 +509,7 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 	}
 	if (c.nact == 0)
 		rc = 0;
-	else if (algo == FRSCL_FLAT1)
+	else if (algo == FRS_FLAT1)
 		rc = flat1(&c, L, count_only, r);
 	else
 		rc = per_pixel(&c, algo, count_only, r);

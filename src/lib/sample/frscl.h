@@ -18,16 +18,7 @@
 #include "sample/frscore.h"
 #include "base/ocl.h"
 
-/* Flat 1: an implementation only OpenCL has (after the enum frs_impl). */
-#define FRSCL_FLAT1 ((int)FRS_NALGO)
-#define FRSCL_NALGO (FRSCL_FLAT1 + 1)
-
-/* "naive" ... "sorted", "flat1". */
-const char *frscl_algo_name(int algo);
-/* Parse -a for OpenCL: frs_impl_parse's names and flat1. */
-int frscl_algo_parse(const char *s, int *algo);
-
-/* frs_sample on device o; algo is an enum frs_impl or FRSCL_FLAT1.
+/* frs_sample on device o; algo is an enum frs_impl, FRS_FLAT1 too.
  * Flat 1 needs the minmap in p. */
 int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
     const struct frs_imap *map, const struct frs_prep *p, int algo,

@@ -32,11 +32,13 @@
 #include "formats/frdio.h"
 #include "maps/imap.h"
 
-/* The implementations of Chapter 5 (the public enum frs_algorithm of
- * frs.h maps to these in api.c; Flat 1 is the device's alone). */
+/* The implementations of Chapter 5, with the values of frs.h's enum
+ * frs_algorithm (api.c asserts it: one vocabulary); Flat 1, the device's
+ * alone, after them.  FRS_NALGO counts the CPU's. */
 enum frs_impl {
-	FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2, FRS_SORTED, FRS_NALGO
+	FRS_SORTED, FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2, FRS_FLAT1
 };
+#define FRS_NALGO FRS_FLAT1
 /* Where a sample sits inside its element: the centre, or offset by
  * Halton or random points (frs.h's enum frs_jitter_mode, FRS_JIT_*). */
 enum frs_place { FRS_PLACE_CENTRE, FRS_PLACE_HALTON, FRS_PLACE_RANDOM };
