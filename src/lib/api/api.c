@@ -198,10 +198,15 @@ enum frs_rule api_rule(const struct frs_options *o)
 	return o->rule == FRS_RULE_THESIS ? FRS_THESIS : FRS_UNBIASED;
 }
 
+/* The jitter modes are the samplers' too, value for value. */
+_Static_assert((int)FRS_JIT_NONE == (int)FRS_PLACE_CENTRE &&
+    (int)FRS_JIT_HALTON == (int)FRS_PLACE_HALTON &&
+    (int)FRS_JIT_RANDOM == (int)FRS_PLACE_RANDOM,
+    "enum frs_jitter_mode is enum frs_place");
+
 enum frs_place api_jitter(const struct frs_options *o)
 {
-	return o->jitter == FRS_JIT_HALTON ? FRS_PLACE_HALTON :
-	    o->jitter == FRS_JIT_RANDOM ? FRS_PLACE_RANDOM : FRS_PLACE_CENTRE;
+	return (enum frs_place)o->jitter;
 }
 
 /* The levels' windows are plain, each. */

@@ -40,7 +40,8 @@ enum frs_impl {
 };
 #define FRS_NALGO FRS_FLAT1
 /* Where a sample sits inside its element: the centre, or offset by
- * Halton or random points (frs.h's enum frs_jitter_mode, FRS_JIT_*). */
+ * Halton or random points; the values of frs.h's enum frs_jitter_mode
+ * (FRS_JIT_*; api.c asserts it). */
 enum frs_place { FRS_PLACE_CENTRE, FRS_PLACE_HALTON, FRS_PLACE_RANDOM };
 enum frs_rule { FRS_UNBIASED, FRS_THESIS };
 /* How a window larger than the matrix tiles it: each tile through its
