@@ -59,6 +59,8 @@ struct api_plan {
 struct frs_sampler {
 	const frs_mask *mask;
 	struct frs_imap map;
+	struct frs_cells cells;	/* the map's frs_cell_stats, made once */
+	int have_cells;		/* 0: each setup makes them (and fails) */
 	struct frs_options opt;
 	int algo;		/* enum frs_impl, FRS_FLAT1 on a device only */
 	struct ocl *ocl;	/* the device of api_sampler_device, or NULL */

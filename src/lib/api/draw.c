@@ -50,7 +50,8 @@ void api_sampler_device(frs_sampler *s, struct ocl *ocl, int alg)
 int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
     struct frs_setup *su)
 {
-	if (frs_setup(su, &s->map, &s->mask->m, n, s->opt.sigma, seed) < 0)
+	if (frs_setup_known(su, &s->map, s->have_cells ? &s->cells : NULL,
+	    &s->mask->m, n, s->opt.sigma, seed) < 0)
 		return -1;
 	su->rule = api_rule(&s->opt);
 	su->jitter = api_jitter(&s->opt);

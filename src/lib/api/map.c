@@ -185,6 +185,10 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
 	if (dims == 2 && (*s2 = malloc(sizeof **s2)) != NULL) {
 		**s2 = (struct frs_sampler){ .mask = mask, .map = map, .opt = o,
 		    .algo = (int)o.algorithm };
+		/* A map that fails them fails each setup, which says why. */
+		(*s2)->have_cells = frs_cell_stats(&map, &(*s2)->cells) == 0;
+		if (!(*s2)->have_cells)
+			frs_clearerr();
 		if (api_plan_init(&(*s2)->plan) == 0)
 			return api_ok(err);
 		free(*s2);

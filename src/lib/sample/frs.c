@@ -59,13 +59,11 @@ static unsigned log2u64(uint64_t v)
  * the (n_s s)^3 window elements of 3-D are past any run at 2^20. */
 static const unsigned max_lns[4] = { 0, 0, 31, 20 };
 
-/* The importance statistics of the cells into w, and in *imax the
- * maximum of the cells times w->iscale.  Only ratios matter: an extreme
- * map is scaled by a power of two (exact for every value that stays
- * normal), so that tau and the mean stay finite; the thresholds of every
- * other map are those of the map as it is. */
-static int cell_stats(struct frs_window *w, const struct frs_imap *cells,
-    double *imax)
+/* Only ratios matter: an extreme map is scaled by a power of two (exact
+ * for every value that stays normal), so that tau and the mean stay
+ * finite; the thresholds of every other map are those of the map as it
+ * is. */
+int frs_cell_stats(const struct frs_imap *cells, struct frs_cells *c)
 {
 	struct frs_imap_stats st;
 	uint64_t n = (uint64_t)cells->w * cells->h;
@@ -74,24 +72,24 @@ static int cell_stats(struct frs_window *w, const struct frs_imap *cells,
 	if (!(st.max > 0.0) || st.nonfinite || st.negatives)
 		return frs_fail("importance must be finite, non-negative and not "
 		    "zero everywhere");
-	w->iscale = 1.0;
-	w->imean = st.mean;
-	w->mean = st.mean;
-	w->max = st.max;
-	*imax = st.max;
+	c->iscale = 1.0;
+	c->imean = st.mean;
+	c->mean = st.mean;
+	c->max = st.max;
+	c->imax = st.max;
 	if (!(st.max >= 0x1p-900 && st.max <= 0x1p900)) {
 		int e = -ilogb(st.max);	/* 1074 for the smallest denormal */
 		struct num_sum sum = { 0.0, 0.0 };
 		double mx = 0.0;
-		w->iscale = ldexp(1.0, e < 1023 ? e : 1023);
+		c->iscale = ldexp(1.0, e < 1023 ? e : 1023);
 		for (uint64_t i = 0; i < n; i++) {
-			double v = cells->v[i] * w->iscale;
+			double v = cells->v[i] * c->iscale;
 			num_add(&sum, v);
 			mx = v > mx ? v : mx;
 		}
-		w->imean = num_total(&sum) / (double)n;
-		w->mean = w->imean / w->iscale;
-		*imax = mx;
+		c->imean = num_total(&sum) / (double)n;
+		c->mean = c->imean / c->iscale;
+		c->imax = mx;
 	}
 	return 0;
 }
@@ -108,12 +106,13 @@ uint64_t frs_window_offset(uint64_t seed, unsigned axis, uint64_t ns,
 }
 
 int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
-    const struct frs_imap *cells, const struct frs_matrix *mat, uint64_t n,
-    double sigma, uint64_t seed)
+    const struct frs_imap *cells, const struct frs_cells *known,
+    const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed)
 {
 	const uint32_t msize[3] = { mat->w, mat->h, mat->d };
 	uint32_t small = side[0];
-	double vol, cube, a, x, wmin, imax = 0.0;
+	double vol, cube, a, x, wmin;
+	struct frs_cells c;
 	uint64_t ns = 1;
 
 	memset(w, 0, sizeof *w);
@@ -124,8 +123,14 @@ int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
 		return frs_fail("the count must be at least 1");
 	if (!(sigma >= 1.0 && isfinite(sigma)))
 		return frs_fail("sigma %g is below 1", sigma);
-	if (cell_stats(w, cells, &imax) < 0)
+	if (known != NULL)
+		c = *known;
+	else if (frs_cell_stats(cells, &c) < 0)
 		return -1;
+	w->mean = c.mean;
+	w->max = c.max;
+	w->iscale = c.iscale;
+	w->imean = c.imean;
 	for (unsigned i = 1; i < k; i++)
 		small = side[i] < small ? side[i] : small;
 	/* a = (cells) / small^k, the aspect ratio: the products are exact
@@ -138,7 +143,7 @@ int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
 		cube *= small;
 	}
 	a = vol / cube;
-	x = (double)n * imax / (w->imean * a);
+	x = (double)n * c.imax / (w->imean * a);
 	wmin = ceil(sigma * (k == 2 ? sqrt(x) : cbrt(x)));
 	while ((double)small * (double)ns < wmin) {
 		ns <<= 1;
@@ -158,11 +163,18 @@ int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed)
 {
+	return frs_setup_known(s, map, NULL, mat, n, sigma, seed);
+}
+
+int frs_setup_known(struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_cells *known, const struct frs_matrix *mat, uint64_t n,
+    double sigma, uint64_t seed)
+{
 	const uint32_t side[2] = { map->w, map->h };
 	struct frs_window w;
 
 	memset(s, 0, sizeof *s);
-	if (frs_window_setup(&w, 2, side, map, mat, n, sigma, seed) < 0)
+	if (frs_window_setup(&w, 2, side, map, known, mat, n, sigma, seed) < 0)
 		return -1;
 	s->iw = map->w;
 	s->ih = map->h;

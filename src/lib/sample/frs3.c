@@ -34,7 +34,7 @@ int frs3_setup(struct frs3_setup *s, const struct frs_vol *vol,
 	uint64_t *off[3] = { &s->wx, &s->wy, &s->wz };
 
 	memset(s, 0, sizeof *s);
-	if (frs_window_setup(&w, 3, side, &cells, mat, n, sigma, seed) < 0)
+	if (frs_window_setup(&w, 3, side, &cells, NULL, mat, n, sigma, seed) < 0)
 		return -1;
 	/* Element ids (z S_H + y) S_W + x must fit 64 bits. */
 	if ((double)w.size[0] * (double)w.size[1] * (double)w.size[2] >= 0x1p63)

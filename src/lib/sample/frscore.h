@@ -118,9 +118,18 @@ struct frs_window {
 	double mean, max;	/* of the cells */
 	double iscale, imean;	/* as in struct frs_setup */
 };
+/* What Listing 5.1 needs of the cells (mean and maximum, and their
+ * power-of-two scale for extreme maps, struct frs_setup's iscale and
+ * imean; imax the maximum times iscale): one pass over them, which a
+ * caller that sets up many runs of one map (one per set) keeps. */
+struct frs_cells {
+	double mean, max, iscale, imean, imax;
+};
+int frs_cell_stats(const struct frs_imap *cells, struct frs_cells *c);
+/* known: the cells' frs_cell_stats, or NULL to compute them. */
 int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
-    const struct frs_imap *cells, const struct frs_matrix *mat, uint64_t n,
-    double sigma, uint64_t seed);
+    const struct frs_imap *cells, const struct frs_cells *known,
+    const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
 /* What frs_setup and frs3_setup take alike from their arguments and
  * their window w: a macro, as the two setups are of two types. */
 #define FRS_SETUP_TAKE(s, w, n_, sigma_, seed_) do {			\
@@ -148,6 +157,10 @@ int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
 /* Listing 5.1.  The map must be validated (finite, >= 0, not all zero). */
 int frs_setup(struct frs_setup *s, const struct frs_imap *map,
     const struct frs_matrix *mat, uint64_t n, double sigma, uint64_t seed);
+/* The same with the map's frs_cell_stats known (NULL: computed). */
+int frs_setup_known(struct frs_setup *s, const struct frs_imap *map,
+    const struct frs_cells *known, const struct frs_matrix *mat, uint64_t n,
+    double sigma, uint64_t seed);
 /* tau for another count with the same window (progressive steps); the
  * exact tau of a step when s->exact has it; times lfac. */
 double frs_tau(const struct frs_setup *s, uint64_t n);
