@@ -86,14 +86,11 @@ static void parse_functions(const char *arg, unsigned *mask)
  * over the map's mean; the pixel in pixel[2]. */
 static double map_pdf(double x, double y, size_t pixel[2])
 {
-	size_t px = (size_t)(x * pdfmap.w), py = (size_t)(y * pdfmap.h);
+	uint64_t i = imap_pixel_of(&pdfmap, x, y);
 
-	if (px >= pdfmap.w)
-		px = pdfmap.w - 1;
-	if (py >= pdfmap.h)
-		py = pdfmap.h - 1;
-	pixel[0] = px, pixel[1] = py;
-	return pdfmap.v[py * pdfmap.w + px] / pdfmean;
+	pixel[0] = (size_t)(i % pdfmap.w);
+	pixel[1] = (size_t)(i / pdfmap.w);
+	return pdfmap.v[i] / pdfmean;
 }
 
 /* A file's sets (from first on) as the pdf mode wants them: a density

@@ -66,6 +66,18 @@ void imap_equirect(struct frs_imap *m);
 /* That weight of row j of h. */
 double imap_equirect_weight(uint32_t j, uint32_t h);
 
+/* The pixel (row-major index) of the point (x, y) of the unit square,
+ * x across: a point on the far edge (1) goes to the last column or row. */
+static inline uint64_t imap_pixel_of(const struct frs_imap *m, double x,
+    double y)
+{
+	uint64_t px = (uint64_t)(x * m->w), py = (uint64_t)(y * m->h);
+
+	px = px < m->w ? px : m->w - 1;
+	py = py < m->h ? py : m->h - 1;
+	return py * m->w + px;
+}
+
 /* Rec. 709 luminance of linear RGB. */
 static inline double imap_luma(double r, double g, double b)
 {

@@ -74,9 +74,7 @@ double hsw_radical_inverse(uint64_t i, unsigned b);
 static inline double hsw_pdf_at(const struct frs_imap *map, double mean,
     double x, double y)
 {
-	uint32_t px = (uint32_t)(x * map->w), py = (uint32_t)(y * map->h);
-
-	return map->v[(uint64_t)py * map->w + px] / mean;
+	return map->v[imap_pixel_of(map, x, y)] / mean;
 }
 
 /* The mean of the map the tree was built from, as hsw_pdf_at wants it. */
