@@ -48,7 +48,7 @@ PROGS = imap frd-gen frd-prep frs-sample pts-render ref-sample hsw-sample \
 # analysis, api; each includes only from its own folder and those before.
 LIBSRC = $(wildcard src/lib/*/*.c)
 LIBCXXSRC = $(wildcard src/lib/*/*.cc)
-# The programs' shared option handling and messages, not in libfrs.
+# The programs' common option handling and messages, not in libfrs.
 CLISRC = $(wildcard src/cli/*.c)
 TESTSRC = $(wildcard test/test_*.c)
 # test/hard/: the numerical hard cases gathered in one suite.
@@ -166,10 +166,10 @@ $(B)/gen/clsrc.c: $(CLSRC) scripts/cl2c.sh
 	@mkdir -p $(@D)
 	sh scripts/cl2c.sh $@ $(CLSRC)
 
-# The shared library (make libs; part of make all in the rel variant):
-# the library's sources again as position-independent objects in
-# $(B)/pic/, exporting only the API of src/lib/frs.h (the version script
-# src/lib/libfrs.map).  The programs and tests link libfrs.a, which keeps
+# The dynamic library libfrs.so (make libs; part of make all in the rel
+# variant): the library's sources again as position-independent objects
+# in $(B)/pic/, exporting only the API of src/lib/frs.h (the version
+# script src/lib/libfrs.map).  The programs and tests link libfrs.a, which keeps
 # the internal symbols they use.
 SOMAJOR = 2
 SONAME = libfrs.so.$(SOMAJOR)
