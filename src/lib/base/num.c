@@ -28,11 +28,7 @@ double num_radical_inverse(uint64_t i, unsigned b)
 /* Indices a group of the vector paths. */
 #define GROUP 32
 
-/*
- * Base 2: below 2^53 the loop adds at most 53 powers of two, each sum
- * exact, which is the mirrored integer (53 bits at most, so exact as a
- * double) times 2^-64.
- */
+/* Base 2: num_radical2 where every index is below 2^53. */
 FRS_WIDE static void radical2_n(const uint64_t *i, size_t n, double *out)
 {
 	uint64_t most = 0;
@@ -44,9 +40,8 @@ FRS_WIDE static void radical2_n(const uint64_t *i, size_t n, double *out)
 			out[q] = num_radical_inverse(i[q], 2);
 		return;
 	}
-	/* The mirror of i < 2^53 has its low 11 bits clear. */
 	for (size_t q = 0; q < n; q++)
-		out[q] = num_u53(num_bit_reverse(i[q]) >> 11) * 0x1p-53;
+		out[q] = num_radical2(i[q]);
 }
 
 /*

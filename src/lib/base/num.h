@@ -108,4 +108,12 @@ static inline uint64_t num_bit_reverse(uint64_t x)
 	return x >> 32 | x << 32;
 }
 
+/* num_radical_inverse(i, 2) for i < 2^53: the loop adds at most 53
+ * powers of two, each sum exact, which is the mirrored integer (its low
+ * 11 bits clear, 53 bits at most, so exact as a double) times 2^-64. */
+static inline double num_radical2(uint64_t i)
+{
+	return num_u53(num_bit_reverse(i) >> 11) * 0x1p-53;
+}
+
 #endif

@@ -133,15 +133,6 @@ double hsw_radical_inverse(uint64_t i, unsigned b)
 	return frs_below_one(num_radical_inverse(i, b));
 }
 
-/* hsw_radical_inverse(i, 2) for i < 2^53: the digits are the bits of i
- * mirrored, and the sum of at most 53 powers of two that the loop adds is
- * exact, so it is the mirrored integer (its low 11 bits clear) times
- * 2^-64, exactly. */
-static inline double radical_inverse2(uint64_t i)
-{
-	return num_u53(num_bit_reverse(i) >> 11) * 0x1p-53;
-}
-
 /* Base-3 digits of a 64-bit integer. */
 #define DIGITS3 41
 /* The low digits whose part of the sum comes from a table: 3^6 = 729
@@ -261,13 +252,13 @@ FRS_WIDE static void piece_range(const struct base3 *b3, enum hsw_input kind,
 		return;
 	case HSW_HALTON:
 		for (uint64_t q = 0; q < m; q++)
-			out[2 * q] = radical_inverse2(begin + q + 1);
+			out[2 * q] = num_radical2(begin + q + 1);
 		radical_inverse3(b3, begin + 1, (size_t)m, out + 1);
 		return;
 	case HSW_HAMMERSLEY:
 		for (uint64_t q = 0; q < m; q++) {
 			out[2 * q] = ((double)(begin + q) + 0.5) / (double)n;
-			out[2 * q + 1] = radical_inverse2(begin + q);
+			out[2 * q + 1] = num_radical2(begin + q);
 		}
 		return;
 	}
