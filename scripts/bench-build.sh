@@ -75,6 +75,36 @@ row "jitter random / none (--sigma 4)" "$(ratio "$jr" "$j0")" 2
 row "jitter halton / none (--sigma 4)" "$(ratio "$jh" "$j0")" 2
 row "hsw-sample / frs-sample" "$(ratio "$hsw" "$frs")" 2
 
+# What the target leaves HSW: each level of the descent keeps two
+# correctly rounded quotients, so code making the same points spends at
+# least 2 L n divisions at the divider's rate (test/bench/divrate); the
+# rest (input, the descent's loads, placing, output) must fit in what
+# 2 x frs-sample leaves.  Its other work alone is hsw-sample on a 1x1
+# map (no level).
+DIV=$(dirname "$OURS")/test/divrate
+if [ -x "$DIV" ]; then
+	d=$("$DIV" | awk '{ print $2 }')
+	: >"$T/h0"
+	for _r in $(seq $R); do
+		one "$T/h0" "$OURS/hsw-sample" -q -i blob -s 1x1 -j 1 -n $N
+	done
+	L=7	# levels of the 128x128 quadtree
+	echo
+	awk -v d="$d" -v l=$L -v n=$N -v f="$frs" \
+	    -v o="$(median_of "$T/h0")" 'BEGIN {
+		dv = 2 * l * n * d * 1e-9; left = 2 * f - dv
+		printf "HSW at 2^24: its divisions alone (2 x %d x 2^24 at %.3f ns, the divider'"'"'s\n", l, d
+		printf "rate) take %.3f s, %.2f x frs-sample; the target 2 leaves %.3f s beside them,\n", dv, dv / f, left
+		printf "and the work outside the descent (a 1x1 map) alone takes %.3f s: ", o
+		if (left <= 0)
+			print "out of reach\nwithout changing the points"
+		else if (o > left)
+			printf "out of reach\nunless it hides behind the divider or gets %.1f times faster\n", o / left
+		else
+			print "within reach"
+	}'
+fi
+
 echo
 echo "Shuffled tiles on the HDR maps of data/ (--equirect, n = 262144, -j 1):"
 echo "whole processes against plain tiles, medians of $R runs (make build; base: $BASE_COMMIT's)"
