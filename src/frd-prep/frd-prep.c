@@ -7,18 +7,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/api.h"
 #include "cli/cli.h"
-#include "cli/output.h"
-#include "formats/frdio.h"
-#include "formats/frdimport.h"
-#include "sample/frscore.h"
-#include "sample/frpio.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
+#include "api/api.h"
 #include "base/io.h"
 #include "base/outfile.h"
-#include "base/parse.h"
+#include "formats/frdimport.h"
+#include "formats/frdio.h"
+#include "maps/imap.h"
+#include "maps/mapload.h"
+#include "sample/frpio.h"
+#include "sample/frscore.h"
 
 static const char usage[] =
     "usage: frd-prep [-a none|stack|level1|level2|sorted|all] [--check]\n"

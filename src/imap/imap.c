@@ -10,14 +10,13 @@
 #include <strings.h>
 
 #include "cli/cli.h"
-#include "cli/output.h"
-#include "maps/imap.h"
 #include "base/outfile.h"
-#include "maps/vol.h"
 #include "maps/exrio.h"
+#include "maps/imap.h"
 #include "maps/mapload.h"
 #include "maps/pngio.h"
 #include "maps/spec.h"
+#include "maps/vol.h"
 
 static const char usage[] =
     "usage: imap gen [-q] [-s SIZE] [--equirect] [--log]\n"

@@ -3,7 +3,7 @@
  * device loaded, set 0's setup, then M sets through the draws' callback
  * form (frs_draw_each, api_draw3_each) into one points file: x, y [, z]
  * [, pdf] [, step + 1] [, set].  The program keeps the options and the
- * warnings that name them; its -v report is src/cli/setsreport.c.
+ * warnings that name them; its -v report is setsreport.c.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/api.h"
+#include "frs-sample/sets.h"
 #include "base/err.h"
 #include "base/outfile.h"
 #include "base/progress.h"
@@ -24,8 +24,8 @@
 
 /* The output of the sets, and -v's share of set 0. */
 struct out {
-	const struct api_sets *a;
-	struct api_sets_run *run;
+	const struct sets *a;
+	struct sets_run *run;
 	struct outfile of;
 	struct sets_writer w;	/* its set: the one being drawn */
 	int open;
@@ -40,7 +40,7 @@ struct out {
 
 /* The level of the cell that point p lies in (every set has set 0's
  * levels: they do not depend on the seed). */
-static unsigned level_at(const struct api_sets_run *run, const double *p)
+static unsigned level_at(const struct sets_run *run, const double *p)
 {
 	const struct frs_levels *L = run->dims == 2 ? &run->lv.plan :
 	    &run->lv3.plan;
@@ -54,7 +54,7 @@ static unsigned level_at(const struct api_sets_run *run, const double *p)
 }
 
 /* The index in run->lv (lv3) of the level of point p. */
-static unsigned level_of(const struct api_sets_run *run, const double *p)
+static unsigned level_of(const struct sets_run *run, const double *p)
 {
 	unsigned n = run->dims == 2 ? run->lv.n : run->lv3.n,
 	    l = level_at(run, p);
@@ -70,7 +70,7 @@ static unsigned level_of(const struct api_sets_run *run, const double *p)
  * it). */
 static void note_point(struct out *u, const double *p)
 {
-	struct api_sets_run *run = u->run;
+	struct sets_run *run = u->run;
 	unsigned i = level_of(run, p);
 	const struct frs_setup *s = &run->lv.su[i];
 	uint64_t m;
@@ -94,7 +94,7 @@ static void note_point(struct out *u, const double *p)
  * not a sort of the samples. */
 static void reused_shares(struct out *u)
 {
-	struct api_sets_run *run = u->run;
+	struct sets_run *run = u->run;
 	uint64_t all = 0, noted = 0;
 	size_t n = (size_t)run->s0.mw * run->s0.mh;
 
@@ -122,7 +122,7 @@ static void reused_shares(struct out *u)
  * writer's set (M > 1). */
 static int out_begin(struct out *u, uint64_t count)
 {
-	const struct api_sets *a = u->a;
+	const struct sets *a = u->a;
 	const char *names[3];
 	unsigned extra = 0;
 
@@ -235,7 +235,7 @@ static unsigned repeating(const struct frs_levels *L, unsigned n,
  * levels, the levels whose cells span more than the matrix on an axis:
  * their samples show the same matrix elements again, a lattice of the
  * matrix's period. */
-static void warn2(const struct api_sets_run *r, int levels)
+static void warn2(const struct sets_run *r, int levels)
 {
 	const struct frs_setup *s = &r->s0;
 	char which[256];
@@ -263,7 +263,7 @@ static void warn2(const struct api_sets_run *r, int levels)
 		    s->mh);
 }
 
-static void warn3(const struct api_sets_run *r, int levels)
+static void warn3(const struct sets_run *r, int levels)
 {
 	const struct frs3_setup *t = &r->s3;
 	char which[256];
@@ -289,7 +289,7 @@ static void warn3(const struct api_sets_run *r, int levels)
 		    t->mh, t->md);
 }
 
-void api_sets_matrix(struct api_sets *a)
+void sets_matrix(struct sets *a)
 {
 	double t0 = progress_now();
 	unsigned dims = 0;
@@ -302,9 +302,9 @@ void api_sets_matrix(struct api_sets *a)
 	a->tload = progress_now() - t0;
 }
 
-/* The mask (as api_sets_matrix loaded it), its note (a stale twin .frp)
+/* The mask (as sets_matrix loaded it), its note (a stale twin .frp)
  * as a warning. */
-static int load_mask(const struct api_sets *a, struct api_sets_run *run)
+static int load_mask(const struct sets *a, struct sets_run *run)
 {
 	frs_error err = a->mask_err;
 	int rc = a->loaded ? a->mask_rc : frs_mask_load(&run->mask, a->matrix,
@@ -320,7 +320,7 @@ static int load_mask(const struct api_sets *a, struct api_sets_run *run)
 }
 
 /* The OpenCL device asked for, if any: -2 when it cannot be opened. */
-static int open_device(const struct api_sets *a, struct api_sets_run *run)
+static int open_device(const struct sets *a, struct sets_run *run)
 {
 	if (!a->cl)
 		return 0;
@@ -335,7 +335,7 @@ static int open_device(const struct api_sets *a, struct api_sets_run *run)
 
 /* The sampler of a 2-D mask on the CPU or the device, and set 0's
  * levels with the mask prepared for them. */
-static int open2(const struct api_sets *a, struct api_sets_run *run)
+static int open2(const struct sets *a, struct sets_run *run)
 {
 	struct frs_imap map;
 	struct frs_prep view;
@@ -388,7 +388,7 @@ static int open2(const struct api_sets *a, struct api_sets_run *run)
 }
 
 /* The same for a 3-D mask over a volume (the CPU only). */
-static int open3(const struct api_sets *a, struct api_sets_run *run)
+static int open3(const struct sets *a, struct sets_run *run)
 {
 	double t0 = progress_now();
 	struct frs3_prep view;
@@ -421,7 +421,7 @@ static int open3(const struct api_sets *a, struct api_sets_run *run)
 	return 0;
 }
 
-int api_sets_open(const struct api_sets *a, struct api_sets_run *run)
+int sets_open(const struct sets *a, struct sets_run *run)
 {
 	memset(run, 0, sizeof *run);
 	run->dims = a->dims;
@@ -438,8 +438,8 @@ int api_sets_open(const struct api_sets *a, struct api_sets_run *run)
 /* One set through the draws; its count, UINT64_MAX after frs_fail. */
 static uint64_t one_set(struct out *u, uint64_t seed)
 {
-	const struct api_sets *a = u->a;
-	const struct api_sets_run *run = u->run;
+	const struct sets *a = u->a;
+	const struct sets_run *run = u->run;
 	frs_error err;
 	uint64_t count = 0, n = a->steps[a->nsteps - 1];
 	int rc;
@@ -472,7 +472,7 @@ static uint64_t one_set(struct out *u, uint64_t seed)
 }
 
 /* The OpenCL phases of the last set, added. */
-static void add_times(struct api_sets_run *run)
+static void add_times(struct sets_run *run)
 {
 	struct frscl_times ct;
 
@@ -485,8 +485,8 @@ static void add_times(struct api_sets_run *run)
 
 static int write_sets(struct out *u)
 {
-	const struct api_sets *a = u->a;
-	struct api_sets_run *run = u->run;
+	const struct sets *a = u->a;
+	struct sets_run *run = u->run;
 	struct progress pr;
 
 	progress_begin(&pr, "sets", a->sets);
@@ -510,7 +510,7 @@ static int write_sets(struct out *u)
 	return 0;
 }
 
-int api_sets_write(const struct api_sets *a, struct api_sets_run *run)
+int sets_write(const struct sets *a, struct sets_run *run)
 {
 	struct out u = { .a = a, .run = run };
 	double t1 = progress_now(), t0;
@@ -538,7 +538,7 @@ int api_sets_write(const struct api_sets *a, struct api_sets_run *run)
 	return rc;
 }
 
-void api_sets_close(struct api_sets_run *run)
+void sets_close(struct sets_run *run)
 {
 	api_lev2_free(&run->lv);
 	api_lev3_free(&run->lv3);

@@ -2,7 +2,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/hswrun.h"
+#include "hsw-sample/hswrun.h"
 #include "base/err.h"
 #include "base/mem.h"
 #include "base/progress.h"

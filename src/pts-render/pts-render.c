@@ -9,14 +9,12 @@
 #include <strings.h>
 
 #include "cli/cli.h"
-#include "cli/output.h"
-#include "cli/ptsopt.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
+#include "analysis/raster.h"
 #include "base/outfile.h"
 #include "formats/ptsets.h"
 #include "formats/ptsio.h"
-#include "analysis/raster.h"
+#include "maps/imap.h"
+#include "maps/mapload.h"
 
 static const char usage[] =
     "usage: pts-render [-q] [-s SIZE] [-r R] [-i MAP] [--color] [-o FILE] [PTS]\n"

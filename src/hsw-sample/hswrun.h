@@ -5,8 +5,8 @@
  * and the times -v reports.  The same records, bit for bit, on every
  * device and for any thread count.
  */
-#ifndef FRS_HSWRUN_H
-#define FRS_HSWRUN_H
+#ifndef FRS_HSW_SAMPLE_HSWRUN_H
+#define FRS_HSW_SAMPLE_HSWRUN_H
 
 #include <stddef.h>
 #include <stdint.h>

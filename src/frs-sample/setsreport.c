@@ -1,12 +1,13 @@
-/* frs-sample -v's report (setsreport.h). */
+/* frs-sample -v's report (sets.h). */
 #define _POSIX_C_SOURCE 200809L
-#include "cli/setsreport.h"
 #include "frs.h"
+
+#include "frs-sample/sets.h"
 #include "sample/frscore.h"
 
 /* -v: set 0's setup. */
-static void report_setup(FILE *fp, const struct api_sets *o,
-    const struct api_sets_run *r)
+static void report_setup(FILE *fp, const struct sets *o,
+    const struct sets_run *r)
 {
 	const struct frs_setup *s = &r->s0;
 	const struct frs3_setup *t = &r->s3;
@@ -37,8 +38,8 @@ static void report_setup(FILE *fp, const struct api_sets *o,
 
 /* -v: set 0's levels, one line each: the level, its elements per cell
  * side, its window and offset, its cells and (when noted) samples. */
-static void report_levels(FILE *fp, const struct api_sets *o,
-    const struct api_sets_run *r)
+static void report_levels(FILE *fp, const struct sets *o,
+    const struct sets_run *r)
 {
 	unsigned n = r->dims == 2 ? r->lv.n : r->lv3.n;
 	int noted = !o->count_only;
@@ -91,8 +92,8 @@ static void report_levels(FILE *fp, const struct api_sets *o,
 	}
 }
 
-void cli_sets_report(FILE *fp, const struct api_sets *o,
-    const struct api_sets_run *r)
+void sets_report(FILE *fp, const struct sets *o,
+    const struct sets_run *r)
 {
 	uint64_t tx = 0, ty = 0;
 	uint64_t nt = r->dims == 2 ? frs_tiles(&r->s0, &tx, &ty) : 0;

@@ -11,15 +11,12 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "cli/output.h"
-#include "cli/ptsopt.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
-#include "base/mem.h"
 #include "base/outfile.h"
 #include "base/progress.h"
 #include "formats/ptsio.h"
 #include "formats/setsout.h"
+#include "maps/imap.h"
+#include "maps/mapload.h"
 #include "sample/refsamp.h"
 
 static const char usage[] =
@@ -255,9 +252,7 @@ static void open_run(const struct ref_opts *o, struct ref_run *r)
 
 	snprintf(what, sizeof what, "%llu points",
 	    (unsigned long long)o->count);
-	if ((r->xy = mem_calloc(what, o->count, o->dims * sizeof *r->xy)) ==
-	    NULL)
-		cli_die_lib();
+	r->xy = cli_calloc(what, o->count, o->dims * sizeof *r->xy);
 	if (o->kind != REFSAMP_RELAXED_DART)
 		return;
 	if (imap_load(o->imp ? o->imp : "const", o->mw, o->mh, o->flags,

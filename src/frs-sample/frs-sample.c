@@ -6,14 +6,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/api.h"
 #include "cli/cli.h"
-#include "cli/ptsopt.h"
-#include "cli/setsreport.h"
+#include "frs-sample/sets.h"
+#include "api/api.h"
 #include "base/datadir.h"
-#include "base/mem.h"
 #include "maps/imap.h"
-#include "maps/vol.h"
 #include "maps/mapload.h"
 
 static const char usage[] =
@@ -79,7 +76,7 @@ static const char usage[] =
     "  -q, --quiet          no warnings\n"
     "  -h, --help           this help;  --version  the version\n";
 
-static void parse_steps(struct api_sets *o, const char *s)
+static void parse_steps(struct sets *o, const char *s)
 {
 	char buf[512], *tok, *save = NULL;
 
@@ -122,7 +119,7 @@ static const char options[] =
     "sets device list-devices data-dir tiles level-blur level-column "
     "v=verbose";
 
-static void parse_opts(int argc, char **argv, struct api_sets *o)
+static void parse_opts(int argc, char **argv, struct sets *o)
 {
 	int c, have_n = 0, exact = 0;
 	uint64_t n = 0;
@@ -215,19 +212,19 @@ static void parse_opts(int argc, char **argv, struct api_sets *o)
 
 /* Refuse counts whose elements (size bytes each, with a tenth more for
  * the count's spread) could not be stored before spending the time. */
-static void check_room(const struct api_sets *o, size_t size)
+static void check_room(const struct sets *o, size_t size)
 {
 	uint64_t n = o->steps[o->nsteps - 1];
 	char what[64];
 
 	snprintf(what, sizeof what, "-n %llu (--count-only counts them)",
 	    (unsigned long long)n);
-	if (!o->count_only && mem_check(what, n + n / 10, size) < 0)
-		cli_die_lib();
+	if (!o->count_only)
+		cli_mem_check(what, n + n / 10, size);
 }
 
 /* The default matrix, the checks that depend on its dimensions. */
-static void check_matrix(struct api_sets *o)
+static void check_matrix(struct sets *o)
 {
 	static char path[DATA_PATH_MAX];
 	int volume = (o->imp && vol_is_volume(o->imp)) || o->nsize == 3;
@@ -237,7 +234,7 @@ static void check_matrix(struct api_sets *o)
 		cli_die("no default %smatrix (%s); give -m MATRIX",
 		    volume ? "3-D " : "", frs_errmsg());
 	o->matrix = o->matrix != NULL ? o->matrix : path;
-	api_sets_matrix(o);
+	sets_matrix(o);
 	if (o->dims == 2 && o->nsize == 3)
 		cli_die("-s %ux%ux%u: a volume size, but %s is a 2-D matrix",
 		    o->size[0], o->size[1], o->size[2], o->matrix);
@@ -261,8 +258,8 @@ static void check_matrix(struct api_sets *o)
 
 int main(int argc, char **argv)
 {
-	struct api_sets o = { .alg = FRS_SORTED, .sets = 1, .device = -1 };
-	struct api_sets_run run;
+	struct sets o = { .alg = FRS_SORTED, .sets = 1, .device = -1 };
+	struct sets_run run;
 	int rc;
 
 	frs_options_init(&o.opt);
@@ -271,13 +268,13 @@ int main(int argc, char **argv)
 	check_room(&o, sizeof(struct frs_elem));
 	cli_options_done();
 	check_matrix(&o);
-	if ((rc = api_sets_open(&o, &run)) < 0)
+	if ((rc = sets_open(&o, &run)) < 0)
 		rc == -2 ? cli_die_device(o.alg != FRS_FLAT1) : cli_die_lib();
 	cli_out_check(o.out, !o.count_only && !o.text);
-	if (api_sets_write(&o, &run) < 0)
+	if (sets_write(&o, &run) < 0)
 		cli_die_lib();
 	if (o.verbose)
-		cli_sets_report(stderr, &o, &run);
-	api_sets_close(&run);
+		sets_report(stderr, &o, &run);
+	sets_close(&run);
 	return 0;
 }

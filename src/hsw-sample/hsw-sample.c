@@ -8,18 +8,14 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "api/hswrun.h"
 #include "cli/cli.h"
-#include "cli/output.h"
-#include "cli/ptsopt.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
-#include "base/mem.h"
+#include "hsw-sample/hswrun.h"
 #include "base/outfile.h"
 #include "base/par.h"
 #include "base/progress.h"
 #include "formats/ptsio.h"
 #include "formats/setsout.h"
+#include "maps/imap.h"
 #include "sample/refsamp.h"
 
 static const char usage[] =
@@ -185,8 +181,7 @@ static double *make_input(struct opts *o, uint64_t seed)
 		return pts;
 	}
 	snprintf(what, sizeof what, "-n %llu", (unsigned long long)o->n);
-	if ((pts = mem_calloc(what, o->n, 2 * sizeof *pts)) == NULL)
-		cli_die_lib();
+	pts = cli_calloc(what, o->n, 2 * sizeof *pts);
 	if (o->input == INPUT_DART) {
 		uint64_t placed;
 		if (o->n > REFSAMP_MAX_N) {

@@ -11,8 +11,6 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "cli/output.h"
-#include "cli/ptsopt.h"
 #include "analysis/disc.h"
 #include "analysis/discint.h"
 #include "analysis/groupstat.h"

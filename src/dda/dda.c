@@ -12,18 +12,16 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "cli/output.h"
-#include "cli/ptsopt.h"
 #include "analysis/ddaspec.h"
 #include "analysis/density.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
-#include "base/outfile.h"
 #include "analysis/plot.h"
-#include "base/progress.h"
-#include "formats/ptsets.h"
 #include "analysis/raster.h"
 #include "analysis/spectrum.h"
+#include "base/outfile.h"
+#include "base/progress.h"
+#include "formats/ptsets.h"
+#include "maps/imap.h"
+#include "maps/mapload.h"
 
 static const char usage[] =
     "usage: dda [--fourier | --dda | --density | --rdf] [--summary]\n"

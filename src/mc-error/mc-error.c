@@ -11,16 +11,14 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
-#include "cli/output.h"
-#include "cli/ptsopt.h"
 #include "analysis/groupstat.h"
 #include "analysis/integrand.h"
 #include "base/datadir.h"
 #include "base/err.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
 #include "base/outfile.h"
 #include "formats/ptsets.h"
+#include "maps/imap.h"
+#include "maps/mapload.h"
 
 static const char usage[] =
     "usage: mc-error [-f NAME[,NAME...]] [--sets N] [--group n|file|all]\n"

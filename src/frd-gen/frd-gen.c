@@ -9,17 +9,15 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
-#include "cli/output.h"
-#include "frd/frdgen.h"
-#include "frd/frdgencl.h"
-#include "formats/frdio.h"
-#include "frd/frdq.h"
-#include "base/mem.h"
 #include "base/ocl.h"
 #include "base/outfile.h"
 #include "base/par.h"
 #include "base/parse.h"
 #include "base/progress.h"
+#include "formats/frdio.h"
+#include "frd/frdgen.h"
+#include "frd/frdgencl.h"
+#include "frd/frdq.h"
 #include "frd/vac.h"
 
 static const char usage[] =
@@ -220,8 +218,7 @@ static void check_memory(const struct frdgen_params *pr, uint64_t bytes)
 	char what[64];
 
 	snprintf(what, sizeof what, "-s %ux%ux%u", pr->w, pr->h, pr->d);
-	if (mem_check(what, bytes, 1) < 0)
-		cli_die_lib();
+	cli_mem_check(what, bytes, 1);
 }
 
 /* What the options asked for beyond struct frdgen_params. */
