@@ -49,7 +49,7 @@ PROGS = imap frd-gen frd-prep frs-sample pts-render ref-sample hsw-sample \
 # tests link too).
 own = $(filter-out src/$(1)/$(1).c,$(wildcard src/$(1)/*.c))
 OWNPROGS = $(foreach p,$(PROGS),$(if $(call own,$(p)),$(p)))
-# The library by stage (README, Layout): base, maps, formats, frd, sample,
+# The library by stage (README, Layout): base, maps, formats, sample,
 # analysis, api; each includes only from its own folder and those before.
 LIBSRC = $(wildcard src/lib/*/*.c)
 LIBCXXSRC = $(wildcard src/lib/*/*.cc)

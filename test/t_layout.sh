@@ -1,7 +1,7 @@
 #!/bin/sh
 # The library's layout (README, Layout): a folder of src/lib includes
 # headers only from itself and the folders before it, base, maps,
-# formats, frd, sample and analysis (side by side: neither includes the
+# formats, sample and analysis (side by side: neither includes the
 # other), api; only api includes the public frs.h; nothing in src/lib
 # includes the programs' src/cli; every include names its folder; no two
 # headers include each other, directly or through others; and no two
@@ -13,8 +13,8 @@ TOP=$(cd "$(dirname "$0")/.." && pwd)
 
 rank() {
 	case $1 in
-	base) echo 0 ;; maps) echo 1 ;; formats) echo 2 ;; frd) echo 3 ;;
-	sample | analysis) echo 4 ;; api) echo 5 ;; *) echo 99 ;;
+	base) echo 0 ;; maps) echo 1 ;; formats) echo 2 ;;
+	sample | analysis) echo 3 ;; api) echo 4 ;; *) echo 99 ;;
 	esac
 }
 
@@ -114,31 +114,30 @@ fi
 # includes no program's folder.
 libheaders() {
 	case $1 in
-	dda) echo analysis/ddaspec.h analysis/density.h analysis/plot.h \
-	    analysis/raster.h analysis/spectrum.h base/outfile.h \
-	    base/progress.h formats/ptsets.h maps/imap.h maps/mapload.h ;;
-	discrepancy) echo analysis/disc.h analysis/discint.h \
-	    analysis/groupstat.h base/outfile.h base/par.h base/progress.h \
+	dda) echo analysis/raster.h base/err.h base/fft.h base/mem.h \
+	    base/num.h base/outfile.h base/par.h base/progress.h \
+	    formats/ptsets.h maps/imap.h maps/mapload.h ;;
+	discrepancy) echo analysis/groupstat.h base/err.h base/mem.h \
+	    base/num.h base/outfile.h base/par.h base/progress.h base/rng.h \
 	    formats/ptsets.h ;;
-	frd-gen) echo base/ocl.h base/outfile.h base/par.h base/parse.h \
-	    base/progress.h formats/frdio.h frd/frdgen.h frd/frdgencl.h \
-	    frd/frdq.h frd/vac.h ;;
-	frd-prep) echo api/api.h base/io.h base/outfile.h \
-	    formats/frdimport.h formats/frdio.h maps/imap.h maps/mapload.h \
-	    sample/frpio.h sample/frscore.h ;;
-	frs-sample) echo api/api.h base/datadir.h base/err.h \
-	    base/outfile.h base/progress.h formats/ptsio.h formats/setsout.h \
-	    maps/imap.h maps/mapload.h maps/vol.h sample/frscl.h \
-	    sample/frscore.h ;;
+	frd-gen) echo base/err.h base/fft.h base/io.h base/mem.h base/num.h \
+	    base/ocl.h base/outfile.h base/par.h base/parse.h \
+	    base/progress.h base/rng.h formats/frdio.h ;;
+	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
+	    base/outfile.h formats/frdio.h maps/imap.h maps/mapload.h \
+	    maps/pngio.h sample/frpio.h sample/frscore.h ;;
+	frs-sample) echo api/api.h base/datadir.h base/err.h base/outfile.h \
+	    base/progress.h formats/ptsio.h formats/setsout.h maps/imap.h \
+	    maps/mapload.h maps/vol.h sample/frscl.h sample/frscore.h ;;
 	hsw-sample) echo api/api.h base/err.h base/mem.h base/ocl.h \
 	    base/outfile.h base/par.h base/progress.h formats/ptsio.h \
-	    formats/setsout.h maps/imap.h maps/mapload.h sample/hswcl.h \
+	    formats/setsout.h maps/imap.h maps/mapload.h sample/hsw.h \
 	    sample/refsamp.h ;;
 	imap) echo base/outfile.h maps/exrio.h maps/imap.h maps/mapload.h \
 	    maps/pngio.h maps/spec.h maps/vol.h ;;
-	mc-error) echo analysis/groupstat.h analysis/integrand.h \
-	    base/datadir.h base/err.h base/outfile.h formats/ptsets.h \
-	    maps/imap.h maps/mapload.h ;;
+	mc-error) echo analysis/groupstat.h base/datadir.h base/err.h \
+	    base/num.h base/outfile.h formats/ptsets.h maps/imap.h \
+	    maps/mapload.h ;;
 	pts-render) echo analysis/raster.h base/outfile.h formats/ptsets.h \
 	    formats/ptsio.h maps/imap.h maps/mapload.h ;;
 	ref-sample) echo base/outfile.h base/progress.h formats/ptsio.h \
@@ -159,7 +158,7 @@ for p in $progs; do
 	    sed 's/:#include "\(.*\)"$/ \1/' >"$T/pinc"
 	while read -r file target; do
 		case $target in
-		frs.h | cli/cli.h) ;;
+		frs.h | cli/cli.h | ../../cl/*.cl) ;;
 		"$p"/*) [ -f "$TOP/src/$target" ] ||
 		    echo "$file: $target is not in src/$p" ;;
 		*) case " $allowed " in

@@ -12,11 +12,11 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "analysis/ddaspec.h"
-#include "analysis/density.h"
-#include "analysis/plot.h"
+#include "dda/ddaspec.h"
+#include "dda/density.h"
+#include "dda/plot.h"
 #include "analysis/raster.h"
-#include "analysis/spectrum.h"
+#include "dda/spectrum.h"
 #include "base/outfile.h"
 #include "base/progress.h"
 #include "formats/ptsets.h"

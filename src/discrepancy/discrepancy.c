@@ -11,8 +11,8 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "analysis/disc.h"
-#include "analysis/discint.h"
+#include "discrepancy/disc.h"
+#include "discrepancy/discint.h"
 #include "analysis/groupstat.h"
 #include "base/outfile.h"
 #include "base/par.h"

@@ -15,10 +15,10 @@
 #include "base/parse.h"
 #include "base/progress.h"
 #include "formats/frdio.h"
-#include "frd/frdgen.h"
-#include "frd/frdgencl.h"
-#include "frd/frdq.h"
-#include "frd/vac.h"
+#include "frd-gen/frdgen.h"
+#include "frd-gen/frdgencl.h"
+#include "frd-gen/frdq.h"
+#include "frd-gen/vac.h"
 
 static const char usage[] =
     "usage: frd-gen -s SIZE [-k 2|3] [-p P] [--tol EPS | --exact] [-S SEED]\n"

@@ -11,7 +11,7 @@
 #include "api/api.h"
 #include "base/io.h"
 #include "base/outfile.h"
-#include "formats/frdimport.h"
+#include "frd-prep/frdimport.h"
 #include "formats/frdio.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"

@@ -13,7 +13,7 @@
 
 #include "api/api.h"
 #include "base/ocl.h"
-#include "sample/hswcl.h"
+#include "hsw-sample/hswcl.h"
 
 struct hsw_run {
 	frs_hsw *hw;

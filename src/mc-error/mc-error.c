@@ -12,7 +12,7 @@
 
 #include "cli/cli.h"
 #include "analysis/groupstat.h"
-#include "analysis/integrand.h"
+#include "mc-error/integrand.h"
 #include "base/datadir.h"
 #include "base/err.h"
 #include "base/outfile.h"

@@ -5,7 +5,7 @@
  * See spectrum.h for the mathematics and the error bounds.
  */
 #define _POSIX_C_SOURCE 200809L
-#include "analysis/spectrum.h"
+#include "dda/spectrum.h"
 #include "base/err.h"
 #include "base/num.h"
 #include "base/mem.h"

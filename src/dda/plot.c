@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "analysis/plot.h"
+#include "dda/plot.h"
 
 #include <math.h>
 #include <stdio.h>

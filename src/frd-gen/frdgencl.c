@@ -19,8 +19,8 @@
  * trip to the device costs far more than the bytes).
  */
 #define _POSIX_C_SOURCE 200809L
-#include "frd/frdgencl.h"
-#include "frd/frdgenint.h"
+#include "frd-gen/frdgencl.h"
+#include "frd-gen/frdgenint.h"
 #include "base/err.h"
 #include "base/mem.h"
 #include "base/progress.h"

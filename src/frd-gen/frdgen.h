@@ -59,7 +59,7 @@
 #define FRS_FRDGEN_H
 
 #include "formats/frdio.h"
-#include "frd/frdparam.h"
+#include "frd-gen/frdparam.h"
 
 struct progress;
 

@@ -1,6 +1,6 @@
 /* The generators' parameters and the laws that follow (frdparam.h). */
 #define _POSIX_C_SOURCE 200809L
-#include "frd/frdparam.h"
+#include "frd-gen/frdparam.h"
 #include "base/err.h"
 #include "base/rng.h"
 

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/ddaspec.h"
+#include "dda/ddaspec.h"
 #include "base/err.h"
 #include "base/par.h"
 

@@ -10,7 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "frd/frdparam.h"
+#include "frd-gen/frdparam.h"
 
 /* The sizes a run works with. */
 struct frdgen_size {

@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "analysis/disc.h"
+#include "discrepancy/disc.h"
 
 struct disc_cols {
 	uint32_t g;		/* g x g cells of side 1/g */

@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "formats/frdimport.h"
+#include "frd-prep/frdimport.h"
 #include "base/num.h"
 #include "formats/frdio.h"
 #include "base/err.h"

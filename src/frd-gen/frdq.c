@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "frd/frdq.h"
+#include "frd-gen/frdq.h"
 #include "base/mem.h"
 #include "base/err.h"
 #include "base/fft.h"

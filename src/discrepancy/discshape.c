@@ -15,12 +15,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/disc.h"
-#include "analysis/discint.h"
-#include "analysis/discshape.h"
+#include "discrepancy/disc.h"
+#include "discrepancy/discint.h"
+#include "discrepancy/discshape.h"
 #include "base/err.h"
 #include "base/num.h"
-#include "base/geom.h"
+#include "discrepancy/geom.h"
 #include "base/rng.h"
 
 /* Two uniform doubles in [0, 1) with 53 bits each from one Philox block

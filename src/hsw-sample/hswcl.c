@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "base/err.h"
-#include "sample/hswcl.h"
+#include "hsw-sample/hswcl.h"
 #include "base/progress.h"
 
 /* Most points per kernel launch (256 MiB of coordinates): larger sets

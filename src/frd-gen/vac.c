@@ -3,8 +3,8 @@
  * integer energies and the tie rule.
  */
 #define _POSIX_C_SOURCE 200809L
-#include "frd/vac.h"
-#include "frd/frdgen.h"
+#include "frd-gen/vac.h"
+#include "frd-gen/frdgen.h"
 #include "base/err.h"
 #include "base/mem.h"
 #include "base/progress.h"

@@ -20,11 +20,11 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "analysis/disc.h"
-#include "analysis/discint.h"
+#include "discrepancy/disc.h"
+#include "discrepancy/discint.h"
 #include "base/err.h"
 #include "base/num.h"
-#include "base/geom.h"
+#include "discrepancy/geom.h"
 
 double disc_half_pos(uint32_t i, uint32_t s)
 {

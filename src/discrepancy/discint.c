@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/discint.h"
+#include "discrepancy/discint.h"
 #include "base/err.h"
 #include "base/progress.h"
 

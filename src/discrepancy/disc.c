@@ -16,10 +16,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/disc.h"
-#include "analysis/discint.h"
+#include "discrepancy/disc.h"
+#include "discrepancy/discint.h"
 #include "base/err.h"
-#include "base/geom.h"
+#include "discrepancy/geom.h"
 
 static const char *const names[] = { "star", "rect", "quad", "half",
     "circle" };

@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/disc.h"
-#include "analysis/discint.h"
+#include "discrepancy/disc.h"
+#include "discrepancy/discint.h"
 #include "base/err.h"
 
 static int dcmp(const void *a, const void *b)

@@ -18,7 +18,7 @@
 #ifndef FRS_FRDGENCL_H
 #define FRS_FRDGENCL_H
 
-#include "frd/frdgen.h"
+#include "frd-gen/frdgen.h"
 #include "base/ocl.h"
 
 /* Generate on an open device; out is allocated.  prog may be NULL. */

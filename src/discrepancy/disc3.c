@@ -12,11 +12,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "analysis/disc.h"
-#include "analysis/discint.h"
+#include "discrepancy/disc.h"
+#include "discrepancy/discint.h"
 #include "base/err.h"
 #include "base/num.h"
-#include "base/geom.h"
+#include "discrepancy/geom.h"
 #include "base/mem.h"
 
 #define L2_ROWS 32		/* rows of the pair sum per chunk */

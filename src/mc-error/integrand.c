@@ -2,7 +2,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "analysis/integrand.h"
+#include "mc-error/integrand.h"
 #include "base/num.h"
 
 #define GAUSS_SIGMA 0.15

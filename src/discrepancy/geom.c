@@ -4,7 +4,7 @@
  * expansion (Shewchuk 1997, grow-expansion with zero elimination).
  */
 #define _POSIX_C_SOURCE 200809L
-#include "base/geom.h"
+#include "discrepancy/geom.h"
 
 static void two_diff(double a, double b, double *hi, double *lo)
 {

@@ -1,7 +1,7 @@
 /* The CPU generator of Forced Random Dithering matrices (frdgen.h). */
 #define _POSIX_C_SOURCE 200809L
-#include "frd/frdgen.h"
-#include "frd/frdgenint.h"
+#include "frd-gen/frdgen.h"
+#include "frd-gen/frdgenint.h"
 #include "base/err.h"
 #include "base/mem.h"
 #include "base/io.h"
@@ -15,8 +15,8 @@
 
 /* frd_toff, frd_tgap and frd_extent: one definition with the kernel
  * (defs.cl: the common subset's FRS_FN). */
-#include "../../../cl/defs.cl"
-#include "../../../cl/frdgen.cl"
+#include "../../cl/defs.cl"
+#include "../../cl/frdgen.cl"
 
 #define MAXLEV 40
 

@@ -1,6 +1,6 @@
 /* What the CPU and OpenCL generators share (frdgenint.h). */
 #define _POSIX_C_SOURCE 200809L
-#include "frd/frdgenint.h"
+#include "frd-gen/frdgenint.h"
 #include "base/err.h"
 
 #include <math.h>

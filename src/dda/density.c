@@ -9,7 +9,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "analysis/density.h"
+#include "dda/density.h"
 #include "base/err.h"
 #include "base/num.h"
 #include "maps/imap.h"
