@@ -99,7 +99,8 @@ LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o) \
 PROGBIN = $(PROGS:%=$(B)/bin/%)
 PROGMAIN = $(foreach p,$(PROGS),$(B)/obj/$(p)/$(p).o)
 OWNAR = $(OWNPROGS:%=$(B)/obj/%/own.a)
-OWNOBJ = $(foreach p,$(OWNPROGS),$(patsubst src/%.c,$(B)/obj/%.o,$(call own,$(p))))
+OWNOBJ = $(foreach p,$(OWNPROGS),\
+	$(patsubst src/%.c,$(B)/obj/%.o,$(call own,$(p))))
 TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%) $(HARDSRC:test/hard/%.c=$(B)/test/%)
 REFBIN = $(REFNAMES:%=$(B)/test/%)
 USERBIN = $(USERSRC:test/%.c=$(B)/test/%)
@@ -207,8 +208,8 @@ LINK = $(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(filter %.a,$^) $(LIBS)
 $(B)/obj/%/own.a:
 	rm -f $@ && $(AR) rcs $@ $^
 define program
-$(B)/bin/$(1): $(B)/obj/$(1)/$(1).o $(if $(call own,$(1)),$(B)/obj/$(1)/own.a) \
-    $(PROGLIBS)
+$(B)/bin/$(1): $(B)/obj/$(1)/$(1).o \
+    $(if $(call own,$(1)),$(B)/obj/$(1)/own.a) $(PROGLIBS)
 	@mkdir -p $$(@D)
 	$$(LINK) -o $$@
 $(B)/obj/$(1)/own.a: $(patsubst src/%.c,$(B)/obj/%.o,$(call own,$(1)))

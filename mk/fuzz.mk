@@ -26,7 +26,8 @@ tests: $(REPLAYBIN)
 # again (src/P/P.c), main renamed main_P (dashes as underscores), with
 # their own archives.
 $(eval $(call objects,$(B)/fuzz,test/fuzz))
-$(eval $(call objects,$(B)/fuzz/prog,src,-Dmain=main_$$(subst -,_,$$(notdir $$*))))
+$(eval $(call objects,$(B)/fuzz/prog,src,\
+	-Dmain=main_$$(subst -,_,$$(notdir $$*))))
 FUZZMAIN = $(foreach p,$(PROGS),fuzz/prog/$(p)/$(p).o)
 
 $(B)/fuzz/replay_%: $(B)/fuzz/fuzz_%.o $(B)/fuzz/replay.o $(TESTLIBS)
@@ -42,8 +43,9 @@ fuzz-build:
 	@$(MAKE) --no-print-directory VARIANT=fuzz CC=$(FUZZ_CC) \
 	    CXX=$(FUZZ_CXX) VFLAGS='$(FUZZ_VFLAGS)' $(FUZZBIN)
 
-build/fuzz/fuzz_%: build/fuzz/fuzz/fuzz_%.o $(OWNPROGS:%=build/fuzz/obj/%/own.a) \
-    build/fuzz/libfrscli.a build/fuzz/libfrs.a
+build/fuzz/fuzz_%: build/fuzz/fuzz/fuzz_%.o \
+    $(OWNPROGS:%=build/fuzz/obj/%/own.a) build/fuzz/libfrscli.a \
+    build/fuzz/libfrs.a
 	$(FUZZ_CXX) -fsanitize=fuzzer $(FUZZ_SAN) $(filter %.o,$^) \
 	    $(filter %.a,$^) $(LIBS) -o $@
 build/fuzz/fuzz_opts: $(FUZZMAIN:%=build/fuzz/%)

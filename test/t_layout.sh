@@ -181,8 +181,10 @@ done >"$T/bad"
 	    echo "$file: $target is not the library's" ;;
 	esac
 done >>"$T/bad"
-[ ! -s "$T/bad" ] && ok "the programs include frs.h, cli/cli.h, their own folder's headers and their listed library headers ($total in all)" || {
-	nok "the programs include frs.h, cli/cli.h, their own folder's headers and their listed library headers"
+what="the programs include frs.h, cli/cli.h, their own headers and"
+what="$what their listed library headers"
+[ ! -s "$T/bad" ] && ok "$what ($total in all)" || {
+	nok "$what"
 	sed 's/^/# /' "$T/bad"
 }
 
