@@ -44,7 +44,12 @@ CMOCKA_LIBS = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
 PROGS = imap frd-gen frd-prep frs-sample pts-render ref-sample hsw-sample \
 	discrepancy dda mc-error
-# The library by stage (README, Layout): base, maps, formats, frd, sample,
+# A program's home is src/P/: its main P.c and the work only it does (the
+# rest of src/P/*.c, an archive of its own, $(B)/obj/P/own.a, which the
+# tests link too).
+own = $(filter-out src/$(1)/$(1).c,$(wildcard src/$(1)/*.c))
+OWNPROGS = $(foreach p,$(PROGS),$(if $(call own,$(p)),$(p)))
+# The library by stage (README, Layout): base, maps, formats, sample,
 # analysis, api; each includes only from its own folder and those before.
 LIBSRC = $(wildcard src/lib/*/*.c)
 LIBCXXSRC = $(wildcard src/lib/*/*.cc)
@@ -92,6 +97,10 @@ CLSRC = $(wildcard cl/*.cl)
 LIBOBJ = $(LIBSRC:src/lib/%.c=$(B)/lib/%.o) \
 	$(LIBCXXSRC:src/lib/%.cc=$(B)/lib/%.o) $(B)/gen/clsrc.o
 PROGBIN = $(PROGS:%=$(B)/bin/%)
+PROGMAIN = $(foreach p,$(PROGS),$(B)/obj/$(p)/$(p).o)
+OWNAR = $(OWNPROGS:%=$(B)/obj/%/own.a)
+OWNOBJ = $(foreach p,$(OWNPROGS),\
+	$(patsubst src/%.c,$(B)/obj/%.o,$(call own,$(p))))
 TESTBIN = $(TESTSRC:test/%.c=$(B)/test/%) $(HARDSRC:test/hard/%.c=$(B)/test/%)
 REFBIN = $(REFNAMES:%=$(B)/test/%)
 USERBIN = $(USERSRC:test/%.c=$(B)/test/%)
@@ -131,8 +140,8 @@ endef
 
 # The library with its embedded kernels ($(B)/gen) twice: for libfrs.a,
 # and position-independent for libfrs.so (below); the programs' helpers;
-# the programs; the tests (test/hard/ includes test/'s helpers), the
-# benchmark drivers and the references.
+# the programs (src/P/ into $(B)/obj/P/); the tests (test/hard/ includes
+# test/'s helpers), the benchmark drivers and the references.
 $(eval $(call objects,$(B)/lib,src/lib))
 $(eval $(call objects,$(B)/gen,$(B)/gen))
 $(eval $(call objects,$(B)/pic/lib,src/lib,-fPIC))
@@ -188,25 +197,35 @@ $(B)/$(SOFILE): $(PICOBJ) $(SOMAP)
 $(B)/$(SONAME) $(B)/libfrs.so: $(B)/$(SOFILE)
 	ln -sf $(SOFILE) $@
 
-# What the programs, tests, benchmarks and fuzz drivers link (test/user_*.c:
-# libfrs alone, as a user has it).
+# What the programs link: their own archive (when they have one), the
+# helpers and libfrs; the tests, benchmarks and fuzz drivers every
+# program's own archive too (test/user_*.c: libfrs alone, as a user has
+# it).
 PROGLIBS = $(B)/libfrscli.a $(B)/libfrs.a
-LINK = $(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(PROGLIBS) $(LIBS)
+TESTLIBS = $(OWNAR) $(PROGLIBS)
+LINK = $(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(filter %.a,$^) $(LIBS)
 
-$(B)/bin/%: $(B)/obj/%.o $(PROGLIBS)
-	@mkdir -p $(@D)
-	$(LINK) -o $@
+$(B)/obj/%/own.a:
+	rm -f $@ && $(AR) rcs $@ $^
+define program
+$(B)/bin/$(1): $(B)/obj/$(1)/$(1).o \
+    $(if $(call own,$(1)),$(B)/obj/$(1)/own.a) $(PROGLIBS)
+	@mkdir -p $$(@D)
+	$$(LINK) -o $$@
+$(B)/obj/$(1)/own.a: $(patsubst src/%.c,$(B)/obj/%.o,$(call own,$(1)))
+endef
+$(foreach p,$(PROGS),$(eval $(call program,$(p))))
 
-$(B)/test/test_%: $(B)/test/test_%.o $(PROGLIBS)
+$(B)/test/test_%: $(B)/test/test_%.o $(TESTLIBS)
 	$(LINK) $(CMOCKA_LIBS) -o $@
 
-$(REFBIN): $(B)/test/%: $(B)/test/%.o $(PROGLIBS)
+$(REFBIN): $(B)/test/%: $(B)/test/%.o $(TESTLIBS)
 	$(LINK) -o $@
 
 $(B)/test/user_%: $(B)/test/user_%.o $(B)/libfrs.a
 	$(CC) $(ALL_LDFLAGS) $< $(B)/libfrs.a $(LIBS) -o $@
 
--include $(LIBOBJ:.o=.d) $(CLIOBJ:.o=.d) $(PROGS:%=$(B)/obj/%.d) \
+-include $(LIBOBJ:.o=.d) $(CLIOBJ:.o=.d) $(PROGMAIN:.o=.d) $(OWNOBJ:.o=.d) \
 	$(TESTBIN:=.d) $(REFBIN:=.d) $(USERBIN:=.d) $(PICOBJ:.o=.d)
 
 deps:

@@ -1,10 +1,10 @@
 /*
- * Forced Random Dithering on the device (src/lib/frd/frdgencl.c): the force
+ * Forced Random Dithering on the device (src/frd-gen/frdgencl.c): the force
  * update of one insertion and the minimum of every tile it touched.  The
  * toroidal offsets and reaches are one definition with the CPU
- * (src/lib/frd/frdgen.c includes this file; the kernel is OpenCL's only).
+ * (src/frd-gen/frdgen.c includes this file; the kernel is OpenCL's only).
  *
- * The field is stored tile by tile as in src/lib/frd/frdgen.c (tiles of
+ * The field is stored tile by tile as in src/frd-gen/frdgen.c (tiles of
  * 2^LX x 2^LY x 2^LZ cells, row-major inside a tile, padding cells +inf).
  * One work-group per tile of the insertion's window, one work-item per
  * tile row.  Every cell gets at most one add per insertion, of an entry of

@@ -22,16 +22,19 @@ REPLAYBIN = $(FUZZ_TARGETS:%=$(B)/fuzz/replay_%)
 
 tests: $(REPLAYBIN)
 
-# The drivers; fuzz_opts runs every program's main: the programs again,
-# main renamed main_NAME (dashes as underscores).
+# The drivers; fuzz_opts runs every program's main: the programs' mains
+# again (src/P/P.c), main renamed main_P (dashes as underscores), with
+# their own archives.
 $(eval $(call objects,$(B)/fuzz,test/fuzz))
-$(eval $(call objects,$(B)/fuzz/prog,src,-Dmain=main_$$(subst -,_,$$*)))
+$(eval $(call objects,$(B)/fuzz/prog,src,\
+	-Dmain=main_$$(subst -,_,$$(notdir $$*))))
+FUZZMAIN = $(foreach p,$(PROGS),fuzz/prog/$(p)/$(p).o)
 
-$(B)/fuzz/replay_%: $(B)/fuzz/fuzz_%.o $(B)/fuzz/replay.o $(PROGLIBS)
+$(B)/fuzz/replay_%: $(B)/fuzz/fuzz_%.o $(B)/fuzz/replay.o $(TESTLIBS)
 	$(LINK) -o $@
-$(B)/fuzz/replay_opts: $(PROGS:%=$(B)/fuzz/prog/%.o)
+$(B)/fuzz/replay_opts: $(FUZZMAIN:%=$(B)/%)
 
--include $(wildcard $(B)/fuzz/*.d $(B)/fuzz/prog/*.d)
+-include $(wildcard $(B)/fuzz/*.d $(B)/fuzz/prog/*/*.d)
 
 # The fuzz variant: the library and the drivers again, built by clang
 # with the fuzzer's instrumentation into build/fuzz/ (its drivers in
@@ -40,11 +43,12 @@ fuzz-build:
 	@$(MAKE) --no-print-directory VARIANT=fuzz CC=$(FUZZ_CC) \
 	    CXX=$(FUZZ_CXX) VFLAGS='$(FUZZ_VFLAGS)' $(FUZZBIN)
 
-build/fuzz/fuzz_%: build/fuzz/fuzz/fuzz_%.o build/fuzz/libfrscli.a \
+build/fuzz/fuzz_%: build/fuzz/fuzz/fuzz_%.o \
+    $(OWNPROGS:%=build/fuzz/obj/%/own.a) build/fuzz/libfrscli.a \
     build/fuzz/libfrs.a
 	$(FUZZ_CXX) -fsanitize=fuzzer $(FUZZ_SAN) $(filter %.o,$^) \
-	    build/fuzz/libfrscli.a build/fuzz/libfrs.a $(LIBS) -o $@
-build/fuzz/fuzz_opts: $(PROGS:%=build/fuzz/fuzz/prog/%.o)
+	    $(filter %.a,$^) $(LIBS) -o $@
+build/fuzz/fuzz_opts: $(FUZZMAIN:%=build/fuzz/%)
 
 fuzz: $(FUZZ_TARGETS:%=fuzz-%)
 

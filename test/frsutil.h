@@ -11,7 +11,7 @@
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "base/rng.h"
-#include "frd/frdgen.h"
+#include "frd-gen/frdgen.h"
 
 /* The size fields of a generator's parameters (frdgen_params,
  * vac_params): d 1 is a 2-D matrix. */

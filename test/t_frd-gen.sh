@@ -146,7 +146,7 @@ expect_fail "full disk" 1 "No space left" - frd-gen -s 16 -o /dev/full
 : >"$T/empty.frd"
 expect_fail "--quality of an empty file" 1 "empty.frd: empty file" - frd-gen --quality "$T/empty.frd"
 
-# --method vac: the void-and-cluster baseline (src/lib/frd/vac.h).
+# --method vac: the void-and-cluster baseline (src/frd-gen/vac.h).
 check "--method vac -s 64" frd-gen --method vac -s 64 -o "$T/v.frd"
 check "vac: a permutation (frd-prep --check)" frd-prep --check -a none \
     -o "$T/vc.frd" "$T/v.frd"

@@ -1,23 +1,25 @@
 #!/bin/sh
 # The library's layout (README, Layout): a folder of src/lib includes
 # headers only from itself and the folders before it, base, maps,
-# formats, frd, sample and analysis (side by side: neither includes the
+# formats, sample and analysis (side by side: neither includes the
 # other), api; only api includes the public frs.h; nothing in src/lib
 # includes the programs' src/cli; every include names its folder; no two
 # headers include each other, directly or through others; and no two
-# modules (a .c and its .h) depend on each other that way.
+# modules (a .c and its .h) depend on each other that way.  The
+# programs, one folder each, include frs.h, cli/cli.h, their own headers
+# and a listed set of the library's.
 . "$(dirname "$0")/lib.sh"
 TOP=$(cd "$(dirname "$0")/.." && pwd)
 
 rank() {
 	case $1 in
-	base) echo 0 ;; maps) echo 1 ;; formats) echo 2 ;; frd) echo 3 ;;
-	sample | analysis) echo 4 ;; api) echo 5 ;; *) echo 99 ;;
+	base) echo 0 ;; maps) echo 1 ;; formats) echo 2 ;;
+	sample | analysis) echo 3 ;; api) echo 4 ;; *) echo 99 ;;
 	esac
 }
 
 # "FILE TARGET" for every quoted include of src/lib.
-(cd "$TOP" && grep -o '#include "[^"]*"' src/lib/*/*.[ch] src/lib/*/*.cc) |
+(cd "$TOP" && grep -Ho '#include "[^"]*"' src/lib/*/*.[ch] src/lib/*/*.cc) |
     sed 's/:#include "\(.*\)"$/ \1/' >"$T/inc"
 [ -s "$T/inc" ] && ok "the library's includes are listed" ||
     nok "the library's includes are listed"
@@ -103,5 +105,87 @@ if [ -d "$OBJ/api" ] && command -v nm >/dev/null 2>&1; then
 else
 	ok "# SKIP no objects in $OBJ or no nm: the call graph is not checked"
 fi
+
+# The programs (README, Layout): a program's files lie in its folder
+# src/P/ (its main P.c and the work only it does) and include frs.h, the
+# programs' one shared header cli/cli.h, the headers of their own folder
+# and the library headers listed here for it, a list that only shrinks:
+# a header a program no longer includes must be struck from it.  src/cli
+# includes no program's folder.
+libheaders() {
+	case $1 in
+	dda) echo analysis/raster.h base/err.h base/fft.h base/mem.h \
+	    base/num.h base/outfile.h base/par.h base/progress.h \
+	    formats/ptsets.h maps/imap.h maps/mapload.h ;;
+	discrepancy) echo analysis/groupstat.h base/err.h base/mem.h \
+	    base/num.h base/outfile.h base/par.h base/progress.h base/rng.h \
+	    formats/ptsets.h ;;
+	frd-gen) echo base/err.h base/fft.h base/io.h base/mem.h base/num.h \
+	    base/ocl.h base/outfile.h base/par.h base/parse.h \
+	    base/progress.h base/rng.h formats/frdio.h ;;
+	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
+	    base/outfile.h formats/frdio.h maps/imap.h maps/mapload.h \
+	    maps/pngio.h sample/frpio.h sample/frscore.h ;;
+	frs-sample) echo api/api.h base/datadir.h base/err.h base/outfile.h \
+	    base/progress.h formats/ptsio.h formats/setsout.h maps/imap.h \
+	    maps/mapload.h maps/vol.h sample/frscl.h sample/frscore.h ;;
+	hsw-sample) echo api/api.h base/err.h base/mem.h base/ocl.h \
+	    base/outfile.h base/par.h base/progress.h formats/ptsio.h \
+	    formats/setsout.h maps/imap.h maps/mapload.h sample/hsw.h \
+	    sample/refsamp.h ;;
+	imap) echo base/outfile.h maps/exrio.h maps/imap.h maps/mapload.h \
+	    maps/pngio.h maps/spec.h maps/vol.h ;;
+	mc-error) echo analysis/groupstat.h base/datadir.h base/err.h \
+	    base/num.h base/outfile.h formats/ptsets.h maps/imap.h \
+	    maps/mapload.h ;;
+	pts-render) echo analysis/raster.h base/outfile.h formats/ptsets.h \
+	    formats/ptsio.h maps/imap.h maps/mapload.h ;;
+	ref-sample) echo base/outfile.h base/progress.h formats/ptsio.h \
+	    formats/setsout.h maps/imap.h maps/mapload.h sample/refsamp.h ;;
+	esac
+}
+progs="dda discrepancy frd-gen frd-prep frs-sample hsw-sample imap mc-error
+    pts-render ref-sample"
+: >"$T/bad"
+total=0
+for p in $progs; do
+	if [ ! -f "$TOP/src/$p/$p.c" ]; then
+		echo "src/$p/$p.c: no main in the program's folder"
+		continue
+	fi
+	allowed=$(libheaders "$p")
+	(cd "$TOP" && grep -Ho '#include "[^"]*"' src/"$p"/*.[ch]) |
+	    sed 's/:#include "\(.*\)"$/ \1/' >"$T/pinc"
+	while read -r file target; do
+		case $target in
+		frs.h | cli/cli.h | ../../cl/*.cl) ;;
+		"$p"/*) [ -f "$TOP/src/$target" ] ||
+		    echo "$file: $target is not in src/$p" ;;
+		*) case " $allowed " in
+		    *" $target "*) ;;
+		    *) echo "$file: $target, a library header not listed for $p" ;;
+		    esac ;;
+		esac
+	done <"$T/pinc"
+	for h in $allowed; do
+		awk '{ print $2 }' "$T/pinc" | grep -qx "$h" ||
+		    echo "$p: no longer includes $h: strike it from the list"
+	done
+	total=$((total + $(echo $allowed | wc -w)))
+done >"$T/bad"
+(cd "$TOP" && grep -Ho '#include "[^"]*"' src/cli/*.[ch]) |
+    sed 's/:#include "\(.*\)"$/ \1/' | while read -r file target; do
+	case $target in
+	frs.h | cli/*) ;;
+	*) [ -f "$TOP/src/lib/$target" ] ||
+	    echo "$file: $target is not the library's" ;;
+	esac
+done >>"$T/bad"
+what="the programs include frs.h, cli/cli.h, their own headers and"
+what="$what their listed library headers"
+[ ! -s "$T/bad" ] && ok "$what ($total in all)" || {
+	nok "$what"
+	sed 's/^/# /' "$T/bad"
+}
 
 done_testing

@@ -16,12 +16,12 @@ option_words() {
 	awk '/^static const char options\[\] =/ { on = 1; next }
 	    on { s = s $0; if ($0 ~ /;[ \t]*$/) exit }
 	    END { gsub(/"[ \t]*"/, "", s); gsub(/[";]/, "", s); print s }' \
-	    "$TOP/src/$1.c"
+	    "$TOP/src/$1/$1.c"
 }
 
 for p in $progs; do
 	words=$(option_words "$p")
-	[ -n "$words" ] || { nok "$p: no options string in src/$p.c"; continue; }
+	[ -n "$words" ] || { nok "$p: no options string in src/$p/$p.c"; continue; }
 	"$BIN/$p" -h >"$T/usage" 2>&1
 	man=$TOP/man/man1/$p.1
 	# The manual's items: ".It Fl x , Fl -name Ar ..." and the like.

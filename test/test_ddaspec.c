@@ -6,7 +6,7 @@
  * scale invariance of compressed sets, symmetry, thread count and point
  * order, and bad arguments. */
 #include "testutil.h"
-#include "analysis/ddaspec.h"
+#include "dda/ddaspec.h"
 #include "base/par.h"
 #include "base/rng.h"
 

@@ -6,7 +6,7 @@
 #include "testutil.h"
 #include <time.h>
 
-#include "analysis/density.h"
+#include "dda/density.h"
 #include "maps/imap.h"
 #include "base/par.h"
 #include "sample/refsamp.h"

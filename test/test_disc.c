@@ -4,10 +4,10 @@
  * expectation E[d(A)^2] = area(1 - area)/n of uniform random points. */
 #include "testutil.h"
 #include "discref.h"
-#include "analysis/disc.h"
-#include "analysis/discint.h"
-#include "analysis/discshape.h"
-#include "base/geom.h"
+#include "discrepancy/disc.h"
+#include "discrepancy/discint.h"
+#include "discrepancy/discshape.h"
+#include "discrepancy/geom.h"
 #include "base/par.h"
 #include "base/rng.h"
 

@@ -6,7 +6,7 @@
  * every grid box counted (discref.h). */
 #include "testutil.h"
 #include "discref.h"
-#include "analysis/disc.h"
+#include "discrepancy/disc.h"
 #include "base/par.h"
 #include "base/rng.h"
 

@@ -4,8 +4,8 @@
 #include "testutil.h"
 #include "frsutil.h"
 #include "base/fft.h"
-#include "frd/frdgen.h"
-#include "frd/frdq.h"
+#include "frd-gen/frdgen.h"
+#include "frd-gen/frdq.h"
 #include "base/rng.h"
 
 static void params(struct frdgen_params *pr, uint32_t w, uint32_t h,

@@ -4,8 +4,8 @@
  * and devices without fp64 refused with a message. */
 #include "oclutil.h"
 #include "frsutil.h"
-#include "frd/frdgen.h"
-#include "frd/frdgencl.h"
+#include "frd-gen/frdgen.h"
+#include "frd-gen/frdgencl.h"
 
 /* CPU and OpenCL give the same values for these parameters. */
 static void same(const struct frdgen_params *pr)

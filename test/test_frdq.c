@@ -1,10 +1,10 @@
-/* The quality figures of a threshold matrix (frd/frdq.h) against brute
+/* The quality figures of a threshold matrix (frd-gen/frdq.h) against brute
  * force on tiny matrices: the spread by all pairs of cells, the strata by
  * counting, the spectral figures by the DFT written out, and closed forms
  * for lattices. */
 #include "testutil.h"
 #include "frsutil.h"
-#include "frd/frdq.h"
+#include "frd-gen/frdq.h"
 
 #define PI 3.14159265358979323846
 

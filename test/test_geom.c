@@ -1,8 +1,8 @@
-/* Exact predicates and double-double arithmetic (base/geom.h) against
+/* Exact predicates and double-double arithmetic (discrepancy/geom.h) against
  * 128-bit integer arithmetic: the inputs are integers scaled by powers of
  * two, so the integer results are the exact ones. */
 #include "testutil.h"
-#include "base/geom.h"
+#include "discrepancy/geom.h"
 
 #define SCALE 0x1p-52		/* integers of up to 52 bits into [0, 1) */
 

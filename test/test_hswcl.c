@@ -6,7 +6,7 @@
 #include "testutil.h"
 #include "oclutil.h"
 #include "sample/hsw.h"
-#include "sample/hswcl.h"
+#include "hsw-sample/hswcl.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "sample/refsamp.h"

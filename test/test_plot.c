@@ -2,7 +2,7 @@
  * glyphs' cells, boxes map their range's ends to their edge pixels,
  * curves are connected and clamped to the box, NaN breaks them. */
 #include "testutil.h"
-#include "analysis/plot.h"
+#include "dda/plot.h"
 
 static const uint8_t ink[3] = { 10, 20, 30 };
 

@@ -8,7 +8,7 @@
 #include "maps/mapload.h"
 #include "base/par.h"
 #include "base/rng.h"
-#include "analysis/spectrum.h"
+#include "dda/spectrum.h"
 
 #define PI 3.14159265358979323846
 

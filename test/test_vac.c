@@ -1,11 +1,11 @@
-/* The void-and-cluster generator (src/lib/frd/vac.c) against a brute-force
+/* The void-and-cluster generator (src/frd-gen/vac.c) against a brute-force
  * oracle written here from the definition in vac.h (every energy
  * recomputed from scratch at every step, phase 3 from the energies of the
  * 0s), and the blue-noise properties of what it makes. */
 #include "testutil.h"
 #include "frsutil.h"
 #include "base/fft.h"
-#include "frd/vac.h"
+#include "frd-gen/vac.h"
 
 static void params(struct vac_params *pr, uint32_t w, uint32_t h,
     uint32_t d, double sigma, double tol)

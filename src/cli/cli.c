@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli/cli.h"
 #include "frs.h"
+#include "base/mem.h"
 #include "base/ocl.h"
 #include "base/outfile.h"
 #include "base/par.h"
@@ -148,6 +149,21 @@ int cli_ncpu(void)
 {
 	long n = sysconf(_SC_NPROCESSORS_ONLN);
 	return n < 1 ? 1 : n > 1024 ? 1024 : (int)n;
+}
+
+void cli_mem_check(const char *what, uint64_t nmemb, uint64_t size)
+{
+	if (mem_check(what, nmemb, size) < 0)
+		cli_die_lib();
+}
+
+void *cli_calloc(const char *what, uint64_t nmemb, uint64_t size)
+{
+	void *p = mem_calloc(what, nmemb, size);
+
+	if (p == NULL)
+		cli_die_lib();
+	return p;
 }
 
 noreturn void cli_usage(int status)

@@ -1,7 +1,9 @@
 /*
- * What every program shares: its name in messages, the common options
- * (-h, --version, -o, -T, -S, -j, -q, --progress), err(3)-style exits and
- * number options that reject junk.
+ * What the programs share and the library does not, one header: each
+ * program's name in messages, the common options (-h, --version, -o, -T,
+ * -S, -j, -q, --progress), err(3)-style exits and number options that
+ * reject junk (cli.c); the output step (output.c); the point sets'
+ * options (ptsopt.c).
  *
  * Exit status: 0 success, 1 error (bad input, failed output), 2 usage.
  */
@@ -10,11 +12,15 @@
 
 #include <getopt.h>
 #include <setjmp.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdnoreturn.h>
 
 #include "api/version.h"
 #include "base/err.h"
+#include "formats/ptsets.h"
+
+struct outfile;
 
 /*
  * Every long option of the toolchain, once: its name and whether it takes
@@ -220,5 +226,48 @@ void cli_bar_progress(void *ctx, const char *what, uint64_t done,
 
 /* Number of online processors. */
 int cli_ncpu(void);
+
+/* The memory ceiling (FRS_MAX_MEM; base/mem.h's mem_check and
+ * mem_calloc) for nmemb elements of size bytes, named what in its
+ * message: checked, or the memory allocated, else the program ends with
+ * the library's message. */
+void cli_mem_check(const char *what, uint64_t nmemb, uint64_t size);
+void *cli_calloc(const char *what, uint64_t nmemb, uint64_t size);
+
+/*
+ * The output step (output.c): a file opened (base/outfile.h: written
+ * beside its target and renamed into place), written, and committed, or
+ * on any failure removed, the program ending with the library's message.
+ */
+/* path NULL or "-": standard output, which binary output refuses when it
+ * is a terminal. */
+void cli_out_open(struct outfile *of, const char *path, int binary);
+/* rc: what writing of->fp gave (-1 after frs_fail: the file removed). */
+void cli_out_commit(struct outfile *of, int rc);
+
+/*
+ * The options and inputs of the programs that read point sets (ptsopt.c;
+ * dda, discrepancy, mc-error, pts-render; formats/ptsets.h): --sets N,
+ * --group G and the point files named after the options; and --sets M of
+ * those that write them (frs-sample, hsw-sample, ref-sample;
+ * formats/setsout.h).
+ */
+/* --sets N: every file split into sets of N points. */
+size_t cli_sets(const char *arg);
+/* --sets M of a sampler: M sets one after another. */
+uint64_t cli_sets_m(const char *arg);
+/* M sets of n points each (n: the most a set can have) fit one file and
+ * their seeds, from -S on, stay within 2^64 - 1; else a usage error. */
+void cli_sets_check(uint64_t m, uint64_t n);
+/* --group G: n, file or all. */
+enum pt_group cli_group(const char *arg);
+/* The files after the options: at least one, else a usage error. */
+void cli_need_files(int argc);
+/* Each file after the options read into s (pt_sets_add with per), then
+ * handed to each (when not NULL) with its number among the files and its
+ * first set; a failure of either ends the program with its message. */
+void cli_read_sets(struct pt_sets *s, int argc, char **argv, size_t per,
+    int (*each)(void *ctx, const struct pt_sets *s, size_t file,
+    size_t first), void *ctx);
 
 #endif

@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli/cli.h"
-#include "cli/output.h"
+#include "base/outfile.h"
 
 void cli_out_open(struct outfile *of, const char *path, int binary)
 {

@@ -3,7 +3,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "fuzz.h"
 #include "formats/frdio.h"
-#include "formats/frdimport.h"
+#include "frd-prep/frdimport.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

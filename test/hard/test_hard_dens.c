@@ -9,7 +9,7 @@
  * which the library must return bit for bit.
  */
 #include "testutil.h"
-#include "analysis/density.h"
+#include "dda/density.h"
 #include "hard.h"
 
 #define ONE_ULP 0x1.fffffffffffffp-1	/* 1 - 2^-53 */

@@ -20,7 +20,7 @@
  */
 #include "testutil.h"
 #include "discref.h"
-#include "analysis/disc.h"
+#include "discrepancy/disc.h"
 #include "base/par.h"
 
 #define ONE_ULP 0x1.fffffffffffffp-1	/* 1 - 2^-53 */

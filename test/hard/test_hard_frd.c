@@ -15,8 +15,8 @@
 #include "testutil.h"
 #include "frsutil.h"
 #include "hard.h"
-#include "frd/frdgen.h"
-#include "formats/frdimport.h"
+#include "frd-gen/frdgen.h"
+#include "frd-prep/frdimport.h"
 #include "sample/frpio.h"
 
 /* ---- permutations and the least-force rule -------------------------- */

@@ -14,7 +14,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "frd/frdgen.h"
+#include "frd-gen/frdgen.h"
 #include "base/num.h"
 
 static uint32_t tdist(uint32_t a, uint32_t b, uint32_t n)

@@ -30,7 +30,7 @@ const char *frs_errmsg(void);
 void frs_clearerr(void);
 /* What the last failure was about: every frs_fail sets OTHER; the memory
  * ceiling (mem.c) then sets MEM, imap_validate MAP, the importers
- * (frdimport.c) SIZE for a count that is no square and RANKS for values
+ * (frd-prep's frdimport.c) SIZE for a count that is no square and RANKS for values
  * that are no permutation, where a program names its options that mend
  * them, and the procedural specs (spec.c) SPEC for one that does not
  * parse, which a program reports as a usage error. */

@@ -1,0 +1,228 @@
+#define _POSIX_C_SOURCE 200809L
+#include "frd-prep/frdimport.h"
+#include "base/num.h"
+#include "formats/frdio.h"
+#include "base/err.h"
+#include "maps/imap.h"
+#include "maps/pngio.h"
+#include "base/io.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct kv {
+	uint64_t v;
+	uint32_t i;
+};
+
+static int kv_cmp(const void *a, const void *b)
+{
+	const struct kv *x = a, *y = b;
+
+	return x->v != y->v ? NUM_CMP(x->v, y->v) : NUM_CMP(x->i, y->i);
+}
+
+int frd_rank(struct frs_matrix *m)
+{
+	struct kv *t = malloc(m->n * sizeof *t);
+
+	if (t == NULL)
+		return frs_fail("out of memory");
+	for (size_t i = 0; i < m->n; i++)
+		t[i] = (struct kv){ m->v[i], (uint32_t)i };
+	qsort(t, m->n, sizeof *t, kv_cmp);
+	for (size_t r = 0; r < m->n; r++)
+		m->v[t[r].i] = (uint32_t)r;
+	free(t);
+	return 0;
+}
+
+static int finish(struct frs_matrix *m, const char *name, int rank)
+{
+	if (rank)
+		return frd_rank(m);
+	if (frd_check_permutation(m, name) < 0) {
+		frs_set_errkind(FRS_ERRKIND_RANKS);	/* rank would mend it */
+		return -1;
+	}
+	return 0;
+}
+
+int frd_import_raw32(const char *path, uint32_t w, uint32_t h, int rank,
+    struct frs_matrix *m)
+{
+	const char *name;
+	unsigned char *buf;
+	size_t len;
+	char params[128];
+	int rc;
+
+	memset(m, 0, sizeof *m);
+	rc = io_slurp_path(path, &name, &buf, &len);
+	if (rc < 0)
+		return -1;
+	if (len == 0 || len % 4) {
+		free(buf);
+		return frs_fail("%s: %zu bytes is not a whole number of 32-bit "
+		    "values", name, len);
+	}
+	if (w == 0) {
+		uint64_t n = len / 4, s = (uint64_t)llround(sqrt((double)n));
+		if (s * s != n) {
+			free(buf);
+			frs_fail("%s: %llu values are not a square", name,
+			    (unsigned long long)n);
+			frs_set_errkind(FRS_ERRKIND_SIZE);
+			return -1;
+		}
+		w = h = (uint32_t)s;
+	}
+	if ((uint64_t)w * h * 4 != len) {
+		free(buf);
+		return frs_fail("%s: %zu bytes, but %ux%u values need %llu", name,
+		    len, w, h, (unsigned long long)w * h * 4);
+	}
+	snprintf(params, sizeof params, "imported=raw32\nsource=%.100s\n", name);
+	if (frd_alloc(m, 2, w, h, 1, params) < 0) {
+		free(buf);
+		return frs_fail_context(name);
+	}
+	for (size_t i = 0; i < m->n; i++)
+		m->v[i] = io_get_u32(buf + 4 * i);
+	free(buf);
+	if (finish(m, name, rank) < 0) {
+		frd_free(m);
+		return -1;
+	}
+	return 0;
+}
+
+/* Count the values of a line; -1 with an error on junk. */
+static long parse_row(const char *name, unsigned long line, char *s,
+    uint32_t *out, long max)
+{
+	long n = 0;
+
+	for (;;) {
+		char *end;
+		unsigned long long v;
+		while (isspace((unsigned char)*s))
+			s++;
+		if (*s == '\0')
+			return n;
+		errno = 0;
+		if (*s == '-')
+			return frs_fail("%s:%lu: negative value", name, line);
+		v = strtoull(s, &end, 10);
+		if (end == s || (*end && !isspace((unsigned char)*end)))
+			return frs_fail("%s:%lu: '%.20s' is not an integer", name,
+			    line, s);
+		if (errno || v > UINT32_MAX)
+			return frs_fail("%s:%lu: value out of range", name, line);
+		if (out != NULL) {
+			if (n == max)
+				return frs_fail("%s:%lu: more than %ld values", name,
+				    line, max);
+			out[n] = (uint32_t)v;
+		}
+		n++;
+		s = end;
+	}
+}
+
+int frd_import_text(const char *path, int rank, struct frs_matrix *m)
+{
+	const char *name;
+	unsigned char *buf;
+	size_t len;
+	uint32_t w = 0, h = 0;
+	char *s, *line, *save = NULL;
+	unsigned long ln = 0;
+	int rc;
+
+	memset(m, 0, sizeof *m);
+	rc = io_slurp_path(path, &name, &buf, &len);
+	if (rc < 0)
+		return -1;
+	s = realloc(buf, len + 1);
+	if (s == NULL) {
+		free(buf);
+		return frs_fail("%s: out of memory", name);
+	}
+	s[len] = '\0';
+	/* First pass: the shape. */
+	{
+		char *copy = strdup(s);
+		for (line = strtok_r(copy, "\n", &save); line; line = strtok_r(NULL,
+		    "\n", &save)) {
+			long k = parse_row(name, ++ln, line, NULL, 0);
+			if (k < 0) {
+				free(copy);
+				free(s);
+				return -1;
+			}
+			if (k == 0)
+				continue;
+			if (w == 0)
+				w = (uint32_t)k;
+			else if ((uint32_t)k != w) {
+				free(copy);
+				free(s);
+				return frs_fail("%s:%lu: %ld values, the first row has "
+				    "%u", name, ln, k, w);
+			}
+			h++;
+		}
+		free(copy);
+	}
+	if (w == 0 || frd_alloc(m, 2, w, h, 1, "imported=text\n") < 0) {
+		free(s);
+		return w == 0 ? frs_fail("%s: empty file", name) :
+		    frs_fail_context(name);
+	}
+	ln = 0;
+	save = NULL;
+	{
+		uint32_t row = 0;
+		for (line = strtok_r(s, "\n", &save); line; line = strtok_r(NULL,
+		    "\n", &save))
+			if (parse_row(name, ++ln, line, m->v + (size_t)row * w, w) > 0)
+				row++;
+	}
+	free(s);
+	if (finish(m, name, rank) < 0) {
+		frd_free(m);
+		return -1;
+	}
+	return 0;
+}
+
+int frd_import_png(const char *path, struct frs_matrix *m)
+{
+	const char *name;
+	unsigned char *buf;
+	size_t len;
+	struct frs_imap img;
+	int rc;
+
+	memset(m, 0, sizeof *m);
+	rc = io_slurp_path(path, &name, &buf, &len);
+	if (rc < 0)
+		return -1;
+	rc = imap_read_png_mem(buf, len, name, 0, &img);
+	free(buf);
+	if (rc < 0)
+		return -1;
+	if (frd_alloc(m, 2, img.w, img.h, 1, "imported=png\n") < 0) {
+		imap_free(&img);
+		return frs_fail_context(name);
+	}
+	/* Grey levels of a 16-bit (or 8-bit) mask, exactly, as integers. */
+	for (size_t i = 0; i < m->n; i++)
+		m->v[i] = (uint32_t)llround(img.v[i] * 65535.0);
+	imap_free(&img);
+	return frd_rank(m);
+}

@@ -1,0 +1,280 @@
+/*
+ * frs-sample: Forced Random Sampling of an importance map.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "frs-sample/sets.h"
+#include "api/api.h"
+#include "base/datadir.h"
+#include "maps/imap.h"
+#include "maps/mapload.h"
+
+static const char usage[] =
+    "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
+    "                  [--sigma S] [--jitter none|halton|random] [--pdf]\n"
+    "                  [--progressive N1,N2,...] [--threshold unbiased|thesis]\n"
+    "                  [--tiles levels|plain|shuffled] [--level-blur R]\n"
+    "                  [--level-column] [--count-only]\n"
+    "                  [--exact-count] [--sets M]\n"
+    "                  [-s SIZE] [-S SEED] [-j N]\n"
+    "                  [--device cpu|cl|cl:N] [-T] [-v] [-o FILE]\n"
+    "       frs-sample --list-devices | --data-dir\n"
+    "\n"
+    "  -n, --count N        samples to make (about; see frs-sample(1);\n"
+    "                       exactly with --exact-count)\n"
+    "  -i, --importance M   map: PNG, OpenEXR or a spec such as blob\n"
+    "                       (default const: uniform sampling); with a\n"
+    "                       3-D matrix a volume: .frv or blob3, ramp3...\n"
+    "  -m, --matrix FILE    threshold matrix .frd (default: the shipped\n"
+    "                       2048x2048 default.frd; for a volume the\n"
+    "                       64x64x64 default3.frd; see --data-dir)\n"
+    "  -a, --algo A         naive, stack, level1, level2, sorted (default)\n"
+    "                       or flat1 (OpenCL only)\n"
+    "      --sigma S        sparsity: one of S^2 window elements passes at\n"
+    "                       the maximum importance (default 8)\n"
+    "      --jitter J       none (element centres), halton or random offsets\n"
+    "      --pdf            add a column: the density of each sample over\n"
+    "                       the unit square, I / mean I\n"
+    "      --progressive L  counts N1 < N2 < ...: write the samples of each\n"
+    "                       step in turn, with a column giving the step\n"
+    "      --threshold R    unbiased (default) or thesis (Eq. 4.14)\n"
+    "      --tiles T        the window: levels (default: elements whose\n"
+    "                       size follows the map, the multi-level\n"
+    "                       window), plain (one level, the matrix\n"
+    "                       repeated as it is, thesis Sec. 4.5) or\n"
+    "                       shuffled (one level, each tile turned,\n"
+    "                       flipped and shifted by the seed)\n"
+    "      --level-blur R   smooth the levels over R map pixels (volume\n"
+    "                       voxels; default 2 sigma; 0: each on its own)\n"
+    "      --level-column   add a column: each sample's level\n"
+    "      --count-only     print the count, make no points\n"
+    "      --exact-count    exactly N samples (each step of --progressive):\n"
+    "                       the N of smallest (M + u) / I, a subset or\n"
+    "                       superset of the default set (unbiased rule)\n"
+    "      --sets M         write M sets one after another, set i made\n"
+    "                       with seed S+i (default 1); M > 1 adds a\n"
+    "                       column, the set i\n"
+    "  -s, --size WxH       size at which procedural maps are evaluated\n"
+    "                       (default 128x128), or files resampled;\n"
+    "                       N or WxHxD for volumes (default 32^3)\n"
+    "      --equirect       weight map rows by sin(theta)\n"
+    "      --strict         negative importance is an error\n"
+    "      --device D       cpu (default), cl (the first OpenCL device) or\n"
+    "                       cl:N; the output is the same bytes on all\n"
+    "      --list-devices   list the OpenCL devices as cl:N and exit\n"
+    "      --data-dir       print the directory of the shipped data (the\n"
+    "                       default matrices, sunset.exr) and exit\n"
+    "  -S, --seed N         seed (default 1)\n"
+    "  -j, --threads N      threads (default all); same points for any N\n"
+    "  -T, --text           text output\n"
+    "  -v, --verbose        setup, count and phase times on standard error\n"
+    "  -o, --output FILE    output (default standard output)\n"
+    "  -q, --quiet          no warnings\n"
+    "  -h, --help           this help;  --version  the version\n";
+
+static void parse_steps(struct sets *o, const char *s)
+{
+	char buf[512], *tok, *save = NULL;
+
+	if (snprintf(buf, sizeof buf, "%s", s) >= (int)sizeof buf)
+		cli_usage_error("--progressive: list too long");
+	o->nsteps = 0;
+	for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",",
+	    &save)) {
+		if (o->nsteps == 16)
+			cli_usage_error("--progressive: at most 16 steps");
+		o->steps[o->nsteps] = cli_u64("--progressive", tok, 1,
+		    (uint64_t)1 << 40);
+		if (o->nsteps > 0 && o->steps[o->nsteps] <= o->steps[o->nsteps - 1])
+			cli_usage_error("--progressive: counts must increase");
+		o->nsteps++;
+	}
+	if (o->nsteps == 0)
+		cli_usage_error("--progressive: no counts");
+}
+
+/* --data-dir: the directory the shipped default matrix is taken from
+ * (the other shipped files lie beside it), and exit. */
+static noreturn void print_data_dir(void)
+{
+	char path[DATA_PATH_MAX];
+
+	cli_options_done();	/* the fuzz target stops here */
+	if (data_find("default.frd", path, sizeof path) < 0)
+		cli_die("--data-dir: no shipped data (%s)", frs_errmsg());
+	*strrchr(path, '/') = '\0';
+	if (printf("%s\n", path) < 0 || fflush(stdout) == EOF)
+		cli_die("<stdout>: write error");
+	exit(0);
+}
+
+/* The options it takes, besides the common ones (cli.h). */
+static const char options[] =
+    "n=count i=importance m=matrix a=algo s=size sigma jitter pdf "
+    "progressive threshold count-only exact-count equirect strict "
+    "sets device list-devices data-dir tiles level-blur level-column "
+    "v=verbose";
+
+static void parse_opts(int argc, char **argv, struct sets *o)
+{
+	int c, have_n = 0, exact = 0;
+	uint64_t n = 0;
+
+	while ((c = cli_getopt(argc, argv, options)) != -1) {
+		switch (c) {
+		case 'n':
+			n = cli_u64("-n", optarg, 1, (uint64_t)1 << 40);
+			have_n = 1;
+			break;
+		case 'i': o->imp = optarg; break;
+		case 'm': o->matrix = optarg; break;
+		case 'a':
+			if (frs_impl_parse(optarg, &o->alg) < 0)
+				cli_usage_error("-a: %s", frs_errmsg());
+			break;
+		case 's':
+			o->nsize = (unsigned)cli_size3("-s", optarg, IMAP_MAX_SIDE,
+			    o->size);
+			break;
+		case OPT_SIGMA:
+			o->opt.sigma = cli_double("--sigma", optarg, 1.0,
+			    FRS_SIGMA_MAX);
+			break;
+		case OPT_JITTER:
+			o->opt.jitter = (enum frs_jitter_mode)cli_choice("--jitter",
+			    optarg, api_jitter_words);
+			break;
+		case OPT_PDF: o->pdf = 1; break;
+		case OPT_PROGRESSIVE: parse_steps(o, optarg); break;
+		case OPT_THRESHOLD:
+			o->opt.rule = (enum frs_rule_mode)cli_choice("--threshold",
+			    optarg, api_rule_words);
+			break;
+		case OPT_COUNT_ONLY: o->count_only = 1; break;
+		case OPT_EXACT_COUNT: exact = 1; break;
+		case OPT_TILES:
+			o->opt.tiling = (enum frs_tiling_mode)cli_choice("--tiles",
+			    optarg, api_tiling_words);
+			break;
+		case OPT_LEVEL_BLUR:
+			o->opt.level_blur = cli_double("--level-blur", optarg, 0.0,
+			    API_BLUR_MAX);
+			/* 0: none, which the library's radii below 0.5 are
+			 * (its 0 is the default). */
+			if (o->opt.level_blur == 0.0)
+				o->opt.level_blur = 0.25;
+			break;
+		case OPT_LEVEL_COLUMN: o->level_col = 1; break;
+		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
+		case OPT_SETS:
+			o->sets = cli_sets_m(optarg);
+			break;
+		case OPT_DEVICE: o->cl = cli_device(optarg, &o->device); break;
+		case OPT_LIST_DEVICES: cli_list_devices();
+		case OPT_DATA_DIR: print_data_dir();
+		case 'v': o->verbose = 1; break;
+		default:
+			if (!cli_common_opt(c, optarg))
+				cli_usage(2);
+		}
+	}
+	if (optind != argc)
+		cli_usage_error("unexpected argument '%s'", argv[optind]);
+	if (o->alg == FRS_FLAT1 && !o->cl)
+		cli_usage_error("-a flat1 runs on OpenCL only (--device cl)");
+	if (exact && o->opt.rule == FRS_RULE_THESIS)
+		cli_usage_error("--exact-count needs --threshold unbiased: under "
+		    "the thesis rule elements of equal importance share "
+		    "thresholds, and counts jump past n");
+	if (exact)
+		o->opt.rule = FRS_RULE_EXACT;
+	if (o->nsteps == 0) {
+		if (!have_n)
+			cli_usage_error("-n COUNT is required");
+		o->steps[0] = n;
+		o->nsteps = 1;
+	} else if (have_n && n != o->steps[o->nsteps - 1]) {
+		cli_usage_error("-n %llu differs from the last progressive count",
+		    (unsigned long long)n);
+	}
+	n = o->steps[o->nsteps - 1];
+	cli_sets_check(o->sets, n);
+	o->opt.threads = cli.threads;
+	o->seed = cli.seed;
+	o->text = cli.text;
+	o->out = cli.out;
+}
+
+/* Refuse counts whose elements (size bytes each, with a tenth more for
+ * the count's spread) could not be stored before spending the time. */
+static void check_room(const struct sets *o, size_t size)
+{
+	uint64_t n = o->steps[o->nsteps - 1];
+	char what[64];
+
+	snprintf(what, sizeof what, "-n %llu (--count-only counts them)",
+	    (unsigned long long)n);
+	if (!o->count_only)
+		cli_mem_check(what, n + n / 10, size);
+}
+
+/* The default matrix, the checks that depend on its dimensions. */
+static void check_matrix(struct sets *o)
+{
+	static char path[DATA_PATH_MAX];
+	int volume = (o->imp && vol_is_volume(o->imp)) || o->nsize == 3;
+
+	if (o->matrix == NULL && api_default_matrix(volume ? 3 : 2, path,
+	    sizeof path) < 0)
+		cli_die("no default %smatrix (%s); give -m MATRIX",
+		    volume ? "3-D " : "", frs_errmsg());
+	o->matrix = o->matrix != NULL ? o->matrix : path;
+	sets_matrix(o);
+	if (o->dims == 2 && o->nsize == 3)
+		cli_die("-s %ux%ux%u: a volume size, but %s is a 2-D matrix",
+		    o->size[0], o->size[1], o->size[2], o->matrix);
+	if (o->dims == 2)
+		return;
+	if (o->cl)
+		cli_die("--device: %s is a 3-D matrix; 3-D sampling runs on the "
+		    "CPU only", o->matrix);
+	if (o->alg != FRS_NAIVE && o->alg != FRS_SORTED)
+		cli_die("-a %s: %s is a 3-D matrix; 3-D sampling has naive and "
+		    "sorted", frs_impl_name(o->alg), o->matrix);
+	if (o->flags & IMAP_EQUIRECT)
+		cli_die("--equirect: %s is a 3-D matrix; volumes have no "
+		    "equirectangular form", o->matrix);
+	if (o->nsize == 2)
+		cli_die("-s %ux%u: %s is a 3-D matrix; give -s N or WxHxD",
+		    o->size[0], o->size[1], o->matrix);
+	/* main counted 2-D elements; 3-D ones are larger. */
+	check_room(o, sizeof(struct frs3_elem));
+}
+
+int main(int argc, char **argv)
+{
+	struct sets o = { .alg = FRS_SORTED, .sets = 1, .device = -1 };
+	struct sets_run run;
+	int rc;
+
+	frs_options_init(&o.opt);
+	cli_init("frs-sample", usage);
+	parse_opts(argc, argv, &o);
+	check_room(&o, sizeof(struct frs_elem));
+	cli_options_done();
+	check_matrix(&o);
+	if ((rc = sets_open(&o, &run)) < 0)
+		rc == -2 ? cli_die_device(o.alg != FRS_FLAT1) : cli_die_lib();
+	cli_out_check(o.out, !o.count_only && !o.text);
+	if (sets_write(&o, &run) < 0)
+		cli_die_lib();
+	if (o.verbose)
+		sets_report(stderr, &o, &run);
+	sets_close(&run);
+	return 0;
+}

@@ -1,0 +1,553 @@
+/*
+ * frs-sample's work (frs-sample(1)): the matrix, map or volume and
+ * device loaded, set 0's setup, then M sets through the draws' callback
+ * form (frs_draw_each, api_draw3_each) into one points file: x, y [, z]
+ * [, pdf] [, step + 1] [, set].  The program keeps the options and the
+ * warnings that name them; its -v report is setsreport.c.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "frs.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "frs-sample/sets.h"
+#include "base/err.h"
+#include "base/outfile.h"
+#include "base/progress.h"
+#include "formats/ptsio.h"
+#include "formats/setsout.h"
+#include "maps/imap.h"
+#include "maps/mapload.h"
+#include "maps/vol.h"
+
+/* The output of the sets, and -v's share of set 0. */
+struct out {
+	const struct sets *a;
+	struct sets_run *run;
+	struct outfile of;
+	struct sets_writer w;	/* its set: the one being drawn */
+	int open;
+	uint64_t n;		/* samples of the set being drawn */
+	/* -v: how many samples of set 0 show each matrix element, per
+	 * level (2-D) */
+	uint32_t *uses[FRS_LEVELS_MAX];
+	int collect;
+	double *rec;		/* records with extra columns */
+	size_t reccap;
+};
+
+/* The level of the cell that point p lies in (every set has set 0's
+ * levels: they do not depend on the seed). */
+static unsigned level_at(const struct sets_run *run, const double *p)
+{
+	const struct frs_levels *L = run->dims == 2 ? &run->lv.plan :
+	    &run->lv3.plan;
+	uint64_t c = 0;
+
+	if (L->lev == NULL)
+		return run->dims == 2 ? run->lv.su[0].level : run->lv3.su[0].level;
+	for (unsigned a = run->dims; a-- > 0;)
+		c = c * L->side[a] + (uint64_t)(p[a] * (double)L->side[a]);
+	return L->lev[c];
+}
+
+/* The index in run->lv (lv3) of the level of point p. */
+static unsigned level_of(const struct sets_run *run, const double *p)
+{
+	unsigned n = run->dims == 2 ? run->lv.n : run->lv3.n,
+	    l = level_at(run, p);
+	for (unsigned i = 0; i < n; i++)
+		if ((run->dims == 2 ? run->lv.su[i].level : run->lv3.su[i].level) ==
+		    l)
+			return i;
+	return 0;
+}
+
+/* -v: count point p of set 0 in its level and (2-D) the matrix element
+ * it shows (its window element is floor(x S_W): jitter stays inside
+ * it). */
+static void note_point(struct out *u, const double *p)
+{
+	struct sets_run *run = u->run;
+	unsigned i = level_of(run, p);
+	const struct frs_setup *s = &run->lv.su[i];
+	uint64_t m;
+
+	run->lcount[i]++;
+	if (run->dims != 2)
+		return;
+	if (u->uses[i] == NULL && (u->uses[i] = calloc((size_t)s->mw * s->mh,
+	    sizeof *u->uses[i])) == NULL) {
+		u->collect = 0;	/* -v goes without the share */
+		return;
+	}
+	m = frs_matrix_index(s, (uint64_t)(p[0] * (double)s->sw),
+	    (uint64_t)(p[1] * (double)s->sh));
+	if (u->uses[i][m] < UINT32_MAX)
+		u->uses[i][m]++;
+}
+
+/* The shares of the noted samples whose matrix element another one of
+ * their level shows too, per level and in all: O(n + S_M^2) a level,
+ * not a sort of the samples. */
+static void reused_shares(struct out *u)
+{
+	struct sets_run *run = u->run;
+	uint64_t all = 0, noted = 0;
+	size_t n = (size_t)run->s0.mw * run->s0.mh;
+
+	run->reused = -1.0;
+	for (unsigned i = 0; i < FRS_LEVELS_MAX; i++)
+		run->lreused[i] = -1.0;
+	for (unsigned i = 0; i < run->lv.n; i++) {
+		uint64_t reused = 0;
+		if (u->uses[i] == NULL)
+			continue;
+		for (size_t k = 0; k < n; k++)
+			reused += u->uses[i][k] >= 2 ? u->uses[i][k] : 0;
+		run->lreused[i] = (double)reused / (double)run->lcount[i];
+		all += reused;
+		noted += run->lcount[i];
+	}
+	if (noted > 0)
+		run->reused = (double)all / (double)noted;
+}
+
+/* Open the output at the first set: with one set its count goes into
+ * the header; more sets announce 0 (unknown), which the writer replaces
+ * by the total when the output can seek.  The extra columns, in their
+ * order: pdf, step (progressive), level (--level-column), and the
+ * writer's set (M > 1). */
+static int out_begin(struct out *u, uint64_t count)
+{
+	const struct sets *a = u->a;
+	const char *names[3];
+	unsigned extra = 0;
+
+	if (u->open)
+		return 0;
+	if (a->pdf)
+		names[extra++] = PTS_COL_PDF;
+	if (a->nsteps > 1)
+		names[extra++] = PTS_COL_STEP;
+	if (a->level_col)
+		names[extra++] = PTS_COL_LEVEL;
+	if (outfile_open(&u->of, a->out, !a->count_only && !a->text) < 0)
+		return -1;
+	u->open = 1;
+	if (!a->count_only && sets_writer_begin(&u->w, u->of.fp, u->of.name,
+	    u->run->dims, extra, names, a->sets, a->sets == 1 ? count : 0,
+	    a->text) < 0)
+		return -1;
+	return 0;
+}
+
+/* The draws' callback: the records of k samples. */
+static int out_batch(void *ctx, const double *p, const double *pdf,
+    const uint32_t *step, size_t k, uint64_t total)
+{
+	struct out *u = ctx;
+	double t0 = progress_now();
+	int rc = out_begin(u, total), lcol = u->a->level_col;
+	unsigned dims = u->run->dims, ncol = dims + (pdf != NULL ? 1u : 0u) +
+	    (step != NULL ? 1u : 0u) + (lcol ? 1u : 0u);
+
+	u->n = total;
+	if (u->collect) {
+		double t1 = progress_now();
+		for (size_t i = 0; i < k && u->collect; i++)
+			note_point(u, p + dims * i);
+		u->run->tnote += progress_now() - t1;
+		t0 += progress_now() - t1;
+	}
+	if (rc == 0 && ncol == dims)
+		rc = sets_writer_put(&u->w, p, k);
+	else if (rc == 0 && k * ncol > u->reccap) {
+		free(u->rec);
+		u->reccap = k * ncol;
+		if ((u->rec = malloc(u->reccap * sizeof *u->rec)) == NULL) {
+			u->reccap = 0;
+			rc = frs_fail("out of memory");
+		}
+	}
+	if (rc == 0 && ncol > dims) {
+		double *rec = u->rec;
+		for (size_t i = 0; i < k; i++, rec += ncol) {
+			unsigned c = dims;
+			memcpy(rec, p + dims * i, dims * sizeof *rec);
+			if (pdf != NULL)
+				rec[c++] = pdf[i];
+			if (step != NULL)
+				rec[c++] = (double)(step[i] + 1);
+			if (lcol)
+				rec[c++] = (double)level_at(u->run, p + dims * i);
+		}
+		rc = sets_writer_put(&u->w, u->rec, k);
+	}
+	u->run->tout += progress_now() - t0;
+	return rc;
+}
+
+/* The window elements that the cells of level l of L span on axis a at
+ * n_s elements a cell (the whole axis without levels). */
+static uint64_t level_span(const struct frs_levels *L, unsigned l,
+    unsigned a, uint64_t side, uint64_t ns)
+{
+	if (L->lev == NULL)
+		return side * ns;
+	return (uint64_t)(L->hi[l][a] - L->lo[l][a] + 1) * ns;
+}
+
+/* The levels among the n of lv (2-D setups s2, or 3-D s3) whose cells
+ * span more than the matrix on an axis, as "2, 3", into buf; their
+ * number. */
+static unsigned repeating(const struct frs_levels *L, unsigned n,
+    const struct frs_setup *s2, const struct frs3_setup *s3, char *buf,
+    size_t cap)
+{
+	unsigned k = 0;
+	size_t len = 0;
+
+	buf[0] = '\0';
+	for (unsigned i = 0; i < n; i++) {
+		unsigned l = s2 ? s2[i].level : s3[i].level;
+		uint64_t ns = s2 ? s2[i].ns : s3[i].ns;
+		const uint32_t side[3] = { s2 ? s2[i].iw : s3[i].iw,
+		    s2 ? s2[i].ih : s3[i].ih, s2 ? 1 : s3[i].id };
+		const uint32_t m[3] = { s2 ? s2[i].mw : s3[i].mw,
+		    s2 ? s2[i].mh : s3[i].mh, s2 ? UINT32_MAX : s3[i].md };
+		int over = 0;
+		for (unsigned a = 0; a < (s2 ? 2u : 3u); a++)
+			over |= level_span(L, l, a, side[a], ns) > m[a];
+		if (over && len < cap)
+			len += (size_t)snprintf(buf + len, cap - len, "%s%u",
+			    k ? ", " : "", l);
+		k += (unsigned)over;
+	}
+	return k;
+}
+
+/* The warnings of set 0's setup: patterns that repeat.  Without levels,
+ * the thesis's: more samples than the matrix gives without repetition
+ * (Table 4.1), or plain tiles of a window larger than the matrix.  With
+ * levels, the levels whose cells span more than the matrix on an axis:
+ * their samples show the same matrix elements again, a lattice of the
+ * matrix's period. */
+static void warn2(const struct sets_run *r, int levels)
+{
+	const struct frs_setup *s = &r->s0;
+	char which[256];
+	unsigned k = levels ? repeating(&r->lv.plan, r->lv.n, r->lv.su, NULL,
+	    which, sizeof which) : 0;
+
+	if (k > 0)
+		frs_warn("level%s %s of the multi-level window span%s more than "
+		    "the %ux%u matrix: %s samples repeat the matrix's patterns%s",
+		    k > 1 ? "s" : "", which, k > 1 ? "" : "s", s->mw, s->mh,
+		    k > 1 ? "their" : "its", (double)s->n > frs_unique(s) ?
+		    " (n is past the samples it gives without repetition, "
+		    "thesis Table 4.1)" : "");
+	else if (!levels && (double)s->n > frs_unique(s))
+		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
+		    "its patterns (it gives %.0f without repetition, thesis "
+		    "Table 4.1)", (unsigned long long)s->n, s->mw, s->mh,
+		    s->sigma, frs_unique(s));
+	else if (!levels && s->tiles == FRS_TILES_PLAIN &&
+	    (s->sw > s->mw || s->sh > s->mh))
+		frs_warn("plain tiles: the window of %llux%llu repeats the "
+		    "%ux%u matrix as it is, a lattice of the tile's period where "
+		    "few samples fall (shuffled tiles break it)",
+		    (unsigned long long)s->sw, (unsigned long long)s->sh, s->mw,
+		    s->mh);
+}
+
+static void warn3(const struct sets_run *r, int levels)
+{
+	const struct frs3_setup *t = &r->s3;
+	char which[256];
+	unsigned k = levels ? repeating(&r->lv3.plan, r->lv3.n, NULL, r->lv3.su,
+	    which, sizeof which) : 0;
+
+	if (k > 0)
+		frs_warn("level%s %s of the multi-level window span%s more than "
+		    "the %ux%ux%u matrix: %s samples repeat the matrix's patterns%s",
+		    k > 1 ? "s" : "", which, k > 1 ? "" : "s", t->mw, t->mh,
+		    t->md, k > 1 ? "their" : "its", (double)t->n > frs3_unique(t) ?
+		    " (n is past the samples it gives without repetition)" : "");
+	else if (!levels && (double)t->n > frs3_unique(t))
+		frs_warn("%llu samples from a %ux%ux%u matrix with sigma %g repeat "
+		    "its patterns (it gives %.6g without repetition)",
+		    (unsigned long long)t->n, t->mw, t->mh, t->md, t->sigma,
+		    frs3_unique(t));
+	else if (!levels && t->tiles == FRS_TILES_PLAIN &&
+	    (t->sw > t->mw || t->sh > t->mh || t->sd > t->md))
+		frs_warn("plain tiles: the window of %llux%llux%llu repeats the "
+		    "%ux%ux%u matrix as it is", (unsigned long long)t->sw,
+		    (unsigned long long)t->sh, (unsigned long long)t->sd, t->mw,
+		    t->mh, t->md);
+}
+
+void sets_matrix(struct sets *a)
+{
+	double t0 = progress_now();
+	unsigned dims = 0;
+
+	a->loaded = strcmp(a->matrix, "-") != 0;
+	if (a->loaded)
+		a->mask_rc = api_mask_load(&a->mask, a->matrix, &dims,
+		    &a->mask_err);
+	a->dims = dims == 3 ? 3 : 2;
+	a->tload = progress_now() - t0;
+}
+
+/* The mask (as sets_matrix loaded it), its note (a stale twin .frp)
+ * as a warning. */
+static int load_mask(const struct sets *a, struct sets_run *run)
+{
+	frs_error err = a->mask_err;
+	int rc = a->loaded ? a->mask_rc : frs_mask_load(&run->mask, a->matrix,
+	    &err);
+
+	if (a->loaded)
+		run->mask = a->mask;
+	if (rc != FRS_OK)
+		return frs_fail("%s", err.message);
+	if ((run->note = frs_mask_note(run->mask)) != NULL)
+		frs_warn("%s", run->note);
+	return 0;
+}
+
+/* The OpenCL device asked for, if any: -2 when it cannot be opened. */
+static int open_device(const struct sets *a, struct sets_run *run)
+{
+	if (!a->cl)
+		return 0;
+	if ((run->ocl = calloc(1, sizeof *run->ocl)) == NULL)
+		return frs_fail("out of memory");
+	if (ocl_open(run->ocl, a->device) == 0)
+		return 0;
+	free(run->ocl);
+	run->ocl = NULL;
+	return -2;
+}
+
+/* The sampler of a 2-D mask on the CPU or the device, and set 0's
+ * levels with the mask prepared for them. */
+static int open2(const struct sets *a, struct sets_run *run)
+{
+	struct frs_imap map;
+	struct frs_prep view;
+	struct frs_setup plain;
+	frs_error err;
+	double t0;
+	int rc, exact = a->opt.rule == FRS_RULE_EXACT;
+
+	if (imap_load(a->imp ? a->imp : "const", a->size[0], a->size[1],
+	    a->flags, &map) < 0)
+		return -1;
+	if ((rc = open_device(a, run)) < 0) {
+		imap_free(&map);
+		return rc;
+	}
+	t0 = progress_now();
+	rc = load_mask(a, run);
+	/* The map as imap_load checked it, handed over: no copy, no second
+	 * check. */
+	if (rc == 0 && api_sampler_make(2, run->mask,
+	    &(struct api_values){ .own = &map }, &run->opt, &run->smp, NULL,
+	    &err) != FRS_OK)
+		rc = frs_fail("%s", err.message);
+	imap_free(&map);
+	if (rc < 0)
+		return -1;
+	if (run->ocl != NULL)
+		api_sampler_device(run->smp, run->ocl, (int)a->alg);
+	/* Exact counts: set 0's taus only for -v (each set finds its own). */
+	if (exact && a->verbose)
+		rc = api_setup_steps(run->smp, a->steps, a->nsteps, a->seed,
+		    &run->lv);
+	else if ((rc = api_setup(run->smp, a->steps[a->nsteps - 1], a->seed,
+	    &run->s0)) == 0)
+		rc = api_lev2_make(&run->opt, &run->s0, &run->smp->map,
+		    &run->smp->plan, &run->lv);
+	if (rc < 0)
+		return -1;
+	run->s0 = run->lv.base;
+	for (unsigned i = 0; (!exact || a->verbose) && i < run->lv.n; i++)
+		if (api_sampler_prep(run->smp, &run->lv, i, a->steps, a->nsteps,
+		    &view) < 0)
+			return -1;
+	warn2(run, run->opt.tiling == FRS_TILING_LEVELS);
+	run->tsetup = progress_now() - t0 + a->tload;
+	plain = run->s0;
+	plain.exact.n = 0;
+	run->tau0 = frs_tau(&plain, plain.n);
+	return 0;
+}
+
+/* The same for a 3-D mask over a volume (the CPU only). */
+static int open3(const struct sets *a, struct sets_run *run)
+{
+	double t0 = progress_now();
+	struct frs3_prep view;
+	struct frs3_setup plain;
+	struct frs_vol v;
+	frs_error err;
+
+	if (load_mask(a, run) < 0 || vol_load(a->imp ? a->imp : "const",
+	    a->nsize ? a->size[0] : 0, a->size[1], a->size[2], a->flags, &v) < 0)
+		return -1;
+	if (frs_sampler3_new_f64(&run->smp3, run->mask, v.v, v.w, v.h, v.d,
+	    &run->opt, &err) != FRS_OK) {
+		vol_free(&v);
+		return frs_fail("%s", err.message);
+	}
+	vol_free(&v);
+	/* Exact counts: set 0's taus only for -v, as in 2-D. */
+	if (api_setup3(run->smp3, a->steps, a->nsteps, a->seed, a->verbose,
+	    &run->lv3) < 0)
+		return -1;
+	run->s3 = run->lv3.base;
+	warn3(run, run->opt.tiling == FRS_TILING_LEVELS);
+	for (unsigned i = 0; i < run->lv3.n; i++)
+		if (api_sampler3_prep(run->smp3, &run->lv3.su[i], &view) < 0)
+			return -1;
+	plain = run->s3;
+	plain.exact.n = 0;
+	run->tau0 = frs3_tau(&plain, plain.n);
+	run->tsetup = progress_now() - t0 + a->tload;
+	return 0;
+}
+
+int sets_open(const struct sets *a, struct sets_run *run)
+{
+	memset(run, 0, sizeof *run);
+	run->dims = a->dims;
+	run->reused = -1.0;
+	/* Flat 1, no public algorithm, is the device's (api_sampler_device):
+	 * the sampler's options name Sorted.  The others are the public
+	 * values (api.c). */
+	run->opt = a->opt;
+	run->opt.algorithm = a->alg == FRS_FLAT1 ? FRS_ALG_SORTED :
+	    (enum frs_algorithm)a->alg;
+	return run->dims == 3 ? open3(a, run) : open2(a, run);
+}
+
+/* One set through the draws; its count, UINT64_MAX after frs_fail. */
+static uint64_t one_set(struct out *u, uint64_t seed)
+{
+	const struct sets *a = u->a;
+	const struct sets_run *run = u->run;
+	frs_error err;
+	uint64_t count = 0, n = a->steps[a->nsteps - 1];
+	int rc;
+
+	u->n = 0;
+	if (a->count_only)
+		rc = run->dims == 3 ? frs_count3(run->smp3, n, seed, &count, &err) :
+		    frs_count(run->smp, n, seed, &count, &err);
+	else
+		rc = run->dims == 3 ? api_draw3_each(run->smp3, a->steps,
+		    a->nsteps, seed, a->pdf, out_batch, u, &err) :
+		    frs_draw_each(run->smp, a->steps, a->nsteps, seed, a->pdf,
+		    out_batch, u, &err);
+	if (rc == FRS_E_CALLBACK)
+		return UINT64_MAX;	/* the writer's message */
+	if (rc != FRS_OK) {
+		frs_fail("%s", err.message);
+		return UINT64_MAX;
+	}
+	if (!a->count_only)
+		count = u->n;
+	if (out_begin(u, count) < 0)
+		return UINT64_MAX;
+	if (a->count_only && fprintf(u->of.fp, "%llu\n",
+	    (unsigned long long)count) < 0) {
+		frs_fail_errno("%s: write error", u->of.name);
+		return UINT64_MAX;
+	}
+	return count;
+}
+
+/* The OpenCL phases of the last set, added. */
+static void add_times(struct sets_run *run)
+{
+	struct frscl_times ct;
+
+	frscl_last_times(&ct);
+	run->ct.build += ct.build;
+	run->ct.upload += ct.upload;
+	run->ct.kernel += ct.kernel;
+	run->ct.download += ct.download;
+}
+
+static int write_sets(struct out *u)
+{
+	const struct sets *a = u->a;
+	struct sets_run *run = u->run;
+	struct progress pr;
+
+	progress_begin(&pr, "sets", a->sets);
+	for (uint64_t set = 0; set < a->sets; set++) {
+		uint64_t c;
+		u->collect = a->verbose && set == 0 && !a->count_only;
+		u->w.set = set;
+		c = one_set(u, a->seed + set);
+		/* Every sample of set 0 noted. */
+		if (u->collect)
+			reused_shares(u);
+		u->collect = 0;
+		if (c == UINT64_MAX)
+			return -1;
+		if (run->ocl != NULL)
+			add_times(run);
+		run->total += c;
+		progress_update(&pr, set + 1);
+	}
+	progress_end(&pr);
+	return 0;
+}
+
+int sets_write(const struct sets *a, struct sets_run *run)
+{
+	struct out u = { .a = a, .run = run };
+	double t1 = progress_now(), t0;
+	int rc = write_sets(&u);
+	const frs_mask *mk = run->mask;
+
+	/* A damaged twin .frp shows only when its lists are first read. */
+	if (rc == 0 && frs_mask_note(mk) != NULL && run->note == NULL)
+		frs_warn("%s", frs_mask_note(mk));
+	t0 = progress_now();
+	if (rc == 0 && !a->count_only && sets_writer_end(&u.w) < 0)
+		rc = -1;
+	if (rc < 0 && u.open)
+		outfile_abort(&u.of);
+	else if (rc == 0 && outfile_commit(&u.of) < 0)
+		rc = -1;
+	run->tout += progress_now() - t0;
+	run->tthr = progress_now() - t1 - run->tout - run->tnote;
+	run->made = mk->made;
+	run->made_in = mk->frp != NULL ? mk->frp : a->matrix;
+	run->device = run->ocl != NULL ? run->ocl->name : NULL;
+	for (unsigned i = 0; i < FRS_LEVELS_MAX; i++)
+		free(u.uses[i]);
+	free(u.rec);
+	return rc;
+}
+
+void sets_close(struct sets_run *run)
+{
+	api_lev2_free(&run->lv);
+	api_lev3_free(&run->lv3);
+	frs_sampler_free(run->smp);
+	frs_sampler3_free(run->smp3);
+	frs_mask_free(run->mask);
+	if (run->ocl == NULL)
+		return;
+	frscl_release(run->ocl);
+	ocl_close(run->ocl);
+	free(run->ocl);
+}
