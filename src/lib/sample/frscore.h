@@ -329,11 +329,19 @@ struct frs_thr {
 	uint64_t tf;	/* floor(T) */
 	double frac;	/* T - floor(T) */
 	double t;	/* T */
+	uint64_t pw[2];	/* the rule in integers, the words of frs_pass
+			 * (cl/frs.cl) */
 };
 void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule);
 /* Whether value v passes; id numbers the window element for its coin. */
-int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
-    uint64_t seed, uint64_t id);
+int frs_thr_passes(const struct frs_thr *th, uint64_t v, uint64_t seed,
+    uint64_t id);
+/* The pass words (pw) of the thresholds tau[k] imp of nsteps steps into
+ * thr[2 k], thr[2 k + 1], as the thresholding reads them on the CPU and
+ * on the device (a pixel's record, cl/defs.cl); returns the last step's
+ * limit. */
+uint64_t frs_thr_words(uint64_t *thr, const double *tau, unsigned nsteps,
+    double imp, enum frs_rule rule);
 /* v, or the double below 1 if v is 1. */
 double frs_below_one(double v);
 
