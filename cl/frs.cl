@@ -196,7 +196,7 @@ FRS_FN FRS_U32 frs_step(FRS_GLOBAL const FRS_U64 *thr, FRS_U32 nsteps,
 /* What the walks read of one pixel and its run. */
 struct frs_walk {
 	struct frs_win win;
-	FRS_GLOBAL const FRS_U32 *lev[32];	/* minmap level l, 0 the matrix */
+	FRS_GLOBAL const FRS_U32 *lev[32];	/* minmap level l (0: matrix) */
 	/* Sorted: the lists of blocks of side b = 2^lb, block k's from
 	 * soff[k] (frsprep.h); bmin, when not 0, the minmap level lb, whose
 	 * minimum of a block is a look-up where its list is a cache miss. */

@@ -646,8 +646,8 @@ static uint32_t region_bound(struct pix *px, uint64_t x, uint64_t y,
 		return 0;
 	t = frs_tile_at(&px->w.win, &px->w.tc, x, y, &lx, &ly);
 	for (uint64_t k = 0; k < 2; k++) {	/* opposite corners */
-		uint64_t i = frs_block_index(&px->w.win, t, 0, lx + k * (side - 1),
-		    ly + k * (side - 1));
+		uint64_t i = frs_block_index(&px->w.win, t, 0,
+		    lx + k * (side - 1), ly + k * (side - 1));
 		c[k][0] = i % s->mw;
 		c[k][1] = i / s->mw;
 	}
@@ -891,7 +891,7 @@ static int few_serves(const struct pix *px, uint64_t nb)
 	    cost <= (double)(nb * nb) && cost <= FEW_SORT;
 }
 
-/* Sorted: frs_sorted with the shortcuts of a pixel of many blocks,
+/* Sorted: frs_walk_sorted with the shortcuts of a pixel of many blocks,
  * which only skip work (pix_few, the live blocks, the bound of the
  * whole pixel). */
 static void pix_sorted(struct pix *px)
@@ -903,7 +903,8 @@ static void pix_sorted(struct pix *px)
 	if (live && few_serves(px, nb) && pix_few(px, w->lb, nb) == 0)
 		return;
 	if (!live) {
-		if (nb == 1 || region_bound(px, w->x0, w->y0, w->win.ns) < w->lim)
+		if (nb == 1 ||
+		    region_bound(px, w->x0, w->y0, w->win.ns) < w->lim)
 			frs_walk_sorted(w);
 		return;
 	}
@@ -911,7 +912,8 @@ static void pix_sorted(struct pix *px)
 	for (uint64_t by = 0; by < nb; by++)
 		for (uint64_t bx = 0; bx < nb; bx++)
 			if (px->live[by * nb + bx])
-				frs_sorted_block(w, w->x0 + bx * b, w->y0 + by * b);
+				frs_sorted_block(w, w->x0 + bx * b,
+				    w->y0 + by * b);
 }
 
 /* Map pixels per chunk, in row-major order: about CHUNK_SAMPLES
