@@ -30,7 +30,7 @@ enum {
 };
 
 /* Types and qualifiers for code written once for both sides (cl/tile.cl,
- * the CPU twins in cl/hsw.cl and cl/frdgen.cl).  FRS_GLOBAL: a pointer
+ * cl/frs.cl, the CPU twins in cl/hsw.cl and cl/frdgen.cl).  FRS_GLOBAL: a pointer
  * the kernel passes from a buffer (OpenCL C 1.2 has no generic address
  * space). */
 #ifdef __OPENCL_VERSION__
@@ -50,8 +50,9 @@ enum {
 
 /*
  * Forced Random Sampling on OpenCL (cl/frs.cl, src/lib/sample/frscl.c):
- * the host turns each active pixel's thresholds into integers, so that
- * no floating point happens on the device.  The record of an active
+ * the host turns each active pixel's thresholds into integers
+ * (frs_thr_words, the words the CPU's walks read too), so that no
+ * floating point happens on the device.  The record of an active
  * pixel, FRSCL_RECORD(nsteps) words, holds
  *   FRSCL_REC_PIXEL      px | py << 32, the pixel
  *   FRSCL_REC_LIM        values from lim never pass (last step)

@@ -96,6 +96,22 @@ static inline double num_u53(uint64_t v)
 	return (d - 0x1p52) + (double)(v >> 52) * 0x1p52;
 }
 
+/* Whether v is a power of two (the minmap's and the lists' sides must be). */
+static inline int num_is_pow2(uint64_t v)
+{
+	return v && !(v & (v - 1));
+}
+
+/* The smallest l with 2^l >= v: log2 of a power of two. */
+static inline unsigned num_log2_ceil(uint64_t v)
+{
+	unsigned l = 0;
+
+	while (((uint64_t)1 << l) < v)
+		l++;
+	return l;
+}
+
 /* x with its 64 bits in the mirror order (inline: the loops of the
  * Halton points vectorise it). */
 static inline uint64_t num_bit_reverse(uint64_t x)

@@ -32,6 +32,13 @@ uint64_t frs_rand64x(uint64_t seed, uint32_t stream, uint64_t index,
     uint32_t sub);
 /* Uniform double in [0, 1) with 53 random bits. */
 double frs_rand01(uint64_t seed, uint32_t stream, uint64_t index);
+/* Its 53 bits as an integer u, the double being u 2^-53: the coin of
+ * the thresholding (cl/frs.cl), as cl/rng.cl's frs_rand53. */
+static inline uint64_t frs_rand53(uint64_t seed, uint32_t stream,
+    uint64_t index)
+{
+	return frs_rand64(seed, stream, index) >> 11;
+}
 /* Two uniform doubles in [0, 1) from one block: *a from words 0 and 1,
  * *b from words 2 and 3 (53 bits each). */
 void frs_rand01_pair(uint64_t seed, uint32_t stream, uint64_t index,

@@ -6,7 +6,10 @@
 #include "base/par.h"
 #include "base/rng.h"
 #include "base/wide.h"
+#include "sample/frsprep.h"
 #include "sample/tile.h"
+
+#include "../../../cl/frs.cl"
 
 #include <math.h>
 #include <stdio.h>
@@ -38,19 +41,6 @@ int frs_impl_parse(const char *s, enum frs_impl *a)
 		}
 	return frs_fail("unknown implementation '%s' (naive, stack, "
 	    "level1, level2, sorted, flat1)", s);
-}
-
-static int is_pow2(uint64_t v)
-{
-	return v && !(v & (v - 1));
-}
-
-static unsigned log2u64(uint64_t v)
-{
-	unsigned l = 0;
-	while (((uint64_t)1 << l) < v)
-		l++;
-	return l;
 }
 
 /* ---- setup (Listing 5.1) ------------------------------------------ */
@@ -373,691 +363,37 @@ uint32_t frs_tile_max_block(const struct frs_setup *s)
 
 /* ---- tiles -------------------------------------------------------- */
 
-/* The transforms of the tiles met last, direct-mapped by tile column:
- * a thread's rows of pixels cross a row of tiles again and again, and a
- * transform costs two Philox blocks.  1024 columns: a window of up to
- * 1024 tiles a row (a sun's) computes each transform once a row of
- * tiles, not once a row of pixels (interior.exr at 262144: 9 ms). */
-#define TCACHE 1024
-struct tcache {
-	unsigned sx, sy;	/* log2 of the matrix's sides, or 64 when
-				 * one is no power of two (tcache_init) */
-	struct {
-		uint64_t tx, ty;
-		int valid;
-		struct frs_tile t;
-	} e[TCACHE];
-};
-
-static void tcache_init(struct tcache *c, const struct frs_setup *s)
+/* The window of setup s as the walks of cl/frs.cl see it: the tile of a
+ * window element, its matrix block and the thresholding of every
+ * implementation are defined there, once for the CPU and the device. */
+static void win_of(const struct frs_setup *s, struct frs_win *w)
 {
-	int pow2 = (s->mw & (s->mw - 1)) == 0 && (s->mh & (s->mh - 1)) == 0;
-
-	c->sx = pow2 ? log2u64(s->mw) : 64;
-	c->sy = pow2 ? log2u64(s->mh) : 64;
-	for (unsigned k = 0; k < TCACHE; k++)
-		c->e[k].valid = 0;
-}
-
-/* The transform of tile (tx, ty), from the cache or made into it. */
-static const struct frs_tile *tile_get(const struct frs_setup *s,
-    struct tcache *c, uint64_t tx, uint64_t ty)
-{
-	unsigned k = (unsigned)(tx % TCACHE);
-
-	if (!c->e[k].valid || c->e[k].tx != tx || c->e[k].ty != ty) {
-		uint64_t m[3] = { s->mw, s->mh, 1 };
-		if (s->tiles == FRS_TILES_PLAIN)
-			frs_tile_plain(&c->e[k].t);
-		else
-			frs_tile_make(&c->e[k].t, s->seed, 2, m, tx, ty, 0);
-		c->e[k].tx = tx;
-		c->e[k].ty = ty;
-		c->e[k].valid = 1;
-	}
-	return &c->e[k].t;
-}
-
-/* The tile of window element (x, y) and the element's place in it.
- * Matrices of power-of-two sides (all that frd-gen makes) divide by a
- * shift: a 64-bit division is some 40 cycles, and this runs per block. */
-static const struct frs_tile *tile_at(const struct frs_setup *s,
-    struct tcache *c, uint64_t x, uint64_t y, uint64_t *lx, uint64_t *ly)
-{
-	uint64_t X = s->wx + x, Y = s->wy + y, tx, ty;
-
-	if (c->sx < 64) {
-		tx = X >> c->sx;
-		ty = Y >> c->sy;
-	} else {
-		tx = X / s->mw;
-		ty = Y / s->mh;
-	}
-	*lx = X - tx * s->mw;
-	*ly = Y - ty * s->mh;
-	return tile_get(s, c, tx, ty);
-}
-
-/* The index of the level-l matrix block that shows the level-l block of
- * tile position (lx, ly), on the grid of (mw >> l) x (mh >> l). */
-static uint64_t block_index(const struct frs_setup *s,
-    const struct frs_tile *t, unsigned l, uint64_t lx, uint64_t ly)
-{
-	uint64_t m[3] = { s->mw, s->mh, 1 }, u[2] = { lx >> l, ly >> l }, v[2];
-
-	frs_tile_block(t, 2, m, l, u, v);
-	return v[1] * (s->mw >> l) + v[0];
+	*w = (struct frs_win){ .mw = s->mw, .mh = s->mh, .wx = s->wx,
+	    .wy = s->wy, .sw = s->sw, .ns = s->ns, .seed = s->seed,
+	    .tiles = s->tiles == FRS_TILES_SHUFFLE };
+	frs_win_shifts(w);
 }
 
 uint64_t frs_matrix_index(const struct frs_setup *s, uint64_t x, uint64_t y)
 {
 	uint64_t X = s->wx + x, Y = s->wy + y, m[3] = { s->mw, s->mh, 1 };
 	struct frs_tile t;
+	struct frs_win w;
 
+	win_of(s, &w);
 	if (s->tiles == FRS_TILES_PLAIN)
 		frs_tile_plain(&t);
 	else
 		frs_tile_make(&t, s->seed, 2, m, X / s->mw, Y / s->mh, 0);
-	return block_index(s, &t, 0, X % s->mw, Y % s->mh);
-}
-
-/* Element k of a sorted block of side b = 2^lb, at the block's window
- * origin (x, y). */
-static void inblock(const struct frs_tile *t, uint32_t b, unsigned lb,
-    uint32_t k, uint64_t x, uint64_t y, uint64_t *ex, uint64_t *ey)
-{
-	uint64_t w[2] = { k & (b - 1), k >> lb }, u[2];
-
-	frs_tile_inblock(t, 2, b, w, u);
-	*ex = x + u[0];
-	*ey = y + u[1];
-}
-
-/* ---- preparation -------------------------------------------------- */
-
-void frs_prep_free(struct frs_prep *p)
-{
-	for (unsigned l = 1; l < p->nlev; l++)
-		free(p->lev[l]);
-	MEM_FREE(p->sval, p->sidx, p->soff);
-	memset(p, 0, sizeof *p);
-}
-
-/* One level of the minmap from the one below: rows [y0, y1) of up, of
- * width w, from lo, of width pw. */
-struct halve {
-	const uint32_t *lo;
-	uint32_t *up;
-	uint32_t w, pw;
-};
-
-static int halve_rows(void *ctx, uint64_t y0, uint64_t y1)
-{
-	const struct halve *hv = ctx;
-
-	for (uint64_t y = y0; y < y1; y++)
-		for (uint32_t x = 0; x < hv->w; x++) {
-			const uint32_t *q = hv->lo + 2 * y * hv->pw + 2 * x;
-			uint32_t a = q[0] < q[1] ? q[0] : q[1];
-			uint32_t b = q[hv->pw] < q[hv->pw + 1] ? q[hv->pw] :
-			    q[hv->pw + 1];
-			hv->up[y * hv->w + x] = a < b ? a : b;
-		}
-	return 0;
-}
-
-/* The minmap, each level in parallel over rows of 2^16 minima or more
- * (level 1 of a 2048^2 matrix: 2.5 ms on one thread). */
-static int make_minmap(struct frs_prep *p)
-{
-	const struct frs_matrix *m = p->m;
-
-	p->lev[0] = m->v;
-	p->nlev = 1;
-	while ((m->w >> p->nlev) > 0 && (m->h >> p->nlev) > 0 && p->nlev < 32) {
-		unsigned l = p->nlev;
-		uint32_t w = m->w >> l, h = m->h >> l;
-		struct halve hv = { p->lev[l - 1], NULL, w, m->w >> (l - 1) };
-		if ((hv.up = malloc((size_t)w * h * sizeof *hv.up)) == NULL)
-			return frs_fail("out of memory for the minmap");
-		p->lev[l] = hv.up;	/* frs_prep_free's, whatever comes */
-		p->nlev++;
-		if (frs_parallel_if((uint64_t)w * h >= 65536, h, (65535 + w) / w,
-		    halve_rows, &hv) < 0)
-			return -1;
-	}
-	return 0;
-}
-
-/* The block lists by comparison sort: any matrix values. */
-static void sort_blocks(struct frs_prep *p, struct num_vi *tmp)
-{
-	const struct frs_matrix *m = p->m;
-	uint32_t b = p->block, bw = m->w / b, bh = m->h / b;
-	size_t bb = (size_t)b * b;
-
-	for (uint32_t by = 0; by < bh; by++)
-		for (uint32_t bx = 0; bx < bw; bx++) {
-			size_t base = ((size_t)by * bw + bx) * bb;
-			for (uint32_t k = 0; k < bb; k++)
-				tmp[k] = (struct num_vi){ m->v[((size_t)by * b + k / b) *
-				    m->w + (size_t)bx * b + k % b], k };
-			qsort(tmp, bb, sizeof *tmp, num_vi_cmp);
-			for (size_t k = 0; k < bb; k++) {
-				p->sval[base + k] = tmp[k].v;
-				p->sidx[base + k] = tmp[k].i;
-			}
-		}
-}
-
-/* Whether the values are the permutation of 0 .. n - 1 that frd(5)
- * promises: frd_check_permutation's answer without its message. */
-static int is_permutation(const struct frs_matrix *m)
-{
-	if (frd_check_permutation(m, "") == 0)
-		return 1;
-	frs_clearerr();
-	return 0;
-}
-
-struct invert {
-	const uint32_t *v;
-	uint32_t *inv;
-	uint64_t below;		/* values from it are left out */
-	uint64_t span;		/* matrix elements per task */
-	uint64_t *kept;		/* per task, the elements below */
-};
-
-/* No element of the matrix has this value (indices stay below 2^31). */
-#define NO_ELEM UINT32_MAX
-
-/* inv[v[i]] = i over [b, e): blind stores, distinct for a permutation,
- * so tasks may run side by side. */
-static int invert_task(void *ctx, uint64_t b, uint64_t e)
-{
-	const struct invert *iv = ctx;
-
-	for (uint64_t i = b; i < e; i++)
-		iv->inv[iv->v[i]] = (uint32_t)i;
-	return 0;
-}
-
-/* The same for the values below iv->below only, into an inv of that
- * many entries set to NO_ELEM: one read of the matrix, rare stores.
- * Repeated values store twice but count twice, which
- * distinct_values then sees. */
-static int invert_below_task(void *ctx, uint64_t b, uint64_t e)
-{
-	const struct invert *iv = ctx;
-	uint64_t kept = 0;
-
-	for (uint64_t i = b; i < e; i++)
-		if (iv->v[i] < iv->below) {
-			iv->inv[iv->v[i]] = (uint32_t)i;
-			kept++;
-		}
-	iv->kept[b / iv->span] = kept;
-	return 0;
-}
-
-/* Counting sort over the inverse permutation, in parallel over ranges
- * of values: a first pass counts each range's values per block, the
- * prefix sums over ranges then give every range its place in each
- * block's list, and a second pass puts them there.  Each pass reads its
- * range of inv once; no thread reads what another one does. */
-struct scatter {
-	struct frs_prep *p;
-	const uint32_t *inv;	/* NO_ELEM: a value the matrix lacks */
-	uint64_t nv;		/* values 0 .. nv - 1 */
-	uint64_t span;		/* values per range */
-	uint64_t nblk;		/* blocks */
-	uint64_t *fill;		/* per range and block: count, then place */
-};
-
-/* The block of matrix index i (lb = log2 block, lw = log2 width). */
-static uint64_t block_of(const struct frs_matrix *m, uint32_t i, unsigned lb,
-    unsigned lw)
-{
-	return (uint64_t)((i >> lw) >> lb) * (m->w >> lb) + ((i & (m->w - 1)) >> lb);
-}
-
-static int count_task(void *ctx, uint64_t b, uint64_t e)
-{
-	const struct scatter *sc = ctx;
-	const struct frs_matrix *m = sc->p->m;
-	unsigned lb = log2u64(sc->p->block), lw = log2u64(m->w);
-
-	for (uint64_t r = b; r < e; r++) {
-		uint64_t *cnt = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
-		for (uint64_t v = r * sc->span; v < v1 && v < sc->nv; v++)
-			if (sc->inv[v] != NO_ELEM)
-				cnt[block_of(m, sc->inv[v], lb, lw)]++;
-	}
-	return 0;
-}
-
-/* Entries gathered per block before they go to its list: one cache
- * line of values and one of indices, written whole, where single stores
- * to many lists at once would each fetch a line first. */
-#define GATHER 16
-
-struct gather {
-	uint32_t v[GATHER], i[GATHER];
-};
-
-static void put_run(struct frs_prep *p, uint64_t *at, const struct gather *g,
-    unsigned n)
-{
-	memcpy(p->sval + *at, g->v, n * sizeof *g->v);
-	memcpy(p->sidx + *at, g->i, n * sizeof *g->i);
-	*at += n;
-}
-
-static int place_task(void *ctx, uint64_t b, uint64_t e)
-{
-	const struct scatter *sc = ctx;
-	struct frs_prep *p = sc->p;
-	const struct frs_matrix *m = p->m;
-	uint32_t blk = p->block;
-	unsigned lb = log2u64(blk), lw = log2u64(m->w);
-	struct gather *g = malloc(sc->nblk * sizeof *g);
-	unsigned char *ng = calloc(sc->nblk, 1);
-
-	if (g == NULL || ng == NULL) {
-		free(g);
-		free(ng);
-		return frs_fail("out of memory for the sorted lists");
-	}
-	for (uint64_t r = b; r < e; r++) {
-		uint64_t *at = sc->fill + r * sc->nblk, v1 = (r + 1) * sc->span;
-		for (uint64_t v = r * sc->span; v < v1 && v < sc->nv; v++) {
-			uint32_t i = sc->inv[v], x = i & (m->w - 1), y = i >> lw;
-			uint64_t k;
-			if (i == NO_ELEM)
-				continue;
-			k = block_of(m, i, lb, lw);
-			g[k].v[ng[k]] = (uint32_t)v;
-			g[k].i[ng[k]] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
-			if (++ng[k] == GATHER) {
-				put_run(p, &at[k], &g[k], GATHER);
-				ng[k] = 0;
-			}
-		}
-		for (uint64_t k = 0; k < sc->nblk; k++) {
-			put_run(p, &at[k], &g[k], ng[k]);
-			ng[k] = 0;
-		}
-	}
-	free(g);
-	free(ng);
-	return 0;
-}
-
-/* Radix sort (LSD, 11-bit digits, stable) of n keys with their
- * payloads, from (k, i) through (tk, ti); the result ends in (k, i). */
-static void radix_pairs(uint32_t *k, uint32_t *i, uint32_t *tk, uint32_t *ti,
-    size_t n, uint32_t max)
-{
-	for (unsigned sh = 0; sh < 32 && (sh == 0 || (max >> sh) != 0); sh += 11) {
-		size_t cnt[2048] = { 0 }, sum = 0;
-		for (size_t j = 0; j < n; j++)
-			cnt[(k[j] >> sh) & 2047]++;
-		for (size_t d = 0; d < 2048; d++) {
-			size_t c = cnt[d];
-			cnt[d] = sum;
-			sum += c;
-		}
-		for (size_t j = 0; j < n; j++) {
-			size_t at = cnt[(k[j] >> sh) & 2047]++;
-			tk[at] = k[j];
-			ti[at] = i[j];
-		}
-		memcpy(k, tk, n * sizeof *k);
-		memcpy(i, ti, n * sizeof *i);
-	}
-}
-
-/* More blocks than this: complete lists by bands, no global inverse. */
-#define ONE_PASS_BLOCKS 4096
-
-/* The lists by counting over inv: count, place each range, put. */
-static int count_sort(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
-{
-	const struct frs_matrix *m = p->m;
-	uint64_t nt = (uint64_t)frs_threads(), bb = (uint64_t)p->block * p->block;
-	struct scatter sc = { p, inv, nv, 0, 0, NULL };
-	int rc;
-
-	nt = nt < 1 ? 1 : nt;
-	sc.span = (nv + nt - 1) / nt;
-	sc.nblk = m->n / bb;
-	if ((sc.fill = calloc(nt * sc.nblk, sizeof *sc.fill)) == NULL)
-		return frs_fail("out of memory for the sorted lists");
-	rc = frs_parallel(nt, 1, count_task, &sc, NULL);
-	for (uint64_t k = 0, at = 0; rc == 0 && k < sc.nblk; k++) {
-		p->soff[k] = (uint32_t)at;
-		for (uint64_t r = 0; r < nt; r++) {
-			uint64_t c = sc.fill[r * sc.nblk + k];
-			sc.fill[r * sc.nblk + k] = at;
-			at += c;
-		}
-		p->soff[k + 1] = (uint32_t)at;
-	}
-	if (rc == 0)
-		rc = frs_parallel(nt, 1, place_task, &sc, NULL);
-	free(sc.fill);
-	return rc;
-}
-
-/* Fewer values than this, or many small blocks: deal_below, whose one
- * pass over them costs less than count_sort's arrays of every block
- * (frscore.h). */
-uint64_t frs_deal_below = (uint64_t)1 << 20;
-
-/* The values in order, counted per block, then each appended to its
- * block's list: the lists come out sorted. */
-static int deal_below(struct frs_prep *p, const uint32_t *inv, uint64_t nv)
-{
-	const struct frs_matrix *m = p->m;
-	uint32_t blk = p->block;
-	unsigned lb = log2u64(blk), lw = log2u64(m->w);
-	uint64_t nblk = m->n / ((uint64_t)blk * blk);
-	uint32_t *fill = calloc(nblk, sizeof *fill);
-
-	if (fill == NULL)
-		return frs_fail("out of memory for the sorted lists");
-	for (uint64_t v = 0; v < nv; v++)
-		if (inv[v] != NO_ELEM)
-			fill[block_of(m, inv[v], lb, lw)]++;
-	p->soff[0] = 0;
-	for (uint64_t k = 0; k < nblk; k++) {
-		p->soff[k + 1] = p->soff[k] + fill[k];
-		fill[k] = p->soff[k];
-	}
-	for (uint64_t v = 0; v < nv; v++) {
-		uint32_t i = inv[v], x = i & (m->w - 1), y = i >> lw, at;
-		if (i == NO_ELEM)
-			continue;
-		at = fill[block_of(m, i, lb, lw)]++;
-		p->sval[at] = (uint32_t)v;
-		p->sidx[at] = ((y & (blk - 1)) << lb) | (x & (blk - 1));
-	}
-	free(fill);
-	return 0;
-}
-
-/*
- * Lists a band of blocks (b rows of the matrix) at a time, in parallel
- * over bands: a band's values below lim gathered in the order of the
- * matrix, sorted by value (radix_pairs, stable: equal values keep that
- * order) and dealt to its blocks, whose lists lie side by side from
- * soff.  Each band's work stays in cache, where dealing the values in
- * order over the whole matrix (the inverse permutation) stores to every
- * block's list at once.  Complete lists keep every value (lim 2^32);
- * partial ones count each block's values below first (count_band).
- */
-struct bands {
-	struct frs_prep *p;
-	uint64_t lim;		/* the values below it */
-	uint64_t most;		/* the most values of a band */
-};
-
-static int count_band(void *ctx, uint64_t r0, uint64_t r1)
-{
-	const struct bands *bd = ctx;
-	const struct frs_matrix *m = bd->p->m;
-	uint32_t b = bd->p->block, bw = m->w / b, *cnt = bd->p->soff + 1;
-
-	for (uint64_t r = r0; r < r1; r++)
-		for (uint64_t y = r * b; y < (r + 1) * b; y++) {
-			const uint32_t *row = m->v + y * m->w;
-			for (uint32_t bx = 0; bx < bw; bx++) {
-				uint32_t c = 0;
-				for (uint32_t x = bx * b; x < (bx + 1) * b; x++)
-					c += row[x] < bd->lim;
-				cnt[r * bw + bx] += c;
-			}
-		}
-	return 0;
-}
-
-/* Sort n (key, payload) pairs by key: insertion for a few, else radix
- * through the room (tk, ti). */
-static void sort_pairs(uint32_t *k, uint32_t *i, uint32_t *tk, uint32_t *ti,
-    size_t n, uint32_t max)
-{
-	if (n > 48) {
-		radix_pairs(k, i, tk, ti, n, max);
-		return;
-	}
-	for (size_t a = 1; a < n; a++) {
-		uint32_t kk = k[a], ii = i[a];
-		size_t j = a;
-		for (; j > 0 && k[j - 1] > kk; j--) {
-			k[j] = k[j - 1];
-			i[j] = i[j - 1];
-		}
-		k[j] = kk;
-		i[j] = ii;
-	}
-}
-
-static int place_band(void *ctx, uint64_t r0, uint64_t r1)
-{
-	const struct bands *bd = ctx;
-	struct frs_prep *p = bd->p;
-	const struct frs_matrix *m = p->m;
-	uint32_t b = p->block, bw = m->w / b;
-	unsigned lb = log2u64(b), lw = log2u64(m->w);
-	uint32_t *t = malloc(4 * (bd->most + 1) * sizeof *t);
-	uint32_t *fill = malloc(bw * sizeof *fill);
-
-	if (t == NULL || fill == NULL) {
-		free(t);
-		free(fill);
-		return frs_fail("out of memory for the sorted lists");
-	}
-	for (uint64_t r = r0; r < r1; r++) {
-		uint32_t *tk = t, *ti = t + bd->most + 1, max = 0;
-		size_t n = 0;
-		for (uint32_t y = 0; y < b; y++) {
-			const uint32_t *row = m->v + (r * b + y) * m->w;
-			for (uint32_t x = 0; x < m->w; x++) {
-				int keep = row[x] < bd->lim;
-				tk[n] = row[x];	/* kept when below: no branch */
-				ti[n] = y << lw | x;
-				max = keep && row[x] > max ? row[x] : max;
-				n += (size_t)keep;
-			}
-		}
-		sort_pairs(tk, ti, ti + bd->most + 1, ti + 2 * (bd->most + 1), n,
-		    max);
-		memcpy(fill, p->soff + r * bw, bw * sizeof *fill);
-		for (size_t j = 0; j < n; j++) {
-			uint32_t x = ti[j] & (m->w - 1), y = ti[j] >> lw;
-			uint32_t at = fill[x >> lb]++;
-			p->sval[at] = tk[j];
-			p->sidx[at] = y << lb | (x & (b - 1));
-		}
-	}
-	free(t);
-	free(fill);
-	return 0;
-}
-
-/* Whether the lists of the values below `below` in blocks of b come
- * faster by bands than through the inverse (sorted_below): from a 32nd
- * of the values on, in 8 bands or more (fewer keep threads idle and sort
- * more than fits a cache).  On a 2048^2 matrix, 2-core x86-64, b 16 and
- * 2^20 values: 18 ms by the inverse, 11 by bands (12.6 and 6 on two
- * threads); below 2^17 values the inverse's one read of the matrix
- * wins. */
-static int by_bands(const struct frs_matrix *m, uint32_t b, uint64_t below)
-{
-	return below >= m->n / 32 && below > 0 && m->h / b >= 8;
-}
-
-/* The lists of the values below `below` (at least 1, at most half the
- * matrix's values) by bands.  0, or -1 after frs_fail. */
-static int bands_below(struct frs_prep *p, uint64_t below)
-{
-	const struct frs_matrix *m = p->m;
-	uint32_t b = p->block, bw = m->w / b, nband = m->h / b;
-	struct bands bd = { p, below, 0 };
-	uint64_t nblk = (uint64_t)bw * nband;
-
-	memset(p->soff, 0, (nblk + 1) * sizeof *p->soff);
-	if (frs_parallel(nband, 1, count_band, &bd, NULL) < 0)
-		return -1;
-	for (uint64_t k = 0; k < nblk; k++)
-		p->soff[k + 1] += p->soff[k];
-	for (uint64_t r = 0; r < nband; r++) {
-		uint64_t c = p->soff[(r + 1) * bw] - p->soff[r * bw];
-		bd.most = c > bd.most ? c : bd.most;
-	}
-	p->sval = malloc((p->soff[nblk] + 1) * sizeof *p->sval);
-	p->sidx = malloc((p->soff[nblk] + 1) * sizeof *p->sidx);
-	if (p->sval == NULL || p->sidx == NULL)
-		return frs_fail("out of memory for the sorted lists");
-	return frs_parallel(nband, 1, place_band, &bd, NULL);
-}
-
-/* Lists of the values below `below` alone, by counting over an inverse
- * of that many values; 1 when the values below repeat (the complete
- * lists then sort them), 0 done, -1 failed. */
-static int sorted_below(struct frs_prep *p, uint64_t below)
-{
-	const struct frs_matrix *m = p->m;
-	uint64_t nt = (uint64_t)frs_threads(), kept = 0, distinct = 0;
-	struct invert iv = { m->v, NULL, below, 0, NULL };
-	int rc;
-
-	nt = nt < 1 ? 1 : nt;
-	iv.span = (m->n + nt - 1) / nt;
-	iv.inv = malloc((size_t)(below + 1) * sizeof *iv.inv);
-	iv.kept = calloc(nt, sizeof *iv.kept);
-	if (iv.inv == NULL || iv.kept == NULL) {
-		free(iv.inv);
-		free(iv.kept);
-		return frs_fail("out of memory for the sorted lists");
-	}
-	memset(iv.inv, 0xff, (size_t)below * sizeof *iv.inv);	/* NO_ELEM */
-	rc = frs_parallel(m->n, iv.span, invert_below_task, &iv, NULL);
-	for (uint64_t t = 0; t < nt; t++)
-		kept += iv.kept[t];
-	for (uint64_t v = 0; v < below; v++)
-		distinct += iv.inv[v] != NO_ELEM;
-	if (rc == 0 && kept != distinct)
-		rc = 1;
-	else if (rc == 0 && (below < frs_deal_below ||
-	    m->n / ((uint64_t)p->block * p->block) > ONE_PASS_BLOCKS))
-		rc = deal_below(p, iv.inv, below);
-	else if (rc == 0)
-		rc = count_sort(p, iv.inv, below);
-	free(iv.inv);
-	free(iv.kept);
-	return rc;
-}
-
-/* Listing 5.10, keeping every element of a block (no n_t cap: the
- * thesis's cap 2 n_s^2 / sigma^2 is 0 for n_s < sigma and too small for
- * some blocks, and a sample lost there is a bias).  O(S_M^2) for any
- * block size, in parallel over block rows: many small blocks by
- * bands (place_band); few large ones of a permutation (every matrix read through
- * frd(5)) by counting over the inverse permutation; others by qsort.
- * The values below `below` alone, when they are fewer than half, in
- * lists of just those values: by bands (bands_below) or through their
- * inverse (sorted_below), as by_bands finds faster. */
-static int make_sorted(struct frs_prep *p, uint32_t b, uint64_t below)
-{
-	const struct frs_matrix *m = p->m;
-	uint64_t nblk = (uint64_t)(m->w / b) * (m->h / b), bb = (uint64_t)b * b;
-	uint32_t *inv = NULL;
-	struct num_vi *tmp = NULL;
-	int rc = 0;
-
-	p->block = b;
-	p->below = FRS_ALL_VALUES;
-	if ((p->soff = malloc((nblk + 1) * sizeof *p->soff)) == NULL)
-		return frs_fail("out of memory for the sorted lists");
-	if (below < m->n / 2 && by_bands(m, b, below)) {
-		if ((rc = bands_below(p, below)) == 0)
-			p->below = below;
-		return rc;
-	}
-	if (below < m->n / 2) {
-		p->sval = malloc((below + 1) * sizeof *p->sval);
-		p->sidx = malloc((below + 1) * sizeof *p->sidx);
-		if (p->sval == NULL || p->sidx == NULL)
-			return frs_fail("out of memory for the sorted lists");
-		if ((rc = sorted_below(p, below)) <= 0) {
-			if (rc == 0)
-				p->below = below;
-			return rc;
-		}
-		free(p->sval);	/* repeated values: the complete lists */
-		free(p->sidx);
-		rc = 0;
-	}
-	p->sval = mem_big(m->n * sizeof *p->sval);
-	p->sidx = mem_big(m->n * sizeof *p->sidx);
-	if (p->sval == NULL || p->sidx == NULL)
-		return frs_fail("out of memory for the sorted lists");
-	for (uint64_t k = 0; k <= nblk; k++)
-		p->soff[k] = (uint32_t)(k * bb);
-	if (nblk > ONE_PASS_BLOCKS) {
-		struct bands bd = { p, (uint64_t)1 << 32, (uint64_t)m->w * b };
-		rc = frs_parallel(m->h / b, 1, place_band, &bd, NULL);
-	} else if ((inv = mem_big(m->n * sizeof *inv)) == NULL)
-		rc = frs_fail("out of memory for the sorted lists");
-	else if (is_permutation(m)) {
-		uint64_t nt = (uint64_t)frs_threads();
-		struct invert iv = { m->v, inv, 0, 0, NULL };
-		nt = nt < 1 ? 1 : nt;
-		rc = frs_parallel(m->n, (m->n + nt - 1) / nt, invert_task, &iv,
-		    NULL);
-		if (rc == 0)
-			rc = count_sort(p, inv, m->n);
-	} else if ((tmp = malloc((size_t)b * b * sizeof *tmp)) == NULL)
-		rc = frs_fail("out of memory for the sorted lists");
-	else
-		sort_blocks(p, tmp);
-	free(inv);
-	free(tmp);
-	return rc;
-}
-
-int frs_prepare(struct frs_prep *p, const struct frs_matrix *m, int minmap,
-    uint32_t block)
-{
-	return frs_prepare_below(p, m, minmap, block, FRS_ALL_VALUES);
-}
-
-int frs_prepare_below(struct frs_prep *p, const struct frs_matrix *m,
-    int minmap, uint32_t block, uint64_t below)
-{
-	memset(p, 0, sizeof *p);
-	p->m = m;
-	p->lev[0] = m->v;
-	p->nlev = 1;
-	if ((minmap || block) && (!is_pow2(m->w) || !is_pow2(m->h)))
-		return frs_fail("the matrix is %ux%u: the minmap and sorted "
-		    "implementations need power-of-two sides (naive does not)",
-		    m->w, m->h);
-	if (block && (block > m->w || block > m->h || !is_pow2(block)))
-		return frs_fail("sorted blocks of %u do not fit the %ux%u matrix",
-		    block, m->w, m->h);
-	if ((minmap && make_minmap(p) < 0) || (block && make_sorted(p, block, below) < 0)) {
-		frs_prep_free(p);
-		return -1;
-	}
-	return 0;
+	return frs_block_index(&w, &t, 0, X % s->mw, Y % s->mh);
 }
 
 /* ---- thresholds --------------------------------------------------- */
 
 void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule)
 {
+	double c;
+
 	/* Past 2^33 every value of a uint32 matrix passes. */
 	if (!(t < 0x1p33))
 		t = 0x1p33;
@@ -1066,27 +402,38 @@ void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule)
 	 * exactly, and costs a library call less a pixel. */
 	th->tf = (uint64_t)t;
 	th->frac = t - (double)th->tf;
-	if (rule == FRS_THESIS)		/* v < T  <=>  v < ceil(T) */
+	if (rule == FRS_THESIS) {	/* v < T  <=>  v < ceil(T) */
 		th->lim = (uint64_t)ceil(t);
-	else
-		th->lim = th->tf + (th->frac > 0.0);
+		th->pw[0] = th->lim;
+		th->pw[1] = 0;
+		return;
+	}
+	th->lim = th->tf + (th->frac > 0.0);
+	/* The coin's bound ceil(frac 2^53), the product exact: truncated,
+	 * then one up unless it was whole, without a call a pixel. */
+	c = th->frac * 0x1p53;
+	th->pw[0] = th->tf;
+	th->pw[1] = (uint64_t)c;
+	th->pw[1] += (double)th->pw[1] < c;
 }
 
-int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
-    uint64_t seed, uint64_t id)
+int frs_thr_passes(const struct frs_thr *th, uint64_t v, uint64_t seed,
+    uint64_t id)
 {
-	if (rule == FRS_THESIS)
-		return (double)v < th->t;
-	if (v < th->tf)
-		return 1;
-	return v == th->tf && th->frac > 0.0 &&
-	    frs_rand01(seed, FRS_STREAM_COIN, id) < th->frac;
+	return frs_pass(th->pw, v, seed, id);
 }
 
-static int passes(const struct frs_setup *s, const struct frs_thr *th,
-    uint64_t v, uint64_t x, uint64_t y)
+uint64_t frs_thr_words(uint64_t *thr, const double *tau, unsigned nsteps,
+    double imp, enum frs_rule rule)
 {
-	return frs_thr_passes(s->rule, th, v, s->seed, y * s->sw + x);
+	struct frs_thr th = { 0 };
+
+	for (unsigned k = 0; k < nsteps; k++) {
+		frs_thr_make(&th, tau[k] * imp, rule);
+		thr[2 * k] = th.pw[0];
+		thr[2 * k + 1] = th.pw[1];
+	}
+	return th.lim;
 }
 
 /* ---- the implementations ------------------------------------------ */
@@ -1130,16 +477,14 @@ struct run {
  * insertion. */
 #define FEW_SORT 256.0
 
-/* What one pixel's work needs. */
+/* What one pixel's work needs: the walk first, as the hooks of
+ * cl/frs.cl get it. */
 struct pix {
+	struct frs_walk w;
 	const struct run *run;
 	struct frs_chunk *c;
-	struct frs_thr th[16];	/* per step; th[nsteps - 1] is the last */
-	uint64_t lim;
-	uint64_t x0, y0;	/* the pixel's first window element */
+	uint64_t thr[2 * 16];	/* per step, the pass words (frs_walk) */
 	double pdf;		/* its density, for points made in place */
-	unsigned lblock;	/* log2 of the sorted lists' block side */
-	struct tcache tc;
 	uint8_t live[LIVE_MAX];	/* Sorted, shuffled tiles: its blocks worth
 				 * a look (mark_live) */
 	struct few {
@@ -1147,6 +492,7 @@ struct pix {
 		uint32_t x, y;	/* window element */
 	} few[LIVE_MAX];	/* pix_few's elements */
 };
+_Static_assert(offsetof(struct pix, w) == 0, "the hooks' walk is the pixel");
 
 /* Room for k more elements in c; a chunk in a caller's store
  * (frs_sample_each) is never grown: overflowing it fails. */
@@ -1160,105 +506,27 @@ static int grow(struct frs_chunk *c, uint64_t k)
 	return c->failed ? -1 : 0;
 }
 
-static void emit(struct pix *px, uint64_t x, uint64_t y, uint32_t v)
+/* cl/frs.cl's hook: element (x, y) passed at step `step`. */
+static inline void frs_walk_put(struct frs_walk *w, uint64_t x, uint64_t y,
+    uint32_t step)
 {
-	const struct run *run = px->run;
-	unsigned k, last = run->nsteps - 1;
+	struct pix *px = (struct pix *)w;
+	struct frs_chunk *c = px->c;
 
-	if (!passes(run->s, &px->th[last], v, x, y))
+	c->count++;
+	if (px->run->count_only)
 		return;
-	for (k = 0; k < last && !passes(run->s, &px->th[k], v, x, y); k++)
-		;
-	px->c->count++;
-	if (run->count_only)
+	if (c->n == c->cap && grow(c, 1) < 0)
 		return;
-	if (px->c->n == px->c->cap && grow(px->c, 1) < 0)
-		return;
-	px->c->e[px->c->n++] = (struct frs_elem){ (uint32_t)x, (uint32_t)y, k };
-}
-
-static uint64_t wrap(uint64_t v, uint32_t n)
-{
-	return (n & (n - 1)) == 0 ? v & (n - 1) : v % n;
-}
-
-/* The k values of r from window column x of row y that pass px's
- * limit, in order.  Their minimum first, in four independent chains (or
- * wide, where the compiler vectorises): most runs end there. */
-static void scan_run(struct pix *px, const uint32_t *r, uint64_t k,
-    uint64_t x, uint64_t y)
-{
-	uint32_t lo[4] = { UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX };
-	uint64_t j = 0;
-
-	for (; j + 4 <= k; j += 4)
-		for (unsigned c = 0; c < 4; c++)
-			lo[c] = r[j + c] < lo[c] ? r[j + c] : lo[c];
-	for (; j < k; j++)
-		lo[0] = r[j] < lo[0] ? r[j] : lo[0];
-	lo[0] = lo[1] < lo[0] ? lo[1] : lo[0];
-	lo[2] = lo[3] < lo[2] ? lo[3] : lo[2];
-	if ((lo[2] < lo[0] ? lo[2] : lo[0]) >= px->lim)
-		return;
-	for (j = 0; j < k; j++)
-		if (r[j] < px->lim)
-			emit(px, x + j, y, r[j]);
-}
-
-/* Listing 5.2: every window element of the pixel, row by row, each row
- * in runs that do not wrap around the matrix; with shuffled tiles each
- * element through its tile's transform. */
-static void pix_naive(struct pix *px)
-{
-	const struct frs_setup *s = px->run->s;
-	const uint32_t *mv = px->run->p->m->v;
-
-	if (s->tiles == FRS_TILES_PLAIN) {
-		for (uint32_t sy = 0; sy < s->ns; sy++) {
-			uint64_t y = px->y0 + sy;
-			const uint32_t *row = mv + wrap(s->wy + y, s->mh) * s->mw;
-			uint64_t mx = wrap(s->wx + px->x0, s->mw);
-			for (uint64_t k = 0, run; k < s->ns; k += run) {
-				run = s->ns - k < s->mw - mx ? s->ns - k : s->mw - mx;
-				scan_run(px, row + mx, run, px->x0 + k, y);
-				mx = mx + run == s->mw ? 0 : mx + run;
-			}
-		}
-		return;
-	}
-	for (uint64_t y = px->y0; y < px->y0 + s->ns; y++)
-		for (uint64_t x = px->x0; x < px->x0 + s->ns; x++) {
-			uint64_t lx, ly;
-			const struct frs_tile *t = tile_at(s, &px->tc, x, y, &lx, &ly);
-			uint32_t v = mv[block_index(s, t, 0, lx, ly)];
-			if (v < px->lim)
-				emit(px, x, y, v);
-		}
-}
-
-/* The minmap value of the level-l block whose first element is (x, y). */
-static uint32_t minmap_at(struct pix *px, unsigned l, uint64_t x, uint64_t y)
-{
-	const struct frs_setup *s = px->run->s;
-	uint64_t lx, ly;
-	const struct frs_tile *t;
-
-	/* Plain tiles are the identity.  Here, in the innermost lookup of
-	 * Stack and Level N, and not in tile_at and block_index: taught the
-	 * same shortcut, those still cost Level 1 a fifth more time. */
-	if (s->tiles == FRS_TILES_PLAIN) {
-		lx = wrap(s->wx + x, s->mw);
-		ly = wrap(s->wy + y, s->mh);
-		return px->run->p->lev[l][(ly >> l) * (s->mw >> l) + (lx >> l)];
-	}
-	t = tile_at(s, &px->tc, x, y, &lx, &ly);
-	return px->run->p->lev[l][block_index(s, t, l, lx, ly)];
+	c->e[c->n++] = (struct frs_elem){ (uint32_t)x, (uint32_t)y, step };
 }
 
 unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
     unsigned want)
 {
-	unsigned l = want, lns = log2u64(s->ns), lt = log2u64(frs_tile_max_block(s));
+	unsigned l = want, lns = num_log2_ceil(s->ns);
+	unsigned lt = num_log2_ceil(frs_tile_max_block(s));
+
 	if (l > lns)
 		l = lns;
 	if (l > lt)
@@ -1280,70 +548,6 @@ unsigned frs_impl_level(const struct frs_setup *s, const struct frs_prep *p,
 	    algo == FRS_LEVEL2 ? 2 : s->level0);
 }
 
-/* Listing 5.4: an explicit stack of minmap blocks. */
-struct blk {
-	uint64_t x, y;
-	unsigned l;
-};
-
-static void pix_stack(struct pix *px)
-{
-	const struct run *run = px->run;
-	unsigned L = run->start;
-	uint64_t b = (uint64_t)1 << L, nb = run->s->ns / b;
-	struct blk st[3 * 32 + 4];
-
-	for (uint64_t by = 0; by < nb; by++)
-		for (uint64_t bx = 0; bx < nb; bx++) {
-			int top = 0;
-			st[top++] = (struct blk){ px->x0 + bx * b, px->y0 + by * b, L };
-			while (top > 0) {
-				struct blk e = st[--top];
-				uint32_t v = minmap_at(px, e.l, e.x, e.y);
-				uint64_t h;
-				if (v >= px->lim)
-					continue;
-				if (e.l == 0) {
-					emit(px, e.x, e.y, v);
-					continue;
-				}
-				h = (uint64_t)1 << (e.l - 1);
-				st[top++] = (struct blk){ e.x + h, e.y + h, e.l - 1 };
-				st[top++] = (struct blk){ e.x, e.y + h, e.l - 1 };
-				st[top++] = (struct blk){ e.x + h, e.y, e.l - 1 };
-				st[top++] = (struct blk){ e.x, e.y, e.l - 1 };
-			}
-		}
-}
-
-/* Listing 5.5 for N = 1 and 2: nested loops over the quadrants. */
-static void level_block(struct pix *px, unsigned l, uint64_t x, uint64_t y)
-{
-	uint32_t v = minmap_at(px, l, x, y);
-	uint64_t h;
-
-	if (v >= px->lim)
-		return;
-	if (l == 0) {
-		emit(px, x, y, v);
-		return;
-	}
-	h = (uint64_t)1 << (l - 1);
-	for (uint64_t qy = 0; qy < 2; qy++)
-		for (uint64_t qx = 0; qx < 2; qx++)
-			level_block(px, l - 1, x + qx * h, y + qy * h);
-}
-
-static void pix_level(struct pix *px)
-{
-	unsigned L = px->run->start;
-	uint64_t b = (uint64_t)1 << L, nb = px->run->s->ns / b;
-
-	for (uint64_t by = 0; by < nb; by++)
-		for (uint64_t bx = 0; bx < nb; bx++)
-			level_block(px, L, px->x0 + bx * b, px->y0 + by * b);
-}
-
 /* The coordinate of window element e with jitter j in [0, 1) on a side
  * of the window: the one formula of frs_point, frs_points and
  * take_points. */
@@ -1352,18 +556,18 @@ static double coord(uint64_t e, double j, double side)
 	return frs_below_one(((double)e + j) / side);
 }
 
-/* The k elements of a block that take_block accepted, as points (no
- * jitter: the centre of the element) straight into the chunk's xy, with
- * the pixel's density: frs_point and api_pdf without the elements in
- * between, a third of the memory traffic. */
+/* The k elements of a block that frs_sorted_cut accepted, as points
+ * (no jitter: the centre of the element) straight into the chunk's xy,
+ * with the pixel's density: frs_point and api_pdf without the elements
+ * in between, a third of the memory traffic. */
 FRS_WIDE static void take_points(struct pix *px, const struct frs_tile *t,
-    const uint32_t *idx, uint32_t b, unsigned lb, uint64_t x, uint64_t y,
-    uint64_t k)
+    const uint32_t *idx, uint64_t x, uint64_t y, uint64_t k)
 {
 	const struct frs_setup *s = px->run->s;
 	struct frs_chunk *c = px->c;
 	double sw = (double)s->sw, sh = (double)s->sh, *o;
-	uint64_t ex, ey;
+	uint64_t ex, ey, b = px->w.b;
+	unsigned lb = px->w.lb;
 
 	if (c->n + k > c->cap) {
 		c->failed = 1;
@@ -1377,7 +581,7 @@ FRS_WIDE static void take_points(struct pix *px, const struct frs_tile *t,
 		}
 	} else {
 		for (uint64_t j = 0; j < k; j++) {
-			inblock(t, b, lb, idx[j], x, y, &ex, &ey);
+			frs_block_elem(t, b, lb, idx[j], x, y, &ex, &ey);
 			o[2 * j] = coord(ex, 0.5, sw);
 			o[2 * j + 1] = coord(ey, 0.5, sh);
 		}
@@ -1387,39 +591,22 @@ FRS_WIDE static void take_points(struct pix *px, const struct frs_tile *t,
 	c->n += k;
 }
 
-/* Listing 5.11: the sorted values of each block, until one is too
- * large.  One step: the values below lim by bisection, the last of them
- * through its coin if it needs one (values are distinct, so only it can),
- * then every element taken without further tests.  This is the hot loop
- * of the fastest implementation.  (x, y): the block's window origin, b =
- * 2^lb its side; t its tile's transform, whose in-block order k undoes. */
-static void take_block(struct pix *px, const struct frs_tile *t,
-    const uint32_t *val, const uint32_t *idx, uint32_t len, uint32_t b,
-    unsigned lb, uint64_t x, uint64_t y)
+/* cl/frs.cl's hook for Sorted with one step: the first k elements (k >
+ * 0) of the list idx of the block of tile t at window element (x, y)
+ * pass, without further tests. */
+static inline void frs_walk_take(struct frs_walk *w, const struct frs_tile *t,
+    const uint32_t *idx, uint64_t k, uint64_t x, uint64_t y)
 {
-	uint64_t lo = 0, hi = len, k, ex, ey;
+	struct pix *px = (struct pix *)w;
 	struct frs_chunk *c = px->c;
+	uint64_t ex, ey, b = w->b;
+	unsigned lb = w->lb;
 
-	if (len == 0 || val[0] >= px->lim)
-		return;
-	while (lo < hi) {
-		uint64_t mid = lo + (hi - lo) / 2;
-		if (val[mid] < px->lim)
-			lo = mid + 1;
-		else
-			hi = mid;
-	}
-	k = lo;
-	if (k > 0) {
-		inblock(t, b, lb, idx[k - 1], x, y, &ex, &ey);
-		if (!passes(px->run->s, &px->th[0], val[k - 1], ex, ey))
-			k--;
-	}
 	c->count += k;
-	if (px->run->count_only || k == 0)
+	if (px->run->count_only)
 		return;
 	if (c->xy != NULL) {
-		take_points(px, t, idx, b, lb, x, y, k);
+		take_points(px, t, idx, x, y, k);
 		return;
 	}
 	if (c->n + k > c->cap && grow(c, k) < 0)
@@ -1431,7 +618,7 @@ static void take_block(struct pix *px, const struct frs_tile *t,
 			    (uint32_t)(y + (idx[j] >> lb)), 0 };
 	} else {
 		for (uint64_t j = 0; j < k; j++) {
-			inblock(t, b, lb, idx[j], x, y, &ex, &ey);
+			frs_block_elem(t, b, lb, idx[j], x, y, &ex, &ey);
 			c->e[c->n + j] = (struct frs_elem){ (uint32_t)ex,
 			    (uint32_t)ey, 0 };
 		}
@@ -1450,17 +637,17 @@ static uint32_t region_bound(struct pix *px, uint64_t x, uint64_t y,
 {
 	const struct frs_setup *s = px->run->s;
 	const struct frs_prep *p = px->run->p;
-	unsigned L = log2u64(side);
+	unsigned L = num_log2_ceil(side);
 	uint64_t lx, ly, c[2][2], lo[2], m[2] = { s->mw, s->mh };
 	uint32_t v = UINT32_MAX;
 	const struct frs_tile *t;
 
 	if (side >= s->mw || side >= s->mh || L >= p->nlev)
 		return 0;
-	t = tile_at(s, &px->tc, x, y, &lx, &ly);
+	t = frs_tile_at(&px->w.win, &px->w.tc, x, y, &lx, &ly);
 	for (uint64_t k = 0; k < 2; k++) {	/* opposite corners */
-		uint64_t i = block_index(s, t, 0, lx + k * (side - 1),
-		    ly + k * (side - 1));
+		uint64_t i = frs_block_index(&px->w.win, t, 0,
+		    lx + k * (side - 1), ly + k * (side - 1));
 		c[k][0] = i % s->mw;
 		c[k][1] = i / s->mw;
 	}
@@ -1493,10 +680,10 @@ static void mark_live(struct pix *px, uint64_t x, uint64_t y, uint64_t side,
 	uint64_t h = side / 2;
 
 	if (side == b) {
-		px->live[(y - px->y0) / b * nb + (x - px->x0) / b] = 1;
+		px->live[(y - px->w.y0) / b * nb + (x - px->w.x0) / b] = 1;
 		return;
 	}
-	if (region_bound(px, x, y, side) >= px->lim)
+	if (region_bound(px, x, y, side) >= px->w.lim)
 		return;
 	for (uint64_t q = 0; q < 4; q++)
 		mark_live(px, x + (q & 1) * h, y + (q >> 1) * h, h, b, nb);
@@ -1514,11 +701,11 @@ static void pixel_live(struct pix *px, uint32_t b, uint64_t nb)
 		side /= 2;
 	for (uint64_t y = 0; y < s->ns; y += side)
 		for (uint64_t x = 0; x < s->ns; x += side)
-			mark_live(px, px->x0 + x, px->y0 + y, side, b, nb);
+			mark_live(px, px->w.x0 + x, px->w.y0 + y, side, b, nb);
 }
 
-/* One element that passes, nsteps 1: take_block's work for a block of
- * one. */
+/* One element that passes, nsteps 1: frs_walk_take's work for a
+ * block of one. */
 static void take_one(struct pix *px, uint64_t x, uint64_t y)
 {
 	const struct frs_setup *s = px->run->s;
@@ -1573,11 +760,12 @@ static inline int few_one(struct pix *px, const struct frs_tile *t,
 	uint64_t a0 = (((pos & mx) - t->off[0]) & mx) ^ fx;
 	uint64_t a1 = (((pos >> run->lmw) - t->off[1]) & my) ^ fy;
 	/* inside the pixel: (ex, ey) from its corner, below n_s */
-	uint64_t ex = wx + (swap ? a1 : a0) - px->x0;
-	uint64_t ey = wy + (swap ? a0 : a1) - px->y0;
+	uint64_t ex = wx + (swap ? a1 : a0) - px->w.x0;
+	uint64_t ey = wy + (swap ? a0 : a1) - px->w.y0;
 
 	if (ex >= s->ns || ey >= s->ns ||
-	    !passes(s, &px->th[0], v, px->x0 + ex, px->y0 + ey))
+	    !frs_pass(px->thr, v, s->seed, (px->w.y0 + ey) * s->sw +
+	    px->w.x0 + ex))
 		return 0;
 	if (run->count_only) {
 		px->c->count++;
@@ -1586,7 +774,7 @@ static inline int few_one(struct pix *px, const struct frs_tile *t,
 	if (*k == LIVE_MAX)
 		return -1;
 	px->few[(*k)++] = (struct few){ ((ey >> lb) * nb + (ex >> lb)) << 32 |
-	    v, (uint32_t)(px->x0 + ex), (uint32_t)(px->y0 + ey) };
+	    v, (uint32_t)(px->w.x0 + ex), (uint32_t)(px->w.y0 + ey) };
 	return 0;
 }
 
@@ -1599,7 +787,7 @@ static int few_square(struct pix *px, const struct frs_tile *t,
 	const struct run *run = px->run;
 
 	for (uint32_t i = run->bstart[q]; i < run->bstart[q + 1] &&
-	    run->bval[i] < px->lim; i++)
+	    run->bval[i] < px->w.lim; i++)
 		if (few_one(px, t, wx, wy, run->bpos[i], run->bval[i], lb, nb,
 		    k) < 0)
 			return -1;
@@ -1620,11 +808,11 @@ static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, unsigned lb,
 	const struct frs_tile *t;
 
 	/* The part, in the tile's window coordinates: [lo, hi). */
-	lo[0] = px->x0 > wx ? px->x0 - wx : 0;
-	lo[1] = px->y0 > wy ? px->y0 - wy : 0;
-	hi[0] = px->x0 + s->ns - wx < s->mw ? px->x0 + s->ns - wx : s->mw;
-	hi[1] = px->y0 + s->ns - wy < s->mh ? px->y0 + s->ns - wy : s->mh;
-	t = tile_get(s, &px->tc, tx, ty);
+	lo[0] = px->w.x0 > wx ? px->w.x0 - wx : 0;
+	lo[1] = px->w.y0 > wy ? px->w.y0 - wy : 0;
+	hi[0] = px->w.x0 + s->ns - wx < s->mw ? px->w.x0 + s->ns - wx : s->mw;
+	hi[1] = px->w.y0 + s->ns - wy < s->mh ? px->w.y0 + s->ns - wy : s->mh;
+	t = frs_tile_get(&px->w.win, &px->w.tc, tx, ty);
 	/* Matrix axis a shows window axis perm[a], flipped or not, then
 	 * shifted: the interval it covers there. */
 	for (unsigned a = 0; a < 2; a++) {
@@ -1635,8 +823,8 @@ static int few_tile(struct pix *px, uint64_t tx, uint64_t ty, unsigned lb,
 	}
 	/* Fewer values below the limit than squares to ask (the darkest
 	 * pixels): each value where the matrix has it. */
-	if (px->lim < nq[0] * nq[1]) {
-		for (uint32_t v = 0; v < px->lim; v++)
+	if (px->w.lim < nq[0] * nq[1]) {
+		for (uint32_t v = 0; v < px->w.lim; v++)
 			if (few_one(px, t, wx, wy, run->vpos[v], v, lb, nb, k) < 0)
 				return -1;
 		return 0;
@@ -1665,7 +853,7 @@ static int pix_few(struct pix *px, unsigned lb, uint64_t nb)
 {
 	const struct run *run = px->run;
 	const struct frs_setup *s = run->s;
-	uint64_t X0 = s->wx + px->x0, Y0 = s->wy + px->y0, k = 0;
+	uint64_t X0 = s->wx + px->w.x0, Y0 = s->wy + px->w.y0, k = 0;
 
 	for (uint64_t ty = Y0 >> run->lmh; ty <= (Y0 + s->ns - 1) >> run->lmh;
 	    ty++)
@@ -1694,56 +882,38 @@ static int few_serves(const struct pix *px, uint64_t nb)
 {
 	const struct run *run = px->run;
 	const struct frs_setup *s = run->s;
-	uint64_t X0 = s->wx + px->x0, Y0 = s->wy + px->y0;
+	uint64_t X0 = s->wx + px->w.x0, Y0 = s->wy + px->w.y0;
 	uint64_t nt = (((X0 + s->ns - 1) >> run->lmw) - (X0 >> run->lmw) + 1) *
 	    (((Y0 + s->ns - 1) >> run->lmh) - (Y0 >> run->lmh) + 1);
-	double cost = (double)px->lim * (double)nt * run->share;
+	double cost = (double)px->w.lim * (double)nt * run->share;
 
-	return run->nsteps == 1 && px->lim <= run->npos &&
+	return run->nsteps == 1 && px->w.lim <= run->npos &&
 	    cost <= (double)(nb * nb) && cost <= FEW_SORT;
 }
 
+/* Sorted: frs_walk_sorted with the shortcuts of a pixel of many blocks,
+ * which only skip work (pix_few, the live blocks, the bound of the
+ * whole pixel). */
 static void pix_sorted(struct pix *px)
 {
-	const struct run *run = px->run;
-	const struct frs_setup *s = run->s;
-	const struct frs_prep *p = run->p;
-	uint32_t b = p->block;
-	uint64_t nb = s->ns / b;
-	unsigned lb = px->lblock;
+	struct frs_walk *w = &px->w;
+	uint64_t b = w->b, nb = w->win.ns / b;
 	int live = nb > 1 && nb * nb <= LIVE_MAX;
 
-	if (live && few_serves(px, nb) && pix_few(px, lb, nb) == 0)
+	if (live && few_serves(px, nb) && pix_few(px, w->lb, nb) == 0)
 		return;
-	if (live)
-		pixel_live(px, b, nb);
-	else if (nb > 1 && region_bound(px, px->x0, px->y0, s->ns) >= px->lim)
+	if (!live) {
+		if (nb == 1 ||
+		    region_bound(px, w->x0, w->y0, w->win.ns) < w->lim)
+			frs_walk_sorted(w);
 		return;
+	}
+	pixel_live(px, (uint32_t)b, nb);
 	for (uint64_t by = 0; by < nb; by++)
-		for (uint64_t bx = 0; bx < nb; bx++) {
-			uint64_t x = px->x0 + bx * b, y = px->y0 + by * b, lx, ly;
-			const struct frs_tile *t;
-			if (live && !px->live[by * nb + bx])
-				continue;
-			t = tile_at(s, &px->tc, x, y, &lx, &ly);
-			uint64_t blk = block_index(s, t, lb, lx, ly);
-			const uint32_t *val = p->sval + p->soff[blk];
-			const uint32_t *idx = p->sidx + p->soff[blk];
-			uint32_t len = p->soff[blk + 1] - p->soff[blk];
-			/* The block's minimum from the (small) minmap level
-			 * rather than from its list, a cache miss away. */
-			if (nb > 1 && lb < p->nlev && p->lev[lb][blk] >= px->lim)
-				continue;
-			if (run->nsteps == 1) {
-				take_block(px, t, val, idx, len, b, lb, x, y);
-				continue;
-			}
-			for (uint64_t k = 0; k < len && val[k] < px->lim; k++) {
-				uint64_t ex, ey;
-				inblock(t, b, lb, idx[k], x, y, &ex, &ey);
-				emit(px, ex, ey, val[k]);
-			}
-		}
+		for (uint64_t bx = 0; bx < nb; bx++)
+			if (px->live[by * nb + bx])
+				frs_sorted_block(w, w->x0 + bx * b,
+				    w->y0 + by * b);
 }
 
 /* Map pixels per chunk, in row-major order: about CHUNK_SAMPLES
@@ -1776,34 +946,47 @@ static void run_chunk(struct pix *px, uint64_t ci)
 		if (!frs_cell_here(s->lev, s->level, i) ||
 		    !((imp = run->map->v[i]) > 0.0))
 			continue;	/* zero importance costs nothing */
-		for (unsigned k = 0; k < run->nsteps; k++)
-			frs_thr_make(&px->th[k], run->tau[k] *
-			    (imp * s->iscale), s->rule);
-		px->lim = px->th[run->nsteps - 1].lim;
-		if (px->lim == 0)
+		px->w.lim = frs_thr_words(px->thr, run->tau, run->nsteps,
+		    imp * s->iscale, s->rule);
+		if (px->w.lim == 0)
 			continue;
-		px->x0 = pxi * s->ns;
-		px->y0 = py * s->ns;
+		px->w.x0 = pxi * s->ns;
+		px->w.y0 = py * s->ns;
 		px->pdf = imp / s->mean;
 		switch (run->algo) {
-		case FRS_NAIVE: pix_naive(px); break;
-		case FRS_STACK: pix_stack(px); break;
+		case FRS_NAIVE: frs_walk_naive(&px->w); break;
+		case FRS_STACK:
 		case FRS_LEVEL1:
-		case FRS_LEVEL2: pix_level(px); break;
+		case FRS_LEVEL2: frs_walk_minmap(&px->w, run->start); break;
 		default: pix_sorted(px); break;
 		}
 	}
 }
 
+/* The walk of a thread's pixels: the run's window, minmap, lists and
+ * steps. */
 static void pix_start(struct pix *px, const struct run *run)
 {
-	px->run = run;
-	px->lblock = 0;
-	while ((1u << px->lblock) < run->p->block)
-		px->lblock++;
-	tcache_init(&px->tc, run->s);
-}
+	const struct frs_prep *p = run->p;
+	struct frs_walk *w = &px->w;
 
+	px->run = run;
+	win_of(run->s, &w->win);
+	for (unsigned l = 0; l < 32; l++)
+		w->lev[l] = l < p->nlev ? p->lev[l] : NULL;
+	if (p->m != NULL)	/* lists alone may have no level 0 */
+		w->lev[0] = p->m->v;
+	w->sval = p->sval;
+	w->sidx = p->sidx;
+	w->soff = p->soff;
+	w->b = p->block ? p->block : 1;
+	w->lb = num_log2_ceil(w->b);
+	w->bmin = run->s->ns / w->b > 1 && w->lb < p->nlev ? p->lev[w->lb] :
+	    NULL;
+	w->thr = px->thr;
+	w->nsteps = run->nsteps;
+	frs_tcache_init(&w->tc);
+}
 
 /* run->bval, bpos, bstart, npos and lside for Sorted with shuffled tiles
  * (pix_few): the first values of the matrix, from its sorted lists in
@@ -1850,7 +1033,7 @@ static void first_values(struct run *run)
 		run->bval = run->bpos = run->bstart = NULL;
 		return;
 	}
-	lb = log2u64(p->block);
+	lb = num_log2_ceil(p->block);
 	nbx = s->mw / p->block;
 	nblk = nbx * (s->mh / p->block);
 	for (uint64_t blk = 0; blk < nblk; blk++) {
@@ -1876,9 +1059,9 @@ static void first_values(struct run *run)
 	run->bstart[0] = 0;
 	run->vpos = at;
 	run->npos = want;
-	run->lside = log2u64(B);
-	run->lmw = log2u64(s->mw);
-	run->lmh = log2u64(s->mh);
+	run->lside = num_log2_ceil(B);
+	run->lmw = num_log2_ceil(s->mw);
+	run->lmh = num_log2_ceil(s->mh);
 }
 
 static void first_values_free(struct run *run)

@@ -215,9 +215,9 @@ static void emit(struct vox *vx, uint64_t x, uint64_t y, uint64_t z,
 	unsigned k, last = run->nsteps - 1;
 	uint64_t id = elem_id(s, x, y, z);
 
-	if (!frs_thr_passes(s->rule, &vx->th[last], v, s->seed, id))
+	if (!frs_thr_passes(&vx->th[last], v, s->seed, id))
 		return;
-	for (k = 0; k < last && !frs_thr_passes(s->rule, &vx->th[k], v,
+	for (k = 0; k < last && !frs_thr_passes(&vx->th[k], v,
 	    s->seed, id); k++)
 		;
 	vx->c->count++;
@@ -306,7 +306,7 @@ static void take_all(struct vox *vx, const uint32_t *val, const uint32_t *idx,
 
 	if (k > 0) {
 		inblock(vx, b, idx[k - 1], o, e);
-		if (!frs_thr_passes(s->rule, &vx->th[0], val[k - 1], s->seed,
+		if (!frs_thr_passes(&vx->th[0], val[k - 1], s->seed,
 		    elem_id(s, e[0], e[1], e[2])))
 			k--;
 	}

@@ -5,7 +5,6 @@
 
 #include "../../../cl/defs.cl"
 
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,30 +43,6 @@ static int program(struct ocl *o, cl_program *prog)
 	}
 	*prog = cache.prog;
 	return 0;
-}
-
-/* The thresholds of one pixel (frs_thr_make) with frs_thr_passes's test
- * as integers, into its record (FRSCL_REC_* of cl/defs.cl).  Returns the
- * last step's limit. */
-static uint64_t pixel_record(uint64_t *rec, const double *tau, unsigned nsteps,
-    double imp, enum frs_rule rule)
-{
-	struct frs_thr th = { 0 };
-
-	for (unsigned k = 0; k < nsteps; k++) {
-		frs_thr_make(&th, tau[k] * imp, rule);
-		if (rule == FRS_THESIS) {	/* v < T  <=>  v < lim */
-			rec[FRSCL_REC_TF(k)] = th.lim;
-			rec[FRSCL_REC_COIN(k)] = 0;
-		} else {
-			/* coin u 2^-53 < frac  <=>  u < ceil(frac 2^53) */
-			rec[FRSCL_REC_TF(k)] = th.tf;
-			rec[FRSCL_REC_COIN(k)] = th.frac > 0.0 ?
-			    (uint64_t)ceil(th.frac * 0x1p53) : 0;
-		}
-	}
-	rec[FRSCL_REC_LIM] = th.lim;
-	return th.lim;
 }
 
 /* What one call holds on the device. */
@@ -467,7 +442,9 @@ int frs_sample_cl(struct ocl *o, const struct frs_setup *s,
 		uint64_t *t = thr + c.nact * rec;
 		if (!(imp > 0.0) || !frs_cell_here(s->lev, s->level, i))
 			continue;
-		if (pixel_record(t, tau, nsteps, imp * s->iscale, s->rule) == 0)
+		t[FRSCL_REC_LIM] = frs_thr_words(t + FRSCL_REC_TF(0), tau,
+		    nsteps, imp * s->iscale, s->rule);
+		if (t[FRSCL_REC_LIM] == 0)
 			continue;
 		t[FRSCL_REC_PIXEL] = (i % s->iw) | (i / s->iw) << 32;
 		c.nact++;

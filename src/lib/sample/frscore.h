@@ -31,6 +31,7 @@
 
 #include "formats/frdio.h"
 #include "maps/imap.h"
+#include "sample/frsprep.h"
 
 /* The implementations of Chapter 5, with the values of frs.h's enum
  * frs_algorithm (api.c asserts it: one vocabulary); Flat 1, the device's
@@ -210,38 +211,6 @@ uint32_t frs_tile_max_block(const struct frs_setup *s);
 /* The matrix index (y * mw + x) that window element (x, y) shows. */
 uint64_t frs_matrix_index(const struct frs_setup *s, uint64_t x, uint64_t y);
 
-/* The matrix prepared for the implementations: minmap levels and
- * block-sorted lists. */
-struct frs_prep {
-	const struct frs_matrix *m;
-	unsigned nlev;		/* levels 0 (the matrix) .. nlev - 1 */
-	uint32_t *lev[32];	/* level l: (mw >> l) x (mh >> l) minima */
-	uint32_t block;		/* block size of the sorted lists, 0: none */
-	uint32_t *sval;		/* per block, ascending values */
-	uint32_t *sidx;		/* and their index inside the block */
-	uint32_t *soff;		/* block k's list: soff[k] .. soff[k + 1] - 1 */
-	uint64_t below;		/* the lists hold every value below this */
-};
-
-/* frs_prepare_below's bound for complete lists. */
-#define FRS_ALL_VALUES UINT64_MAX
-
-/* Build the minmap (stack, levels) and, when block > 0, the sorted lists
- * of blocks x blocks (sorted).  Power-of-two matrices only. */
-int frs_prepare(struct frs_prep *p, const struct frs_matrix *m,
-    int minmap, uint32_t block);
-/* The same with lists of the values below below only: a run whose thresholds stay
- * under it (frs_lim_most) reads nothing else, and they cost a pass over
- * the matrix and O(below), not O(S_M^2).  Complete lists when below is
- * half the matrix's values or more, or when the values below repeat and
- * the lists come through the inverse (by_bands in frs.c chooses). */
-int frs_prepare_below(struct frs_prep *p, const struct frs_matrix *m,
-    int minmap, uint32_t block, uint64_t below);
-/* Below this many values (or with many small blocks) the partial lists
- * are dealt in one serial pass, else counted in parallel; tests lower it
- * to take both ways. */
-extern uint64_t frs_deal_below;
-void frs_prep_free(struct frs_prep *p);
 /* The minmap level at which Stack, Level N and Flat 1 start for the
  * wanted level: at most log2 n_s, the top level and the tiling's block. */
 unsigned frs_start_level(const struct frs_setup *s, const struct frs_prep *p,
@@ -360,11 +329,19 @@ struct frs_thr {
 	uint64_t tf;	/* floor(T) */
 	double frac;	/* T - floor(T) */
 	double t;	/* T */
+	uint64_t pw[2];	/* the rule in integers, the words of frs_pass
+			 * (cl/frs.cl) */
 };
 void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule);
 /* Whether value v passes; id numbers the window element for its coin. */
-int frs_thr_passes(enum frs_rule rule, const struct frs_thr *th, uint64_t v,
-    uint64_t seed, uint64_t id);
+int frs_thr_passes(const struct frs_thr *th, uint64_t v, uint64_t seed,
+    uint64_t id);
+/* The pass words (pw) of the thresholds tau[k] imp of nsteps steps into
+ * thr[2 k], thr[2 k + 1], as the thresholding reads them on the CPU and
+ * on the device (a pixel's record, cl/defs.cl); returns the last step's
+ * limit. */
+uint64_t frs_thr_words(uint64_t *thr, const double *tau, unsigned nsteps,
+    double imp, enum frs_rule rule);
 /* v, or the double below 1 if v is 1. */
 double frs_below_one(double v);
 
