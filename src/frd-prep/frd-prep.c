@@ -123,7 +123,7 @@ static unsigned blocks_for(const struct frs_matrix *m, const struct mapopt *mo,
 		struct api_lev2 lv;
 		if (frs_setup(&su, &map, m, n[k], o->sigma, 1) < 0)
 			cli_die_lib();
-		su.tiles = api_tiling(o);
+		API_MODES(&su, o);
 		if (api_lev2_make(o, &su, &map, NULL, &lv) < 0)
 			cli_die_lib();
 		for (unsigned l = 0; l < lv.n; l++) {

@@ -111,7 +111,7 @@ void sets_report(FILE *fp, const struct sets *o,
 	if (r->dims == 2 && !levels)
 		fprintf(fp, "frs-sample: %llu tiles (%llux%llu), %s",
 		    (unsigned long long)nt, (unsigned long long)tx,
-		    (unsigned long long)ty, r->s0.tiles == FRS_TILES_PLAIN ?
+		    (unsigned long long)ty, r->s0.tiles != FRS_TILES_SHUFFLE ?
 		    "plain" : "shuffled");
 	else if (r->dims == 2 && r->reused >= 0.0)
 		fprintf(fp, "frs-sample: levels");

@@ -192,29 +192,19 @@ _Static_assert((int)FRS_ALG_SORTED == (int)FRS_SORTED &&
     (int)FRS_ALG_LEVEL1 == (int)FRS_LEVEL1 &&
     (int)FRS_ALG_LEVEL2 == (int)FRS_LEVEL2, "enum frs_algorithm is enum frs_impl");
 
-/* FRS_RULE_EXACT is the unbiased rule with its taus moved. */
-enum frs_rule api_rule(const struct frs_options *o)
-{
-	return o->rule == FRS_RULE_THESIS ? FRS_THESIS : FRS_UNBIASED;
-}
-
-/* The jitter modes are the samplers' too, value for value. */
+/* The jitter modes, the rules and the tilings are the samplers' too,
+ * value for value: a setup takes the options as they are (API_MODES). */
 _Static_assert((int)FRS_JIT_NONE == (int)FRS_PLACE_CENTRE &&
     (int)FRS_JIT_HALTON == (int)FRS_PLACE_HALTON &&
     (int)FRS_JIT_RANDOM == (int)FRS_PLACE_RANDOM,
     "enum frs_jitter_mode is enum frs_place");
-
-enum frs_place api_jitter(const struct frs_options *o)
-{
-	return (enum frs_place)o->jitter;
-}
-
-/* The levels' windows are plain, each. */
-enum frs_tiling api_tiling(const struct frs_options *o)
-{
-	return o->tiling == FRS_TILING_SHUFFLED ? FRS_TILES_SHUFFLE :
-	    FRS_TILES_PLAIN;
-}
+_Static_assert((int)FRS_RULE_UNBIASED == (int)FRS_UNBIASED &&
+    (int)FRS_RULE_THESIS == (int)FRS_THESIS &&
+    (int)FRS_RULE_EXACT == (int)FRS_EXACT, "enum frs_rule_mode is enum frs_rule");
+_Static_assert((int)FRS_TILING_LEVELS == (int)FRS_TILES_LEVELS &&
+    (int)FRS_TILING_SHUFFLED == (int)FRS_TILES_SHUFFLE &&
+    (int)FRS_TILING_PLAIN == (int)FRS_TILES_PLAIN,
+    "enum frs_tiling_mode is enum frs_tiling");
 
 double api_blur(const struct frs_options *o, uint32_t longest)
 {

@@ -99,11 +99,13 @@ int api_mask_load(frs_mask **mask, const char *path, unsigned *dims,
 /* The caller's options (NULL: the defaults) into o, checked.  A code. */
 int api_options(struct frs_options *o, const struct frs_options *opt,
     frs_error *err);
-/* The options' rule, jitter and tiling as the setups take them (each
- * level's window is plain). */
-enum frs_rule api_rule(const struct frs_options *o);
-enum frs_place api_jitter(const struct frs_options *o);
-enum frs_tiling api_tiling(const struct frs_options *o);
+/* The options' rule, jitter and tiling into a 2-D or 3-D setup, as they
+ * are (api.c asserts that the values are the samplers'). */
+#define API_MODES(su, o) do {						\
+	(su)->rule = (enum frs_rule)(o)->rule;				\
+	(su)->jitter = (enum frs_place)(o)->jitter;			\
+	(su)->tiles = (enum frs_tiling)(o)->tiling;			\
+} while (0)
 /* The smoothing of the levels in cells, or -1 without levels (plain or
  * shuffled tiles): the options', or an eighth of the longest side of the
  * map or volume, so that the levels do not depend on its resolution. */

@@ -53,9 +53,7 @@ int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
 	if (frs_setup_known(su, &s->map, s->have_cells ? &s->cells : NULL,
 	    &s->mask->m, n, s->opt.sigma, seed) < 0)
 		return -1;
-	su->rule = api_rule(&s->opt);
-	su->jitter = api_jitter(&s->opt);
-	su->tiles = api_tiling(&s->opt);
+	API_MODES(su, &s->opt);
 	return 0;
 }
 

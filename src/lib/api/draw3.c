@@ -106,9 +106,7 @@ int api_setup3(const frs_sampler3 *s, const uint64_t *steps,
 	if (frs3_setup(&su, &s->vol, &s->mask->m, steps[nsteps - 1],
 	    s->opt.sigma, seed) < 0)
 		return -1;
-	su.rule = api_rule(&s->opt);
-	su.jitter = api_jitter(&s->opt);
-	su.tiles = api_tiling(&s->opt);
+	API_MODES(&su, &s->opt);
 	if (api_lev3_make(&s->opt, &su, &s->vol, (struct api_plan *)&s->plan,
 	    lv) < 0)
 		return -1;

@@ -356,7 +356,7 @@ uint32_t frs_tile_max_block(const struct frs_setup *s)
 {
 	uint64_t gx = frs_tile_step(s->mw), gy = frs_tile_step(s->mh);
 
-	if (s->tiles == FRS_TILES_PLAIN)
+	if (s->tiles != FRS_TILES_SHUFFLE)
 		return s->mw < s->mh ? s->mw : s->mh;
 	return (uint32_t)(gx < gy ? gx : gy);
 }
@@ -381,7 +381,7 @@ uint64_t frs_matrix_index(const struct frs_setup *s, uint64_t x, uint64_t y)
 	struct frs_win w;
 
 	win_of(s, &w);
-	if (s->tiles == FRS_TILES_PLAIN)
+	if (s->tiles != FRS_TILES_SHUFFLE)
 		frs_tile_plain(&t);
 	else
 		frs_tile_make(&t, s->seed, 2, m, X / s->mw, Y / s->mh, 0);
@@ -1004,7 +1004,7 @@ static void first_values(struct run *run)
 	run->bval = run->bpos = run->bstart = run->vpos = NULL;
 	run->npos = 0;
 	/* pix_few's shifts and masks want powers of two (as lists do). */
-	if (run->algo != FRS_SORTED || s->tiles == FRS_TILES_PLAIN ||
+	if (run->algo != FRS_SORTED || s->tiles != FRS_TILES_SHUFFLE ||
 	    p->block == 0 || s->ns / p->block < 2 || (s->mw & (s->mw - 1)) ||
 	    (s->mh & (s->mh - 1)))
 		return;

@@ -242,7 +242,7 @@ static const struct frs_tile *tile_at(struct vox *vx, const uint64_t *e,
 	}
 	if (!vx->tvalid || t[0] != vx->tile[0] || t[1] != vx->tile[1] ||
 	    t[2] != vx->tile[2]) {
-		if (s->tiles == FRS_TILES_PLAIN)
+		if (s->tiles != FRS_TILES_SHUFFLE)
 			frs_tile_plain(&vx->t);
 		else
 			frs_tile_make(&vx->t, s->seed, 3, m, t[0], t[1], t[2]);
@@ -569,7 +569,7 @@ int frs3_exact(struct frs3_setup *s, const struct frs_vol *vol,
 	double tau0[16];
 	unsigned passes;
 
-	if (s->rule != FRS_UNBIASED)
+	if (s->rule == FRS_THESIS)
 		return frs_fail("exact counts need the unbiased threshold rule");
 	if (frs_steps_check(steps, nsteps) < 0)
 		return -1;

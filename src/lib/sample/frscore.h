@@ -44,11 +44,17 @@ enum frs_impl {
  * Halton or random points; the values of frs.h's enum frs_jitter_mode
  * (FRS_JIT_*; api.c asserts it). */
 enum frs_place { FRS_PLACE_CENTRE, FRS_PLACE_HALTON, FRS_PLACE_RANDOM };
-enum frs_rule { FRS_UNBIASED, FRS_THESIS };
-/* How a window larger than the matrix tiles it: each tile through its
- * own transform of (seed, tile) (cl/tile.cl), or the thesis's plain
- * repetition. */
-enum frs_tiling { FRS_TILES_PLAIN, FRS_TILES_SHUFFLE };
+/* The pass rule, frs.h's enum frs_rule_mode value for value (api.c
+ * asserts it): the thesis's v < T, or the unbiased rule, whose taus
+ * FRS_EXACT moves (struct frs_xtau); a sampler asks for FRS_THESIS
+ * only. */
+enum frs_rule { FRS_UNBIASED, FRS_THESIS, FRS_EXACT };
+/* How a window larger than the matrix tiles it, frs.h's enum
+ * frs_tiling_mode value for value: each tile through its own transform
+ * of (seed, tile) (cl/tile.cl), or the thesis's plain repetition, alone
+ * or at each level of the multi-level window; a sampler asks for
+ * FRS_TILES_SHUFFLE only. */
+enum frs_tiling { FRS_TILES_LEVELS, FRS_TILES_SHUFFLE, FRS_TILES_PLAIN };
 
 /* Exact counts (frs-sample --exact-count): the tau of each step moved so
  * that exactly steps[k] elements of the window pass.  Under the unbiased
