@@ -53,6 +53,17 @@ static void read_finds_it(void **state)
 	assert_int_equal(frd_check_permutation(&m, q), -1);
 	assert_err_has(q, "not a permutation");
 	frd_free(&m);
+	/* Required: the read's own pass refuses it, saying why, and takes
+	 * the permutation. */
+	assert_non_null(fp = fopen(q, "rb"));
+	assert_int_equal(frd_read_pre(fp, q, NULL, 0, &m, FRD_PERM_NEED), -1);
+	fclose(fp);
+	assert_err_has(q, "not a permutation: value");
+	assert_non_null(fp = fopen(p, "rb"));
+	assert_int_equal(frd_read_pre(fp, p, NULL, 0, &m, FRD_PERM_NEED), 0);
+	fclose(fp);
+	assert_int_equal(m.perm, 1);
+	frd_free(&m);
 }
 
 /* A matrix known to be a permutation is not scanned again: the flag is

@@ -206,7 +206,7 @@ static int read_frd(const char *path, struct frs_matrix *m, int check,
 	}
 	if (npre == sizeof pre && memcmp(pre, FRP_MAGIC, 8) == 0)
 		check_frp(fp, name, pre, npre, check, prep, verbose);
-	rc = frd_read_pre(fp, name, pre, npre, m, 0);
+	rc = frd_read_pre(fp, name, pre, npre, m, FRD_PERM_NO);
 	io_close_in(fp);
 	return rc;
 }

@@ -170,10 +170,7 @@ static int read_matrix(frs_mask *mk, FILE *fp, const char *name,
 		*dims = io_get_u32(h + 12);
 	if (fp != stdin && got >= 8 && memcmp(h, FRP_MAGIC, 8) == 0)
 		return load_frp(mk, fp, path, h, got);
-	if (frd_read_pre(fp, name, h, got, &mk->m, 1) < 0 ||
-	    frd_check_permutation(&mk->m, path) < 0)
-		return -1;
-	return 0;
+	return frd_read_pre(fp, name, h, got, &mk->m, FRD_PERM_NEED);
 }
 
 int api_mask_load(frs_mask **mask, const char *path, unsigned *dims,

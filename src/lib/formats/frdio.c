@@ -124,24 +124,37 @@ static uint64_t *value_bits(const struct frs_matrix *m)
 	return calloc(words ? words : 1, sizeof(uint64_t));
 }
 
-/* Every value below n; with perm, m->perm found in the same pass. */
+/* The first repeated value, rep, and where it is. */
+static int repeated(const struct frs_matrix *m, const char *name, size_t rep)
+{
+	return frs_fail("%s: not a permutation: value %u repeats at (%zu, "
+	    "%zu, %zu)", name, m->v[rep], rep % m->w, rep / m->w % m->h,
+	    rep / ((size_t)m->w * m->h));
+}
+
+/* Every value below n; m->perm found in the same pass, or required
+ * (enum frd_perm). */
 static int check_values(struct frs_matrix *m, const char *name, int perm)
 {
-	uint64_t *seen = perm ? value_bits(m) : NULL;
+	uint64_t *seen = perm != FRD_PERM_NO ? value_bits(m) : NULL;
 	size_t over, rep;
 
+	if (perm == FRD_PERM_NEED && seen == NULL)
+		return frs_fail("%s: out of memory", name);
 	scan_values(m, seen, &over, &rep);
 	m->perm = seen != NULL && over == m->n && rep == m->n;
 	free(seen);
 	if (over < m->n)
 		return frs_fail("%s: value %u at element %zu is not below the "
 		    "element count %zu", name, m->v[over], over, m->n);
+	if (perm == FRD_PERM_NEED && rep < m->n)
+		return repeated(m, name, rep);
 	return 0;
 }
 
 int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m)
 {
-	return frd_read_pre(fp, name, NULL, 0, m, 0);
+	return frd_read_pre(fp, name, NULL, 0, m, FRD_PERM_NO);
 }
 
 int frd_read_pre(FILE *fp, const char *name, const unsigned char *pre,
@@ -244,11 +257,7 @@ int frd_check_permutation(const struct frs_matrix *m, const char *name)
 	if (over < rep)
 		return frs_fail("%s: value %u at element %zu is out of range", name,
 		    m->v[over], over);
-	if (rep < m->n)
-		return frs_fail("%s: not a permutation: value %u repeats at (%zu, "
-		    "%zu, %zu)", name, m->v[rep], rep % m->w, rep / m->w % m->h,
-		    rep / ((size_t)m->w * m->h));
-	return 0;
+	return rep < m->n ? repeated(m, name, rep) : 0;
 }
 
 uint64_t frd_checksum(const struct frs_matrix *m)

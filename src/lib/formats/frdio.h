@@ -46,10 +46,14 @@ void frd_free(struct frs_matrix *m);
  * that every value is below n.  path "-" is standard input. */
 int frd_read(const char *path, struct frs_matrix *m);
 int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m);
+/* What the pass that checks the values learns beyond their range:
+ * nothing, whether they are a permutation (m->perm: 1 if so, 0 if not
+ * or when it could not tell; frd_check_permutation says why), or that
+ * they must be one (a read that fails as frd_check_permutation would:
+ * the file read and checked in one pass). */
+enum frd_perm { FRD_PERM_NO, FRD_PERM_FIND, FRD_PERM_NEED };
 /* The same for a stream of which the first npre bytes (pre) were read
- * already; with perm, the pass that checks the values also finds
- * whether they are a permutation (m->perm: 1 if so, 0 if not or when
- * it could not tell; frd_check_permutation says why). */
+ * already, learning perm (enum frd_perm). */
 int frd_read_pre(FILE *fp, const char *name, const unsigned char *pre,
     size_t npre, struct frs_matrix *m, int perm);
 int frd_write(FILE *fp, const char *name, const struct frs_matrix *m);
