@@ -359,9 +359,10 @@ static int open2(const struct sets *a, struct sets_run *run)
 	    &(struct api_values){ .own = &map }, &run->opt, &run->smp, NULL,
 	    &err) != FRS_OK)
 		rc = frs_fail("%s", err.message);
-	imap_free(&map);
-	if (rc < 0)
+	if (rc < 0) {
+		imap_free(&map);	/* not taken: its check failed */
 		return -1;
+	}
 	if (run->ocl != NULL)
 		api_sampler_device(run->smp, run->ocl, (int)a->alg);
 	/* Exact counts: set 0's taus only for -v (each set finds its own). */

@@ -205,9 +205,3 @@ _Static_assert((int)FRS_TILING_LEVELS == (int)FRS_TILES_LEVELS &&
     (int)FRS_TILING_SHUFFLED == (int)FRS_TILES_SHUFFLE &&
     (int)FRS_TILING_PLAIN == (int)FRS_TILES_PLAIN,
     "enum frs_tiling_mode is enum frs_tiling");
-
-double api_blur(const struct frs_options *o, uint32_t longest)
-{
-	return o->tiling != FRS_TILING_LEVELS ? -1.0 :
-	    o->level_blur > 0.0 ? o->level_blur : (double)longest / 8.0;
-}

@@ -106,10 +106,7 @@ int api_options(struct frs_options *o, const struct frs_options *opt,
 	(su)->jitter = (enum frs_place)(o)->jitter;			\
 	(su)->tiles = (enum frs_tiling)(o)->tiling;			\
 } while (0)
-/* The smoothing of the levels in cells, or -1 without levels (plain or
- * shuffled tiles): the options', or an eighth of the longest side of the
- * map or volume, so that the levels do not depend on its resolution. */
-double api_blur(const struct frs_options *o, uint32_t longest);
+/* The largest smoothing of the levels the options may ask for. */
 #define API_BLUR_MAX 1e4
 /* What every run checks first: a sampler (have_s), 1 to 16 increasing
  * counts, at most 2^40; then the sampler's threads are set.  A code. */

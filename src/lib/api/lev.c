@@ -136,6 +136,15 @@ static unsigned fit_level(unsigned dims, const uint32_t *side,
 	return l;
 }
 
+/* The smoothing of the levels in cells, or -1 without levels (plain or
+ * shuffled tiles): the options', or an eighth of the longest side of the
+ * map or volume, so that the levels do not depend on its resolution. */
+static double blur_of(const struct frs_options *o, uint32_t longest)
+{
+	return o->tiling != FRS_TILING_LEVELS ? -1.0 :
+	    o->level_blur > 0.0 ? o->level_blur : (double)longest / 8.0;
+}
+
 static int plan_levels(const struct frs_options *o, unsigned dims,
     const uint32_t *side, const uint32_t *msize, const double *v,
     double t0, uint32_t ns, double sigma, struct api_plan *cache,
@@ -148,7 +157,7 @@ static int plan_levels(const struct frs_options *o, unsigned dims,
 
 	for (unsigned a = 1; a < dims; a++)
 		longest = side[a] > longest ? side[a] : longest;
-	blur = api_blur(o, longest);
+	blur = blur_of(o, longest);
 	if (blur < 0.0 || top == 0)
 		return 0;
 	if ((rc = cache_get(cache, t0, ns, L)) < 0)
