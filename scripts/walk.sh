@@ -4,14 +4,15 @@
 # another file of ours, each (caller, callee) once, leaving out the
 # utilities (src/lib/base), the programs' option handling (src/cli) and
 # the libraries'.  "Ups" counts where the walk, read in order, comes back
-# to a higher layer (prog > api > sample, analysis > frd > formats >
-# maps) than the call before.
+# to a higher layer (the program above the library's stages, in
+# test/layers.sh's order) than the call before.
 #   sh scripts/walk.sh [FRS-SAMPLE ARGS...]
 # default: the shipped matrix and interior.exr, as a user would start.
 # Builds frs-sample with -finstrument-functions into build/walk
 # (test/walk/tracer.c records the calls).
 set -eu
 TOP=$(cd "$(dirname "$0")/.." && pwd)
+. "$TOP/test/layers.sh"
 cd "$TOP"
 B=build/walk
 mkdir -p "$B"
@@ -29,7 +30,7 @@ nm -l "$B/bin/frs-sample" | awk 'NF >= 3 && $2 ~ /^[tTwW]$/ {
 stop=$(awk '$2 == "frs_thr_make" { print $1 }' "$T/syms")
 WALK_TRACE=$T/trace WALK_STOP=$stop "$B/bin/frs-sample" "$@" -j 1 -q \
     -o /dev/null
-awk '
+awk -v layers="$LAYERS" '
 function layer(f) {
 	if (f ~ /^lib\/[a-z]+\//) { split(f, p, "/"); return p[2] }
 	if (f ~ /^cli\//) return "cli"
@@ -37,12 +38,15 @@ function layer(f) {
 	return "other"
 }
 function rank(l) {
-	if (l == "prog") return 9
-	if (l == "api") return 6
-	if (l == "sample" || l == "analysis") return 5
-	if (l == "frd") return 4
-	if (l == "formats") return 3
-	return l == "maps" ? 2 : 0
+	return l == "prog" ? nlayer : (l in stage) ? stage[l] : -1
+}
+BEGIN {
+	nlayer = split(layers, st, " ")
+	for (i = 1; i <= nlayer; i++) {
+		k = split(st[i], part, ",")
+		for (j = 1; j <= k; j++)
+			stage[part[j]] = i - 1
+	}
 }
 FNR == NR { name[$1] = $2; file[$1] = $3; next }
 $1 == "E" {

@@ -9,14 +9,8 @@
 # programs, one folder each, include frs.h, cli/cli.h, their own headers
 # and a listed set of the library's.
 . "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/layers.sh"
 TOP=$(cd "$(dirname "$0")/.." && pwd)
-
-rank() {
-	case $1 in
-	base) echo 0 ;; maps) echo 1 ;; formats) echo 2 ;;
-	sample | analysis) echo 3 ;; api) echo 4 ;; *) echo 99 ;;
-	esac
-}
 
 # "FILE TARGET" for every quoted include of src/lib.
 (cd "$TOP" && grep -Ho '#include "[^"]*"' src/lib/*/*.[ch] src/lib/*/*.cc) |
@@ -37,7 +31,7 @@ while read -r file target; do
 		[ -f "$TOP/src/lib/$target" ] ||
 		    echo "$file: $target is not in src/lib"
 		if [ "$to" != "$from" ] &&
-		    [ "$(rank "$to")" -ge "$(rank "$from")" ]; then
+		    [ "$(layer_rank "$to")" -ge "$(layer_rank "$from")" ]; then
 			echo "$file: $from includes $target"
 		fi ;;
 	*) echo "$file: \"$target\" names no folder" ;;
