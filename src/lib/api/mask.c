@@ -156,10 +156,9 @@ static void load_twin(frs_mask *mk, const char *path)
 }
 
 /* The matrix at path, opened once: a .frp (a named file that starts
- * with its magic) or a .frd, whose values one pass checks and finds a
- * permutation or not (the message of one that is not is the check's,
- * naming path).  *dims: what a .frd header says, also when the rest
- * fails. */
+ * with its magic) or a .frd, whose values one pass checks, a
+ * permutation required (frd_read_pre's message names the stream as
+ * name).  *dims: what a .frd header says, also when the rest fails. */
 static int read_matrix(frs_mask *mk, FILE *fp, const char *name,
     const char *path, unsigned *dims)
 {
