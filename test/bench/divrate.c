@@ -6,8 +6,8 @@
  * 2^22) double divisions, two independent ones an element as the
  * descent makes them (src/lib/sample/hsw.c), over arrays that stay in
  * the first-level cache.  The loads and stores run beside the divider,
- * so D is its rate: no code that keeps the descent's correctly rounded
- * quotients can divide faster on this processor.
+ * so D is its rate: the least a descent that divides spends a quotient
+ * on this processor.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
