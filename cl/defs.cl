@@ -63,7 +63,6 @@ enum {
 #define FRSCL_REC_PIXEL 0
 #define FRSCL_REC_LIM 1
 #define FRSCL_REC_TF(k) (2 + 2 * (k))
-#define FRSCL_REC_COIN(k) (3 + 2 * (k))
 #define FRSCL_RECORD(nsteps) (2 + 2 * (nsteps))
 
 /* The words of the run's setup, the first argument of every frs kernel. */

@@ -58,7 +58,9 @@ struct frs_tcache {
 	} e[FRS_TCACHE];
 };
 
-/* The smallest l with 2^l >= v. */
+/* The smallest l with 2^l >= v: the host's num_log2_ceil (base/num.h),
+ * written again only for the device, which has no num.h. */
+#ifdef __OPENCL_VERSION__
 FRS_FN FRS_U32 frs_log2(FRS_U64 v)
 {
 	FRS_U32 l = 0;
@@ -67,6 +69,9 @@ FRS_FN FRS_U32 frs_log2(FRS_U64 v)
 		l++;
 	return l;
 }
+#else
+#define frs_log2 num_log2_ceil
+#endif
 
 /* Matrices of power-of-two sides (all that frd-gen makes) find an
  * element's tile by a shift: a 64-bit division is some 40 cycles, and

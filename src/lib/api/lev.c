@@ -16,16 +16,8 @@
 #include "api/api.h"
 #include "base/err.h"
 #include "base/mem.h"
+#include "base/num.h"
 #include "base/par.h"
-
-static unsigned log2u(uint64_t v)
-{
-	unsigned l = 0;
-
-	while (((uint64_t)1 << l) < v)
-		l++;
-	return l;
-}
 
 void api_lev2_free(struct api_lev2 *lv)
 {
@@ -124,7 +116,7 @@ static void cache_put(struct api_plan *c, double t0, uint32_t ns,
 static unsigned fit_level(unsigned dims, const uint32_t *side,
     const uint32_t *msize, uint32_t ns)
 {
-	unsigned l = 0, top = log2u(ns);
+	unsigned l = 0, top = num_log2_ceil(ns);
 
 	for (; l < top; l++) {
 		int fits = 1;

@@ -15,22 +15,9 @@
 #include "base/datadir.h"
 #include "base/err.h"
 #include "base/io.h"
+#include "base/num.h"
 #include "formats/frdio.h"
 #include "sample/frpio.h"
-
-static int is_pow2(uint32_t v)
-{
-	return v != 0 && (v & (v - 1)) == 0;
-}
-
-static unsigned log2u(uint32_t v)
-{
-	unsigned l = 0;
-
-	while ((1u << l) < v)
-		l++;
-	return l;
-}
 
 /* Forget the prepared file (and close it). */
 static void drop_frp(frs_mask *mk)
@@ -277,7 +264,7 @@ int frs_mask_wrap(frs_mask **mask, const uint32_t *values, uint32_t width,
 	if (mask == NULL || values == NULL)
 		return api_arg_err(err, "frs_mask_wrap: NULL argument");
 	*mask = NULL;
-	if (!is_pow2(width) || !is_pow2(height) ||
+	if (!num_is_pow2(width) || !num_is_pow2(height) ||
 	    (uint64_t)width * height > FRD_MAX_ELEMS / 2)
 		return api_arg_err(err, "frs_mask_wrap: the sides must be powers of "
 		    "two, below 2^31 elements in all");
@@ -353,7 +340,7 @@ static int keep_lists(frs_mask *mk, unsigned l, struct frs_prep *p)
  * with one that names the .frp already. */
 static int make_lists(frs_mask *mk, uint32_t b, uint64_t below)
 {
-	unsigned l = log2u(b);
+	unsigned l = num_log2_ceil(b);
 	struct frs_prep p;
 
 	if (mk->frp != NULL && api_lists_from_frp(&mk->m, below)) {
@@ -397,7 +384,7 @@ int api_mask_prep(const frs_mask *cmk, int minmap, uint32_t block,
     uint64_t below, struct frs_prep *view)
 {
 	frs_mask *mk = (frs_mask *)cmk;	/* only the lazy parts change */
-	const struct frs_prep *have = block ? &mk->lists[log2u(block)] : NULL;
+	const struct frs_prep *have = block ? &mk->lists[num_log2_ceil(block)] : NULL;
 	int rc = 0;
 
 	pthread_mutex_lock(&mk->lock);
@@ -436,7 +423,7 @@ int api_lists_from_frp(const struct frs_matrix *m, uint64_t below)
 int api_mask_prep3(const frs_mask *cmk, uint32_t b, struct frs3_prep *view)
 {
 	frs_mask *mk = (frs_mask *)cmk;	/* only the lazy parts change */
-	unsigned l = log2u(b);
+	unsigned l = num_log2_ceil(b);
 	int rc = 0;
 
 	memset(view, 0, sizeof *view);

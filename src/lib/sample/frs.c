@@ -392,27 +392,27 @@ uint64_t frs_matrix_index(const struct frs_setup *s, uint64_t x, uint64_t y)
 
 void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule)
 {
-	double c;
+	uint64_t tf;
+	double frac, c;
 
 	/* Past 2^33 every value of a uint32 matrix passes. */
 	if (!(t < 0x1p33))
 		t = 0x1p33;
-	th->t = t;
 	/* floor(t) for t >= 0 (and below 2^64): the conversion truncates,
 	 * exactly, and costs a library call less a pixel. */
-	th->tf = (uint64_t)t;
-	th->frac = t - (double)th->tf;
+	tf = (uint64_t)t;
+	frac = t - (double)tf;
 	if (rule == FRS_THESIS) {	/* v < T  <=>  v < ceil(T) */
 		th->lim = (uint64_t)ceil(t);
 		th->pw[0] = th->lim;
 		th->pw[1] = 0;
 		return;
 	}
-	th->lim = th->tf + (th->frac > 0.0);
+	th->lim = tf + (frac > 0.0);
 	/* The coin's bound ceil(frac 2^53), the product exact: truncated,
 	 * then one up unless it was whole, without a call a pixel. */
-	c = th->frac * 0x1p53;
-	th->pw[0] = th->tf;
+	c = frac * 0x1p53;
+	th->pw[0] = tf;
 	th->pw[1] = (uint64_t)c;
 	th->pw[1] += (double)th->pw[1] < c;
 }

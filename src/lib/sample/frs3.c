@@ -11,11 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int is_pow2(uint64_t v)
-{
-	return v && !(v & (v - 1));
-}
-
 static uint32_t min3(uint32_t a, uint32_t b, uint32_t c)
 {
 	uint32_t m = a < b ? a : b;
@@ -148,10 +143,10 @@ int frs3_prepare(struct frs3_prep *p, const struct frs_matrix *m, uint32_t b)
 	p->m = m;
 	if (b == 0)
 		return 0;
-	if (!is_pow2(m->w) || !is_pow2(m->h) || !is_pow2(m->d))
+	if (!num_is_pow2(m->w) || !num_is_pow2(m->h) || !num_is_pow2(m->d))
 		return frs_fail("the matrix is %ux%ux%u: the sorted implementation "
 		    "needs power-of-two sides (naive does not)", m->w, m->h, m->d);
-	if (!is_pow2(b) || b > min3(m->w, m->h, m->d))
+	if (!num_is_pow2(b) || b > min3(m->w, m->h, m->d))
 		return frs_fail("sorted blocks of %u do not fit the %ux%ux%u "
 		    "matrix", b, m->w, m->h, m->d);
 	p->block = b;

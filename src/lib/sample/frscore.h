@@ -332,9 +332,6 @@ uint64_t frs_lim_most(const struct frs_setup *s, double tau);
 /* The threshold of one pixel (or voxel) for one step. */
 struct frs_thr {
 	uint64_t lim;	/* values below lim may pass, values from lim never */
-	uint64_t tf;	/* floor(T) */
-	double frac;	/* T - floor(T) */
-	double t;	/* T */
 	uint64_t pw[2];	/* the rule in integers, the words of frs_pass
 			 * (cl/frs.cl) */
 };
