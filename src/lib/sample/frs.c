@@ -417,10 +417,10 @@ void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule)
 	th->pw[1] += (double)th->pw[1] < c;
 }
 
-int frs_thr_passes(const struct frs_thr *th, uint64_t v, uint64_t seed,
-    uint64_t id)
+unsigned frs_thr_step(const uint64_t *thr, unsigned nsteps, uint64_t v,
+    uint64_t seed, uint64_t id)
 {
-	return frs_pass(th->pw, v, seed, id);
+	return frs_step(thr, nsteps, v, seed, id);
 }
 
 uint64_t frs_thr_words(uint64_t *thr, const double *tau, unsigned nsteps,

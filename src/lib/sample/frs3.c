@@ -179,7 +179,7 @@ struct run {
 struct vox {
 	const struct run *run;
 	struct frs3_chunk *c;
-	struct frs_thr th[16];
+	uint64_t thr[32];	/* frs_thr_words', two a step */
 	uint64_t lim;
 	uint64_t x0, y0, z0;	/* the voxel's first window element */
 	uint64_t tile[3];	/* the last tile met and its transform */
@@ -207,14 +207,11 @@ static void emit(struct vox *vx, uint64_t x, uint64_t y, uint64_t z,
 {
 	const struct run *run = vx->run;
 	const struct frs3_setup *s = run->s;
-	unsigned k, last = run->nsteps - 1;
-	uint64_t id = elem_id(s, x, y, z);
+	unsigned k = frs_thr_step(vx->thr, run->nsteps, v, s->seed,
+	    elem_id(s, x, y, z));
 
-	if (!frs_thr_passes(&vx->th[last], v, s->seed, id))
+	if (k == run->nsteps)
 		return;
-	for (k = 0; k < last && !frs_thr_passes(&vx->th[k], v,
-	    s->seed, id); k++)
-		;
 	vx->c->count++;
 	if (run->count_only || grow(vx->c, 1) < 0)
 		return;
@@ -301,8 +298,8 @@ static void take_all(struct vox *vx, const uint32_t *val, const uint32_t *idx,
 
 	if (k > 0) {
 		inblock(vx, b, idx[k - 1], o, e);
-		if (!frs_thr_passes(&vx->th[0], val[k - 1], s->seed,
-		    elem_id(s, e[0], e[1], e[2])))
+		if (frs_thr_step(vx->thr, 1, val[k - 1], s->seed,
+		    elem_id(s, e[0], e[1], e[2])) != 0)
 			k--;
 	}
 	c->count += k;
@@ -380,10 +377,8 @@ static int slices_task(void *ctx, void *chunk, uint64_t z0, uint64_t z1)
 			double imp = run->vol->v[i];
 			if (!(imp > 0.0) || !frs_cell_here(s->lev, s->level, i))
 				continue;	/* zero importance costs nothing */
-			for (unsigned k = 0; k < run->nsteps; k++)
-				frs_thr_make(&vx.th[k], run->tau[k] * (imp * s->iscale),
-				    s->rule);
-			vx.lim = vx.th[run->nsteps - 1].lim;
+			vx.lim = frs_thr_words(vx.thr, run->tau, run->nsteps,
+			    imp * s->iscale, s->rule);
 			if (vx.lim == 0)
 				continue;
 			vx.x0 = i % s->iw * s->ns;

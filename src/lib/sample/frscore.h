@@ -336,15 +336,17 @@ struct frs_thr {
 			 * (cl/frs.cl) */
 };
 void frs_thr_make(struct frs_thr *th, double t, enum frs_rule rule);
-/* Whether value v passes; id numbers the window element for its coin. */
-int frs_thr_passes(const struct frs_thr *th, uint64_t v, uint64_t seed,
-    uint64_t id);
 /* The pass words (pw) of the thresholds tau[k] imp of nsteps steps into
  * thr[2 k], thr[2 k + 1], as the thresholding reads them on the CPU and
  * on the device (a pixel's record, cl/defs.cl); returns the last step's
  * limit. */
 uint64_t frs_thr_words(uint64_t *thr, const double *tau, unsigned nsteps,
     double imp, enum frs_rule rule);
+/* The first step of those words at which value v passes, nsteps when
+ * none; id numbers the window element for its coin (cl/frs.cl's
+ * frs_step, for the 3-D sampler). */
+unsigned frs_thr_step(const uint64_t *thr, unsigned nsteps, uint64_t v,
+    uint64_t seed, uint64_t id);
 /* v, or the double below 1 if v is 1. */
 double frs_below_one(double v);
 
