@@ -1,7 +1,9 @@
 #!/bin/sh
 # One path from a file to its use: frs-sample opens its matrix file once
 # (its kind, dimensions, values and permutation check in one read), for
-# a .frd, a .frp, the shipped default and a 3-D matrix.  Counted with
+# a .frd, a .frp, the shipped default and a 3-D matrix; and its map or
+# volume once, whether a matrix named says which it is or the file's
+# first bytes do (and so which default matrix to take).  Counted with
 # strace (LeakSanitizer, itself a tracer, off under it); skipped where
 # strace is missing or cannot trace.
 . "$(dirname "$0")/lib.sh"
@@ -13,6 +15,8 @@ strace -f -e trace=openat -o "$T/probe" true 2>/dev/null ||
 frd-prep -a all -o "$T/m.frp" "$TD/default.frd" 2>/dev/null
 cp "$TD/default3.frd" "$T/m3.frd"
 cp "$TD/default.frd" "$T/m.frd"
+cp "$TD/sunset.exr" "$T/map.exr"
+imap gen -s 8 -o "$T/v.frv" blob3 2>/dev/null
 # A small matrix whose runs below take its sorted lists from the .frp
 # (half the values or more pass), which is not opened again for them.
 frd-gen -s 64 -S 1 -o "$T/s.frd" 2>/dev/null
@@ -54,4 +58,10 @@ unset FRS_MATRIX
 # The shipped one, wherever the data directory lies.
 dir=$(frs-sample --data-dir)
 opens "the shipped default matrix" "$dir/default.frd" 1 -i blob
+opens "a map, the matrix named" "$T/map.exr" 1 -m "$TD/default.frd" \
+    -i "$T/map.exr"
+opens "a map, no matrix named" "$T/map.exr" 1 -i "$T/map.exr" --equirect
+opens "a volume, the 3-D matrix named" "$T/v.frv" 1 -m "$TD/default3.frd" \
+    -i "$T/v.frv"
+opens "a volume, no matrix named" "$T/v.frv" 1 -i "$T/v.frv"
 done_testing

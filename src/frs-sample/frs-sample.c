@@ -11,7 +11,6 @@
 #include "api/api.h"
 #include "base/datadir.h"
 #include "maps/imap.h"
-#include "maps/mapload.h"
 
 static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
@@ -223,18 +222,9 @@ static void check_room(const struct sets *o, size_t size)
 		cli_mem_check(what, n + n / 10, size);
 }
 
-/* The default matrix, the checks that depend on its dimensions. */
-static void check_matrix(struct sets *o)
+/* The checks that depend on the matrix's dimensions. */
+static void check_dims(const struct sets *o)
 {
-	static char path[DATA_PATH_MAX];
-	int volume = (o->imp && vol_is_volume(o->imp)) || o->nsize == 3;
-
-	if (o->matrix == NULL && api_default_matrix(volume ? 3 : 2, path,
-	    sizeof path) < 0)
-		cli_die("no default %smatrix (%s); give -m MATRIX",
-		    volume ? "3-D " : "", frs_errmsg());
-	o->matrix = o->matrix != NULL ? o->matrix : path;
-	sets_matrix(o);
 	if (o->dims == 2 && o->nsize == 3)
 		cli_die("-s %ux%ux%u: a volume size, but %s is a 2-D matrix",
 		    o->size[0], o->size[1], o->size[2], o->matrix);
@@ -256,6 +246,37 @@ static void check_matrix(struct sets *o)
 	check_room(o, sizeof(struct frs3_elem));
 }
 
+/* The matrix and the map, each file opened once: a matrix named says
+ * whether the map is a volume; without one -s WxH or WxHxD, else the map
+ * itself, says so and which shipped matrix to take. */
+static void load_inputs(struct sets *o)
+{
+	static char path[DATA_PATH_MAX];
+	unsigned want = o->nsize >= 2 ? o->nsize : 0;
+	int dims;
+
+	if (o->matrix != NULL) {
+		sets_matrix(o);
+		check_dims(o);
+		want = o->dims;
+	}
+	if ((dims = sets_map(o, want)) < 0)
+		cli_die_lib();
+	if (o->matrix != NULL)
+		return;
+	if (api_default_matrix((unsigned)dims, path, sizeof path) < 0)
+		cli_die("no default %smatrix (%s); give -m MATRIX",
+		    dims == 3 ? "3-D " : "", frs_errmsg());
+	o->matrix = path;
+	sets_matrix(o);
+	/* FRS_MATRIX (FRS_MATRIX3) named a matrix of the other kind: the
+	 * source as that kind (a spec made again, a file read again). */
+	if (o->dims != (unsigned)dims && (sets_unmap(o),
+	    sets_map(o, o->dims) < 0))
+		cli_die_lib();
+	check_dims(o);
+}
+
 int main(int argc, char **argv)
 {
 	struct sets o = { .alg = FRS_SORTED, .sets = 1, .device = -1 };
@@ -267,7 +288,7 @@ int main(int argc, char **argv)
 	parse_opts(argc, argv, &o);
 	check_room(&o, sizeof(struct frs_elem));
 	cli_options_done();
-	check_matrix(&o);
+	load_inputs(&o);
 	if ((rc = sets_open(&o, &run)) < 0)
 		rc == -2 ? cli_die_device(o.alg != FRS_FLAT1) : cli_die_lib();
 	cli_out_check(o.out, !o.count_only && !o.text);

@@ -302,6 +302,18 @@ void sets_matrix(struct sets *a)
 	a->tload = progress_now() - t0;
 }
 
+int sets_map(struct sets *a, unsigned want)
+{
+	return map_or_vol_load(a->imp ? a->imp : "const", want, a->size,
+	    a->flags, &a->map, &a->stats, &a->vol);
+}
+
+void sets_unmap(struct sets *a)
+{
+	imap_free(&a->map);
+	vol_free(&a->vol);
+}
+
 /* The mask (as sets_matrix loaded it), its note (a stale twin .frp)
  * as a warning. */
 static int load_mask(const struct sets *a, struct sets_run *run)
@@ -337,26 +349,23 @@ static int open_device(const struct sets *a, struct sets_run *run)
  * levels with the mask prepared for them. */
 static int open2(const struct sets *a, struct sets_run *run)
 {
-	struct frs_imap map;
+	struct frs_imap map = a->map;	/* taken over */
 	struct frs_prep view;
 	struct frs_setup plain;
 	frs_error err;
 	double t0;
 	int rc, exact = a->opt.rule == FRS_RULE_EXACT;
 
-	if (imap_load(a->imp ? a->imp : "const", a->size[0], a->size[1],
-	    a->flags, &map) < 0)
-		return -1;
 	if ((rc = open_device(a, run)) < 0) {
 		imap_free(&map);
 		return rc;
 	}
 	t0 = progress_now();
 	rc = load_mask(a, run);
-	/* The map as imap_load checked it, handed over: no copy, no second
+	/* The map as sets_map checked it, handed over: no copy, no second
 	 * check. */
 	if (rc == 0 && api_sampler_make(2, run->mask,
-	    &(struct api_values){ .own = &map }, &run->opt, &run->smp, NULL,
+	    &(struct api_values){ .own = &map, .own_stats = &a->stats }, &run->opt, &run->smp, NULL,
 	    &err) != FRS_OK)
 		rc = frs_fail("%s", err.message);
 	if (rc < 0) {
@@ -366,14 +375,8 @@ static int open2(const struct sets *a, struct sets_run *run)
 	if (run->ocl != NULL)
 		api_sampler_device(run->smp, run->ocl, (int)a->alg);
 	/* Exact counts: set 0's taus only for -v (each set finds its own). */
-	if (exact && a->verbose)
-		rc = api_setup_steps(run->smp, a->steps, a->nsteps, a->seed,
-		    &run->lv);
-	else if ((rc = api_setup(run->smp, a->steps[a->nsteps - 1], a->seed,
-	    &run->s0)) == 0)
-		rc = api_lev2_make(&run->opt, &run->s0, &run->smp->map,
-		    &run->smp->plan, &run->lv);
-	if (rc < 0)
+	if (api_setup_steps(run->smp, a->steps, a->nsteps, a->seed, a->verbose,
+	    &run->lv) < 0)
 		return -1;
 	run->s0 = run->lv.base;
 	for (unsigned i = 0; (!exact || a->verbose) && i < run->lv.n; i++)
@@ -394,12 +397,13 @@ static int open3(const struct sets *a, struct sets_run *run)
 	double t0 = progress_now();
 	struct frs3_prep view;
 	struct frs3_setup plain;
-	struct frs_vol v;
+	struct frs_vol v = a->vol;	/* taken over */
 	frs_error err;
 
-	if (load_mask(a, run) < 0 || vol_load(a->imp ? a->imp : "const",
-	    a->nsize ? a->size[0] : 0, a->size[1], a->size[2], a->flags, &v) < 0)
+	if (load_mask(a, run) < 0) {
+		vol_free(&v);
 		return -1;
+	}
 	if (frs_sampler3_new_f64(&run->smp3, run->mask, v.v, v.w, v.h, v.d,
 	    &run->opt, &err) != FRS_OK) {
 		vol_free(&v);

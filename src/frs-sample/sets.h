@@ -36,6 +36,10 @@ struct sets {
 	int mask_rc;		/* frs_mask_load's code, its message: */
 	frs_error mask_err;
 	double tload;		/* seconds, counted in the run's setup */
+	/* the map or volume as sets_map loaded it, taken by sets_open */
+	struct frs_imap map;
+	struct frs_imap_stats stats;	/* the map's, as checked */
+	struct frs_vol vol;
 };
 
 /* What came of them, for the -v report and the warnings. */
@@ -83,6 +87,11 @@ int sets_open(const struct sets *a, struct sets_run *run);
  * run needs the matrix.  Standard input is left to sets_open, which
  * may read a map from it before. */
 void sets_matrix(struct sets *a);
+/* Load the map or volume a->imp (NULL: constant) at a->size, a volume
+ * when want is 3, a map when 2, and when 0 what a->imp is: its
+ * dimensions, -1 after frs_fail. */
+int sets_map(struct sets *a, unsigned want);
+void sets_unmap(struct sets *a);
 /* Draw the sets and write them (--count-only: their counts, a line
  * each).  0; -1 after frs_fail. */
 int sets_write(const struct sets *a, struct sets_run *run);

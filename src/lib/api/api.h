@@ -149,7 +149,8 @@ int api_default_matrix(unsigned dims, char *path, size_t cap);
 /* The caller's map (floats f, doubles d, or constant 1 when both are
  * NULL) as the library's, validated with imap_validate's flags. */
 int api_copy_map(struct frs_imap *m, const float *f, const double *d,
-    uint32_t w, uint32_t h, size_t stride, int flags, frs_error *err);
+    uint32_t w, uint32_t h, size_t stride, int flags,
+    struct frs_imap_stats *st, frs_error *err);
 /* The caller's values for a sampler: floats f or doubles d (both NULL:
  * constant 1) of a w x h map, rows stride apart (0: w), or with depth
  * not 0 a w x h x depth volume, x fastest. */
@@ -162,6 +163,7 @@ struct api_values {
 	 * taken over as it is, neither copied nor checked again; zeroed
 	 * when the sampler has it. */
 	struct frs_imap *own;
+	const struct frs_imap_stats *own_stats;	/* its, as checked */
 };
 /* frs_sampler_new (dims 2, into *s2) and frs_sampler3_new (3, *s3): the
  * checks, the values copied and validated (or own taken).  A code; the
@@ -285,10 +287,11 @@ extern uint64_t api_wave;
 int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
     struct frs_setup *su);
 /* api_setup for the last of steps, its levels, and with FRS_RULE_EXACT
- * the exact taus of the steps (api_exact): what every run of the sampler
- * uses.  -1 after frs_fail; lv to be released with api_lev2_free. */
+ * and taus the exact taus of the steps (api_exact): what every run of the
+ * sampler uses (taus 0: a report's setup without the count passes).  -1
+ * after frs_fail; lv to be released with api_lev2_free. */
 int api_setup_steps(const frs_sampler *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, struct api_lev2 *lv);
+    unsigned nsteps, uint64_t seed, int taus, struct api_lev2 *lv);
 /* The levels' exact taus for steps (the last lv->su[0].n) by Sorted's
  * count passes over all levels, whose lists it makes in the mask. */
 int api_exact(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,

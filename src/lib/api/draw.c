@@ -118,7 +118,7 @@ int api_exact(const frs_sampler *s, const uint64_t *steps, unsigned nsteps,
 }
 
 int api_setup_steps(const frs_sampler *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, struct api_lev2 *lv)
+    unsigned nsteps, uint64_t seed, int taus, struct api_lev2 *lv)
 {
 	struct frs_setup su;
 
@@ -127,7 +127,8 @@ int api_setup_steps(const frs_sampler *s, const uint64_t *steps,
 	    api_lev2_make(&s->opt, &su, &s->map, (struct api_plan *)&s->plan,
 	    lv) < 0)
 		return -1;
-	if (s->opt.rule == FRS_RULE_EXACT && api_exact(s, steps, nsteps, lv) < 0) {
+	if (taus && s->opt.rule == FRS_RULE_EXACT &&
+	    api_exact(s, steps, nsteps, lv) < 0) {
 		api_lev2_free(lv);
 		return -1;
 	}
@@ -161,7 +162,7 @@ static int begin_run(const frs_sampler *s, const uint64_t *steps,
 
 	if (rc != FRS_OK)
 		return rc;
-	if (api_setup_steps(s, steps, nsteps, seed, lv) < 0)
+	if (api_setup_steps(s, steps, nsteps, seed, 1, lv) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
 	for (unsigned i = 0; i < lv->n; i++)
 		if (api_sampler_prep(s, lv, i, steps, nsteps, &view[i]) < 0) {
@@ -468,7 +469,7 @@ int frs_sampler_levels(const frs_sampler *s, uint64_t n, uint64_t seed,
 	    count != NULL && (levels != NULL || cap == 0), n, s ? s->opt.threads :
 	    0, err)) != FRS_OK)
 		return rc;
-	if (api_setup_steps(s, &n, 1, seed, &lv) < 0)
+	if (api_setup_steps(s, &n, 1, seed, 1, &lv) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
 	for (unsigned i = 0; i < lv.n && i < cap; i++) {
 		const struct frs_setup *su = &lv.su[i];
@@ -578,7 +579,7 @@ int frs_sampler_info(const frs_sampler *s, uint64_t n, uint64_t seed,
 
 	if (rc != FRS_OK)
 		return rc;
-	if (api_setup_steps(s, &n, 1, seed, &lv) < 0)
+	if (api_setup_steps(s, &n, 1, seed, 1, &lv) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
 	*info = (struct frs_info){ su->ns, su->sw, su->sh, su->wx, su->wy,
 	    su->tau, su->mean, su->max, frs_unique(su) };

@@ -16,6 +16,7 @@
 static int hsw_new(frs_hsw **hp, const float *f, const double *d,
     uint32_t w, uint32_t h, size_t stride, frs_error *err)
 {
+	struct frs_imap_stats st;
 	frs_hsw *hw;
 	int rc;
 
@@ -25,7 +26,8 @@ static int hsw_new(frs_hsw **hp, const float *f, const double *d,
 	if ((hw = calloc(1, sizeof *hw)) == NULL)
 		return api_nomem(err);
 	/* Negative values count as zero, as in the quadtree itself. */
-	if ((rc = api_copy_map(&hw->map, f, d, w, h, stride, 0, err)) != FRS_OK) {
+	if ((rc = api_copy_map(&hw->map, f, d, w, h, stride, 0, &st,
+	    err)) != FRS_OK) {
 		free(hw);
 		return rc;
 	}

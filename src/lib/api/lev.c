@@ -88,7 +88,8 @@ static void cache_put(struct api_plan *c, double t0, uint32_t ns,
 		return;
 	}
 	pthread_mutex_lock(&c->lock);
-	frs_levels_free(&c->plan);
+	if (c->valid)	/* the plan of another key */
+		frs_levels_free(&c->plan);
 	c->plan = copy;
 	c->t0 = t0;
 	c->ns = ns;

@@ -81,7 +81,8 @@ void frs_map_equirect_f64(double *map, uint32_t width, uint32_t height,
 /* The caller's map as the library's (doubles, validated: no NaN, no
  * infinity, no negative value, not all zero).  map NULL: constant 1. */
 int api_copy_map(struct frs_imap *m, const float *f, const double *d,
-    uint32_t w, uint32_t h, size_t stride, int flags, frs_error *err)
+    uint32_t w, uint32_t h, size_t stride, int flags,
+    struct frs_imap_stats *st, frs_error *err)
 {
 	if (w == 0 || h == 0)
 		return api_arg_err(err, "map: width and height must not be 0");
@@ -95,7 +96,7 @@ int api_copy_map(struct frs_imap *m, const float *f, const double *d,
 		for (uint32_t x = 0; x < w; x++)
 			m->v[(size_t)y * w + x] = f ? (double)f[y * stride + x] :
 			    d ? d[y * stride + x] : 1.0;
-	if (imap_validate(m, "map", flags) < 0) {
+	if (imap_validate_stats(m, "map", flags, st) < 0) {
 		imap_free(m);
 		return api_lib_err(err, FRS_E_MAP);
 	}
@@ -163,6 +164,8 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
     frs_sampler **s2, frs_sampler3 **s3, frs_error *err)
 {
 	struct frs_imap map = { 0 };
+	struct frs_imap_stats st;
+	const struct frs_imap_stats *known = &st;
 	struct frs_vol vol = { 0 };
 	struct frs_options o;
 	int rc;
@@ -175,18 +178,20 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
 	    &o, err);
 	if (rc == FRS_OK && dims == 2 && v->own != NULL) {
 		map = *v->own;
+		known = v->own_stats;
 		memset(v->own, 0, sizeof *v->own);
 	} else if (rc == FRS_OK)
 		rc = dims == 2 ? api_copy_map(&map, v->f, v->d, v->w, v->h,
-		    v->stride, IMAP_STRICT, err) : copy_vol(&vol, v->f, v->d,
-		    v->w, v->h, v->depth, err);
+		    v->stride, IMAP_STRICT, &st, err) : copy_vol(&vol, v->f,
+		    v->d, v->w, v->h, v->depth, err);
 	if (rc != FRS_OK)
 		return rc;
 	if (dims == 2 && (*s2 = malloc(sizeof **s2)) != NULL) {
 		**s2 = (struct frs_sampler){ .mask = mask, .map = map, .opt = o,
 		    .algo = (int)o.algorithm };
 		/* A map that fails them fails each setup, which says why. */
-		(*s2)->have_cells = frs_cell_stats(&map, &(*s2)->cells) == 0;
+		(*s2)->have_cells = frs_cell_stats(&map, known,
+		    &(*s2)->cells) == 0;
 		if (!(*s2)->have_cells)
 			frs_clearerr();
 		if (api_plan_init(&(*s2)->plan) == 0)

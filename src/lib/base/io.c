@@ -78,13 +78,16 @@ int io_read_header(FILE *fp, const char *name, const unsigned char *pre,
 	return 0;
 }
 
-int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len)
+int io_slurp(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, unsigned char **buf, size_t *len)
 {
-	size_t cap = 1 << 16, n = 0;
+	size_t cap = 1 << 16, n = npre;
 	unsigned char *b = malloc(cap);
 
 	if (b == NULL)
 		return frs_fail("%s: out of memory", name);
+	if (npre > 0)	/* a peek's few bytes */
+		memcpy(b, pre, npre);
 	for (;;) {
 		size_t got;
 		if (n == cap) {
@@ -140,7 +143,7 @@ static int slurp_fp(FILE *fp, const char *name, void *ctx)
 	struct slurp *s = ctx;
 
 	*s->name = name;
-	return io_slurp(fp, name, s->buf, s->len);
+	return io_slurp(fp, name, NULL, 0, s->buf, s->len);
 }
 
 int io_slurp_path(const char *path, const char **name, unsigned char **buf,

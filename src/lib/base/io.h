@@ -22,8 +22,10 @@ int io_read_exact(FILE *fp, const char *name, void *buf, size_t n,
  * magic, pre): the rest from fp, messages as io_read_exact's. */
 int io_read_header(FILE *fp, const char *name, const unsigned char *pre,
     size_t npre, unsigned char *buf, size_t n);
-/* Read everything (for formats that need random access, e.g. EXR). */
-int io_slurp(FILE *fp, const char *name, unsigned char **buf, size_t *len);
+/* Read everything (for formats that need random access, e.g. EXR), after
+ * the npre bytes pre that a peek at the kind of file already took. */
+int io_slurp(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, unsigned char **buf, size_t *len);
 /* Open path ("-": standard input), read(fp, name for messages, obj),
  * close it: read's result, or -1 when path does not open. */
 int io_read_path(const char *path,

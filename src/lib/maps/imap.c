@@ -103,29 +103,36 @@ int imap_clamp(struct frs_imap *m, struct frs_imap_stats *s,
 	return 0;
 }
 
-static int validate(struct frs_imap *m, const char *name, int flags)
+static int validate(struct frs_imap *m, const char *name, int flags,
+    struct frs_imap_stats *s)
 {
-	struct frs_imap_stats s;
-
-	imap_stats(m, &s);
-	if (s.nonfinite)
+	imap_stats(m, s);
+	if (s->nonfinite)
 		return frs_fail("%s: pixel (%u, %u) is %s (%llu non-finite "
-		    "pixels)", name, s.bad_x, s.bad_y, isnan(s.bad_value) ? "NaN" :
-		    "infinite", (unsigned long long)s.nonfinite);
-	if (s.negatives && (flags & IMAP_STRICT))
+		    "pixels)", name, s->bad_x, s->bad_y, isnan(s->bad_value) ?
+		    "NaN" : "infinite", (unsigned long long)s->nonfinite);
+	if (s->negatives && (flags & IMAP_STRICT))
 		return frs_fail("%s: pixel (%u, %u) is negative (%.6g); "
-		    "%llu negative pixels, smallest %.6g", name, s.neg_x,
-		    s.neg_y, m->v[(size_t)s.neg_y * m->w + s.neg_x],
-		    (unsigned long long)s.negatives, s.min_negative);
-	return imap_clamp(m, &s, name, "pixels", flags);
+		    "%llu negative pixels, smallest %.6g", name, s->neg_x,
+		    s->neg_y, m->v[(size_t)s->neg_y * m->w + s->neg_x],
+		    (unsigned long long)s->negatives, s->min_negative);
+	return imap_clamp(m, s, name, "pixels", flags);
+}
+
+int imap_validate_stats(struct frs_imap *m, const char *name, int flags,
+    struct frs_imap_stats *s)
+{
+	if (validate(m, name, flags, s) == 0)
+		return 0;
+	frs_set_errkind(FRS_ERRKIND_MAP);	/* the values, not the file */
+	return -1;
 }
 
 int imap_validate(struct frs_imap *m, const char *name, int flags)
 {
-	if (validate(m, name, flags) == 0)
-		return 0;
-	frs_set_errkind(FRS_ERRKIND_MAP);	/* the values, not the file */
-	return -1;
+	struct frs_imap_stats s;
+
+	return imap_validate_stats(m, name, flags, &s);
 }
 
 /* Overlap of [a0, a1) with [b0, b1). */

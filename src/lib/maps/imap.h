@@ -48,6 +48,10 @@ enum {
  * their count and the smallest value, or fail under IMAP_STRICT.
  */
 int imap_validate(struct frs_imap *m, const char *name, int flags);
+/* The same, and the statistics of the values it leaves into s (what a
+ * sampler needs of them, without another pass). */
+int imap_validate_stats(struct frs_imap *m, const char *name, int flags,
+    struct frs_imap_stats *s);
 /* imap_validate's and vol_validate's last part, on m's values (a
  * volume's through vol_as_map) with their stats s, once the non-finite
  * and the strict cases are refused: negatives clamped (the warning

@@ -8,67 +8,137 @@
 #include "base/err.h"
 #include "base/io.h"
 
+#include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
-static int file_exists(const char *path)
+/* A PNG or OpenEXR file in memory, by its magic. */
+static int decode_image(const unsigned char *buf, size_t len,
+    const char *name, int flags, struct frs_imap *m)
 {
-	struct stat st;
-	return stat(path, &st) == 0;
+	if (len == 0)
+		return frs_fail("%s: empty file", name);
+	if (len >= 8 && memcmp(buf, "\211PNG\r\n\032\n", 8) == 0)
+		return imap_read_png_mem(buf, len, name, flags & IMAP_SRGB, m);
+	if (len >= 4 && memcmp(buf, "\166\057\061\001", 4) == 0)
+		return imap_read_exr_mem(buf, len, name, m);
+	if (len >= 8 && memcmp(buf, FRV_MAGIC, 8) == 0)
+		return frs_fail("%s: a volume (.frv) where a 2-D map is needed "
+		    "(volumes go with 3-D matrices)", name);
+	return frs_fail("%s: not a PNG or OpenEXR file", name);
 }
 
-static int load_file(const char *path, int flags, struct frs_imap *m)
-{
-	const char *name;
-	unsigned char *buf = NULL;
-	size_t len = 0;
-	/* Both decoders want random access, so buffer the whole input
-	 * (standard input included). */
-	int rc = io_slurp_path(path, &name, &buf, &len);
+/* A source, what is asked of it (want: 2, 3, or 0 for what it is) and
+ * what it was (dims). */
+struct source {
+	const char *src;
+	unsigned want, dims;
+	int flags;
+	struct frs_imap *m;
+	struct frs_vol *v;
+};
 
-	if (rc < 0)
+/* One open of a file: its first bytes say whether it is a volume, and
+ * the rest is read as that.  Both image decoders want random access, so
+ * an image is buffered whole (standard input included). */
+static int read_source(FILE *fp, const char *name, struct source *s)
+{
+	unsigned char pre[8], *buf = NULL;
+	size_t npre = fread(pre, 1, sizeof pre, fp), len = 0;
+	int frv = npre == sizeof pre && memcmp(pre, FRV_MAGIC, 8) == 0, rc;
+
+	if (ferror(fp))
+		return frs_fail_errno("%s: read error", name);
+	s->dims = s->want != 0 ? s->want : frv ? 3 : 2;
+	if (s->dims == 3) {
+		/* Standard input has no other reading: the header's
+		 * check names what is wrong. */
+		if (!frv && strcmp(s->src, "-") != 0)
+			return frs_fail("%s: not an importance volume (.frv)",
+			    name);
+		return vol_read_pre(fp, name, pre, npre, s->v);
+	}
+	if (io_slurp(fp, name, pre, npre, &buf, &len) < 0)
 		return -1;
-	if (len == 0)
-		rc = frs_fail("%s: empty file", name);
-	else if (len >= 8 && memcmp(buf, "\211PNG\r\n\032\n", 8) == 0)
-		rc = imap_read_png_mem(buf, len, name, flags & IMAP_SRGB, m);
-	else if (len >= 4 && memcmp(buf, "\166\057\061\001", 4) == 0)
-		rc = imap_read_exr_mem(buf, len, name, m);
-	else if (len >= 8 && memcmp(buf, FRV_MAGIC, 8) == 0)
-		rc = frs_fail("%s: a volume (.frv) where a 2-D map is needed "
-		    "(volumes go with 3-D matrices)", name);
-	else
-		rc = frs_fail("%s: not a PNG or OpenEXR file", name);
+	rc = decode_image(buf, len, name, s->flags, s->m);
 	free(buf);
 	return rc;
+}
+
+/* A spec (no file of that name exists): a map's, at w x h (0: 128x128),
+ * or a volume's. */
+static int load_spec(struct source *s, const uint32_t size[3])
+{
+	const char *src = s->src;
+	int e = errno;	/* the missing file's, for the last message */
+
+	s->dims = s->want != 0 ? s->want : vol_is_spec(src) &&
+	    !imap_is_spec(src) ? 3 : 2;
+	if (s->dims == 2 && imap_is_spec(src))
+		return imap_spec(src, size[0] ? size[0] : 128,
+		    size[1] ? size[1] : 128, s->m);
+	if (s->dims == 2 && vol_is_spec(src))
+		return frs_fail("%s: a procedural volume where a 2-D map is "
+		    "needed (volumes go with 3-D matrices)", src);
+	if (s->dims == 2)
+		return frs_fail("%s: no such file, and not a procedural map "
+		    "(const, blob, ramp, aniso, sky)", src);
+	if (vol_is_spec(src))
+		return vol_spec(src, size[0], size[1], size[2], s->v);
+	if (imap_is_spec(src))
+		return frs_fail("%s: a 2-D map where a volume is needed (.frv, "
+		    "or const, blob3, ramp3, shell3)", src);
+	errno = e;
+	return frs_fail_errno("%s", src);
+}
+
+/* The source as it is: its dimensions, -1 after frs_fail. */
+static int load_raw(struct source *s, const uint32_t size[3])
+{
+	struct stat st;
+	int rc;
+
+	if (s->m != NULL)
+		memset(s->m, 0, sizeof *s->m);
+	if (s->v != NULL)
+		memset(s->v, 0, sizeof *s->v);
+	if (strcmp(s->src, "-") == 0 || stat(s->src, &st) == 0) {
+		const char *name;
+		FILE *fp = io_open_in(s->src, &name);
+		if (fp == NULL)
+			return -1;
+		rc = read_source(fp, name, s);
+		io_close_in(fp);
+	} else
+		rc = load_spec(s, size);
+	return rc < 0 ? -1 : (int)s->dims;
 }
 
 int imap_load_raw(const char *src, uint32_t w, uint32_t h, int flags,
     struct frs_imap *m)
 {
-	memset(m, 0, sizeof *m);
-	if (strcmp(src, "-") == 0 || file_exists(src))
-		return load_file(src, flags, m);
-	if (imap_is_spec(src))
-		return imap_spec(src, w ? w : 128, h ? h : 128, m);
-	return frs_fail("%s: no such file, and not a procedural map (const, "
-	    "blob, ramp, aniso, sky)", src);
+	struct source s = { .src = src, .want = 2, .flags = flags, .m = m };
+
+	return load_raw(&s, (const uint32_t[3]){ w, h, 0 }) < 0 ? -1 : 0;
 }
 
-int imap_load(const char *src, uint32_t w, uint32_t h, int flags,
-    struct frs_imap *m)
+/* The checks of a map as loaded: its own pixels first, so that messages
+ * name them, not those of the resampled map; then the weighting and the
+ * size asked for, checked again when they changed the values (a
+ * weighting can underflow tiny values to zero). */
+static int finish_map(const char *name, uint32_t w, uint32_t h, int flags,
+    struct frs_imap *m, struct frs_imap_stats *st)
 {
-	const char *name = strcmp(src, "-") == 0 ? "<stdin>" : src;
-	int rc = imap_load_raw(src, w, h, flags, m);
+	int resize = w != 0 && (w != m->w || h != m->h);
+	int again = resize || (flags & IMAP_EQUIRECT);
+	int rc = imap_validate_stats(m, name, again ? flags | IMAP_ALLOW_ZERO :
+	    flags, st);
 
-	/* Check the source's own pixels first, so that messages name its
-	 * pixels, not those of the resampled map. */
-	if (rc == 0)
-		rc = imap_validate(m, name, flags | IMAP_ALLOW_ZERO);
 	if (rc == 0 && (flags & IMAP_EQUIRECT))
 		imap_equirect(m);
-	if (rc == 0 && w != 0 && (w != m->w || h != m->h)) {
+	if (rc == 0 && resize) {
 		struct frs_imap r;
 		rc = imap_resample(m, w, h, &r);
 		imap_free(m);
@@ -76,11 +146,57 @@ int imap_load(const char *src, uint32_t w, uint32_t h, int flags,
 		if (rc < 0)
 			frs_fail_context(name);
 	}
-	if (rc == 0)
-		rc = imap_validate(m, name, flags);
+	if (rc == 0 && again)
+		rc = imap_validate_stats(m, name, flags, st);
 	if (rc < 0)
 		imap_free(m);
 	return rc;
+}
+
+/* A volume as loaded: never resampled, so a file must have the size
+ * asked for (a spec was made at it). */
+static int finish_vol(const char *name, const uint32_t size[3], int flags,
+    struct frs_vol *v)
+{
+	int rc;
+
+	if (size[0] != 0 && (size[0] != v->w || size[1] != v->h ||
+	    size[2] != v->d)) {
+		rc = frs_fail("%s: the volume is %ux%ux%u, not the %ux%ux%u "
+		    "asked for (volumes are not resampled)", name, v->w, v->h,
+		    v->d, size[0], size[1], size[2]);
+		vol_free(v);
+		return rc;
+	}
+	rc = vol_validate(v, name, flags);
+	if (rc < 0)
+		vol_free(v);
+	return rc;
+}
+
+int map_or_vol_load(const char *src, unsigned want, const uint32_t size[3],
+    int flags, struct frs_imap *m, struct frs_imap_stats *st,
+    struct frs_vol *v)
+{
+	struct source s = { .src = src, .want = want, .flags = flags, .m = m,
+	    .v = v };
+	const char *name = strcmp(src, "-") == 0 ? "<stdin>" : src;
+	struct frs_imap_stats own;
+	int dims = load_raw(&s, size);
+
+	if (dims == 2 && finish_map(name, size[0], size[1], flags, m,
+	    st != NULL ? st : &own) < 0)
+		return -1;
+	if (dims == 3 && finish_vol(name, size, flags, v) < 0)
+		return -1;
+	return dims;
+}
+
+int imap_load(const char *src, uint32_t w, uint32_t h, int flags,
+    struct frs_imap *m)
+{
+	return map_or_vol_load(src, 2, (const uint32_t[3]){ w, h, 0 }, flags, m,
+	    NULL, NULL) < 0 ? -1 : 0;
 }
 
 int vol_is_volume(const char *src)
@@ -91,32 +207,6 @@ int vol_is_volume(const char *src)
 int vol_load(const char *src, uint32_t w, uint32_t h, uint32_t d, int flags,
     struct frs_vol *m)
 {
-	int rc, isf = vol_is_file(src);
-
-	memset(m, 0, sizeof *m);
-	if (isf == 1 || strcmp(src, "-") == 0) {
-		if (vol_read(src, m) < 0)
-			return -1;
-		if (w != 0 && (w != m->w || h != m->h || d != m->d)) {
-			rc = frs_fail("%s: the volume is %ux%ux%u, not the %ux%ux%u "
-			    "asked for (volumes are not resampled)", src, m->w, m->h,
-			    m->d, w, h, d);
-			vol_free(m);
-			return rc;
-		}
-	} else if (vol_is_spec(src)) {
-		if (vol_spec(src, w, h, d, m) < 0)
-			return -1;
-	} else if (imap_is_spec(src)) {
-		return frs_fail("%s: a 2-D map where a volume is needed (.frv, or "
-		    "const, blob3, ramp3, shell3)", src);
-	} else if (isf == 0) {
-		return frs_fail("%s: not an importance volume (.frv)", src);
-	} else {
-		return frs_fail_errno("%s", src);
-	}
-	rc = vol_validate(m, strcmp(src, "-") == 0 ? "<stdin>" : src, flags);
-	if (rc < 0)
-		vol_free(m);
-	return rc;
+	return map_or_vol_load(src, 3, (const uint32_t[3]){ w, h, d }, flags, NULL,
+	    NULL, m) < 0 ? -1 : 0;
 }

@@ -26,6 +26,18 @@ int imap_load(const char *src, uint32_t w, uint32_t h, int flags,
 int imap_load_raw(const char *src, uint32_t w, uint32_t h, int flags,
     struct frs_imap *m);
 
+/*
+ * src as a 2-D map into m (imap_load) or a volume into v (vol_load): want
+ * 2 or 3 asks for one, 0 takes what src is (a .frv file, or a spec that
+ * only volumes have, is a volume; anything else a map).  size: the sides
+ * asked for, size[0] 0 for the source's own.  A file is opened once.  A
+ * map's statistics as checked go into st unless NULL.  Returns 2 or 3,
+ * -1 after frs_fail (nothing held).
+ */
+int map_or_vol_load(const char *src, unsigned want, const uint32_t size[3],
+    int flags, struct frs_imap *m, struct frs_imap_stats *st,
+    struct frs_vol *v);
+
 /* A .frv file or a spec that only volumes have (const is both). */
 int vol_is_volume(const char *src);
 

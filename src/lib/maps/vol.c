@@ -53,13 +53,14 @@ int vol_is_file(const char *path)
 	return got == sizeof b && memcmp(b, FRV_MAGIC, 8) == 0;
 }
 
-static int read_header(FILE *fp, const char *name, uint32_t sz[3])
+static int read_header(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, uint32_t sz[3])
 {
 	unsigned char h[FRV_HEADER];
 	long long fsize = io_file_size(fp);
 	unsigned long long want;
 
-	if (io_read_exact(fp, name, h, sizeof h, "header") < 0)
+	if (io_read_header(fp, name, pre, npre, h, sizeof h) < 0)
 		return -1;
 	if (memcmp(h, FRV_MAGIC, 8) != 0)
 		return frs_fail("%s: not a volume (.frv): wrong magic", name);
@@ -83,15 +84,15 @@ static int read_header(FILE *fp, const char *name, uint32_t sz[3])
 	return 0;
 }
 
-static int read_fp(FILE *fp, const char *name, void *vol)
+int vol_read_pre(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frs_vol *m)
 {
-	struct frs_vol *m = vol;
 	uint32_t sz[3] = { 0, 0, 0 };
 	unsigned char buf[4096];
 	uint64_t n, i = 0;
 
 	memset(m, 0, sizeof *m);
-	if (read_header(fp, name, sz) < 0)
+	if (read_header(fp, name, pre, npre, sz) < 0)
 		return -1;
 	if (vol_alloc(m, sz[0], sz[1], sz[2]) < 0)
 		return frs_fail_context(name);
@@ -115,6 +116,11 @@ static int read_fp(FILE *fp, const char *name, void *vol)
 		return frs_fail("%s: trailing data after the values", name);
 	}
 	return 0;
+}
+
+static int read_fp(FILE *fp, const char *name, void *vol)
+{
+	return vol_read_pre(fp, name, NULL, 0, vol);
 }
 
 int vol_read(const char *path, struct frs_vol *m)

@@ -45,6 +45,9 @@ struct frs_imap vol_as_map(const struct frs_vol *m);
 /* 1 if the file starts with the .frv magic, 0 if not, -1 if unreadable. */
 int vol_is_file(const char *path);
 int vol_read(const char *path, struct frs_vol *m);
+/* The same from fp, after the npre bytes pre that a peek took. */
+int vol_read_pre(FILE *fp, const char *name, const unsigned char *pre,
+    size_t npre, struct frs_vol *m);
 int vol_write(FILE *fp, const char *name, const struct frs_vol *m);
 
 /* NaN and infinity are errors naming the voxel; negative values are

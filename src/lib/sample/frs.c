@@ -53,12 +53,16 @@ static const unsigned max_lns[4] = { 0, 0, 31, 20 };
  * for every value that stays normal), so that tau and the mean stay
  * finite; the thresholds of every other map are those of the map as it
  * is. */
-int frs_cell_stats(const struct frs_imap *cells, struct frs_cells *c)
+int frs_cell_stats(const struct frs_imap *cells,
+    const struct frs_imap_stats *known, struct frs_cells *c)
 {
 	struct frs_imap_stats st;
 	uint64_t n = (uint64_t)cells->w * cells->h;
 
-	imap_stats(cells, &st);
+	if (known != NULL)
+		st = *known;
+	else
+		imap_stats(cells, &st);
 	if (!(st.max > 0.0) || st.nonfinite || st.negatives)
 		return frs_fail("importance must be finite, non-negative and not "
 		    "zero everywhere");
@@ -115,7 +119,7 @@ int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
 		return frs_fail("sigma %g is below 1", sigma);
 	if (known != NULL)
 		c = *known;
-	else if (frs_cell_stats(cells, &c) < 0)
+	else if (frs_cell_stats(cells, NULL, &c) < 0)
 		return -1;
 	w->mean = c.mean;
 	w->max = c.max;

@@ -132,7 +132,10 @@ struct frs_window {
 struct frs_cells {
 	double mean, max, iscale, imean, imax;
 };
-int frs_cell_stats(const struct frs_imap *cells, struct frs_cells *c);
+/* known: the cells' imap_stats when a check just made them (as
+ * imap_validate_stats does), or NULL for that pass here. */
+int frs_cell_stats(const struct frs_imap *cells,
+    const struct frs_imap_stats *known, struct frs_cells *c);
 /* known: the cells' frs_cell_stats, or NULL to compute them. */
 int frs_window_setup(struct frs_window *w, unsigned k, const uint32_t *side,
     const struct frs_imap *cells, const struct frs_cells *known,
