@@ -53,7 +53,9 @@ OWNPROGS = $(foreach p,$(PROGS),$(if $(call own,$(p)),$(p)))
 # analysis, api; each includes only from its own folder and those before.
 LIBSRC = $(wildcard src/lib/*/*.c)
 LIBCXXSRC = $(wildcard src/lib/*/*.cc)
-# The programs' common option handling and messages, not in libfrs.
+# The programs' shared work, not in libfrs ($(B)/libfrscli.a): option
+# handling and messages, the output step and its atomic files, the point
+# files and sets, the --sets writer, the statistics over groups of sets.
 CLISRC = $(wildcard src/cli/*.c)
 TESTSRC = $(wildcard test/test_*.c)
 # test/hard/: the numerical hard cases gathered in one suite.
@@ -198,9 +200,10 @@ $(B)/$(SONAME) $(B)/libfrs.so: $(B)/$(SOFILE)
 	ln -sf $(SOFILE) $@
 
 # What the programs link: their own archive (when they have one), the
-# helpers and libfrs; the tests, benchmarks and fuzz drivers every
-# program's own archive too (test/user_*.c: libfrs alone, as a user has
-# it).
+# helpers and libfrs, in that order (the helpers call the library's
+# internals: errors, memory, files, number formatting); the tests,
+# benchmarks and fuzz drivers every program's own archive too
+# (test/user_*.c: libfrs alone, as a user has it).
 PROGLIBS = $(B)/libfrscli.a $(B)/libfrs.a
 TESTLIBS = $(OWNAR) $(PROGLIBS)
 LINK = $(CC) $(ALL_LDFLAGS) $(filter %.o,$^) $(filter %.a,$^) $(LIBS)

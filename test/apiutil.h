@@ -20,7 +20,7 @@
 #include "api/api.h"
 #include "formats/frdio.h"
 #include "maps/imap.h"
-#include "formats/ptsio.h"
+#include "cli/ptsio.h"
 #include "base/rng.h"
 #include "maps/vol.h"
 #include "maps/exrio.h"

@@ -3,7 +3,7 @@
 #include "testutil.h"
 #include "formats/frdio.h"
 #include "base/io.h"
-#include "base/outfile.h"
+#include "cli/outfile.h"
 
 static void write_matrix(const char *path, const struct frs_matrix *m)
 {

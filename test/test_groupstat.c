@@ -2,7 +2,7 @@
  * in order of first appearance for each --group, and their statistics
  * against values worked out by hand. */
 #include "testutil.h"
-#include "analysis/groupstat.h"
+#include "cli/groupstat.h"
 
 #include <math.h>
 

@@ -1,7 +1,7 @@
 /* Atomic output: a target appears only complete; errors and aborts leave
  * nothing (not even a temporary), an old file survives a failed write. */
 #include "testutil.h"
-#include "base/outfile.h"
+#include "cli/outfile.h"
 
 #include <dirent.h>
 #include <sys/stat.h>

@@ -1,9 +1,9 @@
-/* Point sets for the analysis programs (formats/ptsets.h): files cut into
+/* Point sets for the analysis programs (cli/ptsets.h): files cut into
  * sets by their set column or by a count, checked against the points the
  * test wrote; the pdf column; dimensions; the grouping rules. */
 #include "testutil.h"
-#include "formats/ptsets.h"
-#include "formats/ptsio.h"
+#include "cli/ptsets.h"
+#include "cli/ptsio.h"
 
 /* Point i of a file: x = i / 64 + 1/128, y = 1 - x. */
 static double px(size_t i)

@@ -2,7 +2,7 @@
  * length, and every malformed input refused with file and problem. */
 #include "testutil.h"
 #include "base/io.h"
-#include "formats/ptsio.h"
+#include "cli/ptsio.h"
 
 #include <math.h>
 

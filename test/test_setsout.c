@@ -4,8 +4,8 @@
  * one of its pieces holds; one set writes the records as they are. */
 #include "testutil.h"
 #include "base/rng.h"
-#include "formats/ptsio.h"
-#include "formats/setsout.h"
+#include "cli/ptsio.h"
+#include "cli/setsout.h"
 
 enum { N = 1500, M = 3 };
 

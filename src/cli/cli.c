@@ -1,9 +1,9 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli/cli.h"
 #include "frs.h"
+#include "base/err.h"
 #include "base/mem.h"
 #include "base/ocl.h"
-#include "base/outfile.h"
 #include "base/par.h"
 #include "base/parse.h"
 #include "base/progress.h"
@@ -242,6 +242,11 @@ noreturn void cli_die_lib(void)
 	cli_die("%s", frs_errmsg());
 }
 
+const char *cli_errmsg(void)
+{
+	return frs_errmsg();
+}
+
 void cli_note(const char *fmt, ...)
 {
 	va_list ap;
@@ -373,7 +378,7 @@ int cli_common_opt(int c, const char *arg)
 	case 'h':
 		cli_usage(0);
 	case OPT_VERSION:
-		printf("%s (frs) %s\n", cli_prog, FRS_VERSION);
+		printf("%s (frs) %s\n", cli_prog, frs_library_version());
 		cli_exit(0);
 	case 'o':
 		cli.out = cli_outname("-o", arg);

@@ -2,8 +2,22 @@
  * What the programs share and the library does not, one header: each
  * program's name in messages, the common options (-h, --version, -o, -T,
  * -S, -j, -q, --progress), err(3)-style exits and number options that
- * reject junk (cli.c); the output step (output.c); the point sets'
- * options (ptsopt.c).
+ * reject junk (cli.c); the output step (output.c) over atomic output
+ * files (outfile.c); the point files (ptsio.c), the point sets of the
+ * programs that read them (ptsets.c, their options ptsopt.c), the
+ * samplers' --sets writer (setsout.c) and the statistics over groups of
+ * sets (groupstat.c).
+ *
+ * A program's files include this header alone of src/cli
+ * (test/t_layout.sh checks it).  The modules keep their own headers
+ * beside them, included here, rather than their declarations moved into
+ * this one: each stays one .c and its .h, read and tested as such
+ * (test/test_ptsio.c includes cli/ptsio.h, not all of this), and the
+ * programs still have one door.  Every header of src/cli includes only
+ * standard headers, frs.h and others of src/cli, never the library's
+ * own (base/err.h and the like stay in src/cli's .c files), so that a
+ * program sees of the library only what it includes itself, which
+ * t_layout lists per program.
  *
  * Exit status: 0 success, 1 error (bad input, failed output), 2 usage.
  */
@@ -16,11 +30,19 @@
 #include <stdint.h>
 #include <stdnoreturn.h>
 
-#include "api/version.h"
-#include "base/err.h"
-#include "formats/ptsets.h"
+#include "cli/groupstat.h"
+#include "cli/outfile.h"
+#include "cli/ptsets.h"
+#include "cli/ptsio.h"
+#include "cli/setsout.h"
 
-struct outfile;
+/* The format checks of the messages below (base/err.h has the library's
+ * own, FRS_PRINTF, which this header leaves out). */
+#if defined(__GNUC__)
+#define CLI_PRINTF(a, b) __attribute__((format(printf, a, b)))
+#else
+#define CLI_PRINTF(a, b)
+#endif
 
 /*
  * Every long option of the toolchain, once: its name and whether it takes
@@ -155,16 +177,19 @@ void cli_common_only(int c, const char *arg);
 void cli_no_operands(int argc, char **argv);
 
 noreturn void cli_usage(int status);
-noreturn void cli_usage_error(const char *fmt, ...) FRS_PRINTF(1, 2);
+noreturn void cli_usage_error(const char *fmt, ...) CLI_PRINTF(1, 2);
 /* Which of the words (NULL-terminated, at least two) option opt names:
  * its index; any other is a usage error "opt: 's' is not a, b or c". */
 int cli_choice(const char *opt, const char *s, const char *const *words);
 /* "prog: message", exit 1, removing unfinished output files. */
-noreturn void cli_die(const char *fmt, ...) FRS_PRINTF(1, 2);
+noreturn void cli_die(const char *fmt, ...) CLI_PRINTF(1, 2);
 /* "prog: <library message>", exit 1; exit 2, a usage error, when it is
  * a procedural map spec that does not parse (an option's argument). */
 noreturn void cli_die_lib(void);
-void cli_note(const char *fmt, ...) FRS_PRINTF(1, 2);	/* unless -q */
+/* The library's message of the last failure ("context: problem"), for a
+ * message of the program's own around it. */
+const char *cli_errmsg(void);
+void cli_note(const char *fmt, ...) CLI_PRINTF(1, 2);	/* unless -q */
 
 /* The file name of an output option: an empty one is a usage error. */
 const char *cli_outname(const char *opt, const char *s);
@@ -235,7 +260,7 @@ void cli_mem_check(const char *what, uint64_t nmemb, uint64_t size);
 void *cli_calloc(const char *what, uint64_t nmemb, uint64_t size);
 
 /*
- * The output step (output.c): a file opened (base/outfile.h: written
+ * The output step (output.c): a file opened (outfile.h: written
  * beside its target and renamed into place), written, and committed, or
  * on any failure removed, the program ending with the library's message.
  */
@@ -247,10 +272,10 @@ void cli_out_commit(struct outfile *of, int rc);
 
 /*
  * The options and inputs of the programs that read point sets (ptsopt.c;
- * dda, discrepancy, mc-error, pts-render; formats/ptsets.h): --sets N,
+ * dda, discrepancy, mc-error, pts-render; ptsets.h): --sets N,
  * --group G and the point files named after the options; and --sets M of
  * those that write them (frs-sample, hsw-sample, ref-sample;
- * formats/setsout.h).
+ * setsout.h).
  */
 /* --sets N: every file split into sets of N points. */
 size_t cli_sets(const char *arg);

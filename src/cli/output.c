@@ -1,6 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli/cli.h"
-#include "base/outfile.h"
 
 void cli_out_open(struct outfile *of, const char *path, int binary)
 {

@@ -2,7 +2,6 @@
 #include <stdint.h>
 
 #include "cli/cli.h"
-#include "formats/setsout.h"
 
 size_t cli_sets(const char *arg)
 {

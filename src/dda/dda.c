@@ -16,10 +16,9 @@
 #include "dda/density.h"
 #include "dda/plot.h"
 #include "analysis/raster.h"
+#include "base/err.h"
 #include "dda/spectrum.h"
-#include "base/outfile.h"
 #include "base/progress.h"
-#include "formats/ptsets.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 

@@ -13,11 +13,9 @@
 #include "cli/cli.h"
 #include "discrepancy/disc.h"
 #include "discrepancy/discint.h"
-#include "analysis/groupstat.h"
-#include "base/outfile.h"
+#include "base/err.h"
 #include "base/par.h"
 #include "base/progress.h"
-#include "formats/ptsets.h"
 
 static const char usage[] =
     "usage: discrepancy [-c CLASS] [--grid S] [--shapes K] [--exact]\n"
@@ -195,7 +193,7 @@ static void check_sets(const struct disc_opts *o, const struct pt_set *sets,
 	for (size_t i = 0; i < nsets; i++)
 		if (disc_check(o, sets[i].dims, sets[i].n) < 0) {
 			frs_fail_context(sets[i].file);
-			cli_die("%s%s", frs_errmsg(), check_fix(o, &sets[i]));
+			cli_die("%s%s", cli_errmsg(), check_fix(o, &sets[i]));
 		}
 }
 
@@ -251,7 +249,7 @@ static void parse_opts(int argc, char **argv, struct prog_opts *a)
 		switch (c) {
 		case 'c':
 			if (disc_parse_class(optarg, &o->cls) < 0)
-				cli_usage_error("-c: %s", frs_errmsg());
+				cli_usage_error("-c: %s", cli_errmsg());
 			break;
 		case OPT_GRID:
 			o->grid = (uint32_t)cli_u64("--grid", optarg, 2,

@@ -10,7 +10,6 @@
 
 #include "cli/cli.h"
 #include "base/ocl.h"
-#include "base/outfile.h"
 #include "base/par.h"
 #include "base/parse.h"
 #include "base/progress.h"
@@ -254,7 +253,7 @@ static int parse_choice(const char *opt, const char *s, const char *a,
 static void parse_tol(struct frdgen_params *pr, const char *s)
 {
 	if (parse_double_above("--tol", s, 0.0, 0.999999, &pr->tol) < 0)
-		cli_usage_error("%s%s", frs_errmsg(), strtod(s, NULL) <= 0.0 ?
+		cli_usage_error("%s%s", cli_errmsg(), strtod(s, NULL) <= 0.0 ?
 		    "; --exact keeps every contribution" : "");
 }
 
@@ -444,7 +443,7 @@ static int run_vac(const struct frdgen_params *pr,
 	if (mo->tol_set)
 		vp.tol = pr->tol;
 	if (vac_check(&vp) < 0)
-		cli_usage_error("%s", frs_errmsg());
+		cli_usage_error("%s", cli_errmsg());
 	check_memory(pr, vac_memory(&vp));
 	cli_options_done();
 	cli_out_open(&of, cli.out, 1);
@@ -499,7 +498,7 @@ static int run_frd(const struct gen_opts *g)
 	double t0;
 
 	if (frdgen_check(pr) < 0)
-		cli_usage_error("%s", frs_errmsg());
+		cli_usage_error("%s", cli_errmsg());
 	if (g->use_cl && pr->checkpoint != NULL)
 		cli_usage_error("--checkpoint: not available with --device cl");
 	check_memory(pr, frdgen_memory(pr));

@@ -1,11 +1,11 @@
 /* The CPU generator of Forced Random Dithering matrices (frdgen.h). */
 #define _POSIX_C_SOURCE 200809L
+#include "cli/cli.h"
 #include "frd-gen/frdgen.h"
 #include "frd-gen/frdgenint.h"
 #include "base/err.h"
 #include "base/mem.h"
 #include "base/io.h"
-#include "base/outfile.h"
 #include "base/par.h"
 #include "base/progress.h"
 

@@ -9,8 +9,8 @@
 
 #include "cli/cli.h"
 #include "api/api.h"
+#include "base/err.h"
 #include "base/io.h"
-#include "base/outfile.h"
 #include "frd-prep/frdimport.h"
 #include "formats/frdio.h"
 #include "maps/imap.h"
@@ -324,7 +324,7 @@ static void read_matrix(const struct prep_opts *o, struct frs_matrix *m)
 		cli_usage_error("--import: '%s' is not frd, raw32, png16 or text",
 		    fmt);
 	if (rc < 0)
-		cli_die("%s%s", frs_errmsg(), import_fix());
+		cli_die("%s%s", cli_errmsg(), import_fix());
 	if ((o->check || strcmp(fmt, "frd") != 0) &&
 	    frd_check_permutation(m, o->src) < 0)
 		cli_die_lib();

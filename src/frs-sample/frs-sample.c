@@ -104,7 +104,7 @@ static noreturn void print_data_dir(void)
 
 	cli_options_done();	/* the fuzz target stops here */
 	if (data_find("default.frd", path, sizeof path) < 0)
-		cli_die("--data-dir: no shipped data (%s)", frs_errmsg());
+		cli_die("--data-dir: no shipped data (%s)", cli_errmsg());
 	*strrchr(path, '/') = '\0';
 	if (printf("%s\n", path) < 0 || fflush(stdout) == EOF)
 		cli_die("<stdout>: write error");
@@ -133,7 +133,7 @@ static void parse_opts(int argc, char **argv, struct sets *o)
 		case 'm': o->matrix = optarg; break;
 		case 'a':
 			if (frs_impl_parse(optarg, &o->alg) < 0)
-				cli_usage_error("-a: %s", frs_errmsg());
+				cli_usage_error("-a: %s", cli_errmsg());
 			break;
 		case 's':
 			o->nsize = (unsigned)cli_size3("-s", optarg, IMAP_MAX_SIDE,
@@ -266,7 +266,7 @@ static void load_inputs(struct sets *o)
 		return;
 	if (api_default_matrix((unsigned)dims, path, sizeof path) < 0)
 		cli_die("no default %smatrix (%s); give -m MATRIX",
-		    dims == 3 ? "3-D " : "", frs_errmsg());
+		    dims == 3 ? "3-D " : "", cli_errmsg());
 	o->matrix = path;
 	sets_matrix(o);
 	/* FRS_MATRIX (FRS_MATRIX3) named a matrix of the other kind: the

@@ -12,12 +12,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/cli.h"
 #include "frs-sample/sets.h"
 #include "base/err.h"
-#include "base/outfile.h"
 #include "base/progress.h"
-#include "formats/ptsio.h"
-#include "formats/setsout.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "maps/vol.h"

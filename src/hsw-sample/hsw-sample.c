@@ -10,11 +10,8 @@
 
 #include "cli/cli.h"
 #include "hsw-sample/hswrun.h"
-#include "base/outfile.h"
 #include "base/par.h"
 #include "base/progress.h"
-#include "formats/ptsio.h"
-#include "formats/setsout.h"
 #include "maps/imap.h"
 #include "sample/refsamp.h"
 
@@ -193,7 +190,7 @@ static double *make_input(struct opts *o, uint64_t seed)
 		if (refsamp_gen(REFSAMP_DART, o->n, seed,
 		    REFSAMP_DART_FAILURES, pts, &placed) < 0) {
 			free(pts);
-			cli_die("--input dart: %s", frs_errmsg());
+			cli_die("--input dart: %s", cli_errmsg());
 		}
 		if (placed < o->n && o->sets > 1) {
 			free(pts);

@@ -10,7 +10,6 @@
 #include <strings.h>
 
 #include "cli/cli.h"
-#include "base/outfile.h"
 #include "maps/exrio.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"

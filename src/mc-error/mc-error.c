@@ -11,12 +11,9 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
-#include "analysis/groupstat.h"
 #include "mc-error/integrand.h"
 #include "base/datadir.h"
 #include "base/err.h"
-#include "base/outfile.h"
-#include "formats/ptsets.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 
@@ -193,7 +190,7 @@ static const char *default_env(void)
 
 	if (data_find("sunset.exr", path, sizeof path) < 0)
 		cli_die("env: no default environment map (%s); give --env MAP",
-		    frs_errmsg());
+		    cli_errmsg());
 	return path;
 }
 

@@ -10,9 +10,6 @@
 
 #include "cli/cli.h"
 #include "analysis/raster.h"
-#include "base/outfile.h"
-#include "formats/ptsets.h"
-#include "formats/ptsio.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 

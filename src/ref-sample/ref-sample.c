@@ -11,10 +11,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "base/outfile.h"
 #include "base/progress.h"
-#include "formats/ptsio.h"
-#include "formats/setsout.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "sample/refsamp.h"
@@ -207,7 +204,7 @@ static void parse_opts(int argc, char **argv, struct ref_opts *o)
 		case 'd': o->dims = parse_dims(optarg); break;
 		case 'k':
 			if (refsamp_parse(optarg, &o->kind) < 0)
-				cli_usage_error("-k: %s", frs_errmsg());
+				cli_usage_error("-k: %s", cli_errmsg());
 			break;
 		case OPT_MAX_FAILURES:
 			o->maxf = cli_u64("--max-failures", optarg, 1,
@@ -297,7 +294,7 @@ static void make_set(const struct ref_opts *o, struct ref_run *r,
 		    r->xy, &r->placed);
 	if (rc < 0) {
 		drop_run(r, of);
-		cli_die("%s", frs_errmsg());
+		cli_die("%s", cli_errmsg());
 	}
 	if (r->placed >= o->count)
 		return;

@@ -2,7 +2,7 @@
  * streaming reader). */
 #define _POSIX_C_SOURCE 200809L
 #include "fuzz.h"
-#include "formats/ptsio.h"
+#include "cli/ptsio.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

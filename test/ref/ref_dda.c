@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "formats/ptsets.h"
+#include "cli/ptsets.h"
 #include "base/err.h"
 
 static void die(const char *msg)

@@ -21,7 +21,7 @@
 #include <string.h>
 
 #include "base/err.h"
-#include "formats/ptsio.h"
+#include "cli/ptsio.h"
 
 static void die(const char *msg)
 {

@@ -67,7 +67,7 @@
 #include "base/parse.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
-#include "formats/ptsio.h"
+#include "cli/ptsio.h"
 
 static void die(const char *msg)
 {

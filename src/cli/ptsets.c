@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "base/err.h"
-#include "formats/ptsets.h"
-#include "formats/ptsio.h"
+#include "cli/ptsets.h"
+#include "cli/ptsio.h"
 
 /* Keep buffer b (owned from now on); -1 without freeing it. */
 static int keep(struct pt_sets *s, double *b)

@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "base/outfile.h"
+#include "cli/outfile.h"
 #include "base/err.h"
 
 #include <errno.h>

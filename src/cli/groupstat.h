@@ -9,7 +9,7 @@
 
 #include <stddef.h>
 
-#include "formats/ptsets.h"
+#include "cli/ptsets.h"
 
 /* Each set's group, 0 .. k - 1 numbered by first appearance, into
  * group[0 .. nsets - 1]; returns k. */

@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "formats/ptsio.h"
+#include "cli/ptsio.h"
 #include "base/dtoa.h"
 #include "base/err.h"
 #include "base/mem.h"

@@ -16,7 +16,7 @@
  *   32 + L        count records of k + e float64
  *
  * Text: one point per line, values separated by blanks (written in the
- * shortest form that reads back exactly, see dtoa.h), '#' starts a
+ * shortest form that reads back exactly, see base/dtoa.h), '#' starts a
  * comment line; an optional first line
  * "#pts dims=K extra=E count=N version=2 names=A,B" gives the layout
  * (without it every column is a coordinate; without names the extra

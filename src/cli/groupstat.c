@@ -1,7 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 
-#include "analysis/groupstat.h"
+#include "cli/groupstat.h"
 
 size_t group_sets(enum pt_group g, const struct pt_set *sets, size_t nsets,
     size_t *group)

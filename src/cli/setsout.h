@@ -12,7 +12,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "formats/ptsio.h"
+#include "cli/ptsio.h"
 
 /* The most points of all the sets of one file: 2^56 records of up to 17
  * columns stay far inside a 64-bit file offset. */

@@ -2,7 +2,7 @@
 #include <string.h>
 
 #include "base/err.h"
-#include "formats/setsout.h"
+#include "cli/setsout.h"
 
 int sets_writer_begin(struct sets_writer *s, FILE *fp, const char *name,
     unsigned dims, unsigned extra, const char *const *names, uint64_t sets,
