@@ -251,7 +251,6 @@ static void check_dims(const struct sets *o)
  * itself, says so and which shipped matrix to take. */
 static void load_inputs(struct sets *o)
 {
-	static char path[DATA_PATH_MAX];
 	unsigned want = o->nsize >= 2 ? o->nsize : 0;
 	int dims;
 
@@ -264,11 +263,8 @@ static void load_inputs(struct sets *o)
 		cli_die_lib();
 	if (o->matrix != NULL)
 		return;
-	if (api_default_matrix((unsigned)dims, path, sizeof path) < 0)
-		cli_die("no default %smatrix (%s); give -m MATRIX",
-		    dims == 3 ? "3-D " : "", cli_errmsg());
-	o->matrix = path;
-	sets_matrix(o);
+	if (sets_default_matrix(o, (unsigned)dims) < 0)
+		cli_die("%s; give -m MATRIX", o->mask_err.message);
 	/* FRS_MATRIX (FRS_MATRIX3) named a matrix of the other kind: the
 	 * source as that kind (a spec made again, a file read again). */
 	if (o->dims != (unsigned)dims && (sets_unmap(o),

@@ -8,6 +8,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
 
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -298,6 +299,23 @@ void sets_matrix(struct sets *a)
 		    &a->mask_err);
 	a->dims = dims == 3 ? 3 : 2;
 	a->tload = progress_now() - t0;
+}
+
+int sets_default_matrix(struct sets *a, unsigned dims)
+{
+	static char path[PATH_MAX];
+	double t0 = progress_now();
+
+	a->mask_rc = frs_default_matrix(&a->mask, dims, path, sizeof path,
+	    &a->mask_err);
+	if (path[0] == '\0')
+		return -1;
+	a->matrix = path;
+	a->loaded = 1;
+	/* One that fails to load is reported as sets_matrix's are. */
+	a->dims = a->mask_rc == FRS_OK ? frs_mask_dims(a->mask) : dims;
+	a->tload = progress_now() - t0;
+	return 0;
 }
 
 int sets_map(struct sets *a, unsigned want)

@@ -91,6 +91,9 @@ void sets_matrix(struct sets *a);
  * when want is 3, a map when 2, and when 0 what a->imp is: its
  * dimensions, -1 after frs_fail. */
 int sets_map(struct sets *a, unsigned want);
+/* Load the default matrix for dims (frs_default_matrix) as sets_matrix
+ * loads a named one: -1 when none is found, a->mask_err saying why. */
+int sets_default_matrix(struct sets *a, unsigned dims);
 void sets_unmap(struct sets *a);
 /* Draw the sets and write them (--count-only: their counts, a line
  * each).  0; -1 after frs_fail. */
