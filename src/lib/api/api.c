@@ -62,6 +62,8 @@ int api_lib_err(frs_error *err, enum frs_code code)
 		code = FRS_E_NOMEM;
 	else if (frs_errkind() == FRS_ERRKIND_MAP)
 		code = FRS_E_MAP;
+	else if (frs_errkind() == FRS_ERRKIND_IO)
+		code = FRS_E_IO;
 	return api_set_err(err, code, frs_errmsg());
 }
 
@@ -73,17 +75,6 @@ int api_ok(frs_error *err)
 int api_nomem(frs_error *err)
 {
 	return api_set_err(err, FRS_E_NOMEM, "out of memory");
-}
-
-int api_readable(const char *path, frs_error *err)
-{
-	const char *name;
-	FILE *fp = io_open_in(path, &name);
-
-	if (fp == NULL)
-		return api_lib_err(err, FRS_E_IO);
-	io_close_in(fp);
-	return FRS_OK;
 }
 
 /* ---- options --------------------------------------------------------- */

@@ -85,13 +85,11 @@ int api_set_err(frs_error *err, enum frs_code code, const char *msg);
 /* FRS_E_ARG with a message of our own. */
 int api_arg_err(frs_error *err, const char *what);
 /* The library's last message as code (NOMEM when the memory ceiling or
- * an allocation failed, MAP for a bad map, whatever code the caller
- * expected else). */
+ * an allocation failed, MAP for a bad map, IO for a file that does not
+ * open, whatever code the caller expected else). */
 int api_lib_err(frs_error *err, enum frs_code code);
 int api_ok(frs_error *err);
 int api_nomem(frs_error *err);
-/* FRS_E_IO when path cannot be opened for reading, else FRS_OK. */
-int api_readable(const char *path, frs_error *err);
 /* frs_mask_load, and in *dims (when not NULL) the dimension count the
  * header of a .frd gives, also when the rest fails (0: none). */
 int api_mask_load(frs_mask **mask, const char *path, unsigned *dims,

@@ -29,9 +29,8 @@ int frs_map_load(const char *src, uint32_t width, uint32_t height,
 	if ((width == 0) != (height == 0))
 		return api_arg_err(err, "frs_map_load: width and height are both "
 		    "0 or both set");
-	if (!imap_is_spec(src) && api_readable(src, err) != FRS_OK)
-		return err ? (int)err->code : FRS_E_IO;
-	/* Negative values (lossy EXR) become zero, as in frs-sample(1). */
+	/* Negative values (lossy EXR) become zero, as in frs-sample(1).
+	 * One open: a file that does not open is FRS_E_IO by its kind. */
 	if (imap_load(src, width, height, 0, &m) < 0)
 		return api_lib_err(err, imap_is_spec(src) ? FRS_E_ARG :
 		    FRS_E_FORMAT);

@@ -21,11 +21,13 @@ FILE *io_open_in(const char *path, const char **name)
 	fp = fopen(path, "rb");
 	if (fp == NULL) {
 		frs_fail_errno("%s", path);
+		frs_set_errkind(FRS_ERRKIND_IO);
 		return NULL;
 	}
 	if (fstat(fileno(fp), &st) == 0 && S_ISDIR(st.st_mode)) {
 		fclose(fp);
 		frs_fail("%s: is a directory", path);
+		frs_set_errkind(FRS_ERRKIND_IO);
 		return NULL;
 	}
 	return fp;

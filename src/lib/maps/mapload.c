@@ -82,16 +82,21 @@ static int load_spec(struct source *s, const uint32_t size[3])
 	if (s->dims == 2 && vol_is_spec(src))
 		return frs_fail("%s: a procedural volume where a 2-D map is "
 		    "needed (volumes go with 3-D matrices)", src);
-	if (s->dims == 2)
-		return frs_fail("%s: no such file, and not a procedural map "
-		    "(const, blob, ramp, aniso, sky)", src);
+	if (s->dims == 2) {
+		frs_fail("%s: no such file, and not a procedural map (const, "
+		    "blob, ramp, aniso, sky)", src);
+		frs_set_errkind(FRS_ERRKIND_IO);
+		return -1;
+	}
 	if (vol_is_spec(src))
 		return vol_spec(src, size[0], size[1], size[2], s->v);
 	if (imap_is_spec(src))
 		return frs_fail("%s: a 2-D map where a volume is needed (.frv, "
 		    "or const, blob3, ramp3, shell3)", src);
 	errno = e;
-	return frs_fail_errno("%s", src);
+	frs_fail_errno("%s", src);
+	frs_set_errkind(FRS_ERRKIND_IO);
+	return -1;
 }
 
 /* The source as it is: its dimensions, -1 after frs_fail. */
