@@ -50,12 +50,13 @@ PROGS = imap frd-gen frd-prep frs-sample pts-render ref-sample hsw-sample \
 own = $(filter-out src/$(1)/$(1).c,$(wildcard src/$(1)/*.c))
 OWNPROGS = $(foreach p,$(PROGS),$(if $(call own,$(p)),$(p)))
 # The library by stage (README, Layout): base, maps, formats, sample,
-# analysis, api; each includes only from its own folder and those before.
+# api; each includes only from its own folder and those before.
 LIBSRC = $(wildcard src/lib/*/*.c)
 LIBCXXSRC = $(wildcard src/lib/*/*.cc)
 # The programs' shared work, not in libfrs ($(B)/libfrscli.a): option
 # handling and messages, the output step and its atomic files, the point
-# files and sets, the --sets writer, the statistics over groups of sets.
+# files and sets, the --sets writer, the statistics over groups of sets,
+# rasters, the reference samplers, the FFT, float formatting.
 CLISRC = $(wildcard src/cli/*.c)
 TESTSRC = $(wildcard test/test_*.c)
 # test/hard/: the numerical hard cases gathered in one suite.

@@ -4,7 +4,7 @@
 #define FRS_TEST_REFSAMPUTIL_H
 
 #include "testutil.h"
-#include "sample/refsamp.h"
+#include "cli/refsamp.h"
 
 /* n points of kind k from seed, malloc'd; *placed gets their count. */
 typedef double *(*tu_gen_fn)(enum refsamp_kind k, uint64_t n, uint64_t seed,

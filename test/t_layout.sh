@@ -1,8 +1,8 @@
 #!/bin/sh
 # The library's layout (README, Layout): a folder of src/lib includes
 # headers only from itself and the folders before it, base, maps,
-# formats, sample and analysis (side by side: neither includes the
-# other), api; only api includes the public frs.h; nothing in src/lib
+# formats, sample, api (test/layers.sh); only api includes the public
+# frs.h; nothing in src/lib
 # includes the programs' src/cli; every include names its folder; no two
 # headers include each other, directly or through others; and no two
 # modules (a .c and its .h) depend on each other that way.  The
@@ -110,12 +110,12 @@ fi
 # folder.
 libheaders() {
 	case $1 in
-	dda) echo analysis/raster.h base/err.h base/fft.h base/mem.h \
+	dda) echo base/err.h base/mem.h \
 	    base/num.h base/par.h base/progress.h maps/imap.h \
 	    maps/mapload.h ;;
 	discrepancy) echo base/err.h base/mem.h base/num.h base/par.h \
 	    base/progress.h base/rng.h ;;
-	frd-gen) echo base/err.h base/fft.h base/io.h base/mem.h base/num.h \
+	frd-gen) echo base/err.h base/io.h base/mem.h base/num.h \
 	    base/ocl.h base/par.h base/parse.h base/progress.h base/rng.h \
 	    formats/frdio.h ;;
 	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
@@ -126,14 +126,13 @@ libheaders() {
 	    sample/frscl.h sample/frscore.h ;;
 	hsw-sample) echo api/api.h base/err.h base/mem.h base/ocl.h \
 	    base/par.h base/progress.h maps/imap.h maps/mapload.h \
-	    sample/hsw.h sample/refsamp.h ;;
+	    sample/hsw.h ;;
 	imap) echo maps/exrio.h maps/imap.h maps/mapload.h maps/pngio.h \
 	    maps/spec.h maps/vol.h ;;
 	mc-error) echo base/datadir.h base/err.h base/num.h maps/imap.h \
 	    maps/mapload.h ;;
-	pts-render) echo analysis/raster.h maps/imap.h maps/mapload.h ;;
-	ref-sample) echo base/progress.h maps/imap.h maps/mapload.h \
-	    sample/refsamp.h ;;
+	pts-render) echo maps/imap.h maps/mapload.h ;;
+	ref-sample) echo base/progress.h maps/imap.h maps/mapload.h ;;
 	esac
 }
 progs="dda discrepancy frd-gen frd-prep frs-sample hsw-sample imap mc-error

@@ -9,7 +9,7 @@
 #include "dda/density.h"
 #include "maps/imap.h"
 #include "base/par.h"
-#include "sample/refsamp.h"
+#include "cli/refsamp.h"
 #include "base/rng.h"
 
 #define PI 3.14159265358979323846

@@ -1,7 +1,7 @@
 /* frs_dtoa: round trip, shortness and nearness against a brute-force
  * oracle built on printf's correct rounding, and the output form. */
 #include "testutil.h"
-#include "base/dtoa.h"
+#include "cli/dtoa.h"
 
 #include <float.h>
 

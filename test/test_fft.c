@@ -2,7 +2,7 @@
  * forward, inverse round trip, Parseval, and sizes that are not powers of
  * two refused. */
 #include "testutil.h"
-#include "base/fft.h"
+#include "cli/fft.h"
 
 #define PI 3.14159265358979323846
 

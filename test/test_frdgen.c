@@ -3,7 +3,7 @@
  * the quality properties of what it makes. */
 #include "testutil.h"
 #include "frsutil.h"
-#include "base/fft.h"
+#include "cli/fft.h"
 #include "frd-gen/frdgen.h"
 #include "frd-gen/frdq.h"
 #include "base/rng.h"

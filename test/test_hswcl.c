@@ -9,7 +9,7 @@
 #include "hsw-sample/hswcl.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
-#include "sample/refsamp.h"
+#include "cli/refsamp.h"
 #include "base/progress.h"
 
 #define NMAX 100000

@@ -6,7 +6,7 @@
 #include "testutil.h"
 #include "maps/imap.h"
 #include "maps/pngio.h"
-#include "analysis/raster.h"
+#include "cli/raster.h"
 
 static const uint8_t black[3] = { 0, 0, 0 };
 static const double PI = 3.14159265358979323846;

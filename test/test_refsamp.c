@@ -3,7 +3,7 @@
  * scrambled Sobol', strata, Poisson-disk distance and density. */
 #include "refsamputil.h"
 #include "maps/imap.h"
-#include "sample/refsamp.h"
+#include "cli/refsamp.h"
 #include "base/num.h"
 #include "base/rng.h"
 

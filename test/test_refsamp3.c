@@ -5,7 +5,7 @@
  * property of (scrambled) Sobol', the Poisson-disk distance by brute
  * force and the uniformity of random points. */
 #include "refsamputil.h"
-#include "sample/refsamp.h"
+#include "cli/refsamp.h"
 #include "base/num.h"
 #include "base/rng.h"
 

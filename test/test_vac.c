@@ -4,7 +4,7 @@
  * 0s), and the blue-noise properties of what it makes. */
 #include "testutil.h"
 #include "frsutil.h"
-#include "base/fft.h"
+#include "cli/fft.h"
 #include "frd-gen/vac.h"
 
 static void params(struct vac_params *pr, uint32_t w, uint32_t h,

@@ -30,10 +30,13 @@
 #include <stdint.h>
 #include <stdnoreturn.h>
 
+#include "cli/fft.h"
 #include "cli/groupstat.h"
 #include "cli/outfile.h"
 #include "cli/ptsets.h"
 #include "cli/ptsio.h"
+#include "cli/raster.h"
+#include "cli/refsamp.h"
 #include "cli/setsout.h"
 
 /* The format checks of the messages below (base/err.h has the library's

@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli/ptsio.h"
-#include "base/dtoa.h"
+#include "cli/dtoa.h"
 #include "base/err.h"
 #include "base/mem.h"
 #include "base/io.h"

@@ -15,7 +15,6 @@
 #include "dda/ddaspec.h"
 #include "dda/density.h"
 #include "dda/plot.h"
-#include "analysis/raster.h"
 #include "base/err.h"
 #include "dda/spectrum.h"
 #include "base/progress.h"

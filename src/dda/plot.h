@@ -23,7 +23,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "analysis/raster.h"
+#include "cli/cli.h"
 
 struct plot_box {
 	int px, py, w, h;	/* pixels; w, h >= 2 */

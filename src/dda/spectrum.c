@@ -9,9 +9,8 @@
 #include "base/err.h"
 #include "base/num.h"
 #include "base/mem.h"
-#include "base/fft.h"
+#include "cli/cli.h"
 #include "base/par.h"
-#include "analysis/raster.h"
 
 #include <math.h>
 #include <stdlib.h>

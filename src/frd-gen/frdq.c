@@ -2,7 +2,7 @@
 #include "frd-gen/frdq.h"
 #include "base/mem.h"
 #include "base/err.h"
-#include "base/fft.h"
+#include "cli/cli.h"
 
 #include <math.h>
 #include <stdlib.h>

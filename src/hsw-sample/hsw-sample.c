@@ -13,7 +13,6 @@
 #include "base/par.h"
 #include "base/progress.h"
 #include "maps/imap.h"
-#include "sample/refsamp.h"
 
 static const char usage[] =
     "usage: hsw-sample -i IMPORTANCE -n COUNT [--input SET|FILE] [--pdf]\n"

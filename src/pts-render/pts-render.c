@@ -9,7 +9,6 @@
 #include <strings.h>
 
 #include "cli/cli.h"
-#include "analysis/raster.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 

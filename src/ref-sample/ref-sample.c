@@ -14,7 +14,6 @@
 #include "base/progress.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
-#include "sample/refsamp.h"
 
 static const char usage[] =
     "usage: ref-sample -n COUNT [-d DIMS] [-k KIND] [-i IMPORTANCE] [-s WxH]\n"

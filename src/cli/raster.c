@@ -1,7 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
-#include "analysis/raster.h"
+#include "cli/raster.h"
 #include "base/err.h"
 #include "base/mem.h"
+#include "maps/imap.h"
 #include "maps/pngio.h"
 
 #include <math.h>

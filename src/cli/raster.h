@@ -10,7 +10,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "maps/imap.h"
+struct frs_imap;
 
 struct frs_raster {
 	uint32_t w, h;

@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "base/fft.h"
+#include "cli/fft.h"
 #include "base/err.h"
 #include "base/num.h"
 

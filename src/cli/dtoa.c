@@ -48,7 +48,7 @@
  *     rather than rely on it frs_dtoa_slow then decides by search.
  */
 #define _POSIX_C_SOURCE 200809L
-#include "base/dtoa.h"
+#include "cli/dtoa.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -56,7 +56,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/dtoa_tab.h"
+#include "cli/dtoa_tab.h"
 
 __extension__ typedef unsigned __int128 u128;
 

@@ -4,7 +4,7 @@
  * refsamp.h.
  */
 #define _POSIX_C_SOURCE 200809L
-#include "sample/refsamp.h"
+#include "cli/refsamp.h"
 
 #include <math.h>
 #include <stdlib.h>
