@@ -199,6 +199,56 @@ static void test_float_map(void **state)
 	imap_free(&f64);
 }
 
+/* frs_imap_load against what is known without it: the file's values
+ * (written as floats), the float load, frs_map_equirect_f64 on the
+ * unweighted map, the mean a resampling by area keeps, negative values
+ * clamped or refused. */
+static void test_imap_load(void **state)
+{
+	const char *path = write_exr("blob.exr", &blob);
+	struct frs_imap m, eq, r, neg;
+	double sum = 0.0, rsum = 0.0;
+	float *map;
+	uint32_t w, h;
+
+	(void)state;
+	assert_int_equal(frs_imap_load(&m, path, 0, 0, 0, NULL), FRS_OK);
+	assert_int_equal(frs_map_load(path, 0, 0, &map, &w, &h, NULL), FRS_OK);
+	assert_true(m.w == w && m.h == h && w == blob.w && h == blob.h);
+	for (size_t i = 0; i < (size_t)w * h; i++) {
+		assert_true(m.v[i] == (double)(float)blob.v[i]);
+		assert_true((float)m.v[i] == map[i]);
+		sum += m.v[i];
+	}
+	frs_map_free(map);
+	assert_int_equal(frs_imap_load(&eq, path, 0, 0, FRS_MAP_EQUIRECT,
+	    NULL), FRS_OK);
+	frs_map_equirect_f64(m.v, m.w, m.h, 0);
+	assert_memory_equal(eq.v, m.v, (size_t)w * h * sizeof *m.v);
+	assert_int_equal(frs_imap_load(&r, path, 48, 20, 0, NULL), FRS_OK);
+	assert_true(r.w == 48 && r.h == 20);
+	for (size_t i = 0; i < 48 * 20; i++)
+		rsum += r.v[i];
+	assert_true(fabs(rsum / (48 * 20) - sum / (128 * 128)) <=
+	    1e-12 * sum / (128 * 128));
+	/* A negative pixel: clamped to zero, or refused under strict. */
+	assert_int_equal(imap_alloc(&neg, 4, 2), 0);
+	for (int i = 0; i < 8; i++)
+		neg.v[i] = i == 5 ? -2.0 : 1.0 + i;
+	path = write_exr("neg.exr", &neg);
+	imap_free(&neg);
+	assert_int_equal(frs_imap_load(&neg, path, 0, 0, FRS_MAP_STRICT, NULL),
+	    FRS_E_MAP);
+	assert_null(neg.v);
+	assert_int_equal(frs_imap_load(&neg, path, 0, 0, 0, NULL), FRS_OK);
+	for (int i = 0; i < 8; i++)
+		assert_true(neg.v[i] == (i == 5 ? 0.0 : 1.0 + i));
+	frs_imap_free(&neg);
+	frs_imap_free(&r);
+	frs_imap_free(&eq);
+	frs_imap_free(&m);
+}
+
 /* A row stride: the values between the rows are never read (NaN there
  * would be FRS_E_MAP). */
 static void test_stride(void **state)
@@ -490,6 +540,7 @@ TU_MAIN(setup, teardown,
 	cmocka_unit_test(test_thesis_rule),
 	cmocka_unit_test(test_progressive),
 	cmocka_unit_test(test_float_map),
+	cmocka_unit_test(test_imap_load),
 	cmocka_unit_test(test_stride),
 	cmocka_unit_test(test_threads_option),
 	cmocka_unit_test(test_direct_path),

@@ -154,6 +154,30 @@ static void test_map_errors(void **state)
 	frs_map_free(NULL);
 }
 
+/* frs_imap_load's codes, and the map zeroed after each failure. */
+static void test_imap_errors(void **state)
+{
+	const char *junk = tu_path("junk.png");
+	struct frs_imap m = { 1, 1, NULL };
+
+	(void)state;
+	tu_write(junk, "\x89PNG\r\n\x1a\n but no more", 21);
+	EXPECT(FRS_E_ARG, frs_imap_load(NULL, "blob", 0, 0, 0, E));
+	EXPECT(FRS_E_ARG, frs_imap_load(&m, NULL, 0, 0, 0, E));
+	assert_int_equal(m.w, 0);
+	EXPECT(FRS_E_ARG, frs_imap_load(&m, "blob", 16, 0, 0, E));
+	EXPECT(FRS_E_ARG, frs_imap_load(&m, "blob:sigma=x", 0, 0, 0, E));
+	EXPECT(FRS_E_IO, frs_imap_load(&m, tu_path("missing.exr"), 0, 0, 0,
+	    E));
+	EXPECT(FRS_E_IO, frs_imap_load(&m, tu_path(""), 0, 0, 0, E));
+	EXPECT(FRS_E_FORMAT, frs_imap_load(&m, junk, 0, 0, 0, E));
+	EXPECT(FRS_E_FORMAT, frs_imap_load(&m, MATRIX, 0, 0, 0, E));
+	assert_null(m.v);
+	assert_int_equal(m.h, 0);
+	frs_imap_free(NULL);
+	frs_imap_free(&m);
+}
+
 /* Maps whose values are refused: NaN, infinity, a negative value, all
  * zero; as float and as double. */
 static void test_bad_maps(void **state)
@@ -597,6 +621,7 @@ TU_MAIN(setup, teardown,
 	cmocka_unit_test(test_mask_errors),
 	cmocka_unit_test(test_default_matrix),
 	cmocka_unit_test(test_map_errors),
+	cmocka_unit_test(test_imap_errors),
 	cmocka_unit_test(test_bad_maps),
 	cmocka_unit_test(test_sampler_errors),
 	cmocka_unit_test(test_draw_errors),

@@ -117,7 +117,7 @@ static void env_counts(void **state)
 		const uint64_t n = 200000;
 		snprintf(path, sizeof path, "data/%s.exr", maps[k]);
 		frs_set_quiet(1);
-		assert_int_equal(imap_load(path, 128, 64, IMAP_EQUIRECT, &map), 0);
+		assert_int_equal(imap_load(path, 128, 64, FRS_MAP_EQUIRECT, &map), 0);
 		imap_stats(&map, &st);
 		sample(&map, n, FRS_UNBIASED, 11, FRS_SORTED, &s, &r);
 		for (uint64_t c = 0; c < r.nchunk; c++)

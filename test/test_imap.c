@@ -65,7 +65,7 @@ static void validate(void **state)
 	assert_err_has("pixel (3, 2)", "infinite");
 	m.v[2 * 8 + 3] = -0.5;
 	m.v[7] = -0.25;
-	assert_int_equal(imap_validate(&m, "map.exr", IMAP_STRICT), -1);
+	assert_int_equal(imap_validate(&m, "map.exr", FRS_MAP_STRICT), -1);
 	assert_err_has("pixel (7, 0)", "negative", "2 negative", "-0.5");
 	frs_set_quiet(1);
 	w0 = frs_warn_count();
@@ -76,7 +76,7 @@ static void validate(void **state)
 		m.v[i] = 0.0;
 	assert_int_equal(imap_validate(&m, "map.exr", 0), -1);
 	assert_err_has("map.exr", "zero everywhere");
-	assert_int_equal(imap_validate(&m, "map.exr", IMAP_ALLOW_ZERO), 0);
+	assert_int_equal(imap_validate(&m, "map.exr", FRS_MAP_ALLOW_ZERO), 0);
 	imap_free(&m);
 	assert_int_equal(imap_alloc(&m, 0, 5), -1);
 	assert_int_equal(imap_alloc(&m, 70000, 1), -1);

@@ -304,8 +304,8 @@ static void alloc_limits(void **state)
 	assert_int_equal(raster_alloc(&r, 0, 5, 1), -1);
 	assert_null(r.px);
 	assert_int_equal(raster_alloc(&r, 5, 0, 1), -1);
-	assert_int_equal(raster_alloc(&r, IMAP_MAX_SIDE + 1, 1, 1), -1);
-	assert_int_equal(raster_alloc(&r, IMAP_MAX_SIDE, IMAP_MAX_SIDE, 1), -1);
+	assert_int_equal(raster_alloc(&r, FRS_MAP_MAX_SIDE + 1, 1, 1), -1);
+	assert_int_equal(raster_alloc(&r, FRS_MAP_MAX_SIDE, FRS_MAP_MAX_SIDE, 1), -1);
 	assert_err_has("impossible");
 	assert_int_equal(raster_alloc(&r, 5, 5, 2), -1);
 	assert_err_has("channels");

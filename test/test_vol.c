@@ -173,7 +173,7 @@ static void validation(void **state)
 	assert_err_has("inf.frv", "(2, 1, 0)", "infinite");
 	v.v[(0 * 3 + 1) * 4 + 2] = -0.5;
 	v.v[(1 * 3 + 0) * 4 + 1] = -2.0;
-	assert_int_equal(vol_validate(&v, "neg.frv", IMAP_STRICT), -1);
+	assert_int_equal(vol_validate(&v, "neg.frv", FRS_MAP_STRICT), -1);
 	assert_err_has("neg.frv", "negative", "2 negative voxels", "-2");
 	assert_true(v.v[(1 * 3 + 0) * 4 + 1] == -2.0);
 	{
@@ -191,7 +191,7 @@ static void validation(void **state)
 		v.v[i] = 0.0;
 	assert_int_equal(vol_validate(&v, "zero.frv", 0), -1);
 	assert_err_has("zero.frv", "zero everywhere");
-	assert_int_equal(vol_validate(&v, "zero.frv", IMAP_ALLOW_ZERO), 0);
+	assert_int_equal(vol_validate(&v, "zero.frv", FRS_MAP_ALLOW_ZERO), 0);
 	vol_free(&v);
 }
 

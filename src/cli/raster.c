@@ -17,11 +17,11 @@ int raster_alloc(struct frs_raster *r, uint32_t w, uint32_t h,
 	memset(r, 0, sizeof *r);
 	if (channels != 1 && channels != 3)
 		return frs_fail("raster: %u channels (1 or 3)", channels);
-	if (w < 1 || h < 1 || w > IMAP_MAX_SIDE || h > IMAP_MAX_SIDE ||
-	    (uint64_t)w * h > IMAP_MAX_PIXELS)
+	if (w < 1 || h < 1 || w > FRS_MAP_MAX_SIDE || h > FRS_MAP_MAX_SIDE ||
+	    (uint64_t)w * h > FRS_MAP_MAX_PIXELS)
 		return frs_fail("raster: size %ux%u is impossible (sides 1 to "
-		    "%u, at most %llu pixels)", w, h, IMAP_MAX_SIDE,
-		    (unsigned long long)IMAP_MAX_PIXELS);
+		    "%u, at most %llu pixels)", w, h, FRS_MAP_MAX_SIDE,
+		    (unsigned long long)FRS_MAP_MAX_PIXELS);
 	n = (size_t)w * h * channels;
 	if ((r->px = mem_calloc("raster", n, 1)) == NULL)
 		return -1;

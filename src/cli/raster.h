@@ -23,7 +23,7 @@ struct frs_raster {
  * stay visible over it. */
 #define RASTER_BG_RANGE 80
 
-/* Sides 1 to IMAP_MAX_SIDE, at most IMAP_MAX_PIXELS pixels; filled
+/* Sides 1 to FRS_MAP_MAX_SIDE, at most FRS_MAP_MAX_PIXELS pixels; filled
  * with white. */
 int raster_alloc(struct frs_raster *r, uint32_t w, uint32_t h,
     unsigned channels);

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "frs.h"
 #include "cli/cli.h"
 #include "dda/ddaspec.h"
 #include "dda/density.h"
@@ -18,8 +19,6 @@
 #include "base/err.h"
 #include "dda/spectrum.h"
 #include "base/progress.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
 
 static const char usage[] =
     "usage: dda [--fourier | --dda | --density | --rdf] [--summary]\n"
@@ -131,10 +130,10 @@ static void parse(int argc, char **argv, struct opts *o)
 		case OPT_SUMMARY: o->summary = 1; break;
 		case 'i': o->imp = optarg; break;
 		case 's':
-			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->mw, &o->mh);
+			cli_size("-s", optarg, FRS_MAP_MAX_SIDE, &o->mw, &o->mh);
 			break;
-		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
-		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
+		case OPT_EQUIRECT: o->flags |= FRS_MAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= FRS_MAP_STRICT; break;
 		case OPT_SIZE:
 			o->size = (uint32_t)cli_u64("--size", optarg, 1, 4096);
 			o->have_size = 1;
@@ -790,7 +789,8 @@ int main(int argc, char **argv)
 		cli_die("no memory");
 	cli_read_sets(&ps, argc, argv, o.per, note_first, first);
 	check_3d(&o, &ps);
-	if (o.imp && imap_load(o.imp, o.mw, o.mh, o.flags, &map) < 0)
+	if (o.imp && frs_imap_load(&map, o.imp, o.mw, o.mh, o.flags,
+	    NULL) != FRS_OK)
 		cli_die_lib();
 	cli_out_open(&of, cli.out, 0);
 	if (o.summary)
@@ -803,7 +803,7 @@ int main(int argc, char **argv)
 	}
 	cli_out_commit(&of, 0);
 	if (o.imp)
-		imap_free(&map);
+		frs_imap_free(&map);
 	pt_sets_free(&ps);
 	free(first);
 	return 0;

@@ -32,7 +32,7 @@
 #include <stdio.h>
 
 /* Largest half side of an image: side 2 * 8191 + 1 = 16383 pixels, under
- * IMAP_MAX_PIXELS (so that every image can be written as a PNG). */
+ * FRS_MAP_MAX_PIXELS (so that every image can be written as a PNG). */
 #define SPEC_MAX_HALF 8191u
 
 /* An image centred on the origin: side 2*half+1 pixels, pixel (c, r) at

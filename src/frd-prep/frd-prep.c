@@ -7,14 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "frs.h"
 #include "cli/cli.h"
 #include "api/api.h"
 #include "base/err.h"
 #include "base/io.h"
 #include "frd-prep/frdimport.h"
 #include "formats/frdio.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
 #include "sample/frpio.h"
 #include "sample/frscore.h"
 
@@ -113,7 +112,8 @@ static unsigned blocks_for(const struct frs_matrix *m, const struct mapopt *mo,
 	struct frs_imap map;
 	unsigned nb = 0;
 
-	if (imap_load(mo->imp, mo->w, mo->h, mo->flags, &map) < 0)
+	if (frs_imap_load(&map, mo->imp, mo->w, mo->h, mo->flags,
+	    NULL) != FRS_OK)
 		cli_die_lib();
 	if (fp != NULL)
 		fprintf(fp, "n\tlevel\tn_s\twindow\tblock\tminmap\tvalues\t"
@@ -147,7 +147,7 @@ static unsigned blocks_for(const struct frs_matrix *m, const struct mapopt *mo,
 		}
 		api_lev2_free(&lv);
 	}
-	imap_free(&map);
+	frs_imap_free(&map);
 	return nb;
 }
 
@@ -264,11 +264,11 @@ static void parse_opts(int argc, char **argv, struct prep_opts *o)
 			break;
 		case 'i': o->mo.imp = optarg; break;
 		case OPT_SIZE_MAP:
-			cli_size("--size-map", optarg, IMAP_MAX_SIDE, &o->mo.w,
+			cli_size("--size-map", optarg, FRS_MAP_MAX_SIDE, &o->mo.w,
 			    &o->mo.h);
 			break;
-		case OPT_EQUIRECT: o->mo.flags |= IMAP_EQUIRECT; break;
-		case OPT_STRICT: o->mo.flags |= IMAP_STRICT; break;
+		case OPT_EQUIRECT: o->mo.flags |= FRS_MAP_EQUIRECT; break;
+		case OPT_STRICT: o->mo.flags |= FRS_MAP_STRICT; break;
 		case OPT_SIGMA:
 			o->opt.sigma = cli_double("--sigma", optarg, 1.0,
 			    FRS_SIGMA_MAX);

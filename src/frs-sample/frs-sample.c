@@ -6,11 +6,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "frs.h"
 #include "cli/cli.h"
 #include "frs-sample/sets.h"
 #include "api/api.h"
 #include "base/datadir.h"
-#include "maps/imap.h"
 
 static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
@@ -136,7 +136,7 @@ static void parse_opts(int argc, char **argv, struct sets *o)
 				cli_usage_error("-a: %s", cli_errmsg());
 			break;
 		case 's':
-			o->nsize = (unsigned)cli_size3("-s", optarg, IMAP_MAX_SIDE,
+			o->nsize = (unsigned)cli_size3("-s", optarg, FRS_MAP_MAX_SIDE,
 			    o->size);
 			break;
 		case OPT_SIGMA:
@@ -168,8 +168,8 @@ static void parse_opts(int argc, char **argv, struct sets *o)
 				o->opt.level_blur = 0.25;
 			break;
 		case OPT_LEVEL_COLUMN: o->level_col = 1; break;
-		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
-		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
+		case OPT_EQUIRECT: o->flags |= FRS_MAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= FRS_MAP_STRICT; break;
 		case OPT_SETS:
 			o->sets = cli_sets_m(optarg);
 			break;
@@ -236,7 +236,7 @@ static void check_dims(const struct sets *o)
 	if (o->alg != FRS_NAIVE && o->alg != FRS_SORTED)
 		cli_die("-a %s: %s is a 3-D matrix; 3-D sampling has naive and "
 		    "sorted", frs_impl_name(o->alg), o->matrix);
-	if (o->flags & IMAP_EQUIRECT)
+	if (o->flags & FRS_MAP_EQUIRECT)
 		cli_die("--equirect: %s is a 3-D matrix; volumes have no "
 		    "equirectangular form", o->matrix);
 	if (o->nsize == 2)

@@ -380,8 +380,8 @@ static int open2(const struct sets *a, struct sets_run *run)
 	rc = load_mask(a, run);
 	/* The map as sets_map checked it, handed over: no copy, no second
 	 * check. */
-	if (rc == 0 && api_sampler_make(2, run->mask,
-	    &(struct api_values){ .own = &map, .own_stats = &a->stats }, &run->opt, &run->smp, NULL,
+	if (rc == 0 && api_sampler_make(2, run->mask, &(struct api_values){
+	    .own = &map, .own_stats = &a->stats }, &run->opt, &run->smp, NULL,
 	    &err) != FRS_OK)
 		rc = frs_fail("%s", err.message);
 	if (rc < 0) {

@@ -8,11 +8,11 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "frs.h"
 #include "cli/cli.h"
 #include "hsw-sample/hswrun.h"
 #include "base/par.h"
 #include "base/progress.h"
-#include "maps/imap.h"
 
 static const char usage[] =
     "usage: hsw-sample -i IMPORTANCE -n COUNT [--input SET|FILE] [--pdf]\n"
@@ -94,7 +94,7 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 			break;
 		case 'i': o->imp = optarg; break;
 		case 's':
-			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->w, &o->h);
+			cli_size("-s", optarg, FRS_MAP_MAX_SIDE, &o->w, &o->h);
 			break;
 		case OPT_INPUT:
 			o->input = hsw_input_parse(optarg);
@@ -115,8 +115,8 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 			break;
 		case OPT_PDF: o->pdf = 1; break;
 		case OPT_SETS: o->sets = cli_sets_m(optarg); break;
-		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
-		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
+		case OPT_EQUIRECT: o->flags |= FRS_MAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= FRS_MAP_STRICT; break;
 		case OPT_DEVICE:
 			o->cl = cli_device(optarg, &o->cl_index);
 			break;

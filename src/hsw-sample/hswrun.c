@@ -6,8 +6,6 @@
 #include "base/err.h"
 #include "base/mem.h"
 #include "base/progress.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
 
 /* Points per round of warping and handing out: the record buffer
  * (1.5 MiB with the density), filled by all threads, then given to the
@@ -26,11 +24,11 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 	r->cl = cl;
 	if (cl && ocl_open(&r->dev, cl_index) < 0)
 		return -2;
-	if (imap_load(src, w, h, flags, &map) < 0)
+	if (frs_imap_load(&map, src, w, h, flags, NULL) != FRS_OK)
 		goto fail;
 	t0 = progress_now();
 	rc = frs_hsw_new_f64(&r->hw, map.v, map.w, map.h, 0, &err);
-	imap_free(&map);
+	frs_imap_free(&map);
 	if (rc != FRS_OK) {
 		frs_fail("%s", err.message);
 		frs_fail_context(src);

@@ -116,20 +116,20 @@ static int parse_opts(int argc, char **argv)
 		switch (c) {
 		case 's': {
 			uint32_t sz[3];
-			opt_nsz = cli_size3("-s", optarg, IMAP_MAX_SIDE, sz);
+			opt_nsz = cli_size3("-s", optarg, FRS_MAP_MAX_SIDE, sz);
 			opt_w = sz[0];
 			opt_h = sz[1];
 			opt_d = sz[2];
 			break;
 		}
 		case OPT_EQUIRECT:
-			opt_flags |= IMAP_EQUIRECT;
+			opt_flags |= FRS_MAP_EQUIRECT;
 			break;
 		case OPT_SRGB:
-			opt_flags |= IMAP_SRGB;
+			opt_flags |= FRS_MAP_SRGB;
 			break;
 		case OPT_STRICT:
-			opt_flags |= IMAP_STRICT;
+			opt_flags |= FRS_MAP_STRICT;
 			break;
 		case OPT_LOG:
 			opt_log = 1;
@@ -181,12 +181,12 @@ static int gen_volume(const char *spec)
 	if (format_of(cli.out) != FMT_FRV)
 		cli_usage_error("%s is a volume: write it as .frv (--format frv)",
 		    spec);
-	if (opt_log || (opt_flags & IMAP_EQUIRECT))
+	if (opt_log || (opt_flags & FRS_MAP_EQUIRECT))
 		cli_usage_error("--log and --equirect are for 2-D maps");
 	vol_size(sz);
 	cli_options_done();
 	if (vol_spec(spec, sz[0], sz[1], sz[2], &v) < 0 ||
-	    vol_validate(&v, spec, opt_flags | IMAP_ALLOW_ZERO) < 0)
+	    vol_validate(&v, spec, opt_flags | FRS_MAP_ALLOW_ZERO) < 0)
 		cli_die_lib();
 	cli_out_open(&o, cli.out, 1);
 	cli_out_commit(&o, vol_write(o.fp, o.name, &v));
@@ -209,7 +209,7 @@ static int cmd_gen(int argc, char **argv)
 		    "ramp, aniso, sky)", argv[0]);
 	format_of(cli.out);	/* fail on a bad name before any work */
 	cli_options_done();
-	if (imap_load(argv[0], opt_w, opt_h, opt_flags | IMAP_ALLOW_ZERO,
+	if (imap_load(argv[0], opt_w, opt_h, opt_flags | FRS_MAP_ALLOW_ZERO,
 	    &m) < 0)
 		cli_die_lib();
 	write_map(cli.out, &m);
@@ -231,7 +231,7 @@ static int cmd_convert(int argc, char **argv)
 	map_size();
 	format_of(out);
 	cli_options_done();
-	if (imap_load(argv[0], opt_w, opt_h, opt_flags | IMAP_ALLOW_ZERO,
+	if (imap_load(argv[0], opt_w, opt_h, opt_flags | FRS_MAP_ALLOW_ZERO,
 	    &m) < 0)
 		cli_die_lib();
 	write_map(out, &m);
@@ -297,9 +297,9 @@ static int cmd_info(int argc, char **argv)
 	if (imap_load_raw(argv[0], opt_w, opt_h, opt_flags, &m) < 0)
 		cli_die_lib();
 	imap_stats(&m, &src);
-	if (imap_validate(&m, name, opt_flags | IMAP_ALLOW_ZERO) < 0)
+	if (imap_validate(&m, name, opt_flags | FRS_MAP_ALLOW_ZERO) < 0)
 		cli_die_lib();
-	if (opt_flags & IMAP_EQUIRECT)
+	if (opt_flags & FRS_MAP_EQUIRECT)
 		imap_equirect(&m);
 	imap_stats(&m, &s);
 	s.negatives = src.negatives;

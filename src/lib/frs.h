@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 #define FRS_API_VERSION_MAJOR 2
-#define FRS_API_VERSION_MINOR 0
+#define FRS_API_VERSION_MINOR 1
 
 /* ---- errors ---------------------------------------------------------- */
 
@@ -126,6 +126,45 @@ void frs_map_equirect(float *map, uint32_t width, uint32_t height,
     size_t stride);
 void frs_map_equirect_f64(double *map, uint32_t width, uint32_t height,
     size_t stride);
+
+/*
+ * Since 2.1: a map in doubles, the form the programs and the samplers
+ * hold: pixel (i, j) covers [i/w, (i+1)/w) x [j/h, (j+1)/h) of the unit
+ * square, row j counted from the top; values are linear importance, RGB
+ * as Rec. 709 luminance.
+ */
+struct frs_imap {
+	uint32_t w, h;
+	double *v;	/* w * h values, row-major, row 0 at the top */
+};
+/* How frs_imap_load reads and checks a source (or them together). */
+enum frs_map_flag {
+	FRS_MAP_SRGB = 1 << 0,		/* 8- and 16-bit PNG: sRGB decoded
+					 * to linear */
+	FRS_MAP_STRICT = 1 << 1,	/* a negative value is an error, not
+					 * clamped to zero */
+	FRS_MAP_EQUIRECT = 1 << 2,	/* rows weighted as frs_map_equirect
+					 * weights them, before resampling */
+	FRS_MAP_ALLOW_ZERO = 1 << 3	/* a map zero everywhere is no error */
+};
+/* The largest side and pixel count of a map. */
+#define FRS_MAP_MAX_SIDE 65536u
+#define FRS_MAP_MAX_PIXELS ((uint64_t)1 << 28)
+/*
+ * Load src as frs_map_load does (a PNG or OpenEXR file, "-" for standard
+ * input, or a spec), at width x height (0, 0: the file's own size, 128 x
+ * 128 for a spec; a file of another size is resampled by area), under
+ * flags: its own pixels are checked first (NaN or infinity: FRS_E_MAP,
+ * naming the pixel; negative values clamped to zero, or FRS_E_MAP under
+ * FRS_MAP_STRICT), then weighted and resampled, and a map zero everywhere
+ * is FRS_E_MAP unless FRS_MAP_ALLOW_ZERO.  A spec that does not parse is
+ * FRS_E_ARG, a file that does not open FRS_E_IO, one that is no map
+ * FRS_E_FORMAT.  The file is opened once.  *map to be released with
+ * frs_imap_free (zeroed on failure).  Thread-safe.
+ */
+int frs_imap_load(struct frs_imap *map, const char *src, uint32_t width,
+    uint32_t height, int flags, frs_error *err);
+void frs_imap_free(struct frs_imap *map);
 
 /* ---- Forced Random Sampling ------------------------------------------ */
 

@@ -9,7 +9,7 @@
 
 #include <stddef.h>
 
-#include "maps/imap.h"
+#include "frs.h"
 
 struct integrand {
 	const char *name;
@@ -29,5 +29,16 @@ extern const struct integrand integrands[];
  * or where w is not NULL, of f / w (w the points' densities). */
 double integrand_estimate(const struct integrand *g,
     const struct frs_imap *env, const double *xy, const double *w, size_t n);
+
+/* A map as a density (mc-error --pdf-map): a pixel's value over the
+ * map's mean, made once. */
+struct map_pdf {
+	const struct frs_imap *map;
+	double mean;
+};
+void map_pdf_init(struct map_pdf *p, const struct frs_imap *map);
+/* The density at point (x, y), its pixel in pixel[2]. */
+double map_pdf_at(const struct map_pdf *p, double x, double y,
+    size_t pixel[2]);
 
 #endif

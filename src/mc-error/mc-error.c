@@ -10,12 +10,11 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "frs.h"
 #include "cli/cli.h"
 #include "mc-error/integrand.h"
 #include "base/datadir.h"
 #include "base/err.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
 
 static const char usage[] =
     "usage: mc-error [-f NAME[,NAME...]] [--sets N] [--group n|file|all]\n"
@@ -49,7 +48,7 @@ static struct frs_imap envmap;
 /* --pdf-map's map and its mean, the density of a point being its
  * pixel's value over the mean (as frs-sample --pdf writes it). */
 static struct frs_imap pdfmap;
-static double pdfmean;
+static struct map_pdf pdf;	/* of pdfmap */
 
 #define ENV_BIT (1u << INTEGRAND_ENV)
 
@@ -77,17 +76,6 @@ static void parse_functions(const char *arg, unsigned *mask)
 		cli_usage_error("-f: no integrand in '%s'", arg);
 }
 
-/* The density of point (x, y) from --pdf-map's map: its pixel's value
- * over the map's mean; the pixel in pixel[2]. */
-static double map_pdf(double x, double y, size_t pixel[2])
-{
-	uint64_t i = imap_pixel_of(&pdfmap, x, y);
-
-	pixel[0] = (size_t)(i % pdfmap.w);
-	pixel[1] = (size_t)(i / pdfmap.w);
-	return pdfmap.v[i] / pdfmean;
-}
-
 /* A file's sets (from first on) as the pdf mode wants them: a density
  * required by --weights, positive and finite when used (that of
  * --pdf-map's map too).  -1 with a message. */
@@ -104,7 +92,7 @@ static int check_pdf(void *ctx, const struct pt_sets *s, size_t file,
 	for (size_t j = first; mode == PDF_MAP && j < s->n; j++)
 		for (size_t i = 0; i < s->set[j].n; i++) {
 			size_t px[2];
-			double d = map_pdf(s->set[j].xy[2 * i],
+			double d = map_pdf_at(&pdf, s->set[j].xy[2 * i],
 			    s->set[j].xy[2 * i + 1], px);
 			if (!(d > 0) || !isfinite(d))
 				return frs_fail("%s: point %zu: --pdf-map: "
@@ -171,7 +159,7 @@ static void table(FILE *fp, unsigned mask, enum pt_group grp,
 			size_t px[2];
 			for (size_t p = 0; mode == PDF_MAP && p < s->set[i].n;
 			    p++)
-				w[p] = map_pdf(s->set[i].xy[2 * p],
+				w[p] = map_pdf_at(&pdf, s->set[i].xy[2 * p],
 				    s->set[i].xy[2 * p + 1], px);
 			est[i] = integrand_estimate(&integrands[k], &envmap,
 			    s->set[i].xy, d, s->set[i].n);
@@ -203,7 +191,7 @@ static void load_env(const char *src, unsigned mask, int flags)
 		return;
 	if (src == NULL)
 		src = default_env();
-	if (imap_load(src, 0, 0, flags, &envmap) < 0)
+	if (frs_imap_load(&envmap, src, 0, 0, flags, NULL) != FRS_OK)
 		cli_die_lib();
 }
 
@@ -232,7 +220,7 @@ int main(int argc, char **argv)
 		case OPT_NO_PDF: nopdf = 1; break;
 		case OPT_ENV: env = optarg; break;
 		case OPT_PDF_MAP: pmap = optarg; break;
-		case OPT_STRICT: flags |= IMAP_STRICT; break;
+		case OPT_STRICT: flags |= FRS_MAP_STRICT; break;
 		default:
 			cli_common_only(c, optarg);
 		}
@@ -252,18 +240,16 @@ int main(int argc, char **argv)
 
 	load_env(env, mask, flags);
 	if (pmap != NULL) {
-		struct frs_imap_stats st;
-		if (imap_load(pmap, 0, 0, flags, &pdfmap) < 0)
+		if (frs_imap_load(&pdfmap, pmap, 0, 0, flags, NULL) != FRS_OK)
 			cli_die_lib();
-		imap_stats(&pdfmap, &st);
-		pdfmean = st.mean;
+		map_pdf_init(&pdf, &pdfmap);
 	}
 	cli_read_sets(&s, argc, argv, per, check_pdf, &mode);
 	cli_out_open(&of, cli.out, 0);
 	table(of.fp, mask, grp, &s, mode, (size_t)(argc - optind));
 	cli_out_commit(&of, 0);
 	pt_sets_free(&s);
-	imap_free(&envmap);
-	imap_free(&pdfmap);
+	frs_imap_free(&envmap);
+	frs_imap_free(&pdfmap);
 	return 0;
 }

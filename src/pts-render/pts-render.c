@@ -8,9 +8,8 @@
 #include <string.h>
 #include <strings.h>
 
+#include "frs.h"
 #include "cli/cli.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
 
 static const char usage[] =
     "usage: pts-render [-q] [-s SIZE] [-r R] [-i MAP] [--color] [-o FILE] [PTS]\n"
@@ -145,7 +144,7 @@ static void parse_opts(int argc, char **argv, struct render_opts *o)
 	while ((c = cli_getopt(argc, argv, options)) != -1) {
 		switch (c) {
 		case 's':
-			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->w, &o->h);
+			cli_size("-s", optarg, FRS_MAP_MAX_SIDE, &o->w, &o->h);
 			break;
 		case 'r':
 			o->rad = cli_double("-r", optarg, 0.01, 65536.0);
@@ -153,9 +152,9 @@ static void parse_opts(int argc, char **argv, struct render_opts *o)
 		case 'i': o->imp = optarg; break;
 		case OPT_LOG: o->logscale = 1; break;
 		case OPT_COLOR: o->color = 1; break;
-		case OPT_SRGB: o->flags |= IMAP_SRGB; break;
-		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
-		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
+		case OPT_SRGB: o->flags |= FRS_MAP_SRGB; break;
+		case OPT_EQUIRECT: o->flags |= FRS_MAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= FRS_MAP_STRICT; break;
 		case OPT_ALPHA:
 			o->alpha = cli_double("--alpha", optarg, 0.0, 1.0);
 			break;
@@ -187,13 +186,13 @@ static void check_opts(int argc, char **argv, struct render_opts *o)
 		cli_usage_error("--sets N: give --set K, the set to draw");
 	if (argc - optind == 1)
 		o->in = argv[optind];
-	if ((uint64_t)o->w * o->h > IMAP_MAX_PIXELS)
+	if ((uint64_t)o->w * o->h > FRS_MAP_MAX_PIXELS)
 		cli_usage_error("-s: %ux%u has more than %llu pixels", o->w,
-		    o->h, (unsigned long long)IMAP_MAX_PIXELS);
+		    o->h, (unsigned long long)FRS_MAP_MAX_PIXELS);
 	if (o->imp != NULL && is_stdin(o->imp) && is_stdin(o->in))
 		cli_usage_error("the points and the importance map cannot both "
 		    "be standard input");
-	if (o->imp == NULL && (o->logscale || (o->flags & ~IMAP_ALLOW_ZERO)))
+	if (o->imp == NULL && (o->logscale || (o->flags & ~FRS_MAP_ALLOW_ZERO)))
 		cli_usage_error("--log, --srgb, --equirect and --strict need -i");
 }
 
@@ -220,11 +219,11 @@ static void draw_map(const struct render_opts *o, struct frs_raster *r)
 {
 	struct frs_imap m;
 
-	if (imap_load(o->imp, o->w, o->h, o->flags, &m) < 0)
+	if (frs_imap_load(&m, o->imp, o->w, o->h, o->flags, NULL) != FRS_OK)
 		cli_die_lib();
 	if (raster_fill_imap(r, &m, o->logscale) < 0)
 		cli_die_lib();
-	imap_free(&m);
+	frs_imap_free(&m);
 }
 
 /* The dots of the points drawn (of set K with --set), in file order. */
@@ -268,7 +267,7 @@ static void write_image(const struct render_opts *o, struct outfile *of,
 int main(int argc, char **argv)
 {
 	struct render_opts o = { .in = "-", .w = 512, .h = 512, .alpha = 1.0,
-	    .flags = IMAP_ALLOW_ZERO, .axis = { 0, 1 }, .axes = "xy" };
+	    .flags = FRS_MAP_ALLOW_ZERO, .axis = { 0, 1 }, .axes = "xy" };
 	struct frs_points p;
 	struct frs_raster r;
 	struct outfile of;

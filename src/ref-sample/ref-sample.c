@@ -10,10 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "frs.h"
 #include "cli/cli.h"
 #include "base/progress.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
 
 static const char usage[] =
     "usage: ref-sample -n COUNT [-d DIMS] [-k KIND] [-i IMPORTANCE] [-s WxH]\n"
@@ -211,10 +210,10 @@ static void parse_opts(int argc, char **argv, struct ref_opts *o)
 			break;
 		case 'i': o->imp = optarg; break;
 		case 's':
-			cli_size("-s", optarg, IMAP_MAX_SIDE, &o->mw, &o->mh);
+			cli_size("-s", optarg, FRS_MAP_MAX_SIDE, &o->mw, &o->mh);
 			break;
-		case OPT_STRICT: o->flags |= IMAP_STRICT; break;
-		case OPT_EQUIRECT: o->flags |= IMAP_EQUIRECT; break;
+		case OPT_STRICT: o->flags |= FRS_MAP_STRICT; break;
+		case OPT_EQUIRECT: o->flags |= FRS_MAP_EQUIRECT; break;
 		case OPT_SETS:
 			o->sets = cli_sets_m(optarg);
 			break;
@@ -251,8 +250,8 @@ static void open_run(const struct ref_opts *o, struct ref_run *r)
 	r->xy = cli_calloc(what, o->count, o->dims * sizeof *r->xy);
 	if (o->kind != REFSAMP_RELAXED_DART)
 		return;
-	if (imap_load(o->imp ? o->imp : "const", o->mw, o->mh, o->flags,
-	    &r->map) < 0) {
+	if (frs_imap_load(&r->map, o->imp ? o->imp : "const", o->mw, o->mh,
+	    o->flags, NULL) != FRS_OK) {
 		free(r->xy);
 		cli_die_lib();
 	}
@@ -262,7 +261,7 @@ static void open_run(const struct ref_opts *o, struct ref_run *r)
 static void close_run(struct ref_run *r)
 {
 	if (r->have_map)
-		imap_free(&r->map);
+		frs_imap_free(&r->map);
 	free(r->xy);
 }
 

@@ -34,7 +34,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	{
 		struct frs_vol v;
 		if (vol_spec(s, 6, 6, 6, &v) == 0) {
-			(void)vol_validate(&v, "fuzz", IMAP_ALLOW_ZERO);
+			(void)vol_validate(&v, "fuzz", FRS_MAP_ALLOW_ZERO);
 			vol_free(&v);
 		}
 	}

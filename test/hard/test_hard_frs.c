@@ -431,7 +431,7 @@ static void zero_and_nonfinite(void **state)
 	assert_err_has("zero.exr", "zero everywhere");
 	assert_int_equal(frs_setup(&s, &map, &m, 100, 8.0, 1), -1);
 	assert_err_has("zero everywhere");
-	assert_int_equal(imap_validate(&map, "zero.exr", IMAP_ALLOW_ZERO), 0);
+	assert_int_equal(imap_validate(&map, "zero.exr", FRS_MAP_ALLOW_ZERO), 0);
 	/* NaN first in row-major order, then +inf, then -inf */
 	map.v[9 * 16 + 7] = INFINITY;
 	map.v[3 * 16 + 5] = NAN;
@@ -452,7 +452,7 @@ static void zero_and_nonfinite(void **state)
 }
 
 /* Negative values: one warning with their count and the smallest, then
- * zero (no sample there); under IMAP_STRICT an error naming the first.
+ * zero (no sample there); under FRS_MAP_STRICT an error naming the first.
  * -0.0 is not negative. */
 static void negatives(void **state)
 {
@@ -470,7 +470,7 @@ static void negatives(void **state)
 	map.v[6 * 32 + 6] = -3.0;
 	map.v[9 * 32 + 9] = -0.0;
 	w0 = frs_warn_count();
-	assert_int_equal(imap_validate(&map, "neg.exr", IMAP_STRICT), -1);
+	assert_int_equal(imap_validate(&map, "neg.exr", FRS_MAP_STRICT), -1);
 	assert_err_has("neg.exr", "pixel (2, 1) is negative (-0.5)",
 	    "2 negative pixels, smallest -3");
 	assert_true(map.v[1 * 32 + 2] == -0.5);
@@ -480,7 +480,7 @@ static void negatives(void **state)
 	assert_true(frs_warn_count() == w0 + 1);
 	assert_true(map.v[1 * 32 + 2] == 0.0 && map.v[6 * 32 + 6] == 0.0);
 	w0 = frs_warn_count();
-	assert_int_equal(imap_validate(&map, "neg.exr", IMAP_STRICT), 0);
+	assert_int_equal(imap_validate(&map, "neg.exr", FRS_MAP_STRICT), 0);
 	assert_true(frs_warn_count() == w0);
 	in = sample_counts(&map, &m, 20000, 22, &s, &count);
 	total_ok("clamped map", count, 20000);

@@ -164,7 +164,7 @@ int main(int argc, char **argv)
 		if (strcmp(argv[i], "--thesis") == 0)
 			thesis = 1;
 		else if (strcmp(argv[i], "--equirect") == 0)
-			flags |= IMAP_EQUIRECT;
+			flags |= FRS_MAP_EQUIRECT;
 		else if (strcmp(argv[i], "-S") == 0 && i + 1 < argc)
 			seed = num(argv[++i]);
 		else if (strcmp(argv[i], "-s") == 0 && i + 1 < argc) {

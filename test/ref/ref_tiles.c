@@ -709,9 +709,9 @@ static void map_main(int argc, char **argv)
 
 	for (; a < argc; a++) {
 		if (strcmp(argv[a], "--equirect") == 0)
-			flags |= IMAP_EQUIRECT;
+			flags |= FRS_MAP_EQUIRECT;
 		else if (strcmp(argv[a], "-s") == 0 && a + 1 < argc) {
-			if (parse_size("-s", argv[++a], IMAP_MAX_SIDE, &w,
+			if (parse_size("-s", argv[++a], FRS_MAP_MAX_SIDE, &w,
 			    &h) < 0)
 				die(frs_errmsg());
 		} else if (strcmp(argv[a], "--level-col") == 0 && a + 1 < argc)
@@ -751,7 +751,7 @@ int main(int argc, char **argv)
 	else if ((argc == 6 || argc == 7) && strcmp(argv[1], "chi2") == 0)
 		chi2((int)num(argv[2]), (int)num(argv[3]), argv[4],
 		    argc == 7 && strcmp(argv[5], "--equirect") == 0 ?
-		    IMAP_EQUIRECT : 0, argv[argc - 1]);
+		    FRS_MAP_EQUIRECT : 0, argv[argc - 1]);
 	else if (argc >= 5 && strcmp(argv[1], "band") == 0) {
 		double y0, y1;
 		if (parse_double("Y0", argv[2], 0.0, 1.0, &y0) < 0 ||

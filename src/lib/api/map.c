@@ -53,6 +53,28 @@ void frs_map_free(float *map)
 	free(map);
 }
 
+int frs_imap_load(struct frs_imap *map, const char *src, uint32_t width,
+    uint32_t height, int flags, frs_error *err)
+{
+	if (map != NULL)
+		*map = (struct frs_imap){ 0 };
+	if (src == NULL || map == NULL)
+		return api_arg_err(err, "frs_imap_load: NULL argument");
+	if ((width == 0) != (height == 0))
+		return api_arg_err(err, "frs_imap_load: width and height are both "
+		    "0 or both set");
+	if (imap_load(src, width, height, flags, map) < 0)
+		return api_lib_err(err, frs_errkind() == FRS_ERRKIND_SPEC ?
+		    FRS_E_ARG : FRS_E_FORMAT);
+	return api_ok(err);
+}
+
+void frs_imap_free(struct frs_imap *map)
+{
+	if (map != NULL)
+		imap_free(map);
+}
+
 /* Row j of the map, rows stride elements apart (0: width), times
  * imap_equirect_weight: for maps of floats and of doubles. */
 #define EQUIRECT_ROWS(type, map, width, height, stride) do {		\
@@ -113,7 +135,7 @@ static int copy_vol(struct frs_vol *v, const float *f, const double *d,
 		return api_lib_err(err, FRS_E_LIMIT);
 	for (uint64_t i = 0; i < (uint64_t)w * h * dd; i++)
 		v->v[i] = f ? (double)f[i] : d ? d[i] : 1.0;
-	if (vol_validate(v, "volume", IMAP_STRICT) < 0) {
+	if (vol_validate(v, "volume", FRS_MAP_STRICT) < 0) {
 		vol_free(v);
 		return api_lib_err(err, FRS_E_MAP);
 	}
@@ -181,7 +203,7 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
 		memset(v->own, 0, sizeof *v->own);
 	} else if (rc == FRS_OK)
 		rc = dims == 2 ? api_copy_map(&map, v->f, v->d, v->w, v->h,
-		    v->stride, IMAP_STRICT, &st, err) : copy_vol(&vol, v->f,
+		    v->stride, FRS_MAP_STRICT, &st, err) : copy_vol(&vol, v->f,
 		    v->d, v->w, v->h, v->depth, err);
 	if (rc != FRS_OK)
 		return rc;

@@ -71,7 +71,7 @@ int read_planes(OPENEXR_IMF_NAMESPACE::InputFile &file, const char *name,
 		return frs_fail("%s: no usable channel (need Y or R, G, B; file "
 		    "has %s)", name, have.c_str());
 	}
-	if (w <= 0 || h <= 0 || w > IMAP_MAX_SIDE || h > IMAP_MAX_SIDE)
+	if (w <= 0 || h <= 0 || w > FRS_MAP_MAX_SIDE || h > FRS_MAP_MAX_SIDE)
 		return frs_fail("%s: impossible data window %lldx%lld", name,
 		    (long long)w, (long long)h);
 	if (imap_alloc(m, uint32_t(w), uint32_t(h)) < 0)

@@ -210,12 +210,12 @@ static int read_size(struct reader *r)
 	if (w <= 0 || h <= 0)
 		return frs_fail("%s: empty data window (%lld x %lld)", r->name,
 		    (long long)w, (long long)h);
-	if (w > IMAP_MAX_SIDE || h > IMAP_MAX_SIDE ||
-	    (uint64_t)w * (uint64_t)h > IMAP_MAX_PIXELS)
+	if (w > FRS_MAP_MAX_SIDE || h > FRS_MAP_MAX_SIDE ||
+	    (uint64_t)w * (uint64_t)h > FRS_MAP_MAX_PIXELS)
 		return frs_fail("%s: image of %lld x %lld is too large (at "
 		    "most %u on a side and %llu pixels)", r->name,
-		    (long long)w, (long long)h, IMAP_MAX_SIDE,
-		    (unsigned long long)IMAP_MAX_PIXELS);
+		    (long long)w, (long long)h, FRS_MAP_MAX_SIDE,
+		    (unsigned long long)FRS_MAP_MAX_PIXELS);
 	r->w = (uint32_t)w;
 	r->h = (uint32_t)h;
 	return 0;
@@ -724,8 +724,8 @@ int imap_write_exr(FILE *fp, const char *name, const struct frs_imap *m)
 	struct mem_sink sink;
 	int rc;
 
-	if (m->w == 0 || m->h == 0 || m->w > IMAP_MAX_SIDE ||
-	    m->h > IMAP_MAX_SIDE)
+	if (m->w == 0 || m->h == 0 || m->w > FRS_MAP_MAX_SIDE ||
+	    m->h > FRS_MAP_MAX_SIDE)
 		return frs_fail("%s: cannot write a %ux%u map", name, m->w,
 		    m->h);
 	if (fits_float(m, name) < 0)

@@ -17,11 +17,11 @@ int imap_alloc(struct frs_imap *m, uint32_t w, uint32_t h)
 	memset(m, 0, sizeof *m);
 	if (w == 0 || h == 0)
 		return frs_fail("impossible map size %ux%u", w, h);
-	if (w > IMAP_MAX_SIDE || h > IMAP_MAX_SIDE ||
-	    (uint64_t)w * h > IMAP_MAX_PIXELS)
+	if (w > FRS_MAP_MAX_SIDE || h > FRS_MAP_MAX_SIDE ||
+	    (uint64_t)w * h > FRS_MAP_MAX_PIXELS)
 		return frs_fail("map size %ux%u is too large (at most %u on a "
-		    "side and %llu pixels)", w, h, IMAP_MAX_SIDE,
-		    (unsigned long long)IMAP_MAX_PIXELS);
+		    "side and %llu pixels)", w, h, FRS_MAP_MAX_SIDE,
+		    (unsigned long long)FRS_MAP_MAX_PIXELS);
 	snprintf(what, sizeof what, "%ux%u map", w, h);
 	if ((m->v = mem_calloc(what, (uint64_t)w * h, sizeof *m->v)) == NULL)
 		return -1;
@@ -98,7 +98,7 @@ int imap_clamp(struct frs_imap *m, struct frs_imap_stats *s,
 				m->v[i] = 0.0;
 		imap_stats(m, s);
 	}
-	if (!(flags & IMAP_ALLOW_ZERO) && s->max <= 0.0)
+	if (!(flags & FRS_MAP_ALLOW_ZERO) && s->max <= 0.0)
 		return frs_fail("%s: importance is zero everywhere", name);
 	return 0;
 }
@@ -111,7 +111,7 @@ static int validate(struct frs_imap *m, const char *name, int flags,
 		return frs_fail("%s: pixel (%u, %u) is %s (%llu non-finite "
 		    "pixels)", name, s->bad_x, s->bad_y, isnan(s->bad_value) ?
 		    "NaN" : "infinite", (unsigned long long)s->nonfinite);
-	if (s->negatives && (flags & IMAP_STRICT))
+	if (s->negatives && (flags & FRS_MAP_STRICT))
 		return frs_fail("%s: pixel (%u, %u) is negative (%.6g); "
 		    "%llu negative pixels, smallest %.6g", name, s->neg_x,
 		    s->neg_y, m->v[(size_t)s->neg_y * m->w + s->neg_x],

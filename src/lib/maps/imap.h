@@ -1,18 +1,18 @@
 /*
  * Importance maps: one in-memory form for PNG, OpenEXR and procedural
- * sources.  Pixel (i, j) covers [i/W, (i+1)/W) x [j/H, (j+1)/H) of the unit
- * square, row j counted from the top of the image; values are linear,
- * non-negative importance in double.  RGB becomes Rec. 709 luminance.
+ * sources, struct frs_imap, which is public (frs.h: the programs and the
+ * API's users hold maps in it, and the FRS_MAP_ flags and limits with
+ * it; this stage includes frs.h for that type alone).  Pixel (i, j)
+ * covers [i/W, (i+1)/W) x [j/H, (j+1)/H) of the unit square, row j
+ * counted from the top of the image; values are linear, non-negative
+ * importance in double.  RGB becomes Rec. 709 luminance.
  */
 #ifndef FRS_IMAP_H
 #define FRS_IMAP_H
 
 #include <stdint.h>
 
-struct frs_imap {
-	uint32_t w, h;
-	double *v;	/* w * h values, row-major, row 0 at the top */
-};
+#include "frs.h"
 
 struct frs_imap_stats {
 	uint64_t count;		/* w * h */
@@ -26,26 +26,14 @@ struct frs_imap_stats {
 	uint32_t neg_x, neg_y;	/* first negative pixel */
 };
 
-/* Largest side and pixel count a map may have. */
-#define IMAP_MAX_SIDE 65536u
-#define IMAP_MAX_PIXELS ((uint64_t)1 << 28)
-
 int imap_alloc(struct frs_imap *m, uint32_t w, uint32_t h);
 void imap_free(struct frs_imap *m);
 void imap_stats(const struct frs_imap *m, struct frs_imap_stats *s);
 
-/* What imap_load (mapload.h) accepts and imap_validate checks. */
-enum {
-	IMAP_SRGB = 1 << 0,	  /* decode 8/16-bit PNG from sRGB to linear */
-	IMAP_STRICT = 1 << 1,	  /* negative values are an error */
-	IMAP_EQUIRECT = 1 << 2,	  /* weight rows by sin(theta) */
-	IMAP_ALLOW_ZERO = 1 << 3  /* an all-zero map is not an error */
-};
-
 /*
- * Reject NaN and infinity (naming the pixel) and, unless IMAP_ALLOW_ZERO,
+ * Reject NaN and infinity (naming the pixel) and, unless FRS_MAP_ALLOW_ZERO,
  * an all-zero map; clamp negative values to zero with one warning giving
- * their count and the smallest value, or fail under IMAP_STRICT.
+ * their count and the smallest value, or fail under FRS_MAP_STRICT.
  */
 int imap_validate(struct frs_imap *m, const char *name, int flags);
 /* The same, and the statistics of the values it leaves into s (what a

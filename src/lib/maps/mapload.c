@@ -21,7 +21,7 @@ static int decode_image(const unsigned char *buf, size_t len,
 	if (len == 0)
 		return frs_fail("%s: empty file", name);
 	if (len >= 8 && memcmp(buf, "\211PNG\r\n\032\n", 8) == 0)
-		return imap_read_png_mem(buf, len, name, flags & IMAP_SRGB, m);
+		return imap_read_png_mem(buf, len, name, flags & FRS_MAP_SRGB, m);
 	if (len >= 4 && memcmp(buf, "\166\057\061\001", 4) == 0)
 		return imap_read_exr_mem(buf, len, name, m);
 	if (len >= 8 && memcmp(buf, FRV_MAGIC, 8) == 0)
@@ -137,11 +137,11 @@ static int finish_map(const char *name, uint32_t w, uint32_t h, int flags,
     struct frs_imap *m, struct frs_imap_stats *st)
 {
 	int resize = w != 0 && (w != m->w || h != m->h);
-	int again = resize || (flags & IMAP_EQUIRECT);
-	int rc = imap_validate_stats(m, name, again ? flags | IMAP_ALLOW_ZERO :
+	int again = resize || (flags & FRS_MAP_EQUIRECT);
+	int rc = imap_validate_stats(m, name, again ? flags | FRS_MAP_ALLOW_ZERO :
 	    flags, st);
 
-	if (rc == 0 && (flags & IMAP_EQUIRECT))
+	if (rc == 0 && (flags & FRS_MAP_EQUIRECT))
 		imap_equirect(m);
 	if (rc == 0 && resize) {
 		struct frs_imap r;

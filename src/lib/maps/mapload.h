@@ -43,7 +43,7 @@ int vol_is_volume(const char *src);
 
 /*
  * A .frv file (at its own size: w, h, d must be 0 or equal to it) or a
- * procedural spec, then vol_validate.  IMAP_STRICT and IMAP_ALLOW_ZERO
+ * procedural spec, then vol_validate.  FRS_MAP_STRICT and FRS_MAP_ALLOW_ZERO
  * of imap.h apply.
  */
 int vol_load(const char *src, uint32_t w, uint32_t h, uint32_t d, int flags,

@@ -111,10 +111,10 @@ int imap_read_png_mem(const unsigned char *buf, size_t len, const char *name,
 	}
 	png_set_read_fn(png, &ctx, read_mem);
 	/* Our own limits, checked before any allocation. */
-	png_set_user_limits(png, IMAP_MAX_SIDE, IMAP_MAX_SIDE);
+	png_set_user_limits(png, FRS_MAP_MAX_SIDE, FRS_MAP_MAX_SIDE);
 	png_read_info(png, info);
 	png_get_IHDR(png, info, &w, &h, &depth, &ctype, NULL, NULL, NULL);
-	if ((uint64_t)w * h > IMAP_MAX_PIXELS)
+	if ((uint64_t)w * h > FRS_MAP_MAX_PIXELS)
 		png_error(png, "image too large");
 	if (ctype == PNG_COLOR_TYPE_PALETTE)
 		png_set_palette_to_rgb(png);

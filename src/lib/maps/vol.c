@@ -185,7 +185,7 @@ static int validate(struct frs_vol *m, const char *name, int flags)
 		    "voxels)", name, c[0], c[1], c[2], isnan(s.bad_value) ?
 		    "NaN" : "infinite", (unsigned long long)s.nonfinite);
 	}
-	if (s.negatives && (flags & IMAP_STRICT)) {
+	if (s.negatives && (flags & FRS_MAP_STRICT)) {
 		voxel_of(m, s.neg_x, s.neg_y, c);
 		return frs_fail("%s: voxel (%u, %u, %u) is negative; %llu "
 		    "negative voxels, smallest %.6g", name, c[0], c[1], c[2],

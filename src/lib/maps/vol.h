@@ -51,8 +51,8 @@ int vol_read_pre(FILE *fp, const char *name, const unsigned char *pre,
 int vol_write(FILE *fp, const char *name, const struct frs_vol *m);
 
 /* NaN and infinity are errors naming the voxel; negative values are
- * clamped with one warning (an error under IMAP_STRICT); an all-zero
- * volume is an error unless IMAP_ALLOW_ZERO. */
+ * clamped with one warning (an error under FRS_MAP_STRICT); an all-zero
+ * volume is an error unless FRS_MAP_ALLOW_ZERO. */
 int vol_validate(struct frs_vol *m, const char *name, int flags);
 
 #endif
