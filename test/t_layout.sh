@@ -111,29 +111,24 @@ fi
 libheaders() {
 	case $1 in
 	dda) echo analysis/raster.h base/err.h base/fft.h base/mem.h \
-	    base/num.h base/par.h base/progress.h maps/imap.h \
-	    maps/mapload.h ;;
+	    base/num.h base/par.h maps/imap.h maps/mapload.h ;;
 	discrepancy) echo base/err.h base/mem.h base/num.h base/par.h \
-	    base/progress.h base/rng.h ;;
+	    base/rng.h ;;
 	frd-gen) echo base/err.h base/fft.h base/io.h base/mem.h base/num.h \
-	    base/ocl.h base/par.h base/parse.h base/progress.h base/rng.h \
-	    formats/frdio.h ;;
+	    base/ocl.h base/par.h base/parse.h base/rng.h formats/frdio.h ;;
 	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
 	    formats/frdio.h maps/imap.h maps/mapload.h maps/pngio.h \
 	    sample/frpio.h sample/frscore.h ;;
-	frs-sample) echo api/api.h base/datadir.h base/err.h \
-	    base/progress.h maps/imap.h maps/mapload.h maps/vol.h \
-	    sample/frscl.h sample/frscore.h ;;
+	frs-sample) echo api/api.h base/err.h maps/imap.h maps/mapload.h \
+	    maps/vol.h sample/frscl.h sample/frscore.h ;;
 	hsw-sample) echo api/api.h base/err.h base/mem.h base/ocl.h \
-	    base/par.h base/progress.h maps/imap.h maps/mapload.h \
-	    sample/hsw.h sample/refsamp.h ;;
+	    base/par.h maps/imap.h maps/mapload.h sample/hsw.h \
+	    sample/refsamp.h ;;
 	imap) echo maps/exrio.h maps/imap.h maps/mapload.h maps/pngio.h \
 	    maps/spec.h maps/vol.h ;;
-	mc-error) echo base/datadir.h base/err.h base/num.h maps/imap.h \
-	    maps/mapload.h ;;
+	mc-error) echo base/err.h base/num.h maps/imap.h maps/mapload.h ;;
 	pts-render) echo analysis/raster.h maps/imap.h maps/mapload.h ;;
-	ref-sample) echo base/progress.h maps/imap.h maps/mapload.h \
-	    sample/refsamp.h ;;
+	ref-sample) echo maps/imap.h maps/mapload.h sample/refsamp.h ;;
 	esac
 }
 progs="dda discrepancy frd-gen frd-prep frs-sample hsw-sample imap mc-error

@@ -9,7 +9,6 @@
 #include "cli/cli.h"
 #include "frs-sample/sets.h"
 #include "api/api.h"
-#include "base/datadir.h"
 #include "maps/imap.h"
 
 static const char usage[] =
@@ -100,10 +99,10 @@ static void parse_steps(struct sets *o, const char *s)
  * (the other shipped files lie beside it), and exit. */
 static noreturn void print_data_dir(void)
 {
-	char path[DATA_PATH_MAX];
+	char path[CLI_PATH_MAX];
 
 	cli_options_done();	/* the fuzz target stops here */
-	if (data_find("default.frd", path, sizeof path) < 0)
+	if (cli_data_file("default.frd", path, sizeof path) < 0)
 		cli_die("--data-dir: no shipped data (%s)", cli_errmsg());
 	*strrchr(path, '/') = '\0';
 	if (printf("%s\n", path) < 0 || fflush(stdout) == EOF)
@@ -251,7 +250,7 @@ static void check_dims(const struct sets *o)
  * itself, says so and which shipped matrix to take. */
 static void load_inputs(struct sets *o)
 {
-	static char path[DATA_PATH_MAX];
+	static char path[CLI_PATH_MAX];
 	unsigned want = o->nsize >= 2 ? o->nsize : 0;
 	int dims;
 
