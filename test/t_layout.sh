@@ -114,26 +114,24 @@ fi
 libheaders() {
 	case $1 in
 	dda) echo base/err.h base/mem.h base/num.h base/par.h \
-	    base/progress.h maps/imap.h ;;
+	    maps/imap.h ;;
 	discrepancy) echo base/err.h base/mem.h base/num.h base/par.h \
-	    base/progress.h base/rng.h ;;
+	    base/rng.h ;;
 	frd-gen) echo base/err.h base/io.h base/mem.h base/num.h \
-	    base/ocl.h base/par.h base/parse.h base/progress.h base/rng.h \
+	    base/ocl.h base/par.h base/parse.h base/rng.h \
 	    formats/frdio.h ;;
 	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
 	    formats/frdio.h maps/imap.h maps/pngio.h sample/frpio.h \
 	    sample/frscore.h ;;
-	frs-sample) echo api/api.h base/datadir.h base/err.h \
-	    base/progress.h maps/imap.h maps/mapload.h maps/vol.h \
-	    sample/frscl.h sample/frscore.h ;;
+	frs-sample) echo api/api.h base/err.h maps/imap.h \
+	    maps/mapload.h maps/vol.h sample/frscl.h sample/frscore.h ;;
 	hsw-sample) echo api/api.h base/err.h base/mem.h base/ocl.h \
-	    base/par.h base/progress.h sample/hsw.h ;;
+	    base/par.h sample/hsw.h ;;
 	imap) echo maps/exrio.h maps/imap.h maps/mapload.h maps/pngio.h \
 	    maps/spec.h maps/vol.h ;;
-	mc-error) echo base/datadir.h base/err.h base/num.h \
-	    maps/imap.h ;;
+	mc-error) echo base/err.h base/num.h maps/imap.h ;;
 	pts-render) echo ;;
-	ref-sample) echo base/progress.h ;;
+	ref-sample) echo ;;
 	esac
 }
 progs="dda discrepancy frd-gen frd-prep frs-sample hsw-sample imap mc-error

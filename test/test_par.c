@@ -1,6 +1,7 @@
 /* Parallel loops: every index exactly once for any thread count, errors
  * stop the loop and reach the caller, counts and messages per thread, the
- * team's many small jobs, and the progress bar draws rate and ETA. */
+ * team's many small jobs, and the progress bar draws rate and ETA, of the
+ * library's tasks and the programs' own (cli.h). */
 #include "testutil.h"
 #include "cli/cli.h"
 #include "frs.h"
@@ -221,48 +222,139 @@ static void team_per_thread(void **state)
 	free(c.hit);
 }
 
-/* Draw into a file instead of the terminal and look at what came out:
- * the programs' bar, cli.c's callback, fed by the library's progress. */
-static void progress_draws(void **state)
+/* What the programs' bar, cli.c's callback, draws of the task draw
+ * runs: into a file instead of the terminal, with --progress. */
+static char *drawn(void (*draw)(struct cli_bar *bar))
 {
-	struct progress p;
 	struct cli_bar bar = { NULL, 0, 0, 0.0, 0.0, 0, 0, 0 };
 	const char *path = tu_path("progress.txt");
 	int fd = open(path, O_CREAT | O_TRUNC | O_WRONLY, 0600), saved;
 	size_t n;
 	char *out;
-	(void)state;
 
 	saved = dup(2);
 	fflush(stderr);
 	dup2(fd, 2);
 	cli.progress = 1;
 	frs_set_progress(cli_bar_progress, &bar);
-	progress_begin(&p, "testing", 200);
-	progress_update(&p, 10);		/* under a second: nothing */
-	bar.start -= 2.0;			/* pretend 2 s have passed */
-	bar.last -= 2.0;
-	progress_update(&p, 100);
-	progress_end(&p);
+	draw(&bar);
+	frs_set_progress(NULL, NULL);
 	fflush(stderr);
 	dup2(saved, 2);
 	close(saved);
 	close(fd);
 	out = (char *)tu_read(path, &n);
 	out[n] = '\0';
+	return out;
+}
+
+/* A task of 200 drawn at 50 % after 2 s (pretended) and at its end. */
+static void assert_drawn(char *out)
+{
+	size_t n = strlen(out);
+
 	assert_non_null(strstr(out, "testing"));
 	assert_non_null(strstr(out, "50.0%"));
 	assert_non_null(strstr(out, "ETA 00:0"));	/* 100 left at 50/s */
 	assert_non_null(strstr(out, "100.0%"));
-	assert_int_equal(out[n - 1], '\n');
+	assert_true(n > 0 && out[n - 1] == '\n');
 	free(out);
+}
+
+static void library_task(struct cli_bar *bar)
+{
+	struct progress p;
+
+	progress_begin(&p, "testing", 200);
+	progress_update(&p, 10);		/* under a second: nothing */
+	bar->start -= 2.0;			/* pretend 2 s have passed */
+	bar->last -= 2.0;
+	progress_update(&p, 100);
+	progress_end(&p);
+}
+
+/* The same through cli.h, as a program's own loop reports. */
+static void program_task(struct cli_bar *bar)
+{
+	struct cli_task *t = cli_task_begin("testing", 200);
+
+	assert_non_null(t);
+	cli_task_update(t, 10);
+	bar->start -= 2.0;
+	bar->last -= 2.0;
+	cli_task_update(t, 100);
+	cli_task_end(t);
+}
+
+/* The library's progress and the programs' tasks draw on the bar. */
+static void progress_draws(void **state)
+{
+	struct cli_bar bar = { NULL, 0, 0, 0.0, 0.0, 0, 0, 0 };
+	struct progress p;
+	(void)state;
+
+	assert_drawn(drawn(library_task));
+	assert_drawn(drawn(program_task));
 	/* Off: neither a terminal nor --progress. */
 	cli.progress = 0;
+	frs_set_progress(cli_bar_progress, &bar);
 	progress_begin(&p, "quiet", 10);
 	assert_int_equal(bar.on, isatty(2) && !cli.quiet);
 	progress_end(&p);
 	assert_int_equal(bar.active, 0);
 	frs_set_progress(NULL, NULL);
+}
+
+static void *worker_task(void *arg)
+{
+	(void)arg;
+	return cli_task_begin("worker", 10);
+}
+
+/* cli.h's tasks: none where nobody listens, every call taking that
+ * none; a parallel loop advancing one; one dropped leaves the bar
+ * without its last report. */
+static void program_tasks(void **state)
+{
+	struct cli_bar bar = { NULL, 0, 0, 0.0, 0.0, 0, 0, 0 };
+	struct ctx c = { calloc(100, 1), UINT64_MAX };
+	struct cli_task *t;
+	pthread_t th;
+	void *got = &bar;
+	(void)state;
+
+	cli.quiet = 1;				/* nothing drawn */
+	frs_set_progress(NULL, NULL);
+	assert_null(cli_task_begin("nobody", 10));
+	frs_set_progress(cli_bar_progress, &bar);
+	assert_null(cli_task_begin("empty", 0));
+	assert_int_equal(bar.active, 0);
+	cli_task_update(NULL, 5);
+	cli_task_end(NULL);
+	cli_task_drop(NULL);
+	assert_int_equal(pthread_create(&th, NULL, worker_task, NULL), 0);
+	pthread_join(th, &got);
+	assert_null(got);			/* the callback is per thread */
+
+	assert_non_null(t = cli_task_begin("loop", 100));
+	assert_int_equal(bar.active, 1);
+	assert_string_equal(bar.label, "loop");
+	frs_set_threads(1);
+	assert_int_equal(cli_parallel(100, 7, mark, &c, t), 0);
+	assert_int_equal(bar.done, 98);		/* the end reports 100 */
+	cli_task_end(t);
+	assert_int_equal(bar.active, 0);
+	assert_int_equal(bar.done, 100);
+	assert_int_equal(cli_parallel(100, 7, mark, &c, NULL), 0);
+
+	assert_non_null(t = cli_task_begin("dropped", 10));
+	cli_task_update(t, 3);
+	cli_task_drop(t);
+	assert_int_equal(bar.active, 1);
+	assert_int_equal(bar.done, 3);
+	frs_set_progress(NULL, NULL);
+	cli.quiet = 0;
+	free(c.hit);
 }
 
 TU_MAIN(NULL, tu_teardown,
@@ -271,4 +363,5 @@ TU_MAIN(NULL, tu_teardown,
 	cmocka_unit_test(per_thread),
 	cmocka_unit_test(team_jobs),
 	cmocka_unit_test(team_per_thread),
-	cmocka_unit_test(progress_draws))
+	cmocka_unit_test(progress_draws),
+	cmocka_unit_test(program_tasks))

@@ -6,7 +6,6 @@
 #include "base/ocl.h"
 #include "base/par.h"
 #include "base/parse.h"
-#include "base/progress.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -96,7 +95,7 @@ void cli_bar_progress(void *ctx, const char *what, uint64_t done,
 	double now;
 
 	if (b->active && done >= b->total) {	/* the end */
-		now = progress_now();
+		now = cli_now();
 		b->done = b->total;
 		b->active = 0;
 		if (b->on && (b->drawn || now - b->start >= 1.0)) {
@@ -111,7 +110,7 @@ void cli_bar_progress(void *ctx, const char *what, uint64_t done,
 		b->label = what;
 		b->total = total;
 		b->done = 0;
-		b->start = b->last = progress_now();
+		b->start = b->last = cli_now();
 		b->drawn = 0;
 		b->on = !cli.quiet && (cli.progress || isatty(STDERR_FILENO));
 		return;
@@ -120,7 +119,7 @@ void cli_bar_progress(void *ctx, const char *what, uint64_t done,
 	if (!b->on)
 		return;
 	/* Nothing for the first second; then at most 10 redraws a second. */
-	now = progress_now();
+	now = cli_now();
 	if (now - b->start < 1.0 || now - b->last < 0.1)
 		return;
 	b->last = now;

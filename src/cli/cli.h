@@ -6,7 +6,10 @@
  * files (outfile.c); the point files (ptsio.c), the point sets of the
  * programs that read them (ptsets.c, their options ptsopt.c), the
  * samplers' --sets writer (setsout.c) and the statistics over groups of
- * sets (groupstat.c).
+ * sets (groupstat.c); and the library's services in the programs' words
+ * (services.c): the clock of -v's timings, a program's own loops as tasks
+ * on the progress bar, the shipped data files, so that no program
+ * includes base/progress.h or base/datadir.h, nor sees struct progress.
  *
  * A program's files include this header alone of src/cli
  * (test/t_layout.sh checks it).  The modules keep their own headers
@@ -246,11 +249,51 @@ void cli_options_done(void);
 struct cli_bar {
 	const char *label;
 	uint64_t total, done;
-	double start, last;	/* progress_now() seconds */
+	double start, last;	/* cli_now() seconds */
 	int active, on, drawn;
 };
 void cli_bar_progress(void *ctx, const char *what, uint64_t done,
     uint64_t total);
+
+/*
+ * The library's services to the programs in their words (services.c),
+ * so that none includes base/progress.h or base/datadir.h.
+ */
+/* Monotonic seconds, for -v's timings (and the bar's). */
+double cli_now(void);
+
+/*
+ * A long loop of the program's own as a task on the progress bar,
+ * reported as the library reports its own (base/progress.h): to the
+ * callback of the thread that began it, which for a program is the bar
+ * of cli_init on the main thread; a worker thread has none.  Begin,
+ * update and end a task on that one thread.  cli_task_begin returns NULL
+ * when nobody would be told (no callback on this thread, total 0, no
+ * memory): every call below takes NULL and does nothing, so a hot loop
+ * that tests the pointer before its update pays nothing without a bar.
+ * An update reports done when it grew and is below total; the end
+ * reports total and frees the task.  A task given up on a failure is
+ * dropped instead: freed with no last report, the bar left as it stands
+ * for the message that follows.
+ */
+struct cli_task;
+struct cli_task *cli_task_begin(const char *label, uint64_t total);
+void cli_task_update(struct cli_task *t, uint64_t done);
+void cli_task_end(struct cli_task *t);
+void cli_task_drop(struct cli_task *t);
+/* frs_parallel (base/par.h) with task t (NULL: none) advanced by the
+ * items done, from the calling thread. */
+int cli_parallel(uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx,
+    struct cli_task *t);
+
+/* A shipped data file's path (sunset.exr, default.frd) into path, cap
+ * bytes, CLI_PATH_MAX enough for any: 0.  Else -1, the library's message
+ * ("looked for D1/NAME, D2/NAME and D3/NAME", cli_errmsg) naming where it
+ * looked ($FRS_DATA, beside the library and the program, the source
+ * tree's data/, the install prefix). */
+#define CLI_PATH_MAX 4096	/* also frs-sample's default matrix path */
+int cli_data_file(const char *name, char *path, size_t cap);
 
 /* Number of online processors. */
 int cli_ncpu(void);

@@ -18,7 +18,6 @@
 #include "dda/plot.h"
 #include "base/err.h"
 #include "dda/spectrum.h"
-#include "base/progress.h"
 
 static const char usage[] =
     "usage: dda [--fourier | --dda | --density | --rdf] [--summary]\n"
@@ -277,14 +276,14 @@ static void write_image(const struct opts *o, FILE *fp,
 static void spectrum_of(const struct opts *o, const struct pt_set *set,
     size_t nset, const struct frs_imap *map, struct spec_img *im)
 {
-	struct progress pr;
+	struct cli_task *task;
 	double scale = o->mode == FOURIER ? 1.0 : o->eps / o->size;
 	size_t npx;
 
 	if (spec_img_alloc(im, o->size, scale) < 0)
 		cli_die_lib();
 	npx = (size_t)(2 * o->size + 1) * (2 * o->size + 1);
-	progress_begin(&pr, o->mode == FOURIER ? "fourier" : "dda", nset);
+	task = cli_task_begin(o->mode == FOURIER ? "fourier" : "dda", nset);
 	for (size_t i = 0; i < nset; i++) {
 		const struct pt_set *s = &set[i];
 		int rc;
@@ -301,9 +300,9 @@ static void spectrum_of(const struct opts *o, const struct pt_set *set,
 			frs_fail_context(s->file);
 			cli_die_lib();
 		}
-		progress_update(&pr, i + 1);
+		cli_task_update(task, i + 1);
 	}
-	progress_end(&pr);
+	cli_task_end(task);
 	for (size_t k = 0; k < npx; k++)
 		im->v[k] /= (double)nset;
 }

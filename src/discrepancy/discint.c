@@ -10,27 +10,26 @@
 
 #include "discrepancy/discint.h"
 #include "base/err.h"
-#include "base/progress.h"
+#include "cli/cli.h"
 
 /* ---- loops and sums ------------------------------------------------- */
 
-static struct progress *disc_pr;
+static const char *disc_label;
 
-void disc_set_progress(struct progress *pr)
+void disc_set_progress(const char *label)
 {
-	disc_pr = pr;
+	disc_label = label;
 }
 
 int disc_run_chunks(uint64_t n, uint64_t chunk,
     int (*fn)(void *, uint64_t, uint64_t), void *ctx, int par)
 {
 	if (par) {
-		int rc;
-		if (disc_pr != NULL)
-			progress_begin(disc_pr, disc_pr->label, n);
-		rc = frs_parallel(n, chunk, fn, ctx, disc_pr);
-		if (disc_pr != NULL)
-			progress_end(disc_pr);
+		struct cli_task *t = disc_label != NULL ?
+		    cli_task_begin(disc_label, n) : NULL;
+		int rc = cli_parallel(n, chunk, fn, ctx, t);
+
+		cli_task_end(t);
 		return rc;
 	}
 	return frs_parallel_if(0, n, chunk, fn, ctx);

@@ -9,8 +9,9 @@
 
 #include "base/par.h"
 
-/* A progress bar for the parallel loops inside one set (NULL: none). */
-void disc_set_progress(struct progress *pr);
+/* A task of this label on the progress bar for each parallel loop inside
+ * one set (NULL: none; cli.h's cli_task). */
+void disc_set_progress(const char *label);
 /* Chunks of [0, n) in order, on the thread team when par is set. */
 int disc_run_chunks(uint64_t n, uint64_t chunk,
     int (*fn)(void *, uint64_t, uint64_t), void *ctx, int par);

@@ -15,7 +15,6 @@
 #include "discrepancy/discint.h"
 #include "base/err.h"
 #include "base/par.h"
-#include "base/progress.h"
 
 static const char usage[] =
     "usage: discrepancy [-c CLASS] [--grid S] [--shapes K] [--exact]\n"
@@ -310,7 +309,7 @@ static struct disc_result *measure(const struct disc_opts *o,
 {
 	struct disc_result *res;
 	struct run run;
-	struct progress pr;
+	struct cli_task *task;
 
 	if ((res = calloc(nsets, sizeof *res)) == NULL)
 		cli_die("no memory for %zu sets", nsets);
@@ -318,13 +317,12 @@ static struct disc_result *measure(const struct disc_opts *o,
 		cli_die_lib();
 	run.sets = sets, run.res = res;
 	if (nsets > 1) {
-		progress_begin(&pr, "sets", nsets);
-		if (frs_parallel(nsets, 1, one_set, &run, &pr) < 0)
+		task = cli_task_begin("sets", nsets);
+		if (cli_parallel(nsets, 1, one_set, &run, task) < 0)
 			cli_die_lib();
-		progress_end(&pr);
+		cli_task_end(task);
 	} else {
-		pr.label = "discrepancy";
-		disc_set_progress(&pr);
+		disc_set_progress("discrepancy");
 		if (disc_set_dims(run.ctx, sets[0].xy, sets[0].n, sets[0].dims,
 		    1, &res[0]) < 0) {
 			frs_fail_context(sets[0].file);

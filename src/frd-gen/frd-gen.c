@@ -12,7 +12,6 @@
 #include "base/ocl.h"
 #include "base/par.h"
 #include "base/parse.h"
-#include "base/progress.h"
 #include "formats/frdio.h"
 #include "frd-gen/frdgen.h"
 #include "frd-gen/frdgencl.h"
@@ -406,9 +405,9 @@ static void check_opts(int argc, char **argv, struct gen_opts *g)
 
 /* After a run: the progress bar closed, and if the run failed the
  * output removed. */
-static void end_run(int rc, struct progress *prog, struct outfile *of)
+static void end_run(int rc, struct cli_task *task, struct outfile *of)
 {
-	progress_end(prog);
+	cli_task_end(task);
 	if (rc < 0) {
 		outfile_abort(of);
 		cli_die_lib();
@@ -429,7 +428,7 @@ static int run_vac(const struct frdgen_params *pr,
 	struct vac_stats st;
 	struct frs_matrix m;
 	struct outfile of;
-	struct progress prog;
+	struct cli_task *task;
 	double t0;
 
 	vac_defaults(&vp);
@@ -447,14 +446,14 @@ static int run_vac(const struct frdgen_params *pr,
 	check_memory(pr, vac_memory(&vp));
 	cli_options_done();
 	cli_out_open(&of, cli.out, 1);
-	t0 = progress_now();
-	progress_begin(&prog, "void-and-cluster", (uint64_t)vp.w * vp.h * vp.d);
-	end_run(vac_run(&vp, &m, &prog, &st), &prog, &of);
+	t0 = cli_now();
+	task = cli_task_begin("void-and-cluster", (uint64_t)vp.w * vp.h * vp.d);
+	end_run(vac_run(&vp, &m, task, &st), task, &of);
 	write_matrix(&of, &m);
 	if (verbose) {
 		fprintf(stderr, "frd-gen: void-and-cluster %ux%ux%u in %.3f s "
 		    "(sigma %g, radius %.1f, %llu initial cells, %llu moves)\n",
-		    vp.w, vp.h, vp.d, progress_now() - t0, vp.sigma, st.radius,
+		    vp.w, vp.h, vp.d, cli_now() - t0, vp.sigma, st.radius,
 		    (unsigned long long)st.ones, (unsigned long long)st.moves);
 		report_quality(&m);
 	}
@@ -493,7 +492,7 @@ static int run_frd(const struct gen_opts *g)
 	const struct frdgen_params *pr = &g->pr;
 	struct frs_matrix m;
 	struct outfile of;
-	struct progress prog;
+	struct cli_task *task;
 	struct ocl o;
 	double t0;
 
@@ -507,17 +506,17 @@ static int run_frd(const struct gen_opts *g)
 		open_device(&o, g->dev);
 	/* Open the output first: a bad path fails before hours of work. */
 	cli_out_open(&of, cli.out, 1);
-	t0 = progress_now();
-	progress_begin(&prog, "inserting", (uint64_t)pr->w * pr->h * pr->d);
-	end_run(g->use_cl ? frdgen_run_cl(pr, &o, &m, &prog) :
-	    frdgen_run(pr, &m, &prog), &prog, &of);
+	t0 = cli_now();
+	task = cli_task_begin("inserting", (uint64_t)pr->w * pr->h * pr->d);
+	end_run(g->use_cl ? frdgen_run_cl(pr, &o, &m, task) :
+	    frdgen_run(pr, &m, task), task, &of);
 	if (g->use_cl)
 		ocl_close(&o);
 	write_matrix(&of, &m);
 	if (pr->checkpoint != NULL)
 		unlink(pr->checkpoint);
 	if (g->verbose)
-		report_frd(pr, &m, progress_now() - t0,
+		report_frd(pr, &m, cli_now() - t0,
 		    g->use_cl ? o.name : "the CPU");
 	frd_free(&m);
 	return 0;

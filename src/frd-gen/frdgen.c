@@ -7,7 +7,6 @@
 #include "base/mem.h"
 #include "base/io.h"
 #include "base/par.h"
-#include "base/progress.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -627,7 +626,7 @@ done:
 /* ---- the generator ------------------------------------------------ */
 
 int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
-    struct progress *prog)
+    struct cli_task *task)
 {
 	struct gen g;
 	uint64_t start = 0;
@@ -650,7 +649,7 @@ int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
 	rebuild_all(&g);
 	if (frs_team_start() < 0)
 		goto fail;
-	last_save = progress_now();
+	last_save = cli_now();
 	for (g.step = start; g.step < g.sz.n; g.step++) {
 		uint32_t c = 0;
 		uint64_t k = frdgen_rank(par, g.step, g.sz.n - g.step);
@@ -662,13 +661,13 @@ int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
 		g.cz = c / g.sz.w / g.sz.h;
 		g.field[fidx(&g, g.cx, g.cy, g.cz)] = INFINITY;
 		add_force(&g, frdgen_radius_after(par, g.sz.rtol, g.step + 1));
-		if (prog != NULL && (g.step & 1023) == 0)
-			progress_update(prog, g.step);
+		if (task != NULL && (g.step & 1023) == 0)
+			cli_task_update(task, g.step);
 		if (par->checkpoint != NULL && (g.step & 4095) == 0 &&
-		    progress_now() - last_save >= par->checkpoint_every) {
+		    cli_now() - last_save >= par->checkpoint_every) {
 			if (save_checkpoint(&g, g.step + 1) < 0)
 				goto fail;
-			last_save = progress_now();
+			last_save = cli_now();
 		}
 	}
 	frs_team_stop();

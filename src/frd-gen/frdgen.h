@@ -61,10 +61,11 @@
 #include "formats/frdio.h"
 #include "frd-gen/frdparam.h"
 
-struct progress;
+struct cli_task;
 
-/* Generate; out is allocated.  pr may be NULL. */
+/* Generate; out is allocated.  task (cli.h: the progress bar's) may be
+ * NULL. */
 int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
-    struct progress *pr);
+    struct cli_task *task);
 
 #endif

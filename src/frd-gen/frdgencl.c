@@ -23,7 +23,7 @@
 #include "frd-gen/frdgenint.h"
 #include "base/err.h"
 #include "base/mem.h"
-#include "base/progress.h"
+#include "cli/cli.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -362,7 +362,7 @@ static int add_force(struct clgen *g, uint32_t cx, uint32_t cy, uint32_t cz,
 }
 
 int frdgen_run_cl(const struct frdgen_params *par, struct ocl *o,
-    struct frs_matrix *out, struct progress *prog)
+    struct frs_matrix *out, struct cli_task *task)
 {
 	struct clgen g;
 
@@ -388,8 +388,8 @@ int frdgen_run_cl(const struct frdgen_params *par, struct ocl *o,
 		    c / g.sz.w / g.sz.h,
 		    frdgen_radius_after(par, g.sz.rtol, g.step + 1)) < 0)
 			goto fail;
-		if (prog != NULL && (g.step & 1023) == 0)
-			progress_update(prog, g.step);
+		if (task != NULL && (g.step & 1023) == 0)
+			cli_task_update(task, g.step);
 	}
 	gen_free(&g);
 	return 0;

@@ -21,8 +21,9 @@
 #include "frd-gen/frdgen.h"
 #include "base/ocl.h"
 
-/* Generate on an open device; out is allocated.  prog may be NULL. */
+/* Generate on an open device; out is allocated.  task (cli.h) may be
+ * NULL. */
 int frdgen_run_cl(const struct frdgen_params *par, struct ocl *o,
-    struct frs_matrix *out, struct progress *prog);
+    struct frs_matrix *out, struct cli_task *task);
 
 #endif

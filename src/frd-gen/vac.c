@@ -7,7 +7,7 @@
 #include "frd-gen/frdgen.h"
 #include "base/err.h"
 #include "base/mem.h"
-#include "base/progress.h"
+#include "cli/cli.h"
 #include "base/rng.h"
 #include "base/num.h"
 
@@ -387,35 +387,35 @@ static uint64_t relax(struct vac *g)
 	return moves;
 }
 
-static void progress_at(struct progress *prog, uint64_t done)
+static void progress_at(struct cli_task *task, uint64_t done)
 {
-	if (prog != NULL && (done & 4095) == 0)
-		progress_update(prog, done);
+	if (task != NULL && (done & 4095) == 0)
+		cli_task_update(task, done);
 }
 
 /* Phase 1: remove the tightest clusters of the initial pattern, ranks
  * ones - 1 down to 0. */
 static void remove_clusters(struct vac *g, uint32_t *rank, uint64_t ones,
-    struct progress *prog)
+    struct cli_task *task)
 {
 	for (uint64_t r = ones; r-- > 0;) {
 		uint32_t t = g->one[1];
 		rank[t] = (uint32_t)r;
 		flip(g, t, 0);
-		progress_at(prog, ones - r);
+		progress_at(task, ones - r);
 	}
 }
 
 /* Phases 2 and 3: fill the largest voids, ranks ones .. N-1 (see vac.h:
  * the zero energy's maximum is the energy's minimum over the 0s). */
 static void fill_voids(struct vac *g, uint32_t *rank, uint64_t ones,
-    struct progress *prog)
+    struct cli_task *task)
 {
 	for (uint64_t r = ones; r < g->n; r++) {
 		uint32_t v = g->zero[1];
 		rank[v] = (uint32_t)r;
 		flip(g, v, 1);
-		progress_at(prog, r + 1);
+		progress_at(task, r + 1);
 	}
 }
 
@@ -430,7 +430,7 @@ static void set_pattern(struct vac *g, const uint32_t *cells, uint64_t m)
 }
 
 int vac_run(const struct vac_params *pr, struct frs_matrix *out,
-    struct progress *prog, struct vac_stats *st)
+    struct cli_task *task, struct vac_stats *st)
 {
 	char params[512];
 	struct vac g;
@@ -460,14 +460,14 @@ int vac_run(const struct vac_params *pr, struct frs_matrix *out,
 	moves = relax(&g);
 	for (size_t c = 0; c < g.n; c++)
 		out->v[c] = NONE;
-	remove_clusters(&g, out->v, ones, prog);
+	remove_clusters(&g, out->v, ones, task);
 	/* Back to the relaxed pattern: the cells of ranks below ones.  The
 	 * energies are all exactly 0 again (integer sums). */
 	for (size_t c = 0; c < g.n; c++)
 		if (out->v[c] != NONE)
 			g.one[k++] = (uint32_t)c;	/* scratch, rebuilt below */
 	set_pattern(&g, g.one, k);
-	fill_voids(&g, out->v, ones, prog);
+	fill_voids(&g, out->v, ones, task);
 	if (st != NULL) {
 		st->ones = ones;
 		st->moves = moves;

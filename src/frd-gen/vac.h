@@ -56,7 +56,7 @@
 
 #include "formats/frdio.h"
 
-struct progress;
+struct cli_task;
 
 struct vac_params {
 	unsigned dims;		/* 2 or 3 */
@@ -88,9 +88,10 @@ uint64_t vac_memory(const struct vac_params *pr);
 /* The parameter text stored in the .frd header (method=vac). */
 void vac_describe(const struct vac_params *pr, char *buf, size_t n);
 
-/* Generate; out is allocated.  prog and st may be NULL. */
+/* Generate; out is allocated.  task (cli.h: the progress bar's) and st
+ * may be NULL. */
 int vac_run(const struct vac_params *pr, struct frs_matrix *out,
-    struct progress *prog, struct vac_stats *st);
+    struct cli_task *task, struct vac_stats *st);
 
 /* The size of the initial pattern: ceil(n / 10), at least 1. */
 uint64_t vac_ones(uint64_t n);

@@ -10,7 +10,6 @@
 #include "cli/cli.h"
 #include "frs-sample/sets.h"
 #include "api/api.h"
-#include "base/datadir.h"
 
 static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
@@ -100,10 +99,10 @@ static void parse_steps(struct sets *o, const char *s)
  * (the other shipped files lie beside it), and exit. */
 static noreturn void print_data_dir(void)
 {
-	char path[DATA_PATH_MAX];
+	char path[CLI_PATH_MAX];
 
 	cli_options_done();	/* the fuzz target stops here */
-	if (data_find("default.frd", path, sizeof path) < 0)
+	if (cli_data_file("default.frd", path, sizeof path) < 0)
 		cli_die("--data-dir: no shipped data (%s)", cli_errmsg());
 	*strrchr(path, '/') = '\0';
 	if (printf("%s\n", path) < 0 || fflush(stdout) == EOF)

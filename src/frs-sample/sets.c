@@ -8,7 +8,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
 
-#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,7 +15,6 @@
 #include "cli/cli.h"
 #include "frs-sample/sets.h"
 #include "base/err.h"
-#include "base/progress.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "maps/vol.h"
@@ -148,18 +146,18 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
     const uint32_t *step, size_t k, uint64_t total)
 {
 	struct out *u = ctx;
-	double t0 = progress_now();
+	double t0 = cli_now();
 	int rc = out_begin(u, total), lcol = u->a->level_col;
 	unsigned dims = u->run->dims, ncol = dims + (pdf != NULL ? 1u : 0u) +
 	    (step != NULL ? 1u : 0u) + (lcol ? 1u : 0u);
 
 	u->n = total;
 	if (u->collect) {
-		double t1 = progress_now();
+		double t1 = cli_now();
 		for (size_t i = 0; i < k && u->collect; i++)
 			note_point(u, p + dims * i);
-		u->run->tnote += progress_now() - t1;
-		t0 += progress_now() - t1;
+		u->run->tnote += cli_now() - t1;
+		t0 += cli_now() - t1;
 	}
 	if (rc == 0 && ncol == dims)
 		rc = sets_writer_put(&u->w, p, k);
@@ -185,7 +183,7 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 		}
 		rc = sets_writer_put(&u->w, u->rec, k);
 	}
-	u->run->tout += progress_now() - t0;
+	u->run->tout += cli_now() - t0;
 	return rc;
 }
 
@@ -290,7 +288,7 @@ static void warn3(const struct sets_run *r, int levels)
 
 void sets_matrix(struct sets *a)
 {
-	double t0 = progress_now();
+	double t0 = cli_now();
 	unsigned dims = 0;
 
 	a->loaded = strcmp(a->matrix, "-") != 0;
@@ -298,13 +296,13 @@ void sets_matrix(struct sets *a)
 		a->mask_rc = api_mask_load(&a->mask, a->matrix, &dims,
 		    &a->mask_err);
 	a->dims = dims == 3 ? 3 : 2;
-	a->tload = progress_now() - t0;
+	a->tload = cli_now() - t0;
 }
 
 int sets_default_matrix(struct sets *a, unsigned dims)
 {
-	static char path[PATH_MAX];
-	double t0 = progress_now();
+	static char path[CLI_PATH_MAX];
+	double t0 = cli_now();
 
 	a->mask_rc = frs_default_matrix(&a->mask, dims, path, sizeof path,
 	    &a->mask_err);
@@ -314,7 +312,7 @@ int sets_default_matrix(struct sets *a, unsigned dims)
 	a->loaded = 1;
 	/* One that fails to load is reported as sets_matrix's are. */
 	a->dims = a->mask_rc == FRS_OK ? frs_mask_dims(a->mask) : dims;
-	a->tload = progress_now() - t0;
+	a->tload = cli_now() - t0;
 	return 0;
 }
 
@@ -376,7 +374,7 @@ static int open2(const struct sets *a, struct sets_run *run)
 		imap_free(&map);
 		return rc;
 	}
-	t0 = progress_now();
+	t0 = cli_now();
 	rc = load_mask(a, run);
 	/* The map as sets_map checked it, handed over: no copy, no second
 	 * check. */
@@ -400,7 +398,7 @@ static int open2(const struct sets *a, struct sets_run *run)
 		    &view) < 0)
 			return -1;
 	warn2(run, run->opt.tiling == FRS_TILING_LEVELS);
-	run->tsetup = progress_now() - t0 + a->tload;
+	run->tsetup = cli_now() - t0 + a->tload;
 	plain = run->s0;
 	plain.exact.n = 0;
 	run->tau0 = frs_tau(&plain, plain.n);
@@ -410,7 +408,7 @@ static int open2(const struct sets *a, struct sets_run *run)
 /* The same for a 3-D mask over a volume (the CPU only). */
 static int open3(const struct sets *a, struct sets_run *run)
 {
-	double t0 = progress_now();
+	double t0 = cli_now();
 	struct frs3_prep view;
 	struct frs3_setup plain;
 	struct frs_vol v = a->vol;	/* taken over */
@@ -438,7 +436,7 @@ static int open3(const struct sets *a, struct sets_run *run)
 	plain = run->s3;
 	plain.exact.n = 0;
 	run->tau0 = frs3_tau(&plain, plain.n);
-	run->tsetup = progress_now() - t0 + a->tload;
+	run->tsetup = cli_now() - t0 + a->tload;
 	return 0;
 }
 
@@ -508,9 +506,8 @@ static int write_sets(struct out *u)
 {
 	const struct sets *a = u->a;
 	struct sets_run *run = u->run;
-	struct progress pr;
+	struct cli_task *task = cli_task_begin("sets", a->sets);
 
-	progress_begin(&pr, "sets", a->sets);
 	for (uint64_t set = 0; set < a->sets; set++) {
 		uint64_t c;
 		u->collect = a->verbose && set == 0 && !a->count_only;
@@ -520,36 +517,38 @@ static int write_sets(struct out *u)
 		if (u->collect)
 			reused_shares(u);
 		u->collect = 0;
-		if (c == UINT64_MAX)
+		if (c == UINT64_MAX) {
+			cli_task_drop(task);	/* the message follows */
 			return -1;
+		}
 		if (run->ocl != NULL)
 			add_times(run);
 		run->total += c;
-		progress_update(&pr, set + 1);
+		cli_task_update(task, set + 1);
 	}
-	progress_end(&pr);
+	cli_task_end(task);
 	return 0;
 }
 
 int sets_write(const struct sets *a, struct sets_run *run)
 {
 	struct out u = { .a = a, .run = run };
-	double t1 = progress_now(), t0;
+	double t1 = cli_now(), t0;
 	int rc = write_sets(&u);
 	const frs_mask *mk = run->mask;
 
 	/* A damaged twin .frp shows only when its lists are first read. */
 	if (rc == 0 && frs_mask_note(mk) != NULL && run->note == NULL)
 		frs_warn("%s", frs_mask_note(mk));
-	t0 = progress_now();
+	t0 = cli_now();
 	if (rc == 0 && !a->count_only && sets_writer_end(&u.w) < 0)
 		rc = -1;
 	if (rc < 0 && u.open)
 		outfile_abort(&u.of);
 	else if (rc == 0 && outfile_commit(&u.of) < 0)
 		rc = -1;
-	run->tout += progress_now() - t0;
-	run->tthr = progress_now() - t1 - run->tout - run->tnote;
+	run->tout += cli_now() - t0;
+	run->tthr = cli_now() - t1 - run->tout - run->tnote;
 	run->made = mk->made;
 	run->made_in = mk->frp != NULL ? mk->frp : a->matrix;
 	run->device = run->ocl != NULL ? run->ocl->name : NULL;

@@ -12,7 +12,6 @@
 #include "cli/cli.h"
 #include "hsw-sample/hswrun.h"
 #include "base/par.h"
-#include "base/progress.h"
 
 static const char usage[] =
     "usage: hsw-sample -i IMPORTANCE -n COUNT [--input SET|FILE] [--pdf]\n"
@@ -229,10 +228,10 @@ struct output {
 static int put_round(void *ctx, const double *rec, size_t k)
 {
 	struct output *u = ctx;
-	double t0 = progress_now();
+	double t0 = cli_now();
 	int rc = sets_writer_put(&u->w, rec, k);
 
-	u->t_out += progress_now() - t0;
+	u->t_out += cli_now() - t0;
 	return rc;
 }
 
@@ -244,33 +243,33 @@ static void warp_and_write(struct opts *o, struct hsw_run *r, double *pts,
 	static const char *const names[] = { PTS_COL_PDF };
 	enum hsw_input kind = (enum hsw_input)(o->input == INPUT_DART ?
 	    HSW_HALTON : o->input);
-	struct progress pr;
+	struct cli_task *task;
 	double t0;
 	int rc;
 
 	cli_out_open(&u->of, cli.out, !cli.text);
 	rc = sets_writer_begin(&u->w, u->of.fp, u->of.name, 2,
 	    (unsigned)o->pdf, names, o->sets, o->sets * o->n, cli.text);
-	progress_begin(&pr, "sets", o->sets);
+	task = cli_task_begin("sets", o->sets);
 	for (uint64_t set = 0; rc == 0 && set < o->sets; set++) {
 		if (set > 0 && pts != NULL) {
 			free(pts);
-			t0 = progress_now();
+			t0 = cli_now();
 			pts = make_input(o, cli.seed + set);
-			u->t_input += progress_now() - t0;
+			u->t_input += cli_now() - t0;
 		}
 		u->w.set = set;
 		rc = hsw_run_each(r, kind, pts, o->n, cli.seed + set, o->pdf,
 		    put_round, u);
-		progress_update(&pr, set + 1);
+		cli_task_update(task, set + 1);
 	}
-	progress_end(&pr);
+	cli_task_end(task);
 	free(pts);
-	t0 = progress_now();
+	t0 = cli_now();
 	if (rc == 0)
 		rc = sets_writer_end(&u->w);
 	cli_out_commit(&u->of, rc);
-	u->t_out += progress_now() - t0;
+	u->t_out += cli_now() - t0;
 }
 
 static void report(const struct opts *o, const struct hsw_run *r,
@@ -314,10 +313,10 @@ int main(int argc, char **argv)
 		rc == -2 ? cli_die_device(1) : cli_die_lib();
 	/* Set 0's input before the output opens: its count (a file's, the
 	 * darts placed) goes into the header. */
-	t0 = progress_now();
+	t0 = cli_now();
 	if (whole_input(&o))
 		pts = make_input(&o, cli.seed);
-	u.t_input = progress_now() - t0;
+	u.t_input = cli_now() - t0;
 	warp_and_write(&o, &r, pts, &u);
 	if (o.verbose)
 		report(&o, &r, r.t_tree + u.t_input, u.t_out);

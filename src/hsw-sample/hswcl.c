@@ -7,7 +7,7 @@
 
 #include "base/err.h"
 #include "hsw-sample/hswcl.h"
-#include "base/progress.h"
+#include "cli/cli.h"
 
 /* Most points per kernel launch (256 MiB of coordinates): larger sets
  * go in chunks, so that the buffer fits the device. */
@@ -24,7 +24,7 @@ int hswcl_init(struct hswcl *h, struct ocl *o, const struct hsw_tree *t)
 	cl_ulong maxalloc = 0;
 	size_t wg = 0;
 	uint64_t bytes = tree_nodes(t->levels) * sizeof(double);
-	double t0 = progress_now();
+	double t0 = cli_now();
 
 	memset(h, 0, sizeof *h);
 	h->o = o;
@@ -54,7 +54,7 @@ int hswcl_init(struct hswcl *h, struct ocl *o, const struct hsw_tree *t)
 	if (clGetKernelWorkGroupInfo(h->k, o->device, CL_KERNEL_WORK_GROUP_SIZE,
 	    sizeof wg, &wg, NULL) == CL_SUCCESS && wg > 0 && wg < h->local)
 		h->local = wg;
-	h->t_setup = progress_now() - t0;
+	h->t_setup = cli_now() - t0;
 	return 0;
 fail:
 	hswcl_free(h);
@@ -102,22 +102,22 @@ int hswcl_warp_points(struct hswcl *h, const double *in, double *out,
 	for (uint64_t p = 0; p < n; p += h->max_chunk) {
 		cl_ulong m = n - p < h->max_chunk ? n - p : h->max_chunk;
 		size_t bytes = (size_t)m * 2 * sizeof(double);
-		double t0 = progress_now(), t1, t2;
+		double t0 = cli_now(), t1, t2;
 
 		if (ocl_write(h->o, h->pts, bytes, in + 2 * p) < 0)
 			return -1;
-		t1 = progress_now();
+		t1 = cli_now();
 		if (ocl_args(h->k, 6, sizeof h->sum, &h->sum, sizeof levels,
 		    &levels, sizeof w, &w, sizeof ht, &ht, sizeof h->pts, &h->pts,
 		    sizeof m, &m) < 0 ||
 		    ocl_run(h->o, h->k, (size_t)m, h->local) < 0)
 			return -1;
-		t2 = progress_now();
+		t2 = cli_now();
 		if (ocl_read(h->o, h->pts, bytes, out + 2 * p) < 0)
 			return -1;
 		h->t_write += t1 - t0;
 		h->t_kernel += t2 - t1;
-		h->t_read += progress_now() - t2;
+		h->t_read += cli_now() - t2;
 	}
 	return 0;
 }

@@ -5,7 +5,7 @@
 #include "hsw-sample/hswrun.h"
 #include "base/err.h"
 #include "base/mem.h"
-#include "base/progress.h"
+#include "cli/cli.h"
 
 /* Points per round of warping and handing out: the record buffer
  * (1.5 MiB with the density), filled by all threads, then given to the
@@ -26,7 +26,7 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 		return -2;
 	if (frs_imap_load(&map, src, w, h, flags, NULL) != FRS_OK)
 		goto fail;
-	t0 = progress_now();
+	t0 = cli_now();
 	rc = frs_hsw_new_f64(&r->hw, map.v, map.w, map.h, 0, &err);
 	frs_imap_free(&map);
 	if (rc != FRS_OK) {
@@ -38,7 +38,7 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 		bad = -2;
 		goto fail;
 	}
-	r->t_tree = progress_now() - t0;
+	r->t_tree = cli_now() - t0;
 	return 0;
 fail:
 	frs_hsw_free(r->hw);
@@ -87,7 +87,7 @@ int hsw_run_each(struct hsw_run *r, enum hsw_input kind, double *pts,
 {
 	struct hsw_source src = { kind, n, seed, pts };
 	uint64_t cap = n < ROUND ? n : ROUND;
-	double *rec, t0 = progress_now();
+	double *rec, t0 = cli_now();
 	int rc = -1;
 
 	if (r->cl && pts == NULL)
@@ -102,10 +102,10 @@ int hsw_run_each(struct hsw_run *r, enum hsw_input kind, double *pts,
 
 		if (round_recs(r, &src, pts, pdf, b, m, rec) < 0)
 			goto out;
-		r->t_warp += progress_now() - t0;
+		r->t_warp += cli_now() - t0;
 		if (fn(ctx, rec, (size_t)m) != 0)
 			goto out;
-		t0 = progress_now();
+		t0 = cli_now();
 	}
 	rc = 0;
 out:

@@ -13,7 +13,6 @@
 #include "frs.h"
 #include "cli/cli.h"
 #include "mc-error/integrand.h"
-#include "base/datadir.h"
 #include "base/err.h"
 
 static const char usage[] =
@@ -171,12 +170,12 @@ static void table(FILE *fp, unsigned mask, enum pt_group grp,
 	free(w);
 }
 
-/* The default map: the shipped sunset.exr (datadir.h). */
+/* The default map: the shipped sunset.exr. */
 static const char *default_env(void)
 {
-	static char path[DATA_PATH_MAX];
+	static char path[CLI_PATH_MAX];
 
-	if (data_find("sunset.exr", path, sizeof path) < 0)
+	if (cli_data_file("sunset.exr", path, sizeof path) < 0)
 		cli_die("env: no default environment map (%s); give --env MAP",
 		    cli_errmsg());
 	return path;

@@ -12,7 +12,6 @@
 
 #include "frs.h"
 #include "cli/cli.h"
-#include "base/progress.h"
 
 static const char usage[] =
     "usage: ref-sample -n COUNT [-d DIMS] [-k KIND] [-i IMPORTANCE] [-s WxH]\n"
@@ -322,22 +321,22 @@ static void write_sets(const struct ref_opts *o, struct ref_run *r)
 {
 	struct outfile of;
 	struct sets_writer w;
-	struct progress pr;
+	struct cli_task *task;
 
 	cli_out_open(&of, cli.out, !cli.text);
 	if (sets_writer_begin(&w, of.fp, of.name, o->dims, 0, NULL, o->sets,
 	    o->sets > 1 ? o->sets * o->count : r->placed, cli.text) < 0)
 		write_failed(r, &of);
-	progress_begin(&pr, "sets", o->sets);
+	task = cli_task_begin("sets", o->sets);
 	for (uint64_t set = 0; set < o->sets; set++) {
 		if (set > 0)
 			make_set(o, r, set, &of);
 		w.set = set;
 		if (sets_writer_put(&w, r->xy, (size_t)r->placed) < 0)
 			write_failed(r, &of);
-		progress_update(&pr, set + 1);
+		cli_task_update(task, set + 1);
 	}
-	progress_end(&pr);
+	cli_task_end(task);
 	if (sets_writer_end(&w) < 0)
 		write_failed(r, &of);
 	cli_out_commit(&of, 0);

@@ -1,7 +1,8 @@
 /*
  * Where the shipped data lie (default.frd, default3.frd, sunset.exr):
- * the directories that frs-sample, mc-error and frs_default_matrix look
- * through, wherever the programs or the library were installed.
+ * the directories that frs_default_matrix and, through src/cli's
+ * cli_data_file, frs-sample and mc-error look through, wherever the
+ * programs or the library were installed.
  */
 #ifndef FRS_DATADIR_H
 #define FRS_DATADIR_H

@@ -1,0 +1,78 @@
+/*
+ * The library's program-level services in the programs' words (cli.h):
+ * the clock of -v's timings, tasks of a program's own on the progress
+ * bar (base/progress.h) and the shipped data files (base/datadir.h), so
+ * that a program includes neither header nor sees struct progress.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "cli/cli.h"
+#include "base/datadir.h"
+#include "base/par.h"
+#include "base/progress.h"
+
+#include <stdlib.h>
+
+/* A program's buffers hold what the library's may (frs-sample's default
+ * matrix from api_default_matrix, whose "too long" message names the
+ * size). */
+_Static_assert(CLI_PATH_MAX == DATA_PATH_MAX,
+    "CLI_PATH_MAX is datadir.h's DATA_PATH_MAX");
+
+struct cli_task {
+	struct progress p;
+};
+
+double cli_now(void)
+{
+	return progress_now();
+}
+
+/*
+ * Kept only when somebody listens: a thread with no callback (a worker,
+ * a program's loop run by the tests) and an empty task get NULL, so that
+ * their updates cost a test of the pointer, as progress_update's of
+ * p->on did.  Allocated before the begin's report: a failure leaves no
+ * task begun that nobody ends, only no bar.
+ */
+struct cli_task *cli_task_begin(const char *label, uint64_t total)
+{
+	struct cli_task *t = malloc(sizeof *t);
+
+	if (t == NULL)
+		return NULL;
+	progress_begin(&t->p, label, total);
+	if (t->p.on)
+		return t;
+	free(t);
+	return NULL;
+}
+
+void cli_task_update(struct cli_task *t, uint64_t done)
+{
+	if (t != NULL)
+		progress_update(&t->p, done);
+}
+
+void cli_task_end(struct cli_task *t)
+{
+	if (t != NULL)
+		progress_end(&t->p);
+	free(t);
+}
+
+void cli_task_drop(struct cli_task *t)
+{
+	free(t);
+}
+
+int cli_parallel(uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx,
+    struct cli_task *t)
+{
+	return frs_parallel(n, chunk, fn, ctx, t != NULL ? &t->p : NULL);
+}
+
+int cli_data_file(const char *name, char *path, size_t cap)
+{
+	return data_find(name, path, cap);
+}
