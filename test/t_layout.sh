@@ -113,23 +113,19 @@ fi
 # folder.
 libheaders() {
 	case $1 in
-	dda) echo base/err.h base/mem.h base/num.h base/par.h \
-	    maps/imap.h ;;
-	discrepancy) echo base/err.h base/mem.h base/num.h base/par.h \
-	    base/rng.h ;;
-	frd-gen) echo base/err.h base/io.h base/mem.h base/num.h \
-	    base/ocl.h base/par.h base/parse.h base/rng.h \
-	    formats/frdio.h ;;
+	dda) echo base/mem.h base/num.h maps/imap.h ;;
+	discrepancy) echo base/mem.h base/num.h base/rng.h ;;
+	frd-gen) echo base/io.h base/mem.h base/num.h base/ocl.h \
+	    base/parse.h base/rng.h formats/frdio.h ;;
 	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
 	    formats/frdio.h maps/imap.h maps/pngio.h sample/frpio.h \
 	    sample/frscore.h ;;
-	frs-sample) echo api/api.h base/err.h maps/imap.h \
-	    maps/mapload.h maps/vol.h sample/frscl.h sample/frscore.h ;;
-	hsw-sample) echo api/api.h base/err.h base/mem.h base/ocl.h \
-	    base/par.h sample/hsw.h ;;
+	frs-sample) echo api/api.h maps/imap.h maps/mapload.h \
+	    maps/vol.h sample/frscl.h sample/frscore.h ;;
+	hsw-sample) echo api/api.h base/mem.h base/ocl.h sample/hsw.h ;;
 	imap) echo maps/exrio.h maps/imap.h maps/mapload.h maps/pngio.h \
 	    maps/spec.h maps/vol.h ;;
-	mc-error) echo base/err.h base/num.h maps/imap.h ;;
+	mc-error) echo base/num.h maps/imap.h ;;
 	pts-render) echo ;;
 	ref-sample) echo ;;
 	esac

@@ -281,11 +281,40 @@ struct cli_task *cli_task_begin(const char *label, uint64_t total);
 void cli_task_update(struct cli_task *t, uint64_t done);
 void cli_task_end(struct cli_task *t);
 void cli_task_drop(struct cli_task *t);
-/* frs_parallel (base/par.h) with task t (NULL: none) advanced by the
- * items done, from the calling thread. */
+/*
+ * The library's parallel loops (base/par.h): [0, n) cut into chunks of a
+ * fixed size that the -j threads take in turn, a result depending only
+ * on its chunk.  cli_parallel runs fn(ctx, begin, end) on every chunk,
+ * with task t (NULL: none) advanced by the items done, from the calling
+ * thread: 0, or -1 after the first chunk that failed (its cli_fail
+ * kept).  cli_parallel_if does the same when par is set, else the same
+ * chunks in order on the calling thread.  A team (cli_team_start and
+ * _stop around many tiny steps of cli_team_run) keeps the threads
+ * spinning between them.  cli_threads: the threads they use.
+ */
 int cli_parallel(uint64_t n, uint64_t chunk,
     int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx,
     struct cli_task *t);
+int cli_parallel_if(int par, uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx);
+int cli_team_start(void);
+int cli_team_run(uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx);
+void cli_team_stop(void);
+int cli_threads(void);
+
+/*
+ * A step's failure in the programs' words: the library's error record
+ * (base/err.h) that cli_die_lib and cli_errmsg report, so that a
+ * function of a program returns -1 with its reason as the library's do.
+ * cli_fail_errno appends ": strerror(errno)"; cli_fail_context puts
+ * "context: " before the message recorded; cli_warn prints "prog:
+ * warning: ..." on standard error unless -q.
+ */
+int cli_fail(const char *fmt, ...) CLI_PRINTF(1, 2);
+int cli_fail_errno(const char *fmt, ...) CLI_PRINTF(1, 2);
+int cli_fail_context(const char *context);
+void cli_warn(const char *fmt, ...) CLI_PRINTF(1, 2);
 
 /* A shipped data file's path (sunset.exr, default.frd) into path, cap
  * bytes, CLI_PATH_MAX enough for any: 0.  Else -1, the library's message

@@ -1,15 +1,19 @@
 /*
  * The library's program-level services in the programs' words (cli.h):
  * the clock of -v's timings, tasks of a program's own on the progress
- * bar (base/progress.h) and the shipped data files (base/datadir.h), so
- * that a program includes neither header nor sees struct progress.
+ * bar (base/progress.h), the shipped data files (base/datadir.h) and the
+ * record of a failure (base/err.h), so that a program includes none of
+ * these headers nor sees struct progress.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "cli/cli.h"
 #include "base/datadir.h"
+#include "base/err.h"
 #include "base/par.h"
 #include "base/progress.h"
 
+#include <errno.h>
+#include <stdarg.h>
 #include <stdlib.h>
 
 /* A program's buffers hold what the library's may (frs-sample's default
@@ -72,7 +76,70 @@ int cli_parallel(uint64_t n, uint64_t chunk,
 	return frs_parallel(n, chunk, fn, ctx, t != NULL ? &t->p : NULL);
 }
 
+int cli_parallel_if(int par, uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx)
+{
+	return frs_parallel_if(par, n, chunk, fn, ctx);
+}
+
+int cli_team_start(void)
+{
+	return frs_team_start();
+}
+
+int cli_team_run(uint64_t n, uint64_t chunk,
+    int (*fn)(void *ctx, uint64_t begin, uint64_t end), void *ctx)
+{
+	return frs_team_run(n, chunk, fn, ctx);
+}
+
+void cli_team_stop(void)
+{
+	frs_team_stop();
+}
+
+int cli_threads(void)
+{
+	return frs_threads();
+}
+
 int cli_data_file(const char *name, char *path, size_t cap)
 {
 	return data_find(name, path, cap);
+}
+
+int cli_fail(const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	frs_vfail(fmt, ap, 0);
+	va_end(ap);
+	return -1;
+}
+
+int cli_fail_errno(const char *fmt, ...)
+{
+	int saved = errno;
+	va_list ap;
+
+	va_start(ap, fmt);
+	errno = saved;
+	frs_vfail(fmt, ap, 1);
+	va_end(ap);
+	return -1;
+}
+
+int cli_fail_context(const char *context)
+{
+	return frs_fail_context(context);
+}
+
+void cli_warn(const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	frs_vwarn(fmt, ap);
+	va_end(ap);
 }

@@ -16,7 +16,6 @@
 #include "dda/ddaspec.h"
 #include "dda/density.h"
 #include "dda/plot.h"
-#include "base/err.h"
 #include "dda/spectrum.h"
 
 static const char usage[] =
@@ -203,7 +202,7 @@ static double *scales(const struct opts *o, const struct frs_imap *map,
 		cli_die("no memory for %zu points", s->n);
 	if (dens_scales(s->xy, s->n, map, f) < 0) {
 		free(f);
-		frs_fail_context(s->file);
+		cli_fail_context(s->file);
 		cli_die_lib();
 	}
 	return f;
@@ -297,7 +296,7 @@ static void spectrum_of(const struct opts *o, const struct pt_set *set,
 			free(f);
 		}
 		if (rc < 0) {
-			frs_fail_context(s->file);
+			cli_fail_context(s->file);
 			cli_die_lib();
 		}
 		cli_task_update(task, i + 1);
@@ -349,7 +348,7 @@ static void min_distance(const struct opts *o, const struct pt_set *s,
 	    dmin);
 
 	if (rc < 0) {
-		frs_fail_context(s->file);
+		cli_fail_context(s->file);
 		cli_die_lib();
 	}
 	*rho = s->dims == 3 ? dens_rho3(*dmin, s->n) : dens_rho(*dmin, s->n);
@@ -406,7 +405,7 @@ static double *rdf_of(const struct opts *o, const struct pt_set *set,
 			    s->file);
 		if (dens_rdf_add(s->xy, s->n, f, o->torus, rmax, bins, 1,
 		    acc) < 0) {
-			frs_fail_context(s->file);
+			cli_fail_context(s->file);
 			cli_die_lib();
 		}
 		free(f);
@@ -489,7 +488,7 @@ static void page_alloc(const struct opts *o, size_t ngroups,
 	h = PG_TOP + pg->side + PG_GAP + 3 * ((uint64_t)pg->ph + PG_PLOT_EXTRA);
 	if (w > UINT32_MAX || raster_alloc(&pg->r, (uint32_t)w, (uint32_t)h,
 	    3) < 0) {
-		frs_fail("%s: a page of %llu x %llu pixels for %zu files is "
+		cli_fail("%s: a page of %llu x %llu pixels for %zu files is "
 		    "too large (fewer files or a smaller --size)", o->png,
 		    (unsigned long long)w, (unsigned long long)h, ngroups);
 		cli_die_lib();

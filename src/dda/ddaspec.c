@@ -15,8 +15,7 @@
 #include <string.h>
 
 #include "dda/ddaspec.h"
-#include "base/err.h"
-#include "base/par.h"
+#include "cli/cli.h"
 
 #define PT_CHUNK 16	/* points per parallel chunk */
 #define ROW_CHUNK 16	/* image rows per parallel chunk */
@@ -203,7 +202,7 @@ static int pairs_chunk(void *ctx, uint64_t b, uint64_t e)
 			if (!atomic_flag_test_and_set(&d->slots[k].busy))
 				sl = &d->slots[k];
 		if (sl == NULL)
-			return frs_fail("dda: no free accumulator");
+			return cli_fail("dda: no free accumulator");
 	}
 	for (uint64_t i = b; i < e; i++)
 		cnt += visit(d, (size_t)i, sl);
@@ -242,7 +241,7 @@ static int64_t *edge_counts(const struct dda *d, double h, double ru)
 	out = malloc(side * side * sizeof *out);
 	if (diff == NULL || out == NULL) {
 		free(diff), free(out);
-		frs_fail("dda: no memory for a %zu x %zu image", side, side);
+		cli_fail("dda: no memory for a %zu x %zu image", side, side);
 		return NULL;
 	}
 	for (size_t i = 0; i < d->n; i++) {
@@ -288,26 +287,26 @@ static int check_args(const double *xy, size_t n, const double *f,
     double eps, uint32_t half, double sigma_px, const double *acc)
 {
 	if (xy == NULL || acc == NULL)
-		return frs_fail("dda: no points or no image");
+		return cli_fail("dda: no points or no image");
 	if (n < 2)
-		return frs_fail("dda: %zu points; the analysis needs at least 2",
+		return cli_fail("dda: %zu points; the analysis needs at least 2",
 		    n);
 	if (!(eps > 0.0) || !isfinite(eps))
-		return frs_fail("dda: neighbourhood eps = %g must be positive "
+		return cli_fail("dda: neighbourhood eps = %g must be positive "
 		    "and finite", eps);
 	if (half < 1 || half > DDA_MAX_HALF)
-		return frs_fail("dda: image half size %u out of range 1..%u",
+		return cli_fail("dda: image half size %u out of range 1..%u",
 		    half, DDA_MAX_HALF);
 	if (!(sigma_px >= 0.0) || !(sigma_px <= (double)DDA_MAX_HALF))
-		return frs_fail("dda: kernel sigma %g pixels out of range "
+		return cli_fail("dda: kernel sigma %g pixels out of range "
 		    "0..%u", sigma_px, DDA_MAX_HALF);
 	for (size_t i = 0; i < n; i++) {
 		double x = xy[2 * i], y = xy[2 * i + 1];
 		if (!(x >= 0.0 && x < 1.0 && y >= 0.0 && y < 1.0))
-			return frs_fail("dda: point %zu (%g, %g) lies outside "
+			return cli_fail("dda: point %zu (%g, %g) lies outside "
 			    "[0,1)^2", i, x, y);
 		if (f != NULL && !(f[i] > 0.0 && isfinite(f[i])))
-			return frs_fail("dda: scale of point %zu is %g; it must "
+			return cli_fail("dda: scale of point %zu is %g; it must "
 			    "be positive and finite", i, f[i]);
 	}
 	return 0;
@@ -330,7 +329,7 @@ static int build_grid(struct dda *d)
 	if (d->start == NULL || d->order == NULL || d->cfmin == NULL ||
 	    cell == NULL) {
 		free(cell);
-		return frs_fail("dda: no memory for %zu points", n);
+		return cli_fail("dda: no memory for %zu points", n);
 	}
 	for (size_t c = 0; c < g2; c++)
 		d->cfmin[c] = INFINITY;
@@ -352,7 +351,7 @@ static int build_grid(struct dda *d)
 		size_t *pos = malloc(g2 * sizeof *pos);
 		if (pos == NULL) {
 			free(cell);
-			return frs_fail("dda: no memory for %zu points", n);
+			return cli_fail("dda: no memory for %zu points", n);
 		}
 		memcpy(pos, d->start, g2 * sizeof *pos);
 		for (size_t i = 0; i < n; i++)
@@ -409,7 +408,7 @@ int dda_add(const double *xy, size_t n, const double *f, double eps,
 	bound = (uint64_t)n * (uint64_t)(n - 1);
 	if (n > UINT32_MAX || bitlen(bound) > 62 - 2 * WBITS) {
 		d.splat = 0;
-		if (frs_parallel_if(par, n, PT_CHUNK, pairs_chunk, &d) < 0)
+		if (cli_parallel_if(par, n, PT_CHUNK, pairs_chunk, &d) < 0)
 			goto out;
 		bound = atomic_load(&d.pairs);
 		atomic_store(&d.pairs, 0);
@@ -418,7 +417,7 @@ int dda_add(const double *xy, size_t n, const double *f, double eps,
 	d.s = d.s > WBITS ? WBITS : d.s;
 	d.one = ldexp(1.0, d.s);
 	if (d.s < 4) {
-		frs_fail("dda: too many pairs (%llu) within eps",
+		cli_fail("dda: too many pairs (%llu) within eps",
 		    (unsigned long long)bound);
 		goto out;
 	}
@@ -426,12 +425,12 @@ int dda_add(const double *xy, size_t n, const double *f, double eps,
 	/* Splat into one integer image per running thread. */
 	{
 		uint64_t nchunks = (n + PT_CHUNK - 1) / PT_CHUNK;
-		int nt = par ? frs_threads() : 1;
+		int nt = par ? cli_threads() : 1;
 		d.nslots = (uint64_t)nt < nchunks ? nt : (int)nchunks;
 	}
 	d.slots = calloc((size_t)d.nslots, sizeof *d.slots);
 	if (d.slots == NULL) {
-		frs_fail("dda: no memory");
+		cli_fail("dda: no memory");
 		goto out;
 	}
 	for (int k = 0; k < d.nslots; k++) {
@@ -442,7 +441,7 @@ int dda_add(const double *xy, size_t n, const double *f, double eps,
 		sl->img = calloc(npix, sizeof *sl->img);
 		sl->scratch = aligned_alloc(64, (3 * tb + 63) / 64 * 64);
 		if (sl->img == NULL || sl->scratch == NULL) {
-			frs_fail("dda: no memory for a %zu x %zu image", side,
+			cli_fail("dda: no memory for a %zu x %zu image", side,
 			    side);
 			goto out;
 		}
@@ -451,7 +450,7 @@ int dda_add(const double *xy, size_t n, const double *f, double eps,
 		sl->wy = (int64_t *)((char *)sl->scratch + 2 * tb);
 	}
 	d.splat = 1;
-	if (frs_parallel_if(par, n, PT_CHUNK, pairs_chunk, &d) < 0)
+	if (cli_parallel_if(par, n, PT_CHUNK, pairs_chunk, &d) < 0)
 		goto out;
 
 	ecount = edge_counts(&d, h, ru);
@@ -461,7 +460,7 @@ int dda_add(const double *xy, size_t n, const double *f, double eps,
 	d.acc = acc;
 	/* (4) with E = (ecount(p) + ecount(mirror p)) / 2 */
 	d.k = ldexp(1.0, 1 - 2 * d.s) / ((nn - 1.0) * (h * ru) * (h * ru));
-	rc = frs_parallel_if(par, side, ROW_CHUNK, norm_chunk, &d);
+	rc = cli_parallel_if(par, side, ROW_CHUNK, norm_chunk, &d);
 out:
 	if (d.slots != NULL)
 		for (int k = 0; k < d.nslots; k++) {

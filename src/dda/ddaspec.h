@@ -98,7 +98,7 @@
  * 1 <= half <= DDA_MAX_HALF, sigma_px >= 0 (pixels).  par: run on the
  * threads of frs_set_threads (the result is the same either way, bit for
  * bit).  To average m sets, add each and divide acc by m.  Returns 0, or
- * -1 with frs_fail (acc unchanged) for bad arguments or no memory. */
+ * -1 with cli_fail (acc unchanged) for bad arguments or no memory. */
 int dda_add(const double *xy, size_t n, const double *f, double eps,
     uint32_t half, double sigma_px, int par, double *acc);
 

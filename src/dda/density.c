@@ -10,10 +10,9 @@
 #include <stdlib.h>
 
 #include "dda/density.h"
-#include "base/err.h"
+#include "cli/cli.h"
 #include "base/num.h"
 #include "maps/imap.h"
-#include "base/par.h"
 
 #define CHUNK 2048		/* sorted points per parallel chunk */
 #define MAX_BINS ((size_t)1 << 24)
@@ -35,7 +34,7 @@ static int check_point(const double *xy, size_t i)
 	double x = xy[2 * i], y = xy[2 * i + 1];
 
 	if (!(x >= 0 && x < 1 && y >= 0 && y < 1))
-		return frs_fail("point %zu (%.17g, %.17g) is outside [0, 1)^2",
+		return cli_fail("point %zu (%.17g, %.17g) is outside [0, 1)^2",
 		    i, x, y);
 	return 0;
 }
@@ -54,7 +53,7 @@ int dens_scales(const double *xy, size_t n, const struct frs_imap *map,
 	size_t np;
 
 	if (n > 0 && (xy == NULL || f == NULL))
-		return frs_fail("density scales: no points or no output");
+		return cli_fail("density scales: no points or no output");
 	for (size_t i = 0; i < n; i++)
 		if (check_point(xy, i) < 0)
 			return -1;
@@ -64,25 +63,25 @@ int dens_scales(const double *xy, size_t n, const struct frs_imap *map,
 		return 0;
 	}
 	if (map->w == 0 || map->h == 0 || map->v == NULL)
-		return frs_fail("importance map is empty");
+		return cli_fail("importance map is empty");
 	np = (size_t)map->w * map->h;
 	for (size_t k = 0; k < np; k++) {
 		double v = map->v[k];
 		if (!isfinite(v))
-			return frs_fail("importance map: pixel (%zu, %zu) is "
+			return cli_fail("importance map: pixel (%zu, %zu) is "
 			    "%g", k % map->w, k / map->w, v);
 		num_add(&sum, v);
 	}
 	mean = num_total(&sum) / (double)np;
 	if (!(mean > 0) || !isfinite(mean))
-		return frs_fail("importance map: mean importance %g is not "
+		return cli_fail("importance map: mean importance %g is not "
 		    "positive and finite", mean);
 	for (size_t i = 0; i < n; i++) {
 		size_t px = pixel_of(xy[2 * i], map->w);
 		size_t py = pixel_of(xy[2 * i + 1], map->h);
 		double v = map->v[py * map->w + px];
 		if (!(v > 0))
-			return frs_fail("point %zu (%.17g, %.17g) lies on pixel "
+			return cli_fail("point %zu (%.17g, %.17g) lies on pixel "
 			    "(%zu, %zu) of importance %g: no local spacing",
 			    i, xy[2 * i], xy[2 * i + 1], px, py, v);
 		f[i] = sqrt(v / mean);
@@ -153,12 +152,12 @@ static int grid_build(struct grid *gr, const double *xy, size_t n,
 	gr->start = NULL;
 	gr->p = NULL;
 	if (xy == NULL)
-		return frs_fail("no points");
+		return cli_fail("no points");
 	for (size_t i = 0; i < n; i++) {
 		if (check_point(xy, i) < 0)
 			return -1;
 		if (f != NULL && !(f[i] > 0 && f[i] <= DBL_MAX))
-			return frs_fail("point %zu: scale %g is not positive "
+			return cli_fail("point %zu: scale %g is not positive "
 			    "and finite", i, f[i]);
 	}
 	if (g < 1)
@@ -173,7 +172,7 @@ static int grid_build(struct grid *gr, const double *xy, size_t n,
 	cnt = gr->start;
 	if (gr->start == NULL || gr->p == NULL) {
 		grid_free(gr);
-		return frs_fail("no memory for the cell grid of %zu points", n);
+		return cli_fail("no memory for the cell grid of %zu points", n);
 	}
 	for (size_t i = 0; i < n; i++) {
 		size_t c = cell_of(xy[2 * i + 1], g) * g + cell_of(xy[2 * i], g);
@@ -345,10 +344,10 @@ static void search(struct visit *v, size_t s)
 static int min_args(size_t n, const double *dmin)
 {
 	if (n < 2)
-		return frs_fail("minimum distance: %zu point%s, at least 2 "
+		return cli_fail("minimum distance: %zu point%s, at least 2 "
 		    "needed", n, n == 1 ? "" : "s");
 	if (dmin == NULL)
-		return frs_fail("minimum distance: no output");
+		return cli_fail("minimum distance: no output");
 	return 0;
 }
 
@@ -363,10 +362,10 @@ static int min_chunks(size_t n, int (*fn)(void *, uint64_t, uint64_t),
 	int rc;
 
 	if ((*best = malloc(nchunks * sizeof **best)) == NULL)
-		return frs_fail("no memory for %zu chunks", nchunks);
+		return cli_fail("no memory for %zu chunks", nchunks);
 	for (size_t c = 0; c < nchunks; c++)
 		(*best)[c] = start;
-	rc = frs_parallel_if(par, n, CHUNK, fn, job);
+	rc = cli_parallel_if(par, n, CHUNK, fn, job);
 	for (size_t c = 0; rc == 0 && c < nchunks; c++)
 		m = (*best)[c] < m ? (*best)[c] : m;
 	free(*best);
@@ -413,7 +412,7 @@ int dens_min_distance_rule(const double *xy, size_t n, const double *f,
 	if (min_args(n, dmin) < 0)
 		return -1;
 	if (rule != DENS_GEOMETRIC && rule != DENS_MAX)
-		return frs_fail("minimum distance: unknown pair rule %d",
+		return cli_fail("minimum distance: unknown pair rule %d",
 		    (int)rule);
 	if (grid_build(&gr, xy, n, f, torus) < 0)
 		return -1;
@@ -473,7 +472,7 @@ static int check_point3(const double *xyz, size_t i)
 
 	if (!(p[0] >= 0 && p[0] < 1 && p[1] >= 0 && p[1] < 1 && p[2] >= 0 &&
 	    p[2] < 1))
-		return frs_fail("point %zu (%.17g, %.17g, %.17g) is outside "
+		return cli_fail("point %zu (%.17g, %.17g, %.17g) is outside "
 		    "[0, 1)^3", i, p[0], p[1], p[2]);
 	return 0;
 }
@@ -488,7 +487,7 @@ static int cells3_build(struct cells3 *gr, const double *xyz, size_t n,
 	gr->start = NULL;
 	gr->p = NULL;
 	if (xyz == NULL)
-		return frs_fail("no points");
+		return cli_fail("no points");
 	for (size_t i = 0; i < n; i++)
 		if (check_point3(xyz, i) < 0)
 			return -1;
@@ -499,7 +498,7 @@ static int cells3_build(struct cells3 *gr, const double *xyz, size_t n,
 	gr->p = malloc(n * sizeof *gr->p);
 	if (gr->start == NULL || gr->p == NULL) {
 		cells3_free(gr);
-		return frs_fail("no memory for the cell grid of %zu points", n);
+		return cli_fail("no memory for the cell grid of %zu points", n);
 	}
 	for (size_t i = 0; i < n; i++) {
 		struct pt3 q;
@@ -711,7 +710,7 @@ static int rdf_chunk(void *ctx, uint64_t b, uint64_t e)
 
 	v.hist = calloc(j->nbins, sizeof *v.hist);
 	if (v.hist == NULL)
-		return frs_fail("no memory for %zu bins", j->nbins);
+		return cli_fail("no memory for %zu bins", j->nbins);
 	for (uint64_t s = b; s < e; s++)
 		search(&v, (size_t)s);
 	for (size_t k = 0; k < j->nbins; k++)
@@ -730,16 +729,16 @@ int dens_rdf_add(const double *xy, size_t n, const double *f, int torus,
 	int rc;
 
 	if (n < 2)
-		return frs_fail("radial distribution: %zu point%s, at least 2 "
+		return cli_fail("radial distribution: %zu point%s, at least 2 "
 		    "needed", n, n == 1 ? "" : "s");
 	if (nbins < 1 || nbins > MAX_BINS)
-		return frs_fail("radial distribution: %zu bins, 1 to %zu "
+		return cli_fail("radial distribution: %zu bins, 1 to %zu "
 		    "allowed", nbins, MAX_BINS);
 	if (acc == NULL)
-		return frs_fail("radial distribution: no output");
+		return cli_fail("radial distribution: no output");
 	rmax = rmax_ru * dens_spacing((double)n);
 	if (!(rmax > 0) || !(rmax <= dens_rdf_limit(torus)))
-		return frs_fail("radial distribution: rmax %g r_u = %g is not "
+		return cli_fail("radial distribution: rmax %g r_u = %g is not "
 		    "in (0, %g] (%s distance of %zu points)", rmax_ru, rmax,
 		    dens_rdf_limit(torus), torus ? "toroidal" : "plain", n);
 	if (grid_build(&gr, xy, n, f, torus) < 0)
@@ -751,11 +750,11 @@ int dens_rdf_add(const double *xy, size_t n, const double *f, int torus,
 	j.count = malloc(nbins * sizeof *j.count);
 	if (j.count == NULL) {
 		grid_free(&gr);
-		return frs_fail("no memory for %zu bins", nbins);
+		return cli_fail("no memory for %zu bins", nbins);
 	}
 	for (size_t k = 0; k < nbins; k++)
 		atomic_init(&j.count[k], 0);
-	rc = frs_parallel_if(par, n, CHUNK, rdf_chunk, &j);
+	rc = cli_parallel_if(par, n, CHUNK, rdf_chunk, &j);
 	grid_free(&gr);
 	if (rc == 0) {
 		npairs = (double)n * (double)(n - 1) / 2;

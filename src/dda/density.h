@@ -60,7 +60,7 @@ double dens_spacing(double n);
  * row 0 at the top; a point's importance is its pixel's value, pixel
  * index floor(x W) clamped to W - 1; the mean is over all W H pixels,
  * compensated sum); map NULL: all 1.  The local spacing is r(x) = r_u / f.
- * -1 with frs_fail for a point on a pixel of zero (or negative, non-finite)
+ * -1 with cli_fail for a point on a pixel of zero (or negative, non-finite)
  * importance, naming the point index and the pixel, for a point outside
  * [0, 1)^2, or an all-zero or non-finite map.
  */
@@ -88,7 +88,7 @@ int dens_min_distance(const double *xy, size_t n, const double *f, int torus,
 enum dens_rule { DENS_GEOMETRIC, DENS_MAX };
 
 /* dens_min_distance under RULE: exactly the brute-force minimum of the
- * keys of RULE; -1 with frs_fail for an unknown RULE. */
+ * keys of RULE; -1 with cli_fail for an unknown RULE. */
 int dens_min_distance_rule(const double *xy, size_t n, const double *f,
     enum dens_rule rule, int torus, int par, double *dmin);
 

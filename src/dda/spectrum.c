@@ -6,11 +6,9 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "dda/spectrum.h"
-#include "base/err.h"
 #include "base/num.h"
 #include "base/mem.h"
 #include "cli/cli.h"
-#include "base/par.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -27,10 +25,10 @@ int spec_img_alloc(struct spec_img *im, uint32_t half, double scale)
 	im->scale = scale;
 	im->v = NULL;
 	if (!(scale > 0.0) || !isfinite(scale))
-		return frs_fail("spectrum image: scale %g is not finite and "
+		return cli_fail("spectrum image: scale %g is not finite and "
 		    "positive", scale);
 	if (half > SPEC_MAX_HALF)
-		return frs_fail("spectrum image: half side %u is more than "
+		return cli_fail("spectrum image: half side %u is more than "
 		    "%u", half, SPEC_MAX_HALF);
 	im->v = mem_calloc("spectrum image", side * side, sizeof *im->v);
 	if (im->v == NULL)
@@ -48,15 +46,15 @@ static int check_input(const double *xy, size_t n,
     const struct spec_img *im, const char *what)
 {
 	if (im == NULL || im->v == NULL)
-		return frs_fail("%s: no image", what);
+		return cli_fail("%s: no image", what);
 	if (im->scale != 1.0)
-		return frs_fail("%s: the image's scale is %g, not 1 (integer "
+		return cli_fail("%s: the image's scale is %g, not 1 (integer "
 		    "frequencies)", what, im->scale);
 	if (n == 0 || xy == NULL)
-		return frs_fail("%s: no points", what);
+		return cli_fail("%s: no points", what);
 	for (size_t i = 0; i < 2 * n; i++)
 		if (!isfinite(xy[i]))
-			return frs_fail("%s: point %zu: coordinate %c is not "
+			return cli_fail("%s: point %zu: coordinate %c is not "
 			    "finite", what, i / 2, i % 2 ? 'y' : 'x');
 	return 0;
 }
@@ -267,7 +265,7 @@ int spec_fourier_exact(const double *xy, size_t n, int par,
 	c.yp = malloc(c.np * NR * nbmax * sizeof *c.yp);
 	c.g = malloc(c.mp * MR * c.ldg * sizeof *c.g);
 	if (c.xp == NULL || c.yp == NULL || c.g == NULL) {
-		rc = frs_fail("exact Fourier spectrum: no memory for K = %u",
+		rc = cli_fail("exact Fourier spectrum: no memory for K = %u",
 		    c.K);
 		goto out;
 	}
@@ -275,12 +273,12 @@ int spec_fourier_exact(const double *xy, size_t n, int par,
 		c.n0 = n0;
 		c.nb = n - n0 < EX_NB ? n - n0 : EX_NB;
 		c.first = n0 == 0;
-		rc = frs_parallel_if(par, c.nb, EX_PTS, exact_factors, &c);
+		rc = cli_parallel_if(par, c.nb, EX_PTS, exact_factors, &c);
 		if (rc == 0)
-			rc = frs_parallel_if(par, c.mp, 2, exact_gemm, &c);
+			rc = cli_parallel_if(par, c.mp, 2, exact_gemm, &c);
 	}
 	if (rc == 0)
-		rc = frs_parallel_if(par, c.rows, 16, exact_pixels, &c);
+		rc = cli_parallel_if(par, c.rows, 16, exact_pixels, &c);
 out:
 	free(c.xp);
 	free(c.yp);
@@ -365,7 +363,7 @@ static int nu_rows(void *ctx, uint64_t b, uint64_t e)
 	double *z = malloc(2 * N * sizeof *z);
 
 	if (z == NULL)
-		return frs_fail("approximate Fourier spectrum: no memory");
+		return cli_fail("approximate Fourier spectrum: no memory");
 	for (size_t q = (size_t)b; q < (size_t)e; q++) {
 		const double *g0 = c->grid + 2 * q * N, *g1 = g0 + N;
 		double *h0 = c->h + 2 * (2 * q * K1), *h1 = h0 + 2 * K1;
@@ -398,7 +396,7 @@ static int nu_cols(void *ctx, uint64_t b, uint64_t e)
 	double *z = malloc(2 * N * sizeof *z);
 
 	if (z == NULL)
-		return frs_fail("approximate Fourier spectrum: no memory");
+		return cli_fail("approximate Fourier spectrum: no memory");
 	for (size_t kx = (size_t)b; kx < (size_t)e; kx++) {
 		for (size_t m = 0; m < N; m++) {
 			z[2 * m] = c->h[2 * (m * K1 + kx)];
@@ -446,7 +444,7 @@ int spec_fourier_approx(const double *xy, size_t n, int par,
 	c.dec = malloc(((size_t)c.K + 1) * sizeof *c.dec);
 	if (c.start == NULL || pos == NULL || c.u == NULL || c.grid == NULL ||
 	    c.h == NULL || c.dec == NULL) {
-		rc = frs_fail("approximate Fourier spectrum: no memory for a "
+		rc = cli_fail("approximate Fourier spectrum: no memory for a "
 		    "%zu x %zu grid", c.N, c.N);
 		goto out;
 	}
@@ -481,11 +479,11 @@ int spec_fourier_approx(const double *xy, size_t n, int par,
 		c.dec[k] = exp(2.0 * NUM_PI * NUM_PI * c.s2 * t * t) /
 		    sqrt(2.0 * NUM_PI * c.s2);
 	}
-	rc = frs_parallel_if(par, c.N, NU_STRIP, nu_spread, &c);
+	rc = cli_parallel_if(par, c.N, NU_STRIP, nu_spread, &c);
 	if (rc == 0)
-		rc = frs_parallel_if(par, c.N / 2, 8, nu_rows, &c);
+		rc = cli_parallel_if(par, c.N / 2, 8, nu_rows, &c);
 	if (rc == 0)
-		rc = frs_parallel_if(par, (uint64_t)c.K + 1, 4, nu_cols, &c);
+		rc = cli_parallel_if(par, (uint64_t)c.K + 1, 4, nu_cols, &c);
 out:
 	MEM_FREE(c.start, pos, c.u, c.grid, c.h, c.dec);
 	return rc;
@@ -524,14 +522,14 @@ int spec_radial(const struct spec_img *im, double bin, struct spec_radial *r)
 
 	memset(r, 0, sizeof *r);
 	if (im == NULL || im->v == NULL)
-		return frs_fail("radial statistics: no image");
+		return cli_fail("radial statistics: no image");
 	if (!(bin > 0.0) || !isfinite(bin))
-		return frs_fail("radial statistics: annulus width %g is not "
+		return cli_fail("radial statistics: annulus width %g is not "
 		    "finite and positive", bin);
 	side = 2 * (size_t)im->half + 1;
 	rmax = (double)im->half * im->scale;
 	if (rmax / bin > (double)(1 << 24))
-		return frs_fail("radial statistics: annulus width %g gives "
+		return cli_fail("radial statistics: annulus width %g gives "
 		    "more than 2^24 annuli", bin);
 	nb = (size_t)floor(rmax / bin);
 	while ((double)(nb + 1) * bin <= rmax)
@@ -539,11 +537,11 @@ int spec_radial(const struct spec_img *im, double bin, struct spec_radial *r)
 	while (nb > 0 && (double)nb * bin > rmax)
 		nb--;
 	if (nb == 0)
-		return frs_fail("radial statistics: annulus width %g is more "
+		return cli_fail("radial statistics: annulus width %g is more "
 		    "than the image's radius %g", bin, rmax);
 	for (size_t i = 0; i < side * side; i++)
 		if (!isfinite(im->v[i]))
-			return frs_fail("radial statistics: pixel (%zu, %zu) "
+			return cli_fail("radial statistics: pixel (%zu, %zu) "
 			    "is not finite", i % side, i / side);
 	r->nbins = nb;
 	r->lo = malloc(nb * sizeof *r->lo);
@@ -553,7 +551,7 @@ int spec_radial(const struct spec_img *im, double bin, struct spec_radial *r)
 	s = calloc(nb, sizeof *s);
 	if (r->lo == NULL || r->mean == NULL || r->aniso == NULL ||
 	    r->count == NULL || s == NULL) {
-		rc = frs_fail("radial statistics: no memory for %zu annuli",
+		rc = cli_fail("radial statistics: no memory for %zu annuli",
 		    nb);
 		spec_radial_free(r);
 		goto out;
@@ -624,13 +622,13 @@ int spec_write_png(FILE *fp, const char *name, const struct spec_img *im,
 	int rc;
 
 	if (im == NULL || im->v == NULL)
-		return frs_fail("%s: no spectrum image", name);
+		return cli_fail("%s: no spectrum image", name);
 	if (!isfinite(lo_db) || !isfinite(hi_db) || !(lo_db < hi_db))
-		return frs_fail("%s: colour scale %g dB to %g dB is not an "
+		return cli_fail("%s: colour scale %g dB to %g dB is not an "
 		    "increasing finite range", name, lo_db, hi_db);
 	side = 2 * (size_t)im->half + 1;
 	if (raster_alloc(&r, (uint32_t)side, (uint32_t)side, 1) < 0)
-		return frs_fail_context(name);
+		return cli_fail_context(name);
 	for (size_t i = 0; i < side * side; i++)
 		r.px[i] = spec_grey(im->v[i], lo_db, hi_db);
 	rc = raster_write_png(fp, name, &r);

@@ -16,10 +16,10 @@
  * at the top of the PNG, is ky = -half (y grows downward, as in the
  * point images).
  *
- * Both methods split their work with frs_parallel (when par is not 0;
+ * Both methods split their work with cli_parallel (when par is not 0;
  * otherwise the same chunks run in order on the calling thread) over
  * fixed chunks: the result is the same bit for bit for any thread count
- * and either par.  Errors: -1 with frs_fail (no points, a non-finite
+ * and either par.  Errors: -1 with cli_fail (no points, a non-finite
  * coordinate, an image whose scale is not 1, out of memory); bad input
  * is found before the image is touched, but running out of memory half
  * way may leave it partly updated.

@@ -18,7 +18,7 @@
 
 #include "discrepancy/disc.h"
 #include "discrepancy/discint.h"
-#include "base/err.h"
+#include "cli/cli.h"
 #include "discrepancy/geom.h"
 
 static const char *const names[] = { "star", "rect", "quad", "half",
@@ -37,7 +37,7 @@ int disc_parse_class(const char *s, enum disc_class *c)
 		    DISC_HALF;
 		return 0;
 	}
-	return frs_fail("unknown class '%s' (star, rect, quad, half or "
+	return cli_fail("unknown class '%s' (star, rect, quad, half or "
 	    "circle)", s);
 }
 
@@ -91,7 +91,7 @@ static int pair_sum(const double *xy, size_t n, const double *u,
 
 	if (ox == NULL || rank == NULL || t == NULL) {
 		free(ox), free(rank), free(t);
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	}
 	if (disc_order(xy, n, 2, ox) < 0 || disc_order(xy + 1, n, 2,
 	    ox + n) < 0) {
@@ -164,7 +164,7 @@ static int l2_sums(const double *xy, size_t n,
 	int rc;
 
 	if (u == NULL)
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	*single = dd_from(0.0);
 	for (size_t i = 0; i < n; i++)
 		*single = dd_add(*single, corners(xy[2 * i], xy[2 * i + 1],
@@ -202,7 +202,7 @@ double disc_star_l2_grid(const double *xy, size_t n, uint32_t s)
 	struct dd pairs, single = dd_from(0.0), sq = dd_from(0.0);
 
 	if (u == NULL)
-		return frs_fail("no memory for %zu points", n), -1.0;
+		return cli_fail("no memory for %zu points", n), -1.0;
 	for (size_t i = 0; i < n; i++) {
 		double kx = disc_star_bin(xy[2 * i], s);
 		double ky = disc_star_bin(xy[2 * i + 1], s);
@@ -234,7 +234,7 @@ double disc_rect_l2_grid(const double *xy, size_t n, uint32_t s)
 	struct dd pairs, single = dd_from(0.0), sq = dd_from(0.0);
 
 	if (u == NULL)
-		return frs_fail("no memory for %zu points", n), -1.0;
+		return cli_fail("no memory for %zu points", n), -1.0;
 	for (size_t i = 0; i < n; i++) {
 		double w[2];
 		for (int c = 0; c < 2; c++) {
@@ -272,7 +272,7 @@ struct disc_ctx *disc_ctx_new(const struct disc_opts *o)
 	struct disc_ctx *c = calloc(1, sizeof *c);
 
 	if (c == NULL) {
-		frs_fail("no memory");
+		cli_fail("no memory");
 		return NULL;
 	}
 	c->o = *o;
@@ -332,7 +332,7 @@ int disc_set(struct disc_ctx *c, const double *xy, size_t n, int par,
 	int rc;
 
 	if (n == 0)
-		return frs_fail("no points");
+		return cli_fail("no points");
 	switch (o->cls) {
 	case DISC_STAR:
 	case DISC_RECT:
@@ -358,24 +358,24 @@ static int grid3_needed(const struct disc_opts *o)
 int disc_check(const struct disc_opts *o, unsigned dims, size_t n)
 {
 	if (n == 0)
-		return frs_fail("no points");
+		return cli_fail("no points");
 	if (dims == 2)
 		return 0;
 	if (dims != 3)
-		return frs_fail("%u-dimensional points; 2 or 3 are needed",
+		return cli_fail("%u-dimensional points; 2 or 3 are needed",
 		    dims);
 	if (o->cls != DISC_STAR)
-		return frs_fail("class %s is 2-D only; 3-D sets take the star class",
+		return cli_fail("class %s is 2-D only; 3-D sets take the star class",
 		    disc_class_name(o->cls));
 	if (o->exact_d2 && !o->no_d2 && n > DISC3_MAX_EXACT_D2)
-		return frs_fail("%zu points: the closed-form 3-D D2 uses "
+		return cli_fail("%zu points: the closed-form 3-D D2 uses "
 		    "32-bit ranks and is limited to %zu points", n,
 		    DISC3_MAX_EXACT_D2);
 	if (o->exact_dinf && !o->no_dinf && n > DISC3_MAX_EXACT_N)
-		return frs_fail("%zu points: the exact 3-D Dinf takes O(n^3) "
+		return cli_fail("%zu points: the exact 3-D Dinf takes O(n^3) "
 		    "time and is limited to %d points", n, DISC3_MAX_EXACT_N);
 	if (grid3_needed(o) && (o->grid < 2 || o->grid > DISC3_MAX_GRID))
-		return frs_fail("grid %u: a 3-D grid has s^3 boxes and takes "
+		return cli_fail("grid %u: a 3-D grid has s^3 boxes and takes "
 		    "O(s^3) time; 2 to %d allowed", o->grid, DISC3_MAX_GRID);
 	return 0;
 }

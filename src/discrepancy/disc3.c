@@ -14,7 +14,7 @@
 
 #include "discrepancy/disc.h"
 #include "discrepancy/discint.h"
-#include "base/err.h"
+#include "cli/cli.h"
 #include "base/num.h"
 #include "discrepancy/geom.h"
 #include "base/mem.h"
@@ -88,7 +88,7 @@ static int l2_chunk(void *ctx, uint64_t b, uint64_t e)
 	struct dd acc = dd_from(0.0);
 
 	if (t == NULL)
-		return frs_fail("no memory for %zu points", c->n);
+		return cli_fail("no memory for %zu points", c->n);
 	for (size_t i = (size_t)b; i < (size_t)e; i++) {
 		double diag = 1.0;
 		for (unsigned d = 0; d < c->k; d++)
@@ -284,7 +284,7 @@ static int cdq_level(void *ctx, uint64_t b, uint64_t e)
 
 	if (tmp == NULL || f == NULL) {
 		free(tmp), free(f);
-		return frs_fail("no memory for %zu points", c->n);
+		return cli_fail("no memory for %zu points", c->n);
 	}
 	for (uint64_t k = b; k < e; k++) {
 		size_t lo = 2 * w * (size_t)k, mid = lo + w, hi = mid + w;
@@ -305,7 +305,7 @@ static int cdq_pass(struct cdq *c, size_t nb, size_t bw,
     int (*fn)(void *, uint64_t, uint64_t), int par, struct dd *sum)
 {
 	size_t per = bw >= CDQ_WORK ? 1 : CDQ_WORK / bw;
-	int rc = par ? frs_parallel(nb, per, fn, c, NULL) :
+	int rc = par ? cli_parallel(nb, per, fn, c, NULL) :
 	    fn(c, 0, nb);
 
 	for (size_t k = 0; rc == 0 && k < nb; k++)
@@ -328,7 +328,7 @@ static int cdq_pairs(const double *x, size_t n, int par, struct dd *out)
 	c.part = calloc(nb, sizeof *c.part);
 	if (ord == NULL || c.u == NULL || c.zsum == NULL || c.part == NULL) {
 		if (c.part == NULL)
-			frs_fail("no memory for %zu points", n);
+			cli_fail("no memory for %zu points", n);
 		goto out;
 	}
 	c.ys = ord + n, c.zs = ord + 2 * n;
@@ -364,7 +364,7 @@ double disc_star_l2_exact_k(const double *x, size_t n, unsigned k, int par)
 
 	if (u == NULL || c.part == NULL) {
 		if (u != NULL)
-			frs_fail("no memory for %zu points", n);
+			cli_fail("no memory for %zu points", n);
 		free(u), free(c.part);
 		return -1.0;
 	}
@@ -452,7 +452,7 @@ static int axis_make(struct dinf3 *d, int c, struct vkey *k)
 		k[i].v = d->xyz[3 * i + (size_t)c], k[i].i = (uint32_t)i;
 	qsort(k, n, sizeof *k, vkey_cmp);
 	if ((a->v = malloc((n + 2) * sizeof *a->v)) == NULL)
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	a->v[0] = 0.0;
 	for (size_t i = 0; i < n; i++) {
 		if (i == 0 || k[i].v != k[i - 1].v)
@@ -488,7 +488,7 @@ static int blocks_init(struct dinf3 *d)
 
 	d->nb = (w - 2) / QBLOCK + 1;	/* q = 1..w-1 */
 	if ((d->zlo = malloc(2 * d->nb * sizeof *d->zlo)) == NULL)
-		return frs_fail("no memory for %zu points", d->n);
+		return cli_fail("no memory for %zu points", d->n);
 	d->zhi = d->zlo + d->nb;
 	for (size_t k = 0; k < d->nb; k++) {
 		d->zlo[k] = d->ax[2].v[1 + QBLOCK * k];
@@ -510,7 +510,7 @@ static int dinf3_init(struct dinf3 *d, const double *xyz, size_t n)
 	if (k == NULL || d->rank == NULL || d->order == NULL ||
 	    d->xstart == NULL || d->frac == NULL) {
 		free(k);
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	}
 	for (size_t c = 0; c <= n; c++)
 		d->frac[c] = (double)c / (double)n;
@@ -733,7 +733,7 @@ static int dinf3_chunk(void *ctx, uint64_t b, uint64_t e)
 	t.pend = malloc(2 * d->n * sizeof *t.pend);
 	if (t.P == NULL || t.pend == NULL) {
 		if (t.P != NULL)
-			frs_fail("no memory for %zu points", d->n);
+			cli_fail("no memory for %zu points", d->n);
 		free(t.P), free(t.pend);
 		return -1;
 	}
@@ -766,7 +766,7 @@ int disc3_star_dinf_exact(const double *xyz, size_t n, int par,
 	int rc;
 
 	if (n > DISC3_MAX_EXACT_N)
-		return frs_fail("%zu points: the exact 3-D Dinf takes O(n^3) "
+		return cli_fail("%zu points: the exact 3-D Dinf takes O(n^3) "
 		    "time and is limited to %d points (Dinf on a grid is not)",
 		    n, DISC3_MAX_EXACT_N);
 	if (dinf3_init(&d, xyz, n) < 0) {
@@ -777,7 +777,7 @@ int disc3_star_dinf_exact(const double *xyz, size_t n, int par,
 	nch = (sweeps + DINF_SWEEPS - 1) / DINF_SWEEPS;
 	if ((d.best = calloc(nch, sizeof *d.best)) == NULL) {
 		dinf3_free(&d);
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	}
 	rc = disc_run_chunks(sweeps, DINF_SWEEPS, dinf3_chunk, &d, par);
 	if (rc == 0) {
@@ -872,12 +872,12 @@ int disc3_star_grid(const double *xyz, size_t n, uint32_t s, int par,
 	c.sq = calloc(2 * nch, sizeof *c.sq);
 	if (s < 1 || s > DISC3_MAX_GRID) {
 		free(bin), free(kx), free(g), free(c.sq);
-		return frs_fail("3-D grid %u: 1 to %d allowed", s,
+		return cli_fail("3-D grid %u: 1 to %d allowed", s,
 		    DISC3_MAX_GRID);
 	}
 	if (bin == NULL || kx == NULL || g == NULL || c.sq == NULL) {
 		free(bin), free(kx), free(g), free(c.sq);
-		return frs_fail("no memory for a %u^3 grid", s);
+		return cli_fail("no memory for a %u^3 grid", s);
 	}
 	c.best = c.sq + nch;
 	for (size_t i = 0; i < 3 * n; i++)

@@ -22,7 +22,7 @@
 
 #include "discrepancy/disc.h"
 #include "discrepancy/discint.h"
-#include "base/err.h"
+#include "cli/cli.h"
 #include "base/num.h"
 #include "discrepancy/geom.h"
 
@@ -127,7 +127,7 @@ static int half_chunk(void *ctx, uint64_t b, uint64_t e)
 	uint32_t *hist = malloc(2 * (3 * (size_t)h->s + 1) * sizeof *hist);
 
 	if (hist == NULL)
-		return frs_fail("no memory for %u border points", h->s);
+		return cli_fail("no memory for %u border points", h->s);
 	for (uint64_t k = b; k < e; k++)
 		half_one(h, k, hist, hist + 3 * (size_t)h->s + 1);
 	free(hist);
@@ -145,7 +145,7 @@ int disc_half(const double *xy, size_t n, uint32_t s, int par,
 	h.sum = malloc(2 * ne * sizeof *h.sum);
 	if (h.bx == NULL || h.sum == NULL) {
 		free(h.bx), free(h.sum);
-		return frs_fail("no memory for %u border points", s);
+		return cli_fail("no memory for %u border points", s);
 	}
 	h.by = h.bx + 4 * (size_t)s;
 	h.best = h.sum + ne;

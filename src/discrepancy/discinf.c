@@ -9,7 +9,7 @@
 
 #include "discrepancy/disc.h"
 #include "discrepancy/discint.h"
-#include "base/err.h"
+#include "cli/cli.h"
 
 static int dcmp(const void *a, const void *b)
 {
@@ -127,7 +127,7 @@ static int lines_init(struct lines *l, const double *y, size_t n, double sy)
 	l->dirty = malloc(l->nb);
 	if (l->c == NULL || l->dirty == NULL) {
 		free(l->c), free(l->dirty);
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	}
 	l->hull = l->c + n, l->ptr = l->hull + n;
 	l->h = l->ptr + l->nb, l->add = l->h + l->nb;
@@ -157,7 +157,7 @@ int disc_star_dinf_exact(const double *xy, size_t n, double *dinf)
 
 	if (pt == NULL || y == NULL) {
 		free(pt), free(y);
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	}
 	memcpy(pt, xy, n * sizeof *pt);
 	qsort(pt, n, sizeof *pt, dcmp);	/* by x: dcmp reads the first */
@@ -210,7 +210,7 @@ static int sgrid_chunk(void *ctx, uint64_t b, uint64_t e)
 	double best = 0.0;
 
 	if (a == NULL)
-		return frs_fail("no memory for the grid");
+		return cli_fail("no memory for the grid");
 	diff = a + w;
 	for (uint32_t j = 1; j <= c->s; j++) {
 		uint32_t r = 0;
@@ -271,7 +271,7 @@ int disc_star_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
 	c.best = calloc(nch, sizeof *c.best);
 	if (kx == NULL || g == NULL || c.best == NULL) {
 		free(kx), free(g), free(c.best);
-		return frs_fail("no memory for a %u grid", s);
+		return cli_fail("no memory for a %u grid", s);
 	}
 	ky = kx + n;
 	for (uint32_t i = 0; i <= s; i++)
@@ -349,7 +349,7 @@ static int rgrid_chunk(void *ctx, uint64_t b, uint64_t e)
 
 	if (cnt == NULL || list == NULL) {
 		free(cnt), free(list);
-		return frs_fail("no memory for the grid");
+		return cli_fail("no memory for the grid");
 	}
 	for (uint64_t bot = b; bot < e; bot++) {
 		size_t k = 0;
@@ -394,7 +394,7 @@ int disc_rect_dinf_grid(const double *xy, size_t n, uint32_t s, int par,
 	c.best = calloc(s, sizeof *c.best);
 	if (bx == NULL || g == NULL || c.best == NULL) {
 		free(bx), free(g), free(c.best);
-		return frs_fail("no memory for a %u grid", s);
+		return cli_fail("no memory for a %u grid", s);
 	}
 	by = bx + n;
 	for (uint32_t a = 0; a < s; a++)
@@ -494,7 +494,7 @@ static int rexact_chunk(void *ctx, uint64_t b, uint64_t e)
 	struct xlist l = { malloc((n ? n : 1) * sizeof *l.x), 0 };
 
 	if (l.x == NULL)
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	for (uint64_t i = b; i < e; i++) {
 		double c = i == 0 ? 0.0 : pt[i - 1][1], best = 0.0, v;
 		size_t j = 0;
@@ -536,7 +536,7 @@ int disc_rect_dinf_exact(const double *xy, size_t n, int par, double *dinf)
 
 	if (pt == NULL || r.best == NULL) {
 		free(pt), free(r.best);
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	}
 	memcpy(pt, xy, n * sizeof *pt);
 	qsort(pt, n, sizeof *pt, ycmp);

@@ -9,7 +9,6 @@
 #include <string.h>
 
 #include "discrepancy/discint.h"
-#include "base/err.h"
 #include "cli/cli.h"
 
 /* ---- loops and sums ------------------------------------------------- */
@@ -32,7 +31,7 @@ int disc_run_chunks(uint64_t n, uint64_t chunk,
 		cli_task_end(t);
 		return rc;
 	}
-	return frs_parallel_if(0, n, chunk, fn, ctx);
+	return cli_parallel_if(0, n, chunk, fn, ctx);
 }
 
 /* ---- sorting -------------------------------------------------------- */
@@ -102,14 +101,14 @@ int disc_order(const double *v, size_t n, size_t stride, uint32_t *ord)
 	size_t (*h)[RADIX] = NULL;
 
 	if (a == NULL)
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	for (size_t i = 0; i < n; i++)
 		a[i].k = order_key(v[i * stride]), a[i].i = (uint32_t)i;
 	if (n < 256)
 		insertion_sort(a, n);
 	else if ((h = calloc(RADIX_PASSES, sizeof *h)) == NULL) {
 		free(a);
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	} else
 		radix_sort(a, a + n, n, h, &s);
 	for (size_t i = 0; i < n; i++)
@@ -164,7 +163,7 @@ int disc_rows_make(struct disc_rows *r, const uint32_t *bin, size_t n,
 	r->idx = malloc((n ? n : 1) * sizeof *r->idx);
 	if (r->start == NULL || r->idx == NULL) {
 		disc_rows_free(r);
-		return frs_fail("no memory for a grid of %u rows", nbins);
+		return cli_fail("no memory for a grid of %u rows", nbins);
 	}
 	for (size_t i = 0; i < n; i++)
 		r->start[bin[i] + 1]++;

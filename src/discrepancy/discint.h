@@ -7,7 +7,6 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "base/par.h"
 
 /* A task of this label on the progress bar for each parallel loop inside
  * one set (NULL: none; cli.h's cli_task). */

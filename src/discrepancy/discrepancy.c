@@ -13,8 +13,6 @@
 #include "cli/cli.h"
 #include "discrepancy/disc.h"
 #include "discrepancy/discint.h"
-#include "base/err.h"
-#include "base/par.h"
 
 static const char usage[] =
     "usage: discrepancy [-c CLASS] [--grid S] [--shapes K] [--exact]\n"
@@ -64,7 +62,7 @@ static int one_set(void *arg, uint64_t b, uint64_t e)
 	for (uint64_t i = b; i < e; i++)
 		if (disc_set_dims(r->ctx, r->sets[i].xy, r->sets[i].n,
 		    r->sets[i].dims, 0, &r->res[i]) < 0)
-			return frs_fail_context(r->sets[i].file);
+			return cli_fail_context(r->sets[i].file);
 	return 0;
 }
 
@@ -191,7 +189,7 @@ static void check_sets(const struct disc_opts *o, const struct pt_set *sets,
 {
 	for (size_t i = 0; i < nsets; i++)
 		if (disc_check(o, sets[i].dims, sets[i].n) < 0) {
-			frs_fail_context(sets[i].file);
+			cli_fail_context(sets[i].file);
 			cli_die("%s%s", cli_errmsg(), check_fix(o, &sets[i]));
 		}
 }
@@ -218,7 +216,7 @@ static int warn_pdf(void *ctx, const struct pt_sets *s, size_t file,
 {
 	(void)ctx, (void)file;
 	if (first < s->n && s->set[first].w != NULL)
-		frs_warn("%s: the points have a pdf column, but D2 and Dinf "
+		cli_warn("%s: the points have a pdf column, but D2 and Dinf "
 		    "measure them against the plain area (uniform density), "
 		    "not against their pdf", s->set[first].file);
 	return 0;
@@ -325,7 +323,7 @@ static struct disc_result *measure(const struct disc_opts *o,
 		disc_set_progress("discrepancy");
 		if (disc_set_dims(run.ctx, sets[0].xy, sets[0].n, sets[0].dims,
 		    1, &res[0]) < 0) {
-			frs_fail_context(sets[0].file);
+			cli_fail_context(sets[0].file);
 			cli_die_lib();
 		}
 		disc_set_progress(NULL);

@@ -18,7 +18,7 @@
 #include "discrepancy/disc.h"
 #include "discrepancy/discint.h"
 #include "discrepancy/discshape.h"
-#include "base/err.h"
+#include "cli/cli.h"
 #include "base/num.h"
 #include "discrepancy/geom.h"
 #include "base/rng.h"
@@ -119,7 +119,7 @@ int disc_cols_make(struct disc_cols *c, const double *xy, size_t n)
 	c->x = malloc(2 * n * sizeof *c->x);
 	if (p == NULL || c->start == NULL || c->x == NULL) {
 		free(p), free(c->start), free(c->x);
-		return frs_fail("no memory for %zu points", n);
+		return cli_fail("no memory for %zu points", n);
 	}
 	c->y = c->x + n;
 	for (size_t i = 0; i < n; i++) {
@@ -325,7 +325,7 @@ struct disc_shapes *disc_shapes_new(enum disc_class cls, uint64_t k,
 	struct disc_shapes *sh = calloc(1, sizeof *sh);
 
 	if (sh == NULL) {
-		frs_fail("no memory for the shapes");
+		cli_fail("no memory for the shapes");
 		return NULL;
 	}
 	sh->cls = cls, sh->k = k, sh->seed = seed;
@@ -333,7 +333,7 @@ struct disc_shapes *disc_shapes_new(enum disc_class cls, uint64_t k,
 	sh->v = malloc((sh->cached ? sh->cached : 1) * shape_len(cls) *
 	    sizeof *sh->v);
 	if (sh->v == NULL) {
-		frs_fail("no memory for %llu shapes",
+		cli_fail("no memory for %llu shapes",
 		    (unsigned long long)sh->cached);
 		free(sh);
 		return NULL;
@@ -396,7 +396,7 @@ int disc_shapes_run(const struct disc_shapes *sh, const double *xy, size_t n,
 
 	r.sum = malloc(2 * (nch ? nch : 1) * sizeof *r.sum);
 	if (r.sum == NULL)
-		return frs_fail("no memory for %zu chunks", nch);
+		return cli_fail("no memory for %zu chunks", nch);
 	r.best = r.sum + nch;
 	if (disc_cols_make(&r.cols, xy, n) < 0) {
 		free(r.sum);

@@ -10,7 +10,6 @@
 
 #include "cli/cli.h"
 #include "base/ocl.h"
-#include "base/par.h"
 #include "base/parse.h"
 #include "formats/frdio.h"
 #include "frd-gen/frdgen.h"
@@ -112,7 +111,7 @@ static int measure_levels(const struct frs_matrix *m, struct levels *l)
 		l->q[l->n].lo = m->n - m->n / 40;
 		l->q[l->n++].hi = m->n;
 	}
-	return frs_parallel(l->n, 1, level_task, l, NULL);
+	return cli_parallel(l->n, 1, level_task, l, NULL);
 }
 
 static void print_level(FILE *fp, const struct frdq_level *q, const char *k)

@@ -3,10 +3,8 @@
 #include "cli/cli.h"
 #include "frd-gen/frdgen.h"
 #include "frd-gen/frdgenint.h"
-#include "base/err.h"
 #include "base/mem.h"
 #include "base/io.h"
-#include "base/par.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -84,7 +82,7 @@ static int make_levels(struct gen *g)
 		l->min = malloc(cnt * sizeof *l->min);
 		l->stamp = calloc(cnt, sizeof *l->stamp);
 		if (l->min == NULL || l->stamp == NULL)
-			return frs_fail("out of memory for the min-pyramid");
+			return cli_fail("out of memory for the min-pyramid");
 		total += cnt;
 		if (cnt == 1) {
 			g->nlev++;
@@ -112,7 +110,7 @@ static int make_levels(struct gen *g)
 	if (g->dirty[0] == NULL || g->dirty[1] == NULL || !g->lev[0].arg ||
 	    !g->tlist || !g->changed || !g->ax[0] || !g->ax[1] || !g->ax[2] ||
 	    !g->ext || !g->zc || !g->zf || !g->fen)
-		return frs_fail("out of memory for the min-pyramid");
+		return cli_fail("out of memory for the min-pyramid");
 	return 0;
 }
 
@@ -177,7 +175,7 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
 	total = (size_t)g->ntx * g->nty * g->ntz * g->ts;
 	g->field = malloc(total * sizeof *g->field);
 	if (g->field == NULL)
-		return frs_fail("out of memory for a %zu-cell force field", g->sz.n);
+		return cli_fail("out of memory for a %zu-cell force field", g->sz.n);
 	g->table = frdgen_table(pr);
 	if (g->table == NULL || make_levels(g) < 0)
 		return -1;
@@ -257,7 +255,7 @@ static int tiles_task(void *ctx, uint64_t b, uint64_t e)
 /* Recompute every tile and level (start, resume). */
 static void rebuild_all(struct gen *g)
 {
-	frs_parallel((uint64_t)g->ntx * g->nty * g->ntz, 256, tiles_task, g,
+	cli_parallel((uint64_t)g->ntx * g->nty * g->ntz, 256, tiles_task, g,
 	    NULL);
 	for (size_t t = 0; t < g->ntiles; t++)
 		fen_sync(g, t);
@@ -456,9 +454,9 @@ static void add_force(struct gen *g, double r)
 			for (uint32_t i = 0; i < cnt[0]; i++)
 				g->tlist[nt++] = (g->ax[2][k] * g->nty + g->ax[1][j]) *
 				    g->ntx + g->ax[0][i];
-	if (nt >= 16 && frs_threads() > 1) {
+	if (nt >= 16 && cli_threads() > 1) {
 		struct tilejob j = { g, &wd };
-		frs_team_run(nt, nt >= 1024 ? 64 : 8, tiles_add_task, &j);
+		cli_team_run(nt, nt >= 1024 ? 64 : 8, tiles_add_task, &j);
 	} else {
 		for (size_t i = 0; i < nt; i++)
 			g->changed[i] = (unsigned char)add_tile(g, &wd, g->tlist[i]);
@@ -573,7 +571,7 @@ static int save_checkpoint(struct gen *g, uint64_t step)
 	    fwrite(g->val, 4, g->sz.n, o.fp) == g->sz.n &&
 	    fwrite(g->field, 8, field_cells(g), o.fp) == field_cells(g);
 	if (!ok) {
-		frs_fail_errno("%s: write error", o.name);
+		cli_fail_errno("%s: write error", o.name);
 		outfile_abort(&o);
 		return -1;
 	}
@@ -597,19 +595,19 @@ static int load_checkpoint(struct gen *g, uint64_t *step)
 	if (io_read_exact(fp, name, h, sizeof h, "header") < 0)
 		goto done;
 	if (memcmp(h, CKPT_MAGIC, 8) != 0) {
-		frs_fail("%s: not an frd-gen checkpoint", name);
+		cli_fail("%s: not an frd-gen checkpoint", name);
 		goto done;
 	}
 	plen = io_get_u32(h + 8);
 	*step = io_get_u64(h + 12);
 	if (plen >= sizeof have || io_read_exact(fp, name, have, plen,
 	    "parameters") < 0) {
-		frs_fail("%s: damaged checkpoint", name);
+		cli_fail("%s: damaged checkpoint", name);
 		goto done;
 	}
 	have[plen] = '\0';
 	if (strcmp(have, params) != 0) {
-		frs_fail("%s: checkpoint of another run (remove it to start "
+		cli_fail("%s: checkpoint of another run (remove it to start "
 		    "afresh)", name);
 		goto done;
 	}
@@ -647,7 +645,7 @@ int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
 		init_field(&g);
 	}
 	rebuild_all(&g);
-	if (frs_team_start() < 0)
+	if (cli_team_start() < 0)
 		goto fail;
 	last_save = cli_now();
 	for (g.step = start; g.step < g.sz.n; g.step++) {
@@ -670,11 +668,11 @@ int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
 			last_save = cli_now();
 		}
 	}
-	frs_team_stop();
+	cli_team_stop();
 	gen_free(&g);
 	return 0;
 fail:
-	frs_team_stop();
+	cli_team_stop();
 	gen_free(&g);
 	frd_free(out);
 	return -1;

@@ -21,7 +21,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/frdgencl.h"
 #include "frd-gen/frdgenint.h"
-#include "base/err.h"
 #include "base/mem.h"
 #include "cli/cli.h"
 
@@ -163,7 +162,7 @@ static int zero_cell(struct clgen *g, uint64_t r, uint32_t *c)
 	const double *b;
 
 	if (t >= g->ntiles)
-		return frs_fail("internal error: zero count");
+		return cli_fail("internal error: zero count");
 	b = tile_get(g, t);
 	for (size_t i = 0; i < g->ts; i++)
 		if (b[i] == 0.0 && r-- == 0) {
@@ -173,7 +172,7 @@ static int zero_cell(struct clgen *g, uint64_t r, uint32_t *c)
 			*c = (uint32_t)cc;
 			return 0;
 		}
-	return frs_fail("internal error: zero cell not found in tile %zu", t);
+	return cli_fail("internal error: zero cell not found in tile %zu", t);
 }
 
 /* The k-th smallest free cell in the order (force, tie key, cell). */
@@ -235,7 +234,7 @@ static int gen_init(struct clgen *g, const struct frdgen_params *pr,
 	g->seg = malloc(2 * g->leaves * sizeof *g->seg);
 	g->outh = malloc((2 + g->ts) * g->ntiles * sizeof *g->outh);
 	if (!g->cache || !g->zc || !g->fen || !g->seg || !g->outh)
-		return frs_fail("out of memory for a %zu-cell force field",
+		return cli_fail("out of memory for a %zu-cell force field",
 		    g->sz.n);
 	g->ntab = (size_t)(g->sz.hw + 1) * (g->sz.hh + 1) * (g->sz.hd + 1);
 	g->table = frdgen_table(pr);
@@ -271,7 +270,7 @@ static int gen_init(struct clgen *g, const struct frdgen_params *pr,
 	if (err != CL_SUCCESS)
 		return ocl_fail(err, "frd_add: work-group size");
 	if (wg < g->ts / g->ts3[0])
-		return frs_fail("OpenCL: %s runs at most %zu work-items per "
+		return cli_fail("OpenCL: %s runs at most %zu work-items per "
 		    "group, the generator needs %zu", o->name, wg, g->ts / g->ts3[0]);
 	if (ocl_buffer(o, CL_MEM_READ_WRITE, cells * sizeof(double), g->cache,
 	    &g->field) < 0 ||
@@ -370,9 +369,9 @@ int frdgen_run_cl(const struct frdgen_params *par, struct ocl *o,
 	if (frdgen_check(par) < 0)
 		return -1;
 	if (par->checkpoint != NULL)
-		return frs_fail("checkpoints are not available with OpenCL");
+		return cli_fail("checkpoints are not available with OpenCL");
 	if (!o->fp64)
-		return frs_fail("OpenCL: %s has no double precision "
+		return cli_fail("OpenCL: %s has no double precision "
 		    "(cl_khr_fp64), which the generator needs to give the "
 		    "CPU's matrix", o->name);
 	if (gen_init(&g, par, o, out) < 0)

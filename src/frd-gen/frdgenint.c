@@ -1,7 +1,7 @@
 /* What the CPU and OpenCL generators share (frdgenint.h). */
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/frdgenint.h"
-#include "base/err.h"
+#include "cli/cli.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -30,7 +30,7 @@ double *frdgen_table(const struct frdgen_params *pr)
 	double *t = malloc(nt * sizeof *t);
 
 	if (t == NULL) {
-		frs_fail("out of memory for the force table");
+		cli_fail("out of memory for the force table");
 		return NULL;
 	}
 	for (uint32_t z = 0; z <= hd; z++)
@@ -106,7 +106,7 @@ static int item_room(struct frdgen_item **a, size_t n, size_t *cap)
 		size_t ncap = *cap ? 2 * *cap : 256;
 		struct frdgen_item *na = realloc(*a, ncap * sizeof *na);
 		if (na == NULL)
-			return frs_fail("out of memory in the rank query");
+			return cli_fail("out of memory in the rank query");
 		*a = na;
 		*cap = ncap;
 	}
@@ -178,7 +178,7 @@ static int pick_in_group(struct frdgen_sel *s, const struct frdgen_params *pr,
 	if (2 * m > s->kcap) {
 		uint64_t *nk = realloc(s->keys, 2 * m * sizeof *nk);
 		if (nk == NULL)
-			return frs_fail("out of memory in the rank query");
+			return cli_fail("out of memory in the rank query");
 		s->keys = nk;
 		s->kcap = 2 * m;
 	}
@@ -211,7 +211,7 @@ int frdgen_select(struct frdgen_sel *s, const struct frdgen_params *pr,
 			return -1;
 	}
 	if (s->nemit < k)
-		return frs_fail("internal error: %zu free cells found, rank %llu",
+		return cli_fail("internal error: %zu free cells found, rank %llu",
 		    s->nemit, (unsigned long long)k);
 	v = s->emit[k - 1].v;
 	for (a = k - 1; a > 0 && s->emit[a - 1].v == v; a--)

@@ -1,7 +1,7 @@
 /* The generators' parameters and the laws that follow (frdparam.h). */
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/frdparam.h"
-#include "base/err.h"
+#include "cli/cli.h"
 #include "base/rng.h"
 
 #include <limits.h>
@@ -37,12 +37,12 @@ int frdgen_check_size(unsigned dims, uint32_t w, uint32_t h, uint32_t d)
 	uint64_t n = (uint64_t)w * h * d;
 
 	if (dims != 2 && dims != 3)
-		return frs_fail("%u dimensions: a matrix has 2 or 3", dims);
+		return cli_fail("%u dimensions: a matrix has 2 or 3", dims);
 	if (w < 2 || h < 2 || d < 1 || (dims == 3 && d < 2) ||
 	    (dims == 2 && d != 1))
-		return frs_fail("a matrix needs at least 2 cells per side");
+		return cli_fail("a matrix needs at least 2 cells per side");
 	if (n > UINT32_MAX)
-		return frs_fail("%llu cells are more than 2^32 - 1 values",
+		return cli_fail("%llu cells are more than 2^32 - 1 values",
 		    (unsigned long long)n);
 	return 0;
 }
@@ -52,20 +52,20 @@ int frdgen_check(const struct frdgen_params *pr)
 	if (frdgen_check_size(pr->dims, pr->w, pr->h, pr->d) < 0)
 		return -1;
 	if (!(pr->p > 0.0 && pr->p <= 1.0))
-		return frs_fail("the share p = %g is outside (0, 1]", pr->p);
+		return cli_fail("the share p = %g is outside (0, 1]", pr->p);
 	if (pr->force != FRDGEN_FORCE_EXP && pr->force != FRDGEN_FORCE_POWER)
-		return frs_fail("unknown force kind %d", (int)pr->force);
+		return cli_fail("unknown force kind %d", (int)pr->force);
 	if (!(pr->s > 0.0 && isfinite(pr->s)) || !(pr->q > 0.0 &&
 	    isfinite(pr->q)))
-		return frs_fail("force parameters s and q must be positive");
+		return cli_fail("force parameters s and q must be positive");
 	if (!(pr->tol >= 0.0 && pr->tol < 1.0))
-		return frs_fail("the force tolerance %g is outside [0, 1)", pr->tol);
+		return cli_fail("the force tolerance %g is outside [0, 1)", pr->tol);
 	if (!(pr->reach >= 0.0 && isfinite(pr->reach)))
-		return frs_fail("the reach %g is negative", pr->reach);
+		return cli_fail("the reach %g is negative", pr->reach);
 	if (!(pr->cap >= 0.0 && isfinite(pr->cap)))
-		return frs_fail("the reach cap %g is negative", pr->cap);
+		return cli_fail("the reach cap %g is negative", pr->cap);
 	if (pr->field != FRDGEN_FIELD_DOUBLE && pr->field != FRDGEN_FIELD_INT32)
-		return frs_fail("unknown field kind %d", (int)pr->field);
+		return cli_fail("unknown field kind %d", (int)pr->field);
 	return 0;
 }
 

@@ -1,7 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/frdq.h"
 #include "base/mem.h"
-#include "base/err.h"
 #include "cli/cli.h"
 
 #include <math.h>
@@ -70,11 +69,11 @@ int frdq_spectrum(const struct frs_matrix *m, double from, double to,
 	uint64_t hi_v = (uint64_t)(to * (double)m->n);
 
 	if (m->dims != 2 || !fft_is_pow2(w) || !fft_is_pow2(h))
-		return frs_fail("the spectrum needs a 2-D matrix with "
+		return cli_fail("the spectrum needs a 2-D matrix with "
 		    "power-of-two sides");
 	img = calloc(2 * w * h, sizeof *img);
 	if (img == NULL)
-		return frs_fail("out of memory for the spectrum");
+		return cli_fail("out of memory for the spectrum");
 	for (size_t i = 0; i < m->n; i++)
 		if (m->v[i] >= lo_v && m->v[i] < hi_v) {
 			img[2 * i] = 1.0;
@@ -109,7 +108,7 @@ int frdq_spectrum(const struct frs_matrix *m, double from, double to,
 		}
 	free(img);
 	if (nlo == 0 || nhi == 0 || hi == 0.0)
-		return frs_fail("too few dots (%zu) for the spectrum", dots);
+		return cli_fail("too few dots (%zu) for the spectrum", dots);
 	*ratio = (lo / (double)nlo) / (hi / (double)nhi);
 	/* The highest radial mean: about 1.5 for blue noise, far more for
 	 * the rings of a lattice. */
@@ -278,7 +277,7 @@ static int spectral(const struct frs_matrix *m, struct frdq_level *q)
 	rd.sum2 = calloc(rd.nb, sizeof *rd.sum2);
 	rd.cnt = calloc(rd.nb, sizeof *rd.cnt);
 	rc = img && rd.sum && rd.sum2 && rd.cnt ? 0 :
-	    frs_fail("out of memory for the spectrum");
+	    cli_fail("out of memory for the spectrum");
 	if (rc == 0) {
 		for (size_t i = 0; i < m->n; i++)
 			img[2 * i] = m->v[i] >= q->lo && m->v[i] < q->hi;
@@ -302,11 +301,11 @@ int frdq_level(const struct frs_matrix *m, uint64_t lo, uint64_t hi,
 	q->hi = hi > m->n ? m->n : hi;
 	q->dots = q->hi > lo ? q->hi - lo : 0;
 	if (q->dots == 0)
-		return frs_fail("no values in [%llu, %llu)",
+		return cli_fail("no values in [%llu, %llu)",
 		    (unsigned long long)lo, (unsigned long long)hi);
 	q->strata = frdq_strata(m, lo, q->hi);
 	if (isnan(q->strata))
-		return frs_fail("out of memory for the strata");
+		return cli_fail("out of memory for the strata");
 	if (!fft_is_pow2(m->w) || !fft_is_pow2(m->h) || !fft_is_pow2(m->d))
 		return 0;
 	return spectral(m, q);

@@ -45,7 +45,7 @@
 #include "formats/frdio.h"
 
 double frdq_spread(const struct frs_matrix *m, uint32_t c);
-/* -1 with frs_fail when the matrix is not 2-D with power-of-two sides. */
+/* -1 with cli_fail when the matrix is not 2-D with power-of-two sides. */
 int frdq_lowpass(const struct frs_matrix *m, double from, double to,
     double *ratio);
 /* The same, and the peak: the highest radially averaged power between 0.5
@@ -66,7 +66,7 @@ struct frdq_level {
 };
 
 /* The strata figure for any size; the spectral ones where every side is a
- * power of two (spectral = 0 otherwise).  -1 with frs_fail when out of
+ * power of two (spectral = 0 otherwise).  -1 with cli_fail when out of
  * memory or with no dots. */
 int frdq_level(const struct frs_matrix *m, uint64_t lo, uint64_t hi,
     struct frdq_level *q);

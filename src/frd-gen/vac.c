@@ -5,7 +5,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/vac.h"
 #include "frd-gen/frdgen.h"
-#include "base/err.h"
 #include "base/mem.h"
 #include "cli/cli.h"
 #include "base/rng.h"
@@ -65,10 +64,10 @@ int vac_check(const struct vac_params *pr)
 	if (frdgen_check_size(pr->dims, pr->w, pr->h, pr->d) < 0)
 		return -1;
 	if (!(pr->sigma > 0.0 && isfinite(pr->sigma)))
-		return frs_fail("the void-and-cluster sigma %g is not a positive number",
+		return cli_fail("the void-and-cluster sigma %g is not a positive number",
 		    pr->sigma);
 	if (!(pr->tol >= 0.0 && pr->tol < 1.0))
-		return frs_fail("the filter tolerance %g is outside [0, 1)", pr->tol);
+		return cli_fail("the filter tolerance %g is outside [0, 1)", pr->tol);
 	return 0;
 }
 
@@ -196,7 +195,7 @@ static int make_table(struct vac *g, double *radius)
 	g->tab = malloc(nx * ny * nz * sizeof *g->tab);
 	g->xext = malloc(ny * nz * sizeof *g->xext);
 	if (g->tab == NULL || g->xext == NULL)
-		return frs_fail("out of memory for the void-and-cluster kernel");
+		return cli_fail("out of memory for the void-and-cluster kernel");
 	*radius = 0.0;
 	for (size_t z = 0; z < nz; z++)
 		for (size_t y = 0; y < ny; y++) {
@@ -237,7 +236,7 @@ static int vac_init(struct vac *g, const struct vac_params *pr,
 	g->one = malloc(2 * g->p * sizeof *g->one);
 	g->zero = malloc(2 * g->p * sizeof *g->zero);
 	if (!g->e || !g->key || !g->bit || !g->one || !g->zero)
-		return frs_fail("out of memory for a %zu-cell void-and-cluster "
+		return cli_fail("out of memory for a %zu-cell void-and-cluster "
 		    "matrix", g->n);
 	for (size_t c = 0; c < g->n; c++)
 		g->key[c] = vac_tiekey(pr, (uint32_t)c);

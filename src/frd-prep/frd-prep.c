@@ -202,7 +202,7 @@ static int read_frd(const char *path, struct frs_matrix *m, int check,
 	npre = fread(pre, 1, sizeof pre, fp);
 	if (ferror(fp)) {
 		io_close_in(fp);
-		return frs_fail_errno("%s: read error", name);
+		return cli_fail_errno("%s: read error", name);
 	}
 	if (npre == sizeof pre && memcmp(pre, FRP_MAGIC, 8) == 0)
 		check_frp(fp, name, pre, npre, check, prep, verbose);

@@ -2,6 +2,7 @@
 #include "frd-prep/frdimport.h"
 #include "base/num.h"
 #include "formats/frdio.h"
+#include "cli/cli.h"
 #include "base/err.h"
 #include "maps/imap.h"
 #include "maps/pngio.h"
@@ -30,7 +31,7 @@ int frd_rank(struct frs_matrix *m)
 	struct kv *t = malloc(m->n * sizeof *t);
 
 	if (t == NULL)
-		return frs_fail("out of memory");
+		return cli_fail("out of memory");
 	for (size_t i = 0; i < m->n; i++)
 		t[i] = (struct kv){ m->v[i], (uint32_t)i };
 	qsort(t, m->n, sizeof *t, kv_cmp);
@@ -66,14 +67,14 @@ int frd_import_raw32(const char *path, uint32_t w, uint32_t h, int rank,
 		return -1;
 	if (len == 0 || len % 4) {
 		free(buf);
-		return frs_fail("%s: %zu bytes is not a whole number of 32-bit "
+		return cli_fail("%s: %zu bytes is not a whole number of 32-bit "
 		    "values", name, len);
 	}
 	if (w == 0) {
 		uint64_t n = len / 4, s = (uint64_t)llround(sqrt((double)n));
 		if (s * s != n) {
 			free(buf);
-			frs_fail("%s: %llu values are not a square", name,
+			cli_fail("%s: %llu values are not a square", name,
 			    (unsigned long long)n);
 			frs_set_errkind(FRS_ERRKIND_SIZE);
 			return -1;
@@ -82,13 +83,13 @@ int frd_import_raw32(const char *path, uint32_t w, uint32_t h, int rank,
 	}
 	if ((uint64_t)w * h * 4 != len) {
 		free(buf);
-		return frs_fail("%s: %zu bytes, but %ux%u values need %llu", name,
+		return cli_fail("%s: %zu bytes, but %ux%u values need %llu", name,
 		    len, w, h, (unsigned long long)w * h * 4);
 	}
 	snprintf(params, sizeof params, "imported=raw32\nsource=%.100s\n", name);
 	if (frd_alloc(m, 2, w, h, 1, params) < 0) {
 		free(buf);
-		return frs_fail_context(name);
+		return cli_fail_context(name);
 	}
 	for (size_t i = 0; i < m->n; i++)
 		m->v[i] = io_get_u32(buf + 4 * i);
@@ -115,16 +116,16 @@ static long parse_row(const char *name, unsigned long line, char *s,
 			return n;
 		errno = 0;
 		if (*s == '-')
-			return frs_fail("%s:%lu: negative value", name, line);
+			return cli_fail("%s:%lu: negative value", name, line);
 		v = strtoull(s, &end, 10);
 		if (end == s || (*end && !isspace((unsigned char)*end)))
-			return frs_fail("%s:%lu: '%.20s' is not an integer", name,
+			return cli_fail("%s:%lu: '%.20s' is not an integer", name,
 			    line, s);
 		if (errno || v > UINT32_MAX)
-			return frs_fail("%s:%lu: value out of range", name, line);
+			return cli_fail("%s:%lu: value out of range", name, line);
 		if (out != NULL) {
 			if (n == max)
-				return frs_fail("%s:%lu: more than %ld values", name,
+				return cli_fail("%s:%lu: more than %ld values", name,
 				    line, max);
 			out[n] = (uint32_t)v;
 		}
@@ -150,7 +151,7 @@ int frd_import_text(const char *path, int rank, struct frs_matrix *m)
 	s = realloc(buf, len + 1);
 	if (s == NULL) {
 		free(buf);
-		return frs_fail("%s: out of memory", name);
+		return cli_fail("%s: out of memory", name);
 	}
 	s[len] = '\0';
 	/* First pass: the shape. */
@@ -171,7 +172,7 @@ int frd_import_text(const char *path, int rank, struct frs_matrix *m)
 			else if ((uint32_t)k != w) {
 				free(copy);
 				free(s);
-				return frs_fail("%s:%lu: %ld values, the first row has "
+				return cli_fail("%s:%lu: %ld values, the first row has "
 				    "%u", name, ln, k, w);
 			}
 			h++;
@@ -180,8 +181,8 @@ int frd_import_text(const char *path, int rank, struct frs_matrix *m)
 	}
 	if (w == 0 || frd_alloc(m, 2, w, h, 1, "imported=text\n") < 0) {
 		free(s);
-		return w == 0 ? frs_fail("%s: empty file", name) :
-		    frs_fail_context(name);
+		return w == 0 ? cli_fail("%s: empty file", name) :
+		    cli_fail_context(name);
 	}
 	ln = 0;
 	save = NULL;
@@ -218,7 +219,7 @@ int frd_import_png(const char *path, struct frs_matrix *m)
 		return -1;
 	if (frd_alloc(m, 2, img.w, img.h, 1, "imported=png\n") < 0) {
 		imap_free(&img);
-		return frs_fail_context(name);
+		return cli_fail_context(name);
 	}
 	/* Grey levels of a 16-bit (or 8-bit) mask, exactly, as integers. */
 	for (size_t i = 0; i < m->n; i++)

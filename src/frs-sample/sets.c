@@ -14,7 +14,6 @@
 
 #include "cli/cli.h"
 #include "frs-sample/sets.h"
-#include "base/err.h"
 #include "maps/imap.h"
 #include "maps/mapload.h"
 #include "maps/vol.h"
@@ -166,7 +165,7 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 		u->reccap = k * ncol;
 		if ((u->rec = malloc(u->reccap * sizeof *u->rec)) == NULL) {
 			u->reccap = 0;
-			rc = frs_fail("out of memory");
+			rc = cli_fail("out of memory");
 		}
 	}
 	if (rc == 0 && ncol > dims) {
@@ -240,20 +239,20 @@ static void warn2(const struct sets_run *r, int levels)
 	    which, sizeof which) : 0;
 
 	if (k > 0)
-		frs_warn("level%s %s of the multi-level window span%s more than "
+		cli_warn("level%s %s of the multi-level window span%s more than "
 		    "the %ux%u matrix: %s samples repeat the matrix's patterns%s",
 		    k > 1 ? "s" : "", which, k > 1 ? "" : "s", s->mw, s->mh,
 		    k > 1 ? "their" : "its", (double)s->n > frs_unique(s) ?
 		    " (n is past the samples it gives without repetition, "
 		    "thesis Table 4.1)" : "");
 	else if (!levels && (double)s->n > frs_unique(s))
-		frs_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
+		cli_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.0f without repetition, thesis "
 		    "Table 4.1)", (unsigned long long)s->n, s->mw, s->mh,
 		    s->sigma, frs_unique(s));
 	else if (!levels && s->tiles == FRS_TILES_PLAIN &&
 	    (s->sw > s->mw || s->sh > s->mh))
-		frs_warn("plain tiles: the window of %llux%llu repeats the "
+		cli_warn("plain tiles: the window of %llux%llu repeats the "
 		    "%ux%u matrix as it is, a lattice of the tile's period where "
 		    "few samples fall (shuffled tiles break it)",
 		    (unsigned long long)s->sw, (unsigned long long)s->sh, s->mw,
@@ -268,19 +267,19 @@ static void warn3(const struct sets_run *r, int levels)
 	    which, sizeof which) : 0;
 
 	if (k > 0)
-		frs_warn("level%s %s of the multi-level window span%s more than "
+		cli_warn("level%s %s of the multi-level window span%s more than "
 		    "the %ux%ux%u matrix: %s samples repeat the matrix's patterns%s",
 		    k > 1 ? "s" : "", which, k > 1 ? "" : "s", t->mw, t->mh,
 		    t->md, k > 1 ? "their" : "its", (double)t->n > frs3_unique(t) ?
 		    " (n is past the samples it gives without repetition)" : "");
 	else if (!levels && (double)t->n > frs3_unique(t))
-		frs_warn("%llu samples from a %ux%ux%u matrix with sigma %g repeat "
+		cli_warn("%llu samples from a %ux%ux%u matrix with sigma %g repeat "
 		    "its patterns (it gives %.6g without repetition)",
 		    (unsigned long long)t->n, t->mw, t->mh, t->md, t->sigma,
 		    frs3_unique(t));
 	else if (!levels && t->tiles == FRS_TILES_PLAIN &&
 	    (t->sw > t->mw || t->sh > t->mh || t->sd > t->md))
-		frs_warn("plain tiles: the window of %llux%llux%llu repeats the "
+		cli_warn("plain tiles: the window of %llux%llux%llu repeats the "
 		    "%ux%ux%u matrix as it is", (unsigned long long)t->sw,
 		    (unsigned long long)t->sh, (unsigned long long)t->sd, t->mw,
 		    t->mh, t->md);
@@ -339,9 +338,9 @@ static int load_mask(const struct sets *a, struct sets_run *run)
 	if (a->loaded)
 		run->mask = a->mask;
 	if (rc != FRS_OK)
-		return frs_fail("%s", err.message);
+		return cli_fail("%s", err.message);
 	if ((run->note = frs_mask_note(run->mask)) != NULL)
-		frs_warn("%s", run->note);
+		cli_warn("%s", run->note);
 	return 0;
 }
 
@@ -351,7 +350,7 @@ static int open_device(const struct sets *a, struct sets_run *run)
 	if (!a->cl)
 		return 0;
 	if ((run->ocl = calloc(1, sizeof *run->ocl)) == NULL)
-		return frs_fail("out of memory");
+		return cli_fail("out of memory");
 	if (ocl_open(run->ocl, a->device) == 0)
 		return 0;
 	free(run->ocl);
@@ -381,7 +380,7 @@ static int open2(const struct sets *a, struct sets_run *run)
 	if (rc == 0 && api_sampler_make(2, run->mask, &(struct api_values){
 	    .own = &map, .own_stats = &a->stats }, &run->opt, &run->smp, NULL,
 	    &err) != FRS_OK)
-		rc = frs_fail("%s", err.message);
+		rc = cli_fail("%s", err.message);
 	if (rc < 0) {
 		imap_free(&map);	/* not taken: its check failed */
 		return -1;
@@ -421,7 +420,7 @@ static int open3(const struct sets *a, struct sets_run *run)
 	if (frs_sampler3_new_f64(&run->smp3, run->mask, v.v, v.w, v.h, v.d,
 	    &run->opt, &err) != FRS_OK) {
 		vol_free(&v);
-		return frs_fail("%s", err.message);
+		return cli_fail("%s", err.message);
 	}
 	vol_free(&v);
 	/* Exact counts: set 0's taus only for -v, as in 2-D. */
@@ -454,7 +453,7 @@ int sets_open(const struct sets *a, struct sets_run *run)
 	return run->dims == 3 ? open3(a, run) : open2(a, run);
 }
 
-/* One set through the draws; its count, UINT64_MAX after frs_fail. */
+/* One set through the draws; its count, UINT64_MAX after cli_fail. */
 static uint64_t one_set(struct out *u, uint64_t seed)
 {
 	const struct sets *a = u->a;
@@ -475,7 +474,7 @@ static uint64_t one_set(struct out *u, uint64_t seed)
 	if (rc == FRS_E_CALLBACK)
 		return UINT64_MAX;	/* the writer's message */
 	if (rc != FRS_OK) {
-		frs_fail("%s", err.message);
+		cli_fail("%s", err.message);
 		return UINT64_MAX;
 	}
 	if (!a->count_only)
@@ -484,7 +483,7 @@ static uint64_t one_set(struct out *u, uint64_t seed)
 		return UINT64_MAX;
 	if (a->count_only && fprintf(u->of.fp, "%llu\n",
 	    (unsigned long long)count) < 0) {
-		frs_fail_errno("%s: write error", u->of.name);
+		cli_fail_errno("%s: write error", u->of.name);
 		return UINT64_MAX;
 	}
 	return count;
@@ -539,7 +538,7 @@ int sets_write(const struct sets *a, struct sets_run *run)
 
 	/* A damaged twin .frp shows only when its lists are first read. */
 	if (rc == 0 && frs_mask_note(mk) != NULL && run->note == NULL)
-		frs_warn("%s", frs_mask_note(mk));
+		cli_warn("%s", frs_mask_note(mk));
 	t0 = cli_now();
 	if (rc == 0 && !a->count_only && sets_writer_end(&u.w) < 0)
 		rc = -1;

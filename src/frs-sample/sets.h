@@ -78,7 +78,7 @@ struct sets_run {
  * with the mask prepared for it (so that -v counts that in the setup,
  * with the matrix's loading); with FRS_RULE_EXACT the exact taus of set 0 only
  * with verbose (each set's run finds its own).  Warns of a stale twin
- * .frp and of patterns that repeat.  0; -1 after frs_fail; -2 when the
+ * .frp and of patterns that repeat.  0; -1 after cli_fail; -2 when the
  * device could not be opened.
  */
 int sets_open(const struct sets *a, struct sets_run *run);
@@ -89,14 +89,14 @@ int sets_open(const struct sets *a, struct sets_run *run);
 void sets_matrix(struct sets *a);
 /* Load the map or volume a->imp (NULL: constant) at a->size, a volume
  * when want is 3, a map when 2, and when 0 what a->imp is: its
- * dimensions, -1 after frs_fail. */
+ * dimensions, -1 after cli_fail. */
 int sets_map(struct sets *a, unsigned want);
 /* Load the default matrix for dims (frs_default_matrix) as sets_matrix
  * loads a named one: -1 when none is found, a->mask_err saying why. */
 int sets_default_matrix(struct sets *a, unsigned dims);
 void sets_unmap(struct sets *a);
 /* Draw the sets and write them (--count-only: their counts, a line
- * each).  0; -1 after frs_fail. */
+ * each).  0; -1 after cli_fail. */
 int sets_write(const struct sets *a, struct sets_run *run);
 void sets_close(struct sets_run *run);
 

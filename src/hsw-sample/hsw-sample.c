@@ -11,7 +11,6 @@
 #include "frs.h"
 #include "cli/cli.h"
 #include "hsw-sample/hswrun.h"
-#include "base/par.h"
 
 static const char usage[] =
     "usage: hsw-sample -i IMPORTANCE -n COUNT [--input SET|FILE] [--pdf]\n"
@@ -287,7 +286,7 @@ static void report(const struct opts *o, const struct hsw_run *r,
 	    side, side, levels, mean, o->file ? o->file :
 	    o->input == INPUT_DART ? "dart" : names[o->input],
 	    (unsigned long long)o->n, (unsigned long long)o->sets,
-	    o->sets == 1 ? "" : "s", frs_threads());
+	    o->sets == 1 ? "" : "s", cli_threads());
 	fprintf(stderr, "hsw-sample: setup %.6f s, warping %.6f s, output "
 	    "%.6f s\n", t_setup, r->t_warp, t_out);
 	if (r->cl)

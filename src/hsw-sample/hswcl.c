@@ -5,7 +5,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include <string.h>
 
-#include "base/err.h"
 #include "hsw-sample/hswcl.h"
 #include "cli/cli.h"
 
@@ -30,14 +29,14 @@ int hswcl_init(struct hswcl *h, struct ocl *o, const struct hsw_tree *t)
 	h->o = o;
 	h->t = t;
 	if (!o->fp64)
-		return frs_fail("OpenCL: %s has no double precision "
+		return cli_fail("OpenCL: %s has no double precision "
 		    "(cl_khr_fp64), which hierarchical sample warping on the "
 		    "device needs to give the CPU's points", o->name);
 	if (clGetDeviceInfo(o->device, CL_DEVICE_MAX_MEM_ALLOC_SIZE,
 	    sizeof maxalloc, &maxalloc, NULL) != CL_SUCCESS || maxalloc < 4096)
 		maxalloc = (cl_ulong)1 << 27;	/* the minimum OpenCL allows */
 	if (bytes > maxalloc)
-		return frs_fail("OpenCL: the %ux%u quadtree (%llu bytes) is "
+		return cli_fail("OpenCL: the %ux%u quadtree (%llu bytes) is "
 		    "larger than the largest buffer of %s (%llu bytes)",
 		    t->size, t->size, (unsigned long long)bytes, o->name,
 		    (unsigned long long)maxalloc);

@@ -3,7 +3,6 @@
 #include <string.h>
 
 #include "hsw-sample/hswrun.h"
-#include "base/err.h"
 #include "base/mem.h"
 #include "cli/cli.h"
 
@@ -30,8 +29,8 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 	rc = frs_hsw_new_f64(&r->hw, map.v, map.w, map.h, 0, &err);
 	frs_imap_free(&map);
 	if (rc != FRS_OK) {
-		frs_fail("%s", err.message);
-		frs_fail_context(src);
+		cli_fail("%s", err.message);
+		cli_fail_context(src);
 		goto fail;
 	}
 	if (cl && hswcl_init(&r->hc, &r->dev, &r->hw->t) < 0) {
@@ -91,7 +90,7 @@ int hsw_run_each(struct hsw_run *r, enum hsw_input kind, double *pts,
 	int rc = -1;
 
 	if (r->cl && pts == NULL)
-		return frs_fail("hsw_run_each: the device needs the points");
+		return cli_fail("hsw_run_each: the device needs the points");
 	if ((rec = mem_calloc("output buffer", cap, (pdf ? 3 : 2) *
 	    sizeof *rec)) == NULL)
 		return -1;

@@ -13,7 +13,6 @@
 #include "frs.h"
 #include "cli/cli.h"
 #include "mc-error/integrand.h"
-#include "base/err.h"
 
 static const char usage[] =
     "usage: mc-error [-f NAME[,NAME...]] [--sets N] [--group n|file|all]\n"
@@ -86,7 +85,7 @@ static int check_pdf(void *ctx, const struct pt_sets *s, size_t file,
 
 	(void)file;
 	if (mode == PDF_REQUIRE && s->set[first].w == NULL)
-		return frs_fail("%s: --weights: no pdf column", path);
+		return cli_fail("%s: --weights: no pdf column", path);
 	/* --pdf-map: every point's pixel must have a positive density. */
 	for (size_t j = first; mode == PDF_MAP && j < s->n; j++)
 		for (size_t i = 0; i < s->set[j].n; i++) {
@@ -94,7 +93,7 @@ static int check_pdf(void *ctx, const struct pt_sets *s, size_t file,
 			double d = map_pdf_at(&pdf, s->set[j].xy[2 * i],
 			    s->set[j].xy[2 * i + 1], px);
 			if (!(d > 0) || !isfinite(d))
-				return frs_fail("%s: point %zu: --pdf-map: "
+				return cli_fail("%s: point %zu: --pdf-map: "
 				    "density %g in pixel (%zu, %zu) is not "
 				    "positive and finite", path,
 				    s->set[j].first + i, d, px[0], px[1]);
@@ -104,7 +103,7 @@ static int check_pdf(void *ctx, const struct pt_sets *s, size_t file,
 		for (size_t i = 0; s->set[j].w != NULL && i < s->set[j].n; i++) {
 			double d = s->set[j].w[i];
 			if (!(d > 0) || !isfinite(d))
-				return frs_fail("%s: point %zu: pdf %g is not "
+				return cli_fail("%s: point %zu: pdf %g is not "
 				    "positive and finite", path,
 				    s->set[j].first + i, d);
 		}

@@ -106,6 +106,12 @@ int frs_fail(const char *fmt, ...)
 	return -1;
 }
 
+int frs_vfail(const char *fmt, va_list ap, int with_errno)
+{
+	vfail(fmt, ap, with_errno, errno);
+	return -1;
+}
+
 int frs_fail_errno(const char *fmt, ...)
 {
 	int saved = errno;
@@ -173,12 +179,17 @@ unsigned long frs_warn_count(void)
 void frs_warn(const char *fmt, ...)
 {
 	va_list ap;
+	va_start(ap, fmt);
+	frs_vwarn(fmt, ap);
+	va_end(ap);
+}
+
+void frs_vwarn(const char *fmt, va_list ap)
+{
 	atomic_fetch_add(&nwarn, 1);
 	if (quiet || warn_prefix == NULL)
 		return;
 	fprintf(stderr, "%s: warning: ", warn_prefix);
-	va_start(ap, fmt);
 	frs_vprint_escaped(stderr, fmt, ap);
-	va_end(ap);
 	fputc('\n', stderr);
 }

@@ -24,6 +24,8 @@
 int frs_fail(const char *fmt, ...) FRS_PRINTF(1, 2);
 /* Like frs_fail, appending ": strerror(errno)". */
 int frs_fail_errno(const char *fmt, ...) FRS_PRINTF(1, 2);
+/* frs_fail (with_errno: frs_fail_errno) of a va_list, for wrappers. */
+int frs_vfail(const char *fmt, va_list ap, int with_errno);
 /* Prefix the current message with "context: ". */
 int frs_fail_context(const char *context);
 const char *frs_errmsg(void);
@@ -54,6 +56,7 @@ void frs_vprint_escaped(FILE *fp, const char *fmt, va_list ap);
 /* Warnings: printed as "prog: warning: ..." once frs_set_warn_prefix
  * has named the program, unless silenced; never before. */
 void frs_warn(const char *fmt, ...) FRS_PRINTF(1, 2);
+void frs_vwarn(const char *fmt, va_list ap);
 void frs_set_warn_prefix(const char *prog);
 void frs_set_quiet(int quiet);
 /* Number of warnings issued so far (tests use it). */
