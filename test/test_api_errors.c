@@ -154,6 +154,27 @@ static void test_map_errors(void **state)
 	frs_map_free(NULL);
 }
 
+/* frs_names: the programs' words by the enums' values. */
+static void test_names(void **state)
+{
+	(void)state;
+	assert_string_equal(frs_names(FRS_NAMES_ALGORITHM)[FRS_ALG_SORTED],
+	    "sorted");
+	assert_string_equal(frs_names(FRS_NAMES_ALGORITHM)[FRS_ALG_LEVEL2],
+	    "level2");
+	assert_null(frs_names(FRS_NAMES_ALGORITHM)[FRS_ALG_LEVEL2 + 1]);
+	assert_string_equal(frs_names(FRS_NAMES_JITTER)[FRS_JIT_HALTON],
+	    "halton");
+	assert_null(frs_names(FRS_NAMES_JITTER)[FRS_JIT_RANDOM + 1]);
+	assert_string_equal(frs_names(FRS_NAMES_RULE)[FRS_RULE_THESIS],
+	    "thesis");
+	assert_null(frs_names(FRS_NAMES_RULE)[FRS_RULE_EXACT]);
+	assert_string_equal(frs_names(FRS_NAMES_TILING)[FRS_TILING_PLAIN],
+	    "plain");
+	assert_null(frs_names(FRS_NAMES_TILING)[FRS_TILING_PLAIN + 1]);
+	assert_null(frs_names((enum frs_names)99));
+}
+
 /* frs_imap_load's codes, and the map zeroed after each failure. */
 static void test_imap_errors(void **state)
 {
@@ -622,6 +643,7 @@ TU_MAIN(setup, teardown,
 	cmocka_unit_test(test_default_matrix),
 	cmocka_unit_test(test_map_errors),
 	cmocka_unit_test(test_imap_errors),
+	cmocka_unit_test(test_names),
 	cmocka_unit_test(test_bad_maps),
 	cmocka_unit_test(test_sampler_errors),
 	cmocka_unit_test(test_draw_errors),

@@ -275,7 +275,7 @@ static void parse_opts(int argc, char **argv, struct prep_opts *o)
 			break;
 		case OPT_TILES:
 			o->opt.tiling = (enum frs_tiling_mode)cli_choice(
-			    "--tiles", optarg, api_tiling_words);
+			    "--tiles", optarg, frs_names(FRS_NAMES_TILING));
 			break;
 		case 'v': o->verbose = 1; break;
 		default:

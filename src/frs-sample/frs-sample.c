@@ -9,7 +9,6 @@
 #include "frs.h"
 #include "cli/cli.h"
 #include "frs-sample/sets.h"
-#include "api/api.h"
 
 static const char usage[] =
     "usage: frs-sample -n COUNT [-i IMPORTANCE] [-m MATRIX] [-a ALGO]\n"
@@ -110,6 +109,24 @@ static noreturn void print_data_dir(void)
 	exit(0);
 }
 
+/* -a: the library's algorithms, or the device's flat1 (Sorted's
+ * options on the CPU side). */
+static void parse_algo(struct sets *o, const char *s)
+{
+	const char *const *w = frs_names(FRS_NAMES_ALGORITHM);
+
+	o->flat1 = strcmp(s, "flat1") == 0;
+	o->alg = FRS_ALG_SORTED;
+	for (int i = 0; !o->flat1 && w[i] != NULL; i++)
+		if (strcmp(s, w[i]) == 0) {
+			o->alg = (enum frs_algorithm)i;
+			return;
+		}
+	if (!o->flat1)
+		cli_usage_error("-a: unknown implementation '%s' (naive, stack, "
+		    "level1, level2, sorted, flat1)", s);
+}
+
 /* The options it takes, besides the common ones (cli.h). */
 static const char options[] =
     "n=count i=importance m=matrix a=algo s=size sigma jitter pdf "
@@ -130,10 +147,7 @@ static void parse_opts(int argc, char **argv, struct sets *o)
 			break;
 		case 'i': o->imp = optarg; break;
 		case 'm': o->matrix = optarg; break;
-		case 'a':
-			if (frs_impl_parse(optarg, &o->alg) < 0)
-				cli_usage_error("-a: %s", cli_errmsg());
-			break;
+		case 'a': parse_algo(o, optarg); break;
 		case 's':
 			o->nsize = (unsigned)cli_size3("-s", optarg, FRS_MAP_MAX_SIDE,
 			    o->size);
@@ -144,23 +158,23 @@ static void parse_opts(int argc, char **argv, struct sets *o)
 			break;
 		case OPT_JITTER:
 			o->opt.jitter = (enum frs_jitter_mode)cli_choice("--jitter",
-			    optarg, api_jitter_words);
+			    optarg, frs_names(FRS_NAMES_JITTER));
 			break;
 		case OPT_PDF: o->pdf = 1; break;
 		case OPT_PROGRESSIVE: parse_steps(o, optarg); break;
 		case OPT_THRESHOLD:
 			o->opt.rule = (enum frs_rule_mode)cli_choice("--threshold",
-			    optarg, api_rule_words);
+			    optarg, frs_names(FRS_NAMES_RULE));
 			break;
 		case OPT_COUNT_ONLY: o->count_only = 1; break;
 		case OPT_EXACT_COUNT: exact = 1; break;
 		case OPT_TILES:
 			o->opt.tiling = (enum frs_tiling_mode)cli_choice("--tiles",
-			    optarg, api_tiling_words);
+			    optarg, frs_names(FRS_NAMES_TILING));
 			break;
 		case OPT_LEVEL_BLUR:
 			o->opt.level_blur = cli_double("--level-blur", optarg, 0.0,
-			    API_BLUR_MAX);
+			    FRS_LEVEL_BLUR_MAX);
 			/* 0: none, which the library's radii below 0.5 are
 			 * (its 0 is the default). */
 			if (o->opt.level_blur == 0.0)
@@ -183,7 +197,7 @@ static void parse_opts(int argc, char **argv, struct sets *o)
 	}
 	if (optind != argc)
 		cli_usage_error("unexpected argument '%s'", argv[optind]);
-	if (o->alg == FRS_FLAT1 && !o->cl)
+	if (o->flat1 && !o->cl)
 		cli_usage_error("-a flat1 runs on OpenCL only (--device cl)");
 	if (exact && o->opt.rule == FRS_RULE_THESIS)
 		cli_usage_error("--exact-count needs --threshold unbiased: under "
@@ -232,9 +246,10 @@ static void check_dims(const struct sets *o)
 	if (o->cl)
 		cli_die("--device: %s is a 3-D matrix; 3-D sampling runs on the "
 		    "CPU only", o->matrix);
-	if (o->alg != FRS_NAIVE && o->alg != FRS_SORTED)
+	if (o->flat1 || (o->alg != FRS_ALG_NAIVE && o->alg != FRS_ALG_SORTED))
 		cli_die("-a %s: %s is a 3-D matrix; 3-D sampling has naive and "
-		    "sorted", frs_impl_name(o->alg), o->matrix);
+		    "sorted", o->flat1 ? "flat1" :
+		    frs_names(FRS_NAMES_ALGORITHM)[o->alg], o->matrix);
 	if (o->flags & FRS_MAP_EQUIRECT)
 		cli_die("--equirect: %s is a 3-D matrix; volumes have no "
 		    "equirectangular form", o->matrix);
@@ -242,7 +257,7 @@ static void check_dims(const struct sets *o)
 		cli_die("-s %ux%u: %s is a 3-D matrix; give -s N or WxHxD",
 		    o->size[0], o->size[1], o->matrix);
 	/* main counted 2-D elements; 3-D ones are larger. */
-	check_room(o, sizeof(struct frs3_elem));
+	check_room(o, sets_elem_size(3));
 }
 
 /* The matrix and the map, each file opened once: a matrix named says
@@ -274,18 +289,18 @@ static void load_inputs(struct sets *o)
 
 int main(int argc, char **argv)
 {
-	struct sets o = { .alg = FRS_SORTED, .sets = 1, .device = -1 };
+	struct sets o = { .alg = FRS_ALG_SORTED, .sets = 1, .device = -1 };
 	struct sets_run run;
 	int rc;
 
 	frs_options_init(&o.opt);
 	cli_init("frs-sample", usage);
 	parse_opts(argc, argv, &o);
-	check_room(&o, sizeof(struct frs_elem));
+	check_room(&o, sets_elem_size(2));
 	cli_options_done();
 	load_inputs(&o);
 	if ((rc = sets_open(&o, &run)) < 0)
-		rc == -2 ? cli_die_device(o.alg != FRS_FLAT1) : cli_die_lib();
+		rc == -2 ? cli_die_device(!o.flat1) : cli_die_lib();
 	cli_out_check(o.out, !o.count_only && !o.text);
 	if (sets_write(&o, &run) < 0)
 		cli_die_lib();

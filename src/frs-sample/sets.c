@@ -386,7 +386,7 @@ static int open2(const struct sets *a, struct sets_run *run)
 		return -1;
 	}
 	if (run->ocl != NULL)
-		api_sampler_device(run->smp, run->ocl, (int)a->alg);
+		api_sampler_device(run->smp, run->ocl, (int)sets_impl(a));
 	/* Exact counts: set 0's taus only for -v (each set finds its own). */
 	if (api_setup_steps(run->smp, a->steps, a->nsteps, a->seed, a->verbose,
 	    &run->lv) < 0)
@@ -445,11 +445,9 @@ int sets_open(const struct sets *a, struct sets_run *run)
 	run->dims = a->dims;
 	run->reused = -1.0;
 	/* Flat 1, no public algorithm, is the device's (api_sampler_device):
-	 * the sampler's options name Sorted.  The others are the public
-	 * values (api.c). */
+	 * a->alg, the sampler's options, names Sorted for it. */
 	run->opt = a->opt;
-	run->opt.algorithm = a->alg == FRS_FLAT1 ? FRS_ALG_SORTED :
-	    (enum frs_algorithm)a->alg;
+	run->opt.algorithm = a->alg;
 	return run->dims == 3 ? open3(a, run) : open2(a, run);
 }
 

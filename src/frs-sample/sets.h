@@ -22,7 +22,8 @@ struct sets {
 	unsigned nsize;		/* sides given: 0, 1 (N), 2 or 3 */
 	int flags;		/* imap_load's, vol_load's */
 	struct frs_options opt;	/* its algorithm is alg's */
-	enum frs_impl alg;	/* FRS_FLAT1 with a device only */
+	enum frs_algorithm alg;	/* Sorted for flat1 */
+	int flat1;		/* the device's Flat 1 (with a device only) */
 	int cl, device;		/* OpenCL, its index (-1: the first) */
 	uint64_t steps[16];
 	unsigned nsteps;
@@ -82,6 +83,16 @@ struct sets_run {
  * device could not be opened.
  */
 int sets_open(const struct sets *a, struct sets_run *run);
+/* The bytes a sample takes while it is made, in dims 2 or 3. */
+static inline size_t sets_elem_size(unsigned dims)
+{
+	return dims == 3 ? sizeof(struct frs3_elem) : sizeof(struct frs_elem);
+}
+/* The implementation a runs (frscore.h), flat1 included. */
+static inline enum frs_impl sets_impl(const struct sets *a)
+{
+	return a->flat1 ? FRS_FLAT1 : (enum frs_impl)a->alg;
+}
 /* Load a->matrix, opening it once, and set a->dims from its header (2
  * when it tells none); a failure is told by sets_open, where the
  * run needs the matrix.  Standard input is left to sets_open, which

@@ -127,7 +127,7 @@ void sets_report(FILE *fp, const struct sets *o,
 		    (unsigned long long)(o->seed + o->sets - 1));
 	fprintf(fp, "frs-sample: %llu samples (%s); setup %.6f s, "
 	    "thresholding %.6f s, output %.6f s", (unsigned long long)r->total,
-	    frs_impl_name(o->alg), r->tsetup, r->tthr, r->tout);
+	    frs_impl_name(sets_impl(o)), r->tsetup, r->tthr, r->tout);
 	if (r->tnote > 0.0)
 		fprintf(fp, " (and %.6f s for -v's share)", r->tnote);
 	fputc('\n', fp);

@@ -219,6 +219,21 @@ struct frs_options {
 };
 /* The defaults above. */
 void frs_options_init(struct frs_options *opt);
+/*
+ * Since 2.1: the names the programs give the values of these enums
+ * (frs-sample(1)'s -a, --jitter, --threshold and --tiles), indexed by
+ * value and NULL-terminated; FRS_RULE_EXACT has none (frs-sample's
+ * --exact-count).  NULL for another which.  Thread-safe.
+ */
+enum frs_names {
+	FRS_NAMES_ALGORITHM,	/* enum frs_algorithm: "sorted", "naive", ... */
+	FRS_NAMES_JITTER,	/* enum frs_jitter_mode */
+	FRS_NAMES_RULE,		/* enum frs_rule_mode */
+	FRS_NAMES_TILING	/* enum frs_tiling_mode */
+};
+const char *const *frs_names(enum frs_names which);
+/* The largest level_blur. */
+#define FRS_LEVEL_BLUR_MAX 1e4
 
 typedef struct frs_sampler frs_sampler;
 

@@ -98,7 +98,7 @@ static int check_options(const struct frs_options *o, frs_error *err)
 		return api_arg_err(err, "options: unknown rule");
 	if ((unsigned)o->tiling > FRS_TILING_PLAIN)
 		return api_arg_err(err, "options: unknown tiling");
-	if (!(o->level_blur >= 0.0 && o->level_blur <= API_BLUR_MAX))
+	if (!(o->level_blur >= 0.0 && o->level_blur <= FRS_LEVEL_BLUR_MAX))
 		return api_arg_err(err, "options: level_blur must lie in [0, 1e4]");
 	if (o->threads < 0 || o->threads > 1024)
 		return api_arg_err(err, "options: threads must lie in 0 .. 1024");
@@ -169,11 +169,25 @@ int api_query_args(const char *fn, int have_args, uint64_t n, int threads,
 
 /* ---- the enums: public to internal, the one table of each ----------- */
 
-/* The programs' words for the public enums, in their order. */
-const char *const api_jitter_words[] = { "none", "halton", "random", NULL };
-const char *const api_rule_words[] = { "unbiased", "thesis", NULL };
-const char *const api_tiling_words[] = { "levels", "shuffled", "plain",
+/* The programs' words for the public enums, in their order (the
+ * algorithms' are the implementations' of frscore.h). */
+static const char *const algo_words[] = { FRS_ALGO_NAMES, NULL };
+static const char *const jitter_words[] = { "none", "halton", "random",
     NULL };
+static const char *const rule_words[] = { "unbiased", "thesis", NULL };
+static const char *const tiling_words[] = { "levels", "shuffled", "plain",
+    NULL };
+
+const char *const *frs_names(enum frs_names which)
+{
+	switch (which) {
+	case FRS_NAMES_ALGORITHM: return algo_words;
+	case FRS_NAMES_JITTER: return jitter_words;
+	case FRS_NAMES_RULE: return rule_words;
+	case FRS_NAMES_TILING: return tiling_words;
+	}
+	return NULL;
+}
 
 /* One vocabulary: the public algorithms are the implementations' values
  * (enum frs_impl), so that a public value is taken as it is. */

@@ -104,8 +104,6 @@ int api_options(struct frs_options *o, const struct frs_options *opt,
 	(su)->jitter = (enum frs_place)(o)->jitter;			\
 	(su)->tiles = (enum frs_tiling)(o)->tiling;			\
 } while (0)
-/* The largest smoothing of the levels the options may ask for. */
-#define API_BLUR_MAX 1e4
 /* What every run checks first: a sampler (have_s), 1 to 16 increasing
  * counts, at most 2^40; then the sampler's threads are set.  A code. */
 int api_run_begin(int have_s, int threads, const uint64_t *steps,
@@ -118,10 +116,6 @@ int api_run_begin(int have_s, int threads, const uint64_t *steps,
 int api_query_args(const char *fn, int have_args, uint64_t n, int threads,
     frs_error *err);
 
-/* The words for enum frs_jitter_mode, frs_rule_mode (but EXACT) and
- * frs_tiling_mode, in their order; NULL after the last. */
-extern const char *const api_jitter_words[], *const api_rule_words[],
-    *const api_tiling_words[];
 
 /* ---- masks (mask.c) ------------------------------------------------ */
 

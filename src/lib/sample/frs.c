@@ -22,25 +22,14 @@
  * there are enough chunks for the threads to share even a peaked map. */
 #define CHUNK_SAMPLES 16384
 
-/* The one table of the implementations' names, by enum frs_impl. */
+/* The implementations' names, by enum frs_impl. */
 static const char *const algo_names[FRS_FLAT1 + 1] = {
-	"sorted", "naive", "stack", "level1", "level2", "flat1"
+	FRS_ALGO_NAMES, "flat1"
 };
 
 const char *frs_impl_name(enum frs_impl a)
 {
 	return (unsigned)a <= FRS_FLAT1 ? algo_names[a] : "?";
-}
-
-int frs_impl_parse(const char *s, enum frs_impl *a)
-{
-	for (int i = 0; i <= FRS_FLAT1; i++)
-		if (strcmp(s, algo_names[i]) == 0) {
-			*a = (enum frs_impl)i;
-			return 0;
-		}
-	return frs_fail("unknown implementation '%s' (naive, stack, "
-	    "level1, level2, sorted, flat1)", s);
 }
 
 /* ---- setup (Listing 5.1) ------------------------------------------ */

@@ -39,6 +39,9 @@
 enum frs_impl {
 	FRS_SORTED, FRS_NAIVE, FRS_STACK, FRS_LEVEL1, FRS_LEVEL2, FRS_FLAT1
 };
+/* Their names, but the device's flat1, by value: the one list, which
+ * frs_impl_name's table and frs_names' (api.c) spell out. */
+#define FRS_ALGO_NAMES "sorted", "naive", "stack", "level1", "level2"
 #define FRS_NALGO FRS_FLAT1
 /* Where a sample sits inside its element: the centre, or offset by
  * Halton or random points; the values of frs.h's enum frs_jitter_mode
@@ -69,7 +72,6 @@ struct frs_xtau {
 };
 
 const char *frs_impl_name(enum frs_impl a);
-int frs_impl_parse(const char *s, enum frs_impl *a);
 
 struct frs_setup {
 	uint32_t iw, ih;	/* importance map */
