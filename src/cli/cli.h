@@ -6,10 +6,13 @@
  * files (outfile.c); the point files (ptsio.c), the point sets of the
  * programs that read them (ptsets.c, their options ptsopt.c), the
  * samplers' --sets writer (setsout.c) and the statistics over groups of
- * sets (groupstat.c); and the library's services in the programs' words
- * (services.c): the clock of -v's timings, a program's own loops as tasks
- * on the progress bar, the shipped data files, so that no program
- * includes base/progress.h or base/datadir.h, nor sees struct progress.
+ * sets (groupstat.c); rasters (raster.c), the reference samplers
+ * (refsamp.c), the FFT (fft.c); and the library's services in the
+ * programs' words (services.c): the clock of -v's timings, a program's
+ * own loops as tasks on the progress bar, parallel loops, the shipped
+ * data files, the record of a failure and warnings, so that no program
+ * includes base/progress.h, base/datadir.h or base/par.h, nor sees
+ * struct progress.
  *
  * A program's files include this header alone of src/cli
  * (test/t_layout.sh checks it).  The modules keep their own headers
