@@ -2,7 +2,8 @@
 # The library's layout (README, Layout): a folder of src/lib includes
 # headers only from itself and the folders before it, base, maps,
 # formats, sample, api (test/layers.sh); only api includes the public
-# frs.h (and maps/imap.h, for the public map type); nothing in src/lib
+# frs.h (and maps/imap.h and formats/frdio.h, for the public map and
+# matrix types); nothing in src/lib
 # includes the programs' src/cli; every include names its folder; no two
 # headers include each other, directly or through others; and no two
 # modules (a .c and its .h) depend on each other that way.  The
@@ -24,9 +25,12 @@ while read -r file target; do
 	from=${file#src/lib/}
 	from=${from%%/*}
 	case $target in
-	# The map type is public (struct frs_imap): maps/imap.h takes it
-	# from frs.h, no other header below api includes it.
+	# The public types (struct frs_imap, struct frs_matrix): the
+	# headers of their stages take them from frs.h; no other file
+	# below api includes it (no module below api calls into it either:
+	# the call graph below has no cycle).
 	frs.h) [ "$from" = api ] || [ "$file" = src/lib/maps/imap.h ] ||
+	    [ "$file" = src/lib/formats/frdio.h ] ||
 	    echo "$file: frs.h outside api" ;;
 	cli/*) echo "$file: includes the programs' $target" ;;
 	paths.h | ../../../cl/*.cl) ;;	# generated; the kernels' source
@@ -116,7 +120,7 @@ libheaders() {
 	dda) echo base/mem.h base/num.h maps/imap.h ;;
 	discrepancy) echo base/mem.h base/num.h base/rng.h ;;
 	frd-gen) echo base/io.h base/mem.h base/num.h base/ocl.h \
-	    base/parse.h base/rng.h formats/frdio.h ;;
+	    base/rng.h formats/frdio.h ;;
 	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
 	    formats/frdio.h maps/imap.h maps/pngio.h sample/frpio.h \
 	    sample/frscore.h ;;

@@ -154,6 +154,85 @@ static void test_map_errors(void **state)
 	frs_map_free(NULL);
 }
 
+/* frs_matrix_write's bytes are frd(5)'s layout (the format is the
+ * contract), frs_matrix_read gives them back, 2-D and 3-D; a value seen
+ * twice, a missing file, a stream that cannot be written, a parameter
+ * text too long: their codes. */
+static uint32_t le32(const unsigned char *p)
+{
+	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
+	    (uint32_t)p[3] << 24;
+}
+
+static void matrix_round(unsigned dims, uint32_t w, uint32_t h, uint32_t d)
+{
+	const char *path = tu_path("m.frd");
+	uint32_t v[64];
+	struct frs_matrix m = { dims, w, h, d, (size_t)w * h * d, "k=v\n", v,
+	    0 }, r;
+	unsigned char b[32 + 4 + 4 * 64];
+	FILE *fp;
+
+	for (size_t i = 0; i < m.n; i++)
+		v[i] = (uint32_t)((i * 7) % m.n);	/* 7 is prime to n */
+	assert_non_null(fp = fopen(path, "wb"));
+	assert_int_equal(frs_matrix_write(&m, fp, path, NULL), FRS_OK);
+	assert_int_equal(fclose(fp), 0);
+	assert_non_null(fp = fopen(path, "rb"));
+	assert_int_equal(fread(b, 1, sizeof b, fp), 32 + 4 + 4 * m.n);
+	fclose(fp);
+	assert_memory_equal(b, "\211FRD\r\n\032\n", 8);
+	assert_true(le32(b + 8) == 1 && le32(b + 12) == dims &&
+	    le32(b + 16) == w && le32(b + 20) == h && le32(b + 24) == d &&
+	    le32(b + 28) == 4);
+	assert_memory_equal(b + 32, "k=v\n", 4);
+	for (size_t i = 0; i < m.n; i++)
+		assert_int_equal(le32(b + 36 + 4 * i), v[i]);
+	assert_int_equal(frs_matrix_read(&r, path, NULL), FRS_OK);
+	assert_true(r.dims == dims && r.w == w && r.h == h && r.d == d &&
+	    r.n == m.n);
+	assert_string_equal(r.params, "k=v\n");
+	assert_memory_equal(r.v, v, m.n * sizeof *v);
+	frs_matrix_free(&r);
+	assert_null(r.v);
+}
+
+static void test_matrix_io(void **state)
+{
+	const char *path = tu_path("m.frd");
+	char *longp = malloc(70000);
+	uint32_t v[16];
+	struct frs_matrix m = { 2, 4, 4, 1, 16, "", v, 0 }, r = { 0 };
+	FILE *fp;
+
+	(void)state;
+	matrix_round(2, 8, 4, 1);
+	matrix_round(3, 4, 4, 2);
+	for (int i = 0; i < 16; i++)
+		v[i] = (uint32_t)(i == 9 ? 3 : i);	/* 3 twice, no 9 */
+	assert_non_null(fp = fopen(path, "wb"));
+	assert_int_equal(frs_matrix_write(&m, fp, path, NULL), FRS_OK);
+	fclose(fp);
+	EXPECT(FRS_E_FORMAT, frs_matrix_read(&r, path, E));
+	assert_null(r.v);
+	EXPECT(FRS_E_IO, frs_matrix_read(&r, tu_path("missing.frd"), E));
+	EXPECT(FRS_E_ARG, frs_matrix_read(NULL, path, E));
+	EXPECT(FRS_E_ARG, frs_matrix_read(&r, NULL, E));
+	assert_non_null(fp = fopen(path, "rb"));	/* not for writing */
+	EXPECT(FRS_E_IO, frs_matrix_write(&m, fp, path, E));
+	fclose(fp);
+	assert_non_null(longp);
+	memset(longp, 'x', 69999);
+	longp[69999] = '\0';
+	m.params = longp;
+	assert_non_null(fp = fopen(path, "wb"));
+	EXPECT(FRS_E_ARG, frs_matrix_write(&m, fp, path, E));
+	EXPECT(FRS_E_ARG, frs_matrix_write(NULL, fp, path, E));
+	fclose(fp);
+	free(longp);
+	frs_matrix_free(NULL);
+}
+
 /* frs_names: the programs' words by the enums' values. */
 static void test_names(void **state)
 {
@@ -644,6 +723,7 @@ TU_MAIN(setup, teardown,
 	cmocka_unit_test(test_map_errors),
 	cmocka_unit_test(test_imap_errors),
 	cmocka_unit_test(test_names),
+	cmocka_unit_test(test_matrix_io),
 	cmocka_unit_test(test_bad_maps),
 	cmocka_unit_test(test_sampler_errors),
 	cmocka_unit_test(test_draw_errors),

@@ -461,9 +461,16 @@ double cli_double(const char *opt, const char *s, double min, double max)
 double cli_double_above(const char *opt, const char *s, double min,
     double max)
 {
+	return cli_double_above_hint(opt, s, min, max, NULL);
+}
+
+double cli_double_above_hint(const char *opt, const char *s, double min,
+    double max, const char *hint)
+{
 	double v;
 	if (parse_double_above(opt, s, min, max, &v) < 0)
-		cli_usage_error("%s", frs_errmsg());
+		cli_usage_error("%s%s", frs_errmsg(), hint != NULL &&
+		    strtod(s, NULL) <= min ? hint : "");
 	return v;
 }
 

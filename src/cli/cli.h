@@ -213,6 +213,10 @@ double cli_double(const char *opt, const char *s, double min, double max);
 /* The same in (min, max]: for values that must be above min. */
 double cli_double_above(const char *opt, const char *s, double min,
     double max);
+/* The same with hint appended to the message when the value is a number
+ * at or below min (or none at all): what would have been meant. */
+double cli_double_above_hint(const char *opt, const char *s, double min,
+    double max, const char *hint);
 void cli_size(const char *opt, const char *s, uint32_t max, uint32_t *w,
     uint32_t *h);
 /* "N", "WxH" or "WxHxD": the number of sizes given; "N" fills all three,
@@ -229,6 +233,15 @@ noreturn void cli_list_devices(void);
  * "prog: --device: <library message>; see --list-devices", with ", or use
  * --device cpu" when the work runs on the CPU too (cpu_too), exit 1. */
 noreturn void cli_die_device(int cpu_too);
+/* The OpenCL device of --device (index -1: the first), base/ocl.h's
+ * context, which only the files of its users' own see: opened, or the
+ * program ends as cli_die_device(cpu_too) says; its name for messages,
+ * whether it has double precision (cl_khr_fp64); closed and freed. */
+struct ocl;
+struct ocl *cli_device_open(int index, int cpu_too);
+const char *cli_device_name(const struct ocl *o);
+int cli_device_fp64(const struct ocl *o);
+void cli_device_close(struct ocl *o);
 
 /* Called by every program when its options are parsed and checked,
  * before any file is opened or work begins.  Normally it does nothing.

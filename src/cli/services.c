@@ -9,6 +9,7 @@
 #include "cli/cli.h"
 #include "base/datadir.h"
 #include "base/err.h"
+#include "base/ocl.h"
 #include "base/par.h"
 #include "base/progress.h"
 
@@ -142,4 +143,31 @@ void cli_warn(const char *fmt, ...)
 	va_start(ap, fmt);
 	frs_vwarn(fmt, ap);
 	va_end(ap);
+}
+
+struct ocl *cli_device_open(int index, int cpu_too)
+{
+	struct ocl *o = cli_calloc("the OpenCL context", 1, sizeof *o);
+
+	if (ocl_open(o, index) < 0)
+		cli_die_device(cpu_too);
+	return o;
+}
+
+const char *cli_device_name(const struct ocl *o)
+{
+	return o->name;
+}
+
+int cli_device_fp64(const struct ocl *o)
+{
+	return o->fp64;
+}
+
+void cli_device_close(struct ocl *o)
+{
+	if (o == NULL)
+		return;
+	ocl_close(o);
+	free(o);
 }

@@ -8,10 +8,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "frs.h"
 #include "cli/cli.h"
-#include "base/ocl.h"
-#include "base/parse.h"
-#include "formats/frdio.h"
 #include "frd-gen/frdgen.h"
 #include "frd-gen/frdgencl.h"
 #include "frd-gen/frdq.h"
@@ -197,10 +195,10 @@ static void quality(const char *path)
 {
 	struct frs_matrix m;
 
-	if (frd_read(path, &m) < 0 || frd_check_permutation(&m, path) < 0 ||
+	if (frs_matrix_read(&m, path, NULL) != FRS_OK ||
 	    print_quality(stdout, &m, path) < 0)
 		cli_die_lib();
-	frd_free(&m);
+	frs_matrix_free(&m);
 }
 
 /* -v: the figures of the matrix just written, on standard error. */
@@ -250,9 +248,8 @@ static int parse_choice(const char *opt, const char *s, const char *a,
 /* --tol: 0 would be --exact, which the hint names. */
 static void parse_tol(struct frdgen_params *pr, const char *s)
 {
-	if (parse_double_above("--tol", s, 0.0, 0.999999, &pr->tol) < 0)
-		cli_usage_error("%s%s", cli_errmsg(), strtod(s, NULL) <= 0.0 ?
-		    "; --exact keeps every contribution" : "");
+	pr->tol = cli_double_above_hint("--tol", s, 0.0, 0.999999,
+	    "; --exact keeps every contribution");
 }
 
 /* The options that another method or field refuses (check_method), each
@@ -416,7 +413,8 @@ static void end_run(int rc, struct cli_task *task, struct outfile *of)
 /* Write a finished matrix to the open output, or die removing it. */
 static void write_matrix(struct outfile *of, const struct frs_matrix *m)
 {
-	cli_out_commit(of, frd_write(of->fp, of->name, m));
+	cli_out_commit(of, frs_matrix_write(m, of->fp, of->name, NULL) ==
+	    FRS_OK ? 0 : -1);
 }
 
 /* --method vac: the void-and-cluster baseline (vac.h). */
@@ -456,20 +454,21 @@ static int run_vac(const struct frdgen_params *pr,
 		    (unsigned long long)st.ones, (unsigned long long)st.moves);
 		report_quality(&m);
 	}
-	frd_free(&m);
+	frs_matrix_free(&m);
 	return 0;
 }
 
 /* --device cl: the device before the output, so that a missing one
  * fails at once. */
-static void open_device(struct ocl *o, int dev)
+static struct ocl *open_device(int dev)
 {
-	if (ocl_open(o, dev) < 0)
-		cli_die_device(1);
-	if (!o->fp64)
+	struct ocl *o = cli_device_open(dev, 1);
+
+	if (!cli_device_fp64(o))
 		cli_die("--device: OpenCL: %s has no double precision "
 		    "(cl_khr_fp64), which frd-gen needs to give the same matrix "
-		    "as --device cpu", o->name);
+		    "as --device cpu", cli_device_name(o));
+	return o;
 }
 
 /* -v: the time and the radius at the first and the last value. */
@@ -492,7 +491,7 @@ static int run_frd(const struct gen_opts *g)
 	struct frs_matrix m;
 	struct outfile of;
 	struct cli_task *task;
-	struct ocl o;
+	struct ocl *o = NULL;
 	double t0;
 
 	if (frdgen_check(pr) < 0)
@@ -502,22 +501,21 @@ static int run_frd(const struct gen_opts *g)
 	check_memory(pr, frdgen_memory(pr));
 	cli_options_done();
 	if (g->use_cl)
-		open_device(&o, g->dev);
+		o = open_device(g->dev);
 	/* Open the output first: a bad path fails before hours of work. */
 	cli_out_open(&of, cli.out, 1);
 	t0 = cli_now();
 	task = cli_task_begin("inserting", (uint64_t)pr->w * pr->h * pr->d);
-	end_run(g->use_cl ? frdgen_run_cl(pr, &o, &m, task) :
+	end_run(g->use_cl ? frdgen_run_cl(pr, o, &m, task) :
 	    frdgen_run(pr, &m, task), task, &of);
-	if (g->use_cl)
-		ocl_close(&o);
 	write_matrix(&of, &m);
 	if (pr->checkpoint != NULL)
 		unlink(pr->checkpoint);
 	if (g->verbose)
 		report_frd(pr, &m, cli_now() - t0,
-		    g->use_cl ? o.name : "the CPU");
-	frd_free(&m);
+		    g->use_cl ? cli_device_name(o) : "the CPU");
+	cli_device_close(o);
+	frs_matrix_free(&m);
 	return 0;
 }
 

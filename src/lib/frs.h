@@ -13,6 +13,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -105,6 +106,33 @@ void frs_mask_free(frs_mask *mask);
  */
 int frs_default_matrix(frs_mask **mask, unsigned dims, char *path,
     size_t cap, frs_error *err);
+
+/*
+ * Since 2.1: a threshold matrix's values as a .frd file holds them
+ * (frd(5)): w x h (x d) values, x fastest, a permutation of 0 .. n-1,
+ * and the parameters of the generator that made them, "key=value" lines.
+ */
+struct frs_matrix {
+	unsigned dims;		/* 2 or 3 */
+	uint32_t w, h, d;	/* d = 1 when dims = 2 */
+	size_t n;		/* w * h * d */
+	char *params;		/* NUL-terminated, never NULL after a read */
+	uint32_t *v;		/* n values */
+	int perm;		/* the library's: 1 once found to be a
+				 * permutation (the values then unchanged) */
+};
+/* Read a .frd file ("-": standard input), its values checked in the
+ * same pass to be a permutation (FRS_E_FORMAT naming the first value
+ * seen twice otherwise); *m zeroed on failure.  Thread-safe. */
+int frs_matrix_read(struct frs_matrix *m, const char *path,
+    frs_error *err);
+/* Write m as a .frd file to fp (name: for messages): FRS_E_ARG for a
+ * matrix a .frd cannot hold, FRS_E_IO when a write fails; fp is neither
+ * flushed nor closed.  Thread-safe for distinct streams. */
+int frs_matrix_write(const struct frs_matrix *m, FILE *fp, const char *name,
+    frs_error *err);
+/* Release what frs_matrix_read made; *m zeroed. */
+void frs_matrix_free(struct frs_matrix *m);
 
 /* ---- importance maps ------------------------------------------------- */
 

@@ -440,3 +440,32 @@ int api_mask_prep3(const frs_mask *cmk, uint32_t b, struct frs3_prep *view)
 	pthread_mutex_unlock(&mk->lock);
 	return rc;
 }
+
+int frs_matrix_read(struct frs_matrix *m, const char *path, frs_error *err)
+{
+	if (m != NULL)
+		*m = (struct frs_matrix){ 0 };
+	if (m == NULL || path == NULL)
+		return api_arg_err(err, "frs_matrix_read: NULL argument");
+	if (frd_read_perm(path, m) < 0)
+		return api_lib_err(err, FRS_E_FORMAT);
+	return api_ok(err);
+}
+
+int frs_matrix_write(const struct frs_matrix *m, FILE *fp, const char *name,
+    frs_error *err)
+{
+	if (m == NULL || fp == NULL || m->params == NULL ||
+	    (m->v == NULL && m->n > 0))
+		return api_arg_err(err, "frs_matrix_write: NULL argument");
+	if (frd_write(fp, name != NULL ? name : "matrix", m) < 0)
+		return api_lib_err(err, strlen(m->params) > FRD_MAX_PARAMS ?
+		    FRS_E_ARG : FRS_E_IO);
+	return api_ok(err);
+}
+
+void frs_matrix_free(struct frs_matrix *m)
+{
+	if (m != NULL)
+		frd_free(m);
+}

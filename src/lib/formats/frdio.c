@@ -212,6 +212,16 @@ int frd_read(const char *path, struct frs_matrix *m)
 	return io_read_path(path, read_matrix, m);
 }
 
+static int read_perm(FILE *fp, const char *name, void *m)
+{
+	return frd_read_pre(fp, name, NULL, 0, m, FRD_PERM_NEED);
+}
+
+int frd_read_perm(const char *path, struct frs_matrix *m)
+{
+	return io_read_path(path, read_perm, m);
+}
+
 int frd_write(FILE *fp, const char *name, const struct frs_matrix *m)
 {
 	unsigned char h[FRD_HEADER];

@@ -19,6 +19,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "frs.h"	/* struct frs_matrix, public */
+
 #define FRD_MAGIC "\211FRD\r\n\032\n"
 #define FRD_VERSION 1
 #define FRD_HEADER 32
@@ -26,16 +28,6 @@
 /* Largest element count a reader accepts: 2^32 values would not be
  * distinct uint32 thresholds. */
 #define FRD_MAX_ELEMS ((uint64_t)1 << 32)
-
-struct frs_matrix {
-	unsigned dims;		/* 2 or 3 */
-	uint32_t w, h, d;	/* d = 1 when dims = 2 */
-	size_t n;		/* w * h * d */
-	char *params;		/* NUL-terminated, never NULL after read */
-	uint32_t *v;		/* n values */
-	int perm;		/* 1: found to be a permutation of 0..n-1,
-				 * which the values stay */
-};
 
 /* Allocate a matrix of the given sizes with zeroed values. */
 int frd_alloc(struct frs_matrix *m, unsigned dims, uint32_t w, uint32_t h,
@@ -45,6 +37,8 @@ void frd_free(struct frs_matrix *m);
 /* Read and validate magic, version, sizes against the file length, and
  * that every value is below n.  path "-" is standard input. */
 int frd_read(const char *path, struct frs_matrix *m);
+/* The same, the values checked to be a permutation in the one pass. */
+int frd_read_perm(const char *path, struct frs_matrix *m);
 int frd_read_fp(FILE *fp, const char *name, struct frs_matrix *m);
 /* What the pass that checks the values learns beyond their range:
  * nothing, whether they are a permutation (m->perm: 1 if so, 0 if not
