@@ -344,20 +344,6 @@ static int load_mask(const struct sets *a, struct sets_run *run)
 	return 0;
 }
 
-/* The OpenCL device asked for, if any: -2 when it cannot be opened. */
-static int open_device(const struct sets *a, struct sets_run *run)
-{
-	if (!a->cl)
-		return 0;
-	if ((run->ocl = calloc(1, sizeof *run->ocl)) == NULL)
-		return cli_fail("out of memory");
-	if (ocl_open(run->ocl, a->device) == 0)
-		return 0;
-	free(run->ocl);
-	run->ocl = NULL;
-	return -2;
-}
-
 /* The sampler of a 2-D mask on the CPU or the device, and set 0's
  * levels with the mask prepared for them. */
 static int open2(const struct sets *a, struct sets_run *run)
@@ -369,10 +355,10 @@ static int open2(const struct sets *a, struct sets_run *run)
 	double t0;
 	int rc, exact = a->opt.rule == FRS_RULE_EXACT;
 
-	if ((rc = open_device(a, run)) < 0) {
-		imap_free(&map);
-		return rc;
-	}
+	/* The OpenCL device asked for, if any (one that does not open ends
+	 * the program). */
+	if (a->cl)
+		run->ocl = cli_device_open(a->device, !a->flat1);
 	t0 = cli_now();
 	rc = load_mask(a, run);
 	/* The map as sets_map checked it, handed over: no copy, no second
@@ -548,7 +534,7 @@ int sets_write(const struct sets *a, struct sets_run *run)
 	run->tthr = cli_now() - t1 - run->tout - run->tnote;
 	run->made = mk->made;
 	run->made_in = mk->frp != NULL ? mk->frp : a->matrix;
-	run->device = run->ocl != NULL ? run->ocl->name : NULL;
+	run->device = run->ocl != NULL ? cli_device_name(run->ocl) : NULL;
 	for (unsigned i = 0; i < FRS_LEVELS_MAX; i++)
 		free(u.uses[i]);
 	free(u.rec);
@@ -565,6 +551,5 @@ void sets_close(struct sets_run *run)
 	if (run->ocl == NULL)
 		return;
 	frscl_release(run->ocl);
-	ocl_close(run->ocl);
-	free(run->ocl);
+	cli_device_close(run->ocl);
 }

@@ -292,7 +292,7 @@ static void report(const struct opts *o, const struct hsw_run *r,
 	if (r->cl)
 		fprintf(stderr, "hsw-sample: device %s: program and tree %.6f "
 		    "s; points written %.6f s, kernel %.6f s, read %.6f s\n",
-		    r->dev.name, r->hc.t_setup, r->hc.t_write, r->hc.t_kernel,
+		    cli_device_name(r->dev), r->hc.t_setup, r->hc.t_write, r->hc.t_kernel,
 		    r->hc.t_read);
 }
 

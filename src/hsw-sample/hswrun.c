@@ -21,8 +21,8 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 
 	memset(r, 0, sizeof *r);
 	r->cl = cl;
-	if (cl && ocl_open(&r->dev, cl_index) < 0)
-		return -2;
+	if (cl)	/* one that does not open ends the program */
+		r->dev = cli_device_open(cl_index, 1);
 	if (frs_imap_load(&map, src, w, h, flags, NULL) != FRS_OK)
 		goto fail;
 	t0 = cli_now();
@@ -33,7 +33,7 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 		cli_fail_context(src);
 		goto fail;
 	}
-	if (cl && hswcl_init(&r->hc, &r->dev, &r->hw->t) < 0) {
+	if (cl && hswcl_init(&r->hc, r->dev, &r->hw->t) < 0) {
 		bad = -2;
 		goto fail;
 	}
@@ -41,8 +41,7 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 	return 0;
 fail:
 	frs_hsw_free(r->hw);
-	if (cl)
-		ocl_close(&r->dev);
+	cli_device_close(r->dev);
 	return bad;
 }
 
@@ -50,7 +49,7 @@ void hsw_run_close(struct hsw_run *r)
 {
 	if (r->cl) {
 		hswcl_free(&r->hc);
-		ocl_close(&r->dev);
+		cli_device_close(r->dev);
 	}
 	frs_hsw_free(r->hw);
 }

@@ -12,13 +12,12 @@
 #include <stdint.h>
 
 #include "api/api.h"
-#include "base/ocl.h"
 #include "hsw-sample/hswcl.h"
 
 struct hsw_run {
 	frs_hsw *hw;
 	int cl;			/* warping on dev */
-	struct ocl dev;
+	struct ocl *dev;	/* cli_device_open's, when cl */
 	struct hswcl hc;
 	/* Seconds spent: building the quadtree (and with the device, its
 	 * program and upload), and warping, summed over the rounds. */
