@@ -130,8 +130,7 @@ static void test_equirect(void **state)
 	frs_map_equirect(f, 4, 3, 5);
 	frs_map_equirect_f64(d, 4, 3, 0);
 	for (int j = 0; j < 3; j++) {
-		const double pi = 3.14159265358979323846;
-		double t0 = pi * j / 3, t1 = pi * (j + 1) / 3;
+		double t0 = PI * j / 3, t1 = PI * (j + 1) / 3;
 		double w = (cos(t0) - cos(t1)) / (t1 - t0);
 		for (int i = 0; i < 4; i++) {
 			assert_near(d[j * 4 + i], w, 1e-15);

@@ -12,7 +12,6 @@
 #include "cli/refsamp.h"
 #include "base/rng.h"
 
-#define PI 3.14159265358979323846
 
 static double now(void)
 {

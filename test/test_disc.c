@@ -563,7 +563,7 @@ static void shapes_brute(void **state)
 				    geom_in_circle(q[0], q[1], q[2], xy[2 * i],
 				    xy[2 * i + 1]);
 			area = cls == DISC_QUAD ? disc_quad_area(q) :
-			    3.14159265358979323846 * q[2] * q[2];
+			    PI * q[2] * q[2];
 			d = fabs((double)m / (double)n - area);
 			sum += (long double)d * d;
 			best = fmax(best, d);
@@ -649,7 +649,7 @@ static void expectations(void **state)
 				ar = disc_quad_area(q);
 			} else {
 				disc_circle_shape(o.seed, k, q);
-				ar = 3.14159265358979323846 * q[2] * q[2];
+				ar = PI * q[2] * q[2];
 			}
 			t += ar * (1 - ar);
 		}

@@ -4,7 +4,6 @@
 #include "testutil.h"
 #include "cli/fft.h"
 
-#define PI 3.14159265358979323846
 
 /* n complex values from (seed, FRS_STREAM_TEST), in [-1, 1). */
 static double *rnd_complex(size_t n, uint64_t seed)

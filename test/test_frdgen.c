@@ -359,7 +359,7 @@ static void fft_vs_dft(void **state)
 	for (int k = 0; k < 16; k++) {
 		double re = 0, im = 0;
 		for (int j = 0; j < 16; j++) {
-			double a = -2 * 3.14159265358979323846 * j * k / 16;
+			double a = -2 * PI * j * k / 16;
 			re += x[2 * j] * cos(a) - x[2 * j + 1] * sin(a);
 			im += x[2 * j] * sin(a) + x[2 * j + 1] * cos(a);
 		}

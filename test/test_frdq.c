@@ -6,7 +6,6 @@
 #include "frsutil.h"
 #include "frd-gen/frdq.h"
 
-#define PI 3.14159265358979323846
 
 static void matrix(struct frs_matrix *m, unsigned dims, uint32_t w,
     uint32_t h, uint32_t d, uint64_t seed)

@@ -7,7 +7,6 @@
 
 #include <math.h>
 
-#define PI 3.14159265358979323846
 
 static void fill(struct frs_imap *m, uint32_t w, uint32_t h,
     double (*f)(uint32_t, uint32_t))

@@ -9,7 +9,6 @@
 #include "cli/raster.h"
 
 static const uint8_t black[3] = { 0, 0, 0 };
-static const double PI = 3.14159265358979323846;
 
 /* sum(1 - v / 255) over the raster (grey). */
 static double darkness(const struct frs_raster *r)

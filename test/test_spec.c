@@ -4,7 +4,6 @@
 #include "maps/imap.h"
 #include "maps/spec.h"
 
-#define PI 3.14159265358979323846
 
 static void load(const char *spec, uint32_t w, uint32_t h, struct frs_imap *m)
 {

@@ -10,7 +10,6 @@
 #include "base/rng.h"
 #include "dda/spectrum.h"
 
-#define PI 3.14159265358979323846
 
 /* m x m cells, one point per cell: at the centre (jit 0) or uniform in
  * the cell (jit 1). */

@@ -44,7 +44,7 @@ static uint32_t tdist(uint32_t a, uint32_t b, uint32_t n)
 /* S of vac.h, computed here from its definition. */
 static int scale_bits(const struct vac_params *pr)
 {
-	double a = 1.0 + sqrt(2.0 * 3.14159265358979323846) * pr->sigma, b = 1.0;
+	double a = 1.0 + sqrt(2.0 * PI) * pr->sigma, b = 1.0;
 	uint32_t size[3] = { pr->w, pr->h, pr->d };
 	int e = 0;
 

@@ -14,6 +14,9 @@
 #include <unistd.h>
 #include <math.h>
 
+/* pi, once for the tests (C11's math.h has no M_PI). */
+#define PI 3.14159265358979323846
+
 #include "base/err.h"
 #include "base/rng.h"
 

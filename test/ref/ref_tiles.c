@@ -467,7 +467,6 @@ static void chi2(int bx, int by, const char *map, int flags, const char *path)
 
 /* ---- band --------------------------------------------------------- */
 
-#define PI 3.14159265358979323846
 #define KMAX 64			/* frequencies |kx|, |ky| <= KMAX */
 #define KN (2 * KMAX + 1)
 #define KMIN2 9			/* |k| < 3: the band's density, not its
@@ -500,7 +499,7 @@ static void cmadd4(double *restrict fr, double *restrict fi,
  * rounding error of about KMAX ulp. */
 static void rot(double t, double *c, double *s, size_t stride)
 {
-	double wc = cos(2.0 * PI * t), ws = -sin(2.0 * PI * t);
+	double wc = cos(2.0 * NUM_PI * t), ws = -sin(2.0 * NUM_PI * t);
 
 	c[0] = 1.0;
 	s[0] = 0.0;
