@@ -127,6 +127,19 @@ frs-sample -m "$M" -i "$T/b.frv" -n 800 -q -T -o "$T/f.txt" &&
     frs-sample -m "$M" -i blob3:sigma=0.2 -s 8x6x4 -n 800 -q -T -o "$T/g.txt" &&
     [ "$(grep -vc '^#' "$T/f.txt")" -gt 700 ] &&
     ok "sampling a .frv file" || nok "sampling a .frv file"
+# Without -m the source says what it is, standard input too: a .frv
+# there is sampled in 3-D on the shipped 3-D matrix, as the file is.
+frs-sample -i - -n 800 -q -o "$T/in.pts" <"$T/b.frv" &&
+    frs-sample -i "$T/b.frv" -n 800 -q -o "$T/file.pts" &&
+    cmp -s "$T/in.pts" "$T/file.pts" &&
+    [ "$(od -A n -t u4 -j 12 -N 4 "$T/in.pts" | tr -d ' ')" = 3 ] &&
+    ok "a .frv on standard input, no -m: a volume" ||
+    nok "a .frv on standard input, no -m: a volume"
+# -s WxH asks for a 2-D map: a volume where one is needed says so.
+expect_fail "a volume spec with -s WxH" 1 "a procedural volume where a 2-D map is needed" \
+    "$T/o.pts" frs-sample -i blob3 -s 8x8 -n 10 -o "$T/o.pts"
+expect_fail "a .frv with -s WxH" 1 "a volume (.frv) where a 2-D map is needed" \
+    "$T/o.pts" frs-sample -i "$T/b.frv" -s 8x8 -n 10 -o "$T/o.pts"
 imap gen const -s 4 --format frv -o "$T/c.frv" && [ "$(wc -c <"$T/c.frv")" -eq 288 ] &&
     ok "imap gen const as a volume" || nok "imap gen const as a volume"
 

@@ -231,9 +231,50 @@ static void loading(void **state)
 	assert_err_has("missing.frv");
 }
 
+/* map_or_vol_load: what a source is (want 0) against what it was made
+ * as; a kind asked for that it is not refused; the statistics handed
+ * back those of the values as loaded. */
+static void either_kind(void **state)
+{
+	const uint32_t own[3] = { 0, 0, 0 }, sz[3] = { 6, 5, 0 };
+	struct frs_imap_stats st, want;
+	struct frs_imap m;
+	struct frs_vol v, r;
+	const char *path;
+
+	(void)state;
+	numbered(&v, 4, 3, 2);
+	path = write_vol("e.frv", &v);
+	assert_int_equal(map_or_vol_load(path, 0, own, 0, &m, NULL, &r), 3);
+	assert_memory_equal(r.v, v.v, 24 * sizeof *r.v);
+	vol_free(&r);
+	assert_null(m.v);
+	assert_int_equal(map_or_vol_load(path, 2, own, 0, &m, NULL, &r), -1);
+	assert_err_has("e.frv", "a volume (.frv) where a 2-D map");
+	assert_int_equal(map_or_vol_load("blob3", 0, own, 0, &m, NULL, &r), 3);
+	assert_true(r.w == 32 && r.h == 32 && r.d == 32);
+	vol_free(&r);
+	assert_int_equal(map_or_vol_load("blob3", 2, own, 0, &m, NULL, &r), -1);
+	assert_err_has("blob3", "a procedural volume where a 2-D map");
+	assert_int_equal(map_or_vol_load("blob", 0, sz, FRS_MAP_EQUIRECT, &m, &st,
+	    &r), 2);
+	assert_true(m.w == 6 && m.h == 5);
+	assert_null(r.v);
+	imap_stats(&m, &want);
+	assert_true(st.mean == want.mean && st.max == want.max &&
+	    st.count == 30);
+	imap_free(&m);
+	tu_write(tu_path("e.txt"), "not a map\n", 10);
+	assert_int_equal(map_or_vol_load(tu_path("e.txt"), 0, own, 0, &m, NULL,
+	    &r), -1);
+	assert_err_has("e.txt", "not a PNG or OpenEXR file");
+	vol_free(&v);
+}
+
 TU_MAIN(NULL, tu_teardown,
 	cmocka_unit_test(alloc_and_view),
 	cmocka_unit_test(layout_and_round_trip),
 	cmocka_unit_test(damaged_files_refused),
 	cmocka_unit_test(validation),
-	cmocka_unit_test(loading))
+	cmocka_unit_test(loading),
+	cmocka_unit_test(either_kind))
