@@ -135,6 +135,11 @@ frs-sample -i - -n 800 -q -o "$T/in.pts" <"$T/b.frv" &&
     [ "$(od -A n -t u4 -j 12 -N 4 "$T/in.pts" | tr -d ' ')" = 3 ] &&
     ok "a .frv on standard input, no -m: a volume" ||
     nok "a .frv on standard input, no -m: a volume"
+# A default matrix that does not load says why, not that the map is of
+# the other kind.
+printf 'junk' >"$T/junk.frd"
+expect_fail "FRS_MATRIX3 that does not load" 1 "junk.frd" "$T/o.pts" \
+    env FRS_MATRIX3="$T/junk.frd" frs-sample -i blob3 -n 10 -o "$T/o.pts"
 # -s WxH asks for a 2-D map: a volume where one is needed says so.
 expect_fail "a volume spec with -s WxH" 1 "a procedural volume where a 2-D map is needed" \
     "$T/o.pts" frs-sample -i blob3 -s 8x8 -n 10 -o "$T/o.pts"
