@@ -6,6 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,24 +17,48 @@
 #include "maps/spec.h"
 #include "maps/vol.h"
 
+/*
+ * The loads of frs_map_load and frs_imap_load (fn names it): their
+ * arguments, then src as the programs load it.  A failure's code: a
+ * spec's is the argument's (bad parameters, a size too large), a file's
+ * its format's, but for a file that does not open (IO, by the failure's
+ * kind: one open), the memory (NOMEM) and the values (MAP).
+ */
+static int load_map(const char *fn, int args, const char *src, uint32_t w,
+    uint32_t h, int flags, struct frs_imap *m, frs_error *err)
+{
+	char msg[80];
+
+	if (!args) {
+		snprintf(msg, sizeof msg, "%s: NULL argument", fn);
+		return api_arg_err(err, msg);
+	}
+	if ((w == 0) != (h == 0)) {
+		snprintf(msg, sizeof msg, "%s: width and height are both 0 or "
+		    "both set", fn);
+		return api_arg_err(err, msg);
+	}
+	if (imap_load(src, w, h, flags, m) < 0)
+		return api_lib_err(err, imap_is_spec(src) ? FRS_E_ARG :
+		    FRS_E_FORMAT);
+	return FRS_OK;
+}
+
 int frs_map_load(const char *src, uint32_t width, uint32_t height,
     float **map, uint32_t *width_out, uint32_t *height_out, frs_error *err)
 {
 	struct frs_imap m;
 	float *f;
+	int rc;
 
-	if (src == NULL || map == NULL || width_out == NULL ||
-	    height_out == NULL)
-		return api_arg_err(err, "frs_map_load: NULL argument");
-	*map = NULL;
-	if ((width == 0) != (height == 0))
-		return api_arg_err(err, "frs_map_load: width and height are both "
-		    "0 or both set");
-	/* Negative values (lossy EXR) become zero, as in frs-sample(1).
-	 * One open: a file that does not open is FRS_E_IO by its kind. */
-	if (imap_load(src, width, height, 0, &m) < 0)
-		return api_lib_err(err, imap_is_spec(src) ? FRS_E_ARG :
-		    FRS_E_FORMAT);
+	if (map != NULL)
+		*map = NULL;
+	/* Negative values (lossy EXR) become zero, as in frs-sample(1). */
+	rc = load_map("frs_map_load", src != NULL && map != NULL &&
+	    width_out != NULL && height_out != NULL, src, width, height, 0, &m,
+	    err);
+	if (rc != FRS_OK)
+		return rc;
 	f = malloc((size_t)m.w * m.h * sizeof *f);
 	if (f == NULL) {
 		imap_free(&m);
@@ -56,17 +81,13 @@ void frs_map_free(float *map)
 int frs_imap_load(struct frs_imap *map, const char *src, uint32_t width,
     uint32_t height, int flags, frs_error *err)
 {
+	int rc;
+
 	if (map != NULL)
 		*map = (struct frs_imap){ 0 };
-	if (src == NULL || map == NULL)
-		return api_arg_err(err, "frs_imap_load: NULL argument");
-	if ((width == 0) != (height == 0))
-		return api_arg_err(err, "frs_imap_load: width and height are both "
-		    "0 or both set");
-	if (imap_load(src, width, height, flags, map) < 0)
-		return api_lib_err(err, frs_errkind() == FRS_ERRKIND_SPEC ?
-		    FRS_E_ARG : FRS_E_FORMAT);
-	return api_ok(err);
+	rc = load_map("frs_imap_load", src != NULL && map != NULL, src, width,
+	    height, flags, map, err);
+	return rc != FRS_OK ? rc : api_ok(err);
 }
 
 void frs_imap_free(struct frs_imap *map)
