@@ -125,7 +125,7 @@ libheaders() {
 	    formats/frdio.h maps/imap.h maps/pngio.h sample/frpio.h \
 	    sample/frscore.h ;;
 	frs-sample) echo api/api.h maps/imap.h maps/mapload.h \
-	    maps/vol.h sample/frscl.h sample/frscore.h ;;
+	    maps/vol.h sample/frscl.h ;;
 	hsw-sample) echo api/api.h base/mem.h base/ocl.h sample/hsw.h ;;
 	imap) echo maps/exrio.h maps/imap.h maps/mapload.h maps/pngio.h \
 	    maps/spec.h maps/vol.h ;;

@@ -43,6 +43,45 @@ static double *draw3(const frs_sampler3 *s, const uint64_t *steps,
 	return rec;
 }
 
+/* frs_draw3_each's batches gathered into records in draw3's layout. */
+struct gather3 {
+	double *rec;
+	size_t n, cap, k;
+	int calls;
+};
+
+static int gather3(void *ctx, const double *xyz, const double *pdf,
+    const uint32_t *step, size_t k, uint64_t total)
+{
+	struct gather3 *g = ctx;
+
+	if (g->rec == NULL) {
+		g->cap = (size_t)total;
+		g->rec = malloc((g->cap + 1) * g->k * sizeof *g->rec);
+		assert_non_null(g->rec);
+	}
+	assert_true(total == g->cap && g->n + k <= g->cap);
+	for (size_t i = 0; i < k; i++, g->n++) {
+		double *r = g->rec + g->n * g->k;
+		size_t c = 3;
+		memcpy(r, xyz + 3 * i, 3 * sizeof *r);
+		if (pdf != NULL)
+			r[c++] = pdf[i];
+		if (step != NULL)
+			r[c++] = (double)(step[i] + 1);
+		assert_int_equal(c, g->k);
+	}
+	g->calls++;
+	return 0;
+}
+
+static int stop3(void *ctx, const double *xyz, const double *pdf,
+    const uint32_t *step, size_t k, uint64_t total)
+{
+	(void)xyz, (void)pdf, (void)step, (void)k, (void)total;
+	return ++*(int *)ctx;
+}
+
 /* One record of oracle3: frs3_point, the density I / mean, the step. */
 struct oracle3 {
 	const struct frs3_setup *su;
@@ -222,6 +261,21 @@ static void compare3(const frs_sampler3 *s, const struct frs_vol *vol,
 	rec = draw3(s, steps, nsteps, seed, pdf, &n);
 	ref = oracle3(vol, o, steps, nsteps, seed, pdf, &nref);
 	assert_int_equal(n, nref);
+	/* The callback form: the same records in the same order; a
+	 * callback that says stop ends the run at once. */
+	{
+		struct gather3 g = { NULL, 0, 0, k, 0 };
+		frs_error e;
+		int calls = 0;
+		assert_int_equal(frs_draw3_each(s, steps, nsteps, seed, pdf,
+		    gather3, &g, &e), FRS_OK);
+		assert_int_equal(g.n, n);
+		assert_memory_equal(g.rec, rec, n * k * sizeof *rec);
+		free(g.rec);
+		assert_int_equal(frs_draw3_each(s, steps, nsteps, seed, pdf,
+		    stop3, &calls, &e), FRS_E_CALLBACK);
+		assert_int_equal(calls, 1);
+	}
 	if (nsteps == 1) {
 		assert_memory_equal(rec, ref, n * k * sizeof *rec);
 	} else {	/* the oracle gives the levels' steps in turn */

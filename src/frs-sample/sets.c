@@ -1,7 +1,7 @@
 /*
  * frs-sample's work (frs-sample(1)): the matrix, map or volume and
  * device loaded, set 0's setup, then M sets through the draws' callback
- * form (frs_draw_each, api_draw3_each) into one points file: x, y [, z]
+ * form (frs_draw_each, frs_draw3_each) into one points file: x, y [, z]
  * [, pdf] [, step + 1] [, set].  The program keeps the options and the
  * warnings that name them; its -v report is setsreport.c.
  */
@@ -451,7 +451,7 @@ static uint64_t one_set(struct out *u, uint64_t seed)
 		rc = run->dims == 3 ? frs_count3(run->smp3, n, seed, &count, &err) :
 		    frs_count(run->smp, n, seed, &count, &err);
 	else
-		rc = run->dims == 3 ? api_draw3_each(run->smp3, a->steps,
+		rc = run->dims == 3 ? frs_draw3_each(run->smp3, a->steps,
 		    a->nsteps, seed, a->pdf, out_batch, u, &err) :
 		    frs_draw_each(run->smp, a->steps, a->nsteps, seed, a->pdf,
 		    out_batch, u, &err);

@@ -3,7 +3,6 @@
 #include "frs.h"
 
 #include "frs-sample/sets.h"
-#include "sample/frscore.h"
 
 /* -v: set 0's setup. */
 static void report_setup(FILE *fp, const struct sets *o,
@@ -127,7 +126,8 @@ void sets_report(FILE *fp, const struct sets *o,
 		    (unsigned long long)(o->seed + o->sets - 1));
 	fprintf(fp, "frs-sample: %llu samples (%s); setup %.6f s, "
 	    "thresholding %.6f s, output %.6f s", (unsigned long long)r->total,
-	    frs_impl_name(sets_impl(o)), r->tsetup, r->tthr, r->tout);
+	    o->flat1 ? "flat1" : frs_names(FRS_NAMES_ALGORITHM)[o->alg],
+	    r->tsetup, r->tthr, r->tout);
 	if (r->tnote > 0.0)
 		fprintf(fp, " (and %.6f s for -v's share)", r->tnote);
 	fputc('\n', fp);

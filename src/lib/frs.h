@@ -20,7 +20,7 @@ extern "C" {
 #endif
 
 #define FRS_API_VERSION_MAJOR 2
-#define FRS_API_VERSION_MINOR 1
+#define FRS_API_VERSION_MINOR 2
 
 /* ---- errors ---------------------------------------------------------- */
 
@@ -383,6 +383,11 @@ int frs_draw3_progressive(const frs_sampler3 *sampler,
     double *pdf, uint32_t *step, size_t cap, size_t *count, frs_error *err);
 int frs_count3(const frs_sampler3 *sampler, uint64_t n, uint64_t seed,
     uint64_t *count, frs_error *err);
+/* Since 2.2: frs_draw_each for a volume, (x, y, z) triples in xyz,
+ * in the order frs_draw3_progressive gives them.  Thread-safe. */
+int frs_draw3_each(const frs_sampler3 *sampler, const uint64_t *steps,
+    unsigned nsteps, uint64_t seed, int want_pdf, frs_point_fn fn,
+    void *ctx, frs_error *err);
 /* Since 2.0: frs_sampler_levels for a volume (octree levels). */
 int frs_sampler3_levels(const frs_sampler3 *sampler, uint64_t n,
     uint64_t seed, struct frs_level_info *levels, unsigned cap,

@@ -319,10 +319,6 @@ int api_setup3(const frs_sampler3 *s, const uint64_t *steps,
 /* The mask's lists for the sampler's runs of su. */
 int api_sampler3_prep(const frs_sampler3 *s, const struct frs3_setup *su,
     struct frs3_prep *view);
-/* frs_draw_each for a 3-D sampler: (x, y, z) triples in xy. */
-int api_draw3_each(const frs_sampler3 *s, const uint64_t *steps,
-    unsigned nsteps, uint64_t seed, int want_pdf, frs_point_fn fn,
-    void *ctx, frs_error *err);
 
 /* ---- HSW (hsw.c) --------------------------------------------------- */
 

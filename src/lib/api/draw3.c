@@ -174,7 +174,7 @@ int frs_count3(const frs_sampler3 *s, uint64_t n, uint64_t seed,
 	return api_count(run3, s, "frs_count3", n, seed, count, err);
 }
 
-int api_draw3_each(const frs_sampler3 *s, const uint64_t *steps,
+int frs_draw3_each(const frs_sampler3 *s, const uint64_t *steps,
     unsigned nsteps, uint64_t seed, int want_pdf, frs_point_fn fn,
     void *ctx, frs_error *err)
 {
