@@ -126,7 +126,7 @@ libheaders() {
 	    sample/frscore.h ;;
 	frs-sample) echo api/api.h maps/imap.h maps/mapload.h \
 	    maps/vol.h sample/frscl.h ;;
-	hsw-sample) echo api/api.h base/mem.h base/ocl.h sample/hsw.h ;;
+	hsw-sample) echo base/ocl.h ;;
 	imap) echo maps/exrio.h maps/imap.h maps/mapload.h maps/pngio.h \
 	    maps/spec.h maps/vol.h ;;
 	mc-error) echo base/num.h maps/imap.h ;;

@@ -74,6 +74,16 @@ static int64_t first_diff(const double *a, const double *b, uint64_t n)
 	return -1;
 }
 
+/* The tree as frs_hsw_info describes it to the device. */
+static const struct frs_hsw_info *info_of(const struct hsw_tree *t)
+{
+	static struct frs_hsw_info ti;
+
+	ti = (struct frs_hsw_info){ t->w, t->h, t->size, t->levels, t->total,
+	    0.0, t->sum };
+	return &ti;
+}
+
 /* Every input and count through map m on the CPU and the device. */
 static void same_points(const struct frs_imap *m, const char *what)
 {
@@ -85,7 +95,7 @@ static void same_points(const struct frs_imap *m, const char *what)
 	assert_non_null(cpu);
 	assert_non_null(dev);
 	assert_int_equal(hsw_build(&t, m), 0);
-	assert_int_equal(hswcl_init(&h, &tu_ocl, &t), 0);
+	assert_int_equal(hswcl_init(&h, &tu_ocl, info_of(&t)), 0);
 	for (int k = 0; k < NIN; k++)
 		for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
 			uint64_t n = counts[c] < in_n[k] ? counts[c] : in_n[k];
@@ -164,7 +174,7 @@ static void test_in_place_chunks(void **state)
 	hsw_input_make(HSW_JITTERED, n, 9, a);
 	memcpy(b, a, 2 * n * sizeof *a);
 	assert_int_equal(hsw_warp_points(&t, a, a, n), 0);
-	assert_int_equal(hswcl_init(&h, &tu_ocl, &t), 0);
+	assert_int_equal(hswcl_init(&h, &tu_ocl, info_of(&t)), 0);
 	h.max_chunk = 333;
 	whole = progress_now();
 	assert_int_equal(hswcl_warp_points(&h, b, b, n), 0);
@@ -177,7 +187,7 @@ static void test_in_place_chunks(void **state)
 	hswcl_free(&h);
 	/* The one-shot form. */
 	hsw_input_make(HSW_JITTERED, n, 9, b);
-	assert_int_equal(hswcl_warp(&tu_ocl, &t, b, b, n), 0);
+	assert_int_equal(hswcl_warp(&tu_ocl, info_of(&t), b, b, n), 0);
 	assert_true(first_diff(a, b, n) < 0);
 	hsw_free(&t);
 	imap_free(&m);
@@ -195,7 +205,7 @@ static void test_no_fp64(void **state)
 	x.fp64 = 0;
 	assert_int_equal(imap_load("blob", 16, 16, 0, &m), 0);
 	assert_int_equal(hsw_build(&t, &m), 0);
-	assert_int_equal(hswcl_init(&h, &x, &t), -1);
+	assert_int_equal(hswcl_init(&h, &x, info_of(&t)), -1);
 	assert_err_has("no double precision", "cl_khr_fp64", "the CPU's points");
 	hsw_free(&t);
 	imap_free(&m);

@@ -46,16 +46,16 @@ static const char usage[] =
     "  -q, --quiet          no warnings\n"
     "  -h, --help           this help;  --version  the version\n";
 
-/* --input dart: not an enum hsw_input; ref-sample's dart throwing. */
+/* --input dart: not an enum frs_hsw_input; ref-sample's dart throwing. */
 #define INPUT_DART 100
 
 struct opts {
 	const char *imp, *file;
-	int input;		/* enum hsw_input, INPUT_DART, or -1 for file */
+	int input;		/* enum frs_hsw_input, INPUT_DART, or -1 for file */
 	uint64_t n, sets;
 	int have_n, pdf, verbose;
 	uint32_t w, h;
-	int flags;		/* imap_load's: --equirect, --strict */
+	int flags;		/* frs_imap_load's: --equirect, --strict */
 	int cl, cl_index;	/* --device: OpenCL, and which (-1: first) */
 };
 
@@ -68,16 +68,24 @@ static const char options[] =
  * set M times. */
 static void check_sets(const struct opts *o)
 {
-	static const char *const names[] = { "random", "regular", "jittered",
-	    "halton", "hammersley" };
-
-	if (o->sets == 1 || o->input == HSW_RANDOM ||
-	    o->input == HSW_JITTERED || o->input == INPUT_DART)
+	if (o->sets == 1 || o->input == FRS_HSW_RANDOM ||
+	    o->input == FRS_HSW_JITTERED || o->input == INPUT_DART)
 		return;
 	cli_usage_error("--sets %llu: --input %s is the same for every seed, "
 	    "so the sets would all be one; use random, jittered or dart",
 	    (unsigned long long)o->sets, o->file ? o->file :
-	    names[o->input]);
+	    frs_names(FRS_NAMES_HSW_INPUT)[o->input]);
+}
+
+/* --input's set by name (frs_names), or -1. */
+static int input_of(const char *name)
+{
+	const char *const *w = frs_names(FRS_NAMES_HSW_INPUT);
+
+	for (int i = 0; w[i] != NULL; i++)
+		if (strcmp(name, w[i]) == 0)
+			return i;
+	return -1;
 }
 
 static void parse_opts(int argc, char **argv, struct opts *o)
@@ -95,7 +103,7 @@ static void parse_opts(int argc, char **argv, struct opts *o)
 			cli_size("-s", optarg, FRS_MAP_MAX_SIDE, &o->w, &o->h);
 			break;
 		case OPT_INPUT:
-			o->input = hsw_input_parse(optarg);
+			o->input = input_of(optarg);
 			o->file = NULL;
 			if (strcmp(optarg, "dart") == 0)
 				o->input = INPUT_DART;
@@ -205,7 +213,9 @@ static double *make_input(struct opts *o, uint64_t seed)
 		}
 		return pts;
 	}
-	hsw_input_make((enum hsw_input)o->input, o->n, seed, pts);
+	if (frs_hsw_input((enum frs_hsw_input)o->input, o->n, seed, pts,
+	    NULL) != FRS_OK)
+		cli_die("--input: not an input set");	/* parse_opts' */
 	return pts;
 }
 
@@ -240,8 +250,8 @@ static void warp_and_write(struct opts *o, struct hsw_run *r, double *pts,
     struct output *u)
 {
 	static const char *const names[] = { PTS_COL_PDF };
-	enum hsw_input kind = (enum hsw_input)(o->input == INPUT_DART ?
-	    HSW_HALTON : o->input);
+	enum frs_hsw_input kind = (enum frs_hsw_input)(o->input == INPUT_DART ?
+	    FRS_HSW_HALTON : o->input);
 	struct cli_task *task;
 	double t0;
 	int rc;
@@ -274,19 +284,15 @@ static void warp_and_write(struct opts *o, struct hsw_run *r, double *pts,
 static void report(const struct opts *o, const struct hsw_run *r,
     double t_setup, double t_out)
 {
-	static const char *const names[] = { "random", "regular", "jittered",
-	    "halton", "hammersley" };
-	uint32_t w, h, side;
-	unsigned levels;
-	double mean;
+	const struct frs_hsw_info *t = &r->info;
 
-	hsw_run_shape(r, &w, &h, &side, &levels, &mean);
 	fprintf(stderr, "hsw-sample: map %ux%u padded to %ux%u (%u levels), "
-	    "mean %.6g; input %s, %llu points, %llu set%s, %d threads\n", w, h,
-	    side, side, levels, mean, o->file ? o->file :
-	    o->input == INPUT_DART ? "dart" : names[o->input],
-	    (unsigned long long)o->n, (unsigned long long)o->sets,
-	    o->sets == 1 ? "" : "s", cli_threads());
+	    "mean %.6g; input %s, %llu points, %llu set%s, %d threads\n",
+	    t->width, t->height, t->side, t->side, t->levels, t->mean,
+	    o->file ? o->file : o->input == INPUT_DART ? "dart" :
+	    frs_names(FRS_NAMES_HSW_INPUT)[o->input], (unsigned long long)o->n,
+	    (unsigned long long)o->sets, o->sets == 1 ? "" : "s",
+	    cli_threads());
 	fprintf(stderr, "hsw-sample: setup %.6f s, warping %.6f s, output "
 	    "%.6f s\n", t_setup, r->t_warp, t_out);
 	if (r->cl)
@@ -298,7 +304,7 @@ static void report(const struct opts *o, const struct hsw_run *r,
 
 int main(int argc, char **argv)
 {
-	struct opts o = { .input = HSW_HALTON, .sets = 1, .cl_index = -1 };
+	struct opts o = { .input = FRS_HSW_HALTON, .sets = 1, .cl_index = -1 };
 	struct hsw_run r;
 	struct output u = { .t_out = 0 };
 	double *pts = NULL, t0;

@@ -18,7 +18,7 @@ static uint64_t tree_nodes(unsigned levels)
 	return (((uint64_t)1 << (2 * (levels + 1))) - 1) / 3;
 }
 
-int hswcl_init(struct hswcl *h, struct ocl *o, const struct hsw_tree *t)
+int hswcl_init(struct hswcl *h, struct ocl *o, const struct frs_hsw_info *t)
 {
 	cl_ulong maxalloc = 0;
 	size_t wg = 0;
@@ -27,7 +27,7 @@ int hswcl_init(struct hswcl *h, struct ocl *o, const struct hsw_tree *t)
 
 	memset(h, 0, sizeof *h);
 	h->o = o;
-	h->t = t;
+	h->t = *t;
 	if (!o->fp64)
 		return cli_fail("OpenCL: %s has no double precision "
 		    "(cl_khr_fp64), which hierarchical sample warping on the "
@@ -38,7 +38,7 @@ int hswcl_init(struct hswcl *h, struct ocl *o, const struct hsw_tree *t)
 	if (bytes > maxalloc)
 		return cli_fail("OpenCL: the %ux%u quadtree (%llu bytes) is "
 		    "larger than the largest buffer of %s (%llu bytes)",
-		    t->size, t->size, (unsigned long long)bytes, o->name,
+		    t->side, t->side, (unsigned long long)bytes, o->name,
 		    (unsigned long long)maxalloc);
 	h->max_chunk = maxalloc / (2 * sizeof(double));
 	if (h->max_chunk > HSWCL_CHUNK)
@@ -47,7 +47,8 @@ int hswcl_init(struct hswcl *h, struct ocl *o, const struct hsw_tree *t)
 		goto fail;
 	if (ocl_kernel(h->prog, "hsw_warp", &h->k) < 0)
 		goto fail;
-	if (ocl_buffer(o, CL_MEM_READ_ONLY, (size_t)bytes, t->sum, &h->sum) < 0)
+	if (ocl_buffer(o, CL_MEM_READ_ONLY, (size_t)bytes,
+	    t->sums, &h->sum) < 0)
 		goto fail;
 	h->local = 64;
 	if (clGetKernelWorkGroupInfo(h->k, o->device, CL_KERNEL_WORK_GROUP_SIZE,
@@ -91,8 +92,7 @@ static int reserve(struct hswcl *h, uint64_t m)
 int hswcl_warp_points(struct hswcl *h, const double *in, double *out,
     uint64_t n)
 {
-	const struct hsw_tree *t = h->t;
-	cl_uint levels = t->levels, w = t->w, ht = t->h;
+	cl_uint levels = h->t.levels, w = h->t.width, ht = h->t.height;
 
 	if (n == 0)
 		return 0;
@@ -121,8 +121,8 @@ int hswcl_warp_points(struct hswcl *h, const double *in, double *out,
 	return 0;
 }
 
-int hswcl_warp(struct ocl *o, const struct hsw_tree *t, const double *in,
-    double *out, uint64_t n)
+int hswcl_warp(struct ocl *o, const struct frs_hsw_info *t,
+    const double *in, double *out, uint64_t n)
 {
 	struct hswcl h;
 	int r;

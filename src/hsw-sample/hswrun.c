@@ -3,12 +3,11 @@
 #include <string.h>
 
 #include "hsw-sample/hswrun.h"
-#include "base/mem.h"
 #include "cli/cli.h"
 
-/* Points per round of warping and handing out: the record buffer
- * (1.5 MiB with the density), filled by all threads, then given to the
- * caller at once. */
+/* Points per round of handing out the device's points: the record
+ * buffer (1.5 MiB with the density); frs_hsw_draw_each's batches on the
+ * CPU are as large. */
 #define ROUND ((uint64_t)1 << 16)
 
 int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
@@ -28,12 +27,14 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
 	t0 = cli_now();
 	rc = frs_hsw_new_f64(&r->hw, map.v, map.w, map.h, 0, &err);
 	frs_imap_free(&map);
+	if (rc == FRS_OK)
+		rc = frs_hsw_info(r->hw, &r->info, &err);
 	if (rc != FRS_OK) {
 		cli_fail("%s", err.message);
 		cli_fail_context(src);
 		goto fail;
 	}
-	if (cl && hswcl_init(&r->hc, r->dev, &r->hw->t) < 0) {
+	if (cl && hswcl_init(&r->hc, r->dev, &r->info) < 0) {
 		bad = -2;
 		goto fail;
 	}
@@ -54,25 +55,61 @@ void hsw_run_close(struct hsw_run *r)
 	frs_hsw_free(r->hw);
 }
 
-/* Round b .. b + m - 1 into rec: warped here, or, warped on the device
- * beforehand, copied with the density added. */
-static int round_recs(struct hsw_run *r, const struct hsw_source *src,
-    double *pts, int pdf, uint64_t b, uint64_t m, double *rec)
-{
-	const struct frs_imap *map = pdf ? &r->hw->map : NULL;
-	double mean = hsw_mean(&r->hw->t, &r->hw->map);
-	unsigned stride = pdf ? 3 : 2;
+/* Handing the library's batches to the caller's fn as records, and the
+ * warping's share of the time. */
+struct hand {
+	struct hsw_run *r;
+	hsw_rec_fn fn;
+	void *ctx;
+	double *rec;		/* 3 ROUND doubles with the density */
+	double t0;		/* when the warping of this batch began */
+	int stopped;		/* fn said stop */
+};
 
-	if (!r->cl)
-		return hsw_sample(&r->hw->t, src, map, b, b + m, rec);
-	for (uint64_t q = 0; q < m; q++) {
-		double *x = rec + q * stride;
-		x[0] = pts[2 * (b + q)];
-		x[1] = pts[2 * (b + q) + 1];
-		if (map != NULL)
-			x[2] = hsw_pdf_at(map, mean, x[0], x[1]);
+/* k points xy and, when not NULL, their densities: records of x, y
+ * [, pdf] to fn. */
+static int hand_over(void *ctx, const double *xy, const double *pdf,
+    const uint32_t *step, size_t k, uint64_t total)
+{
+	struct hand *u = ctx;
+	const double *rec = xy;
+
+	(void)step, (void)total;
+	u->r->t_warp += cli_now() - u->t0;
+	if (pdf != NULL) {
+		for (size_t i = 0; i < k; i++) {
+			u->rec[3 * i] = xy[2 * i];
+			u->rec[3 * i + 1] = xy[2 * i + 1];
+			u->rec[3 * i + 2] = pdf[i];
+		}
+		rec = u->rec;
 	}
-	return 0;
+	u->stopped = u->fn(u->ctx, rec, k) != 0;
+	u->t0 = cli_now();
+	return u->stopped;
+}
+
+/* The device's points pts, warped beforehand, in rounds with their
+ * densities. */
+static int hand_device(struct hand *u, const double *pts, uint64_t n,
+    int want_pdf)
+{
+	double *pdf = NULL;
+	frs_error err;
+	int rc = 0;
+
+	if (want_pdf)
+		pdf = cli_calloc("output buffer", ROUND, sizeof *pdf);
+	for (uint64_t b = 0; rc == 0 && b < n; b += ROUND) {
+		size_t m = (size_t)(n - b < ROUND ? n - b : ROUND);
+		if (pdf != NULL && frs_hsw_pdf(u->r->hw, pts + 2 * b, pdf, m,
+		    &err) != FRS_OK)
+			rc = cli_fail("%s", err.message);
+		else if (hand_over(u, pts + 2 * b, pdf, NULL, m, n) != 0)
+			rc = -1;
+	}
+	free(pdf);
+	return rc;
 }
 
 /*
@@ -80,43 +117,23 @@ static int round_recs(struct hsw_run *r, const struct hsw_source *src,
  * any thread count, round or chunk size.  The device is handed all the
  * points at once.
  */
-int hsw_run_each(struct hsw_run *r, enum hsw_input kind, double *pts,
+int hsw_run_each(struct hsw_run *r, enum frs_hsw_input input, double *pts,
     uint64_t n, uint64_t seed, int pdf, hsw_rec_fn fn, void *ctx)
 {
-	struct hsw_source src = { kind, n, seed, pts };
-	uint64_t cap = n < ROUND ? n : ROUND;
-	double *rec, t0 = cli_now();
-	int rc = -1;
+	struct hand u = { r, fn, ctx, NULL, cli_now(), 0 };
+	frs_error err;
+	int rc = 0;
 
 	if (r->cl && pts == NULL)
 		return cli_fail("hsw_run_each: the device needs the points");
-	if ((rec = mem_calloc("output buffer", cap, (pdf ? 3 : 2) *
-	    sizeof *rec)) == NULL)
-		return -1;
-	if (r->cl && hswcl_warp_points(&r->hc, pts, pts, n) < 0)
-		goto out;
-	for (uint64_t b = 0; b < n; b += ROUND) {
-		uint64_t m = n - b < ROUND ? n - b : ROUND;
-
-		if (round_recs(r, &src, pts, pdf, b, m, rec) < 0)
-			goto out;
-		r->t_warp += cli_now() - t0;
-		if (fn(ctx, rec, (size_t)m) != 0)
-			goto out;
-		t0 = cli_now();
-	}
-	rc = 0;
-out:
-	free(rec);
+	if (pdf)
+		u.rec = cli_calloc("output buffer", ROUND, 3 * sizeof *u.rec);
+	if (r->cl)
+		rc = hswcl_warp_points(&r->hc, pts, pts, n) < 0 ? -1 :
+		    hand_device(&u, pts, n, pdf);
+	else if (frs_hsw_draw_each(r->hw, input, pts, n, seed, pdf,
+	    cli_threads(), hand_over, &u, &err) != FRS_OK)
+		rc = u.stopped ? -1 : cli_fail("%s", err.message);
+	free(u.rec);
 	return rc;
-}
-
-void hsw_run_shape(const struct hsw_run *r, uint32_t *w, uint32_t *h,
-    uint32_t *side, unsigned *levels, double *mean)
-{
-	*w = r->hw->map.w;
-	*h = r->hw->map.h;
-	*side = r->hw->t.size;
-	*levels = r->hw->t.levels;
-	*mean = hsw_mean(&r->hw->t, &r->hw->map);
 }

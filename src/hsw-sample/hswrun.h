@@ -11,11 +11,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "api/api.h"
+#include "frs.h"
 #include "hsw-sample/hswcl.h"
 
 struct hsw_run {
 	frs_hsw *hw;
+	struct frs_hsw_info info;	/* hw's tree */
 	int cl;			/* warping on dev */
 	struct ocl *dev;	/* cli_device_open's, when cl */
 	struct hswcl hc;
@@ -25,7 +26,7 @@ struct hsw_run {
 };
 
 /* Open the device when cl (cl_index, -1: the first), load the map src at
- * w x h (0, 0: its own size) with imap_load's flags and build its
+ * w x h (0, 0: its own size) with frs_imap_load's flags and build its
  * quadtree, there too with the device.  -1 with a message (those about
  * the map name src), -2 when the device cannot be opened or cannot take
  * the tree. */
@@ -38,14 +39,10 @@ void hsw_run_close(struct hsw_run *r);
  * the run (-1, the message the callback's). */
 typedef int (*hsw_rec_fn)(void *ctx, const double *rec, size_t k);
 
-/* The n points of kind with seed (hsw_input_make), made round by round,
+/* The n points of input with seed (frs_hsw_input), made round by round,
  * or, where pts is not NULL, its n pairs (on the device warped in place;
  * the device needs them), warped and handed to fn in index order. */
-int hsw_run_each(struct hsw_run *r, enum hsw_input kind, double *pts,
+int hsw_run_each(struct hsw_run *r, enum frs_hsw_input input, double *pts,
     uint64_t n, uint64_t seed, int pdf, hsw_rec_fn fn, void *ctx);
-
-/* For -v: the map's size, its padded side and levels, and its mean. */
-void hsw_run_shape(const struct hsw_run *r, uint32_t *w, uint32_t *h,
-    uint32_t *side, unsigned *levels, double *mean);
 
 #endif

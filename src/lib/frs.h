@@ -257,7 +257,9 @@ enum frs_names {
 	FRS_NAMES_ALGORITHM,	/* enum frs_algorithm: "sorted", "naive", ... */
 	FRS_NAMES_JITTER,	/* enum frs_jitter_mode */
 	FRS_NAMES_RULE,		/* enum frs_rule_mode */
-	FRS_NAMES_TILING	/* enum frs_tiling_mode */
+	FRS_NAMES_TILING,	/* enum frs_tiling_mode */
+	FRS_NAMES_HSW_INPUT	/* since 2.2: enum frs_hsw_input, hsw-sample(1)'s
+				   --input: "random", "regular", ... */
 };
 const char *const *frs_names(enum frs_names which);
 /* The largest level_blur. */
@@ -417,6 +419,36 @@ int frs_hsw_warp(const frs_hsw *hsw, const double *in, double *out,
  * hsw-sample(1) makes.  Thread-safe. */
 int frs_hsw_draw(const frs_hsw *hsw, enum frs_hsw_input input, uint64_t n,
     uint64_t seed, double *xy, double *pdf, int threads, frs_error *err);
+/* Since 2.2: the callback form of frs_hsw_draw, the points in index
+ * order in batches of at most 2^16 (fn, total and FRS_E_CALLBACK as in
+ * frs_draw_each, step NULL); in, when not NULL, the caller's n points
+ * of [0,1)^2 (pairs) warped instead of the input set.  Thread-safe. */
+int frs_hsw_draw_each(const frs_hsw *hsw, enum frs_hsw_input input,
+    const double *in, uint64_t n, uint64_t seed, int want_pdf, int threads,
+    frs_point_fn fn, void *ctx, frs_error *err);
+/* Since 2.2: the input set frs_hsw_draw warps, before warping: n pairs of
+ * [0,1)^2 into xy.  Thread-safe. */
+int frs_hsw_input(enum frs_hsw_input input, uint64_t n, uint64_t seed,
+    double *xy, frs_error *err);
+/* Since 2.2: the density I / mean I at n points (pairs) of [0,1)^2: the
+ * pdf of frs_hsw_warp for points warped elsewhere.  Thread-safe. */
+int frs_hsw_pdf(const frs_hsw *hsw, const double *xy, double *pdf, size_t n,
+    frs_error *err);
+/* Since 2.2: the quadtree, for -v reports and for warping on a device of
+ * one's own.  sums holds levels 0 (the root) to levels, level l's 4^l
+ * node sums in Morton order, the children of node k of a level being
+ * nodes 4k .. 4k+3 of the next (top-left, top-right, bottom-left,
+ * bottom-right); the leaves are the map's pixels, zero in the padding.
+ * It lives as long as the tree.  Thread-safe. */
+struct frs_hsw_info {
+	uint32_t width, height;	/* the map */
+	uint32_t side;		/* the tree's: the least power of two >= both */
+	unsigned levels;	/* log2 side */
+	double total, mean;	/* of the map: the root's sum, total / pixels */
+	const double *sums;
+};
+int frs_hsw_info(const frs_hsw *hsw, struct frs_hsw_info *info,
+    frs_error *err);
 
 #ifdef __cplusplus
 }

@@ -177,6 +177,8 @@ static const char *const jitter_words[] = { "none", "halton", "random",
 static const char *const rule_words[] = { "unbiased", "thesis", NULL };
 static const char *const tiling_words[] = { "levels", "shuffled", "plain",
     NULL };
+static const char *const hsw_input_words[] = { "random", "regular",
+    "jittered", "halton", "hammersley", NULL };
 
 const char *const *frs_names(enum frs_names which)
 {
@@ -185,6 +187,7 @@ const char *const *frs_names(enum frs_names which)
 	case FRS_NAMES_JITTER: return jitter_words;
 	case FRS_NAMES_RULE: return rule_words;
 	case FRS_NAMES_TILING: return tiling_words;
+	case FRS_NAMES_HSW_INPUT: return hsw_input_words;
 	}
 	return NULL;
 }

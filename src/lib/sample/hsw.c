@@ -488,14 +488,3 @@ int hsw_warp_points(const struct hsw_tree *t, const double *in, double *out,
 
 	return frs_parallel(n, CHUNK, sample_task, &job, NULL);
 }
-
-int hsw_input_parse(const char *name)
-{
-	static const char *const names[] = { "random", "regular", "jittered",
-	    "halton", "hammersley" };
-
-	for (int k = 0; k < 5; k++)
-		if (strcmp(name, names[k]) == 0)
-			return k;
-	return -1;
-}

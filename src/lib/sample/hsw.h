@@ -57,9 +57,8 @@ enum hsw_input {
 	HSW_JITTERED,	/* the same cells, a random point in each */
 	HSW_HALTON,	/* bases 2 and 3, index i + 1 */
 	HSW_HAMMERSLEY	/* ((i + 0.5) / n, radical inverse base 2 of i) */
-};
-/* Name to kind; -1 if the name is none of them. */
-int hsw_input_parse(const char *name);
+};	/* frs.h's enum frs_hsw_input, value for value (api/hsw.c), whose
+	 * names frs_names gives */
 /* n pairs into out (2n doubles), in parallel with frs_parallel. */
 void hsw_input_make(enum hsw_input kind, uint64_t n, uint64_t seed,
     double *out);
