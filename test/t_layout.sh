@@ -88,12 +88,20 @@ fi
 # cycle of calls is a module that cannot be read or tested before
 # another that needs it.
 OBJ=$BIN/../lib
-if [ -d "$OBJ/api" ] && command -v nm >/dev/null 2>&1; then
+# The objects of the library's sources: a build directory keeps those of
+# modules that have moved out until `make clean`.
+objs() {
 	(cd "$OBJ" && for o in */*.o; do
+		s=$TOP/src/lib/${o%.o}
+		if [ -f "$s.c" ] || [ -f "$s.cc" ]; then echo "$o"; fi
+	done)
+}
+if [ -d "$OBJ/api" ] && command -v nm >/dev/null 2>&1; then
+	(cd "$OBJ" && for o in $(objs); do
 		nm -g --defined-only "$o" | awk -v m="${o%.o}" \
 		    '$2 ~ /^[TDBR]$/ { print $3, m }'
 	done) | sort -u >"$T/defs"
-	(cd "$OBJ" && for o in */*.o; do
+	(cd "$OBJ" && for o in $(objs); do
 		nm -u "$o" | awk -v m="${o%.o}" '{ print $2, m }'
 	done) | sort >"$T/uses"
 	join "$T/uses" "$T/defs" | awk '$2 != $3 { print $2, $3 }' |
