@@ -133,7 +133,7 @@ libheaders() {
 	    formats/frdio.h maps/imap.h maps/pngio.h sample/frpio.h \
 	    sample/frscore.h ;;
 	frs-sample) echo api/api.h maps/imap.h maps/mapload.h \
-	    maps/vol.h sample/frscl.h ;;
+	    maps/vol.h ;;
 	hsw-sample) echo base/ocl.h ;;
 	imap) echo maps/exrio.h maps/imap.h maps/mapload.h maps/pngio.h \
 	    maps/spec.h maps/vol.h ;;

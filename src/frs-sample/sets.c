@@ -357,8 +357,8 @@ static int open2(const struct sets *a, struct sets_run *run)
 
 	/* The OpenCL device asked for, if any (one that does not open ends
 	 * the program). */
-	if (a->cl)
-		run->ocl = cli_device_open(a->device, !a->flat1);
+	if (a->cl && frs_device_open(&run->dev, a->device, NULL) != FRS_OK)
+		cli_die_device(!a->flat1);
 	t0 = cli_now();
 	rc = load_mask(a, run);
 	/* The map as sets_map checked it, handed over: no copy, no second
@@ -371,8 +371,9 @@ static int open2(const struct sets *a, struct sets_run *run)
 		imap_free(&map);	/* not taken: its check failed */
 		return -1;
 	}
-	if (run->ocl != NULL)
-		api_sampler_device(run->smp, run->ocl, (int)sets_impl(a));
+	if (run->dev != NULL && frs_sampler_set_device(run->smp, run->dev,
+	    a->flat1 ? FRS_DEVICE_FLAT1 : 0, &err) != FRS_OK)
+		return cli_fail("%s", err.message);
 	/* Exact counts: set 0's taus only for -v (each set finds its own). */
 	if (api_setup_steps(run->smp, a->steps, a->nsteps, a->seed, a->verbose,
 	    &run->lv) < 0)
@@ -430,7 +431,7 @@ int sets_open(const struct sets *a, struct sets_run *run)
 	memset(run, 0, sizeof *run);
 	run->dims = a->dims;
 	run->reused = -1.0;
-	/* Flat 1, no public algorithm, is the device's (api_sampler_device):
+	/* Flat 1, no public algorithm, is the device's (FRS_DEVICE_FLAT1):
 	 * a->alg, the sampler's options, names Sorted for it. */
 	run->opt = a->opt;
 	run->opt.algorithm = a->alg;
@@ -473,18 +474,6 @@ static uint64_t one_set(struct out *u, uint64_t seed)
 	return count;
 }
 
-/* The OpenCL phases of the last set, added. */
-static void add_times(struct sets_run *run)
-{
-	struct frscl_times ct;
-
-	frscl_last_times(&ct);
-	run->ct.build += ct.build;
-	run->ct.upload += ct.upload;
-	run->ct.kernel += ct.kernel;
-	run->ct.download += ct.download;
-}
-
 static int write_sets(struct out *u)
 {
 	const struct sets *a = u->a;
@@ -504,8 +493,6 @@ static int write_sets(struct out *u)
 			cli_task_drop(task);	/* the message follows */
 			return -1;
 		}
-		if (run->ocl != NULL)
-			add_times(run);
 		run->total += c;
 		cli_task_update(task, set + 1);
 	}
@@ -534,7 +521,8 @@ int sets_write(const struct sets *a, struct sets_run *run)
 	run->tthr = cli_now() - t1 - run->tout - run->tnote;
 	run->made = mk->made;
 	run->made_in = mk->frp != NULL ? mk->frp : a->matrix;
-	run->device = run->ocl != NULL ? cli_device_name(run->ocl) : NULL;
+	run->device = frs_device_name(run->dev);
+	frs_device_times(run->dev, &run->ct);
 	for (unsigned i = 0; i < FRS_LEVELS_MAX; i++)
 		free(u.uses[i]);
 	free(u.rec);
@@ -548,8 +536,5 @@ void sets_close(struct sets_run *run)
 	frs_sampler_free(run->smp);
 	frs_sampler3_free(run->smp3);
 	frs_mask_free(run->mask);
-	if (run->ocl == NULL)
-		return;
-	frscl_release(run->ocl);
-	cli_device_close(run->ocl);
+	frs_device_free(run->dev);
 }

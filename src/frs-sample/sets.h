@@ -10,7 +10,6 @@
 #include <stdio.h>
 
 #include "api/api.h"
-#include "sample/frscl.h"
 
 /* What frs-sample asks for: M sets of a 2-D map or 3-D volume, set i
  * with seed + i, written to one file (setsout.h: at most
@@ -62,7 +61,7 @@ struct sets_run {
 				 * matrix element another shows too, or -1 */
 	uint64_t total;
 	double tsetup, tthr, tout, tnote;	/* seconds */
-	struct frscl_times ct;	/* OpenCL phases over the sets */
+	struct frs_device_times ct;	/* OpenCL phases over the sets */
 	const char *device;	/* the OpenCL device's name */
 	const char *note;	/* frs_mask_note at load */
 	/* inside */
@@ -70,7 +69,7 @@ struct sets_run {
 	frs_mask *mask;
 	frs_sampler *smp;
 	frs_sampler3 *smp3;
-	struct ocl *ocl;
+	frs_device *dev;
 };
 
 /*
@@ -87,11 +86,6 @@ int sets_open(const struct sets *a, struct sets_run *run);
 static inline size_t sets_elem_size(unsigned dims)
 {
 	return dims == 3 ? sizeof(struct frs3_elem) : sizeof(struct frs_elem);
-}
-/* The implementation a runs (frscore.h), flat1 included. */
-static inline enum frs_impl sets_impl(const struct sets *a)
-{
-	return a->flat1 ? FRS_FLAT1 : (enum frs_impl)a->alg;
 }
 /* Load a->matrix, opening it once, and set a->dims from its header (2
  * when it tells none); a failure is told by sets_open, where the

@@ -355,6 +355,35 @@ int frs_sampler_levels(const frs_sampler *sampler, uint64_t n,
     uint64_t seed, struct frs_level_info *levels, unsigned cap,
     unsigned *count, frs_error *err);
 
+/* ---- OpenCL devices (since 2.2) --------------------------------------- */
+
+/* An OpenCL device for samplers to draw on (frs-sample(1) --device). */
+typedef struct frs_device frs_device;
+/* Open device number index as frs-sample --list-devices numbers them,
+ * or the first (a GPU before a CPU) for index -1: FRS_E_IO when there is
+ * no such device or it does not open.  Thread-safe. */
+int frs_device_open(frs_device **dev, int index, frs_error *err);
+/* Its name, as --list-devices gives it. */
+const char *frs_device_name(const frs_device *dev);
+/* Close it; no sampler may still draw on it.  NULL does nothing. */
+void frs_device_free(frs_device *dev);
+/* The seconds its draws spent, summed since it was opened: building the
+ * program (the first draw), copying to the device (with the host's
+ * thresholds), in kernels, copying back (with the host's offsets). */
+struct frs_device_times {
+	double build, upload, kernel, download;
+};
+void frs_device_times(const frs_device *dev, struct frs_device_times *t);
+/* Flat 1 (thesis Sec. 5.4), the device's own walk, instead of the
+ * options' algorithm: Stack's samples in Stack's order. */
+#define FRS_DEVICE_FLAT1 1
+/* Draw on dev (NULL: the CPU again): the same samples, bit for bit, as
+ * on the CPU.  dev must outlive the sampler's draws, which run one at a
+ * time on a device: a sampler on a device is not thread-safe (nor are
+ * two samplers on one device).  flags: 0 or FRS_DEVICE_FLAT1. */
+int frs_sampler_set_device(frs_sampler *sampler, frs_device *dev,
+    int flags, frs_error *err);
+
 /* ---- three dimensions (since 0.2.0) ---------------------------------- */
 
 typedef struct frs_sampler3 frs_sampler3;

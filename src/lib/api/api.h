@@ -55,6 +55,17 @@ struct api_plan {
 	struct frs_levels plan;
 };
 
+/* An OpenCL device (device.c) and the phases of its draws, summed. */
+struct frs_device {
+	struct ocl o;
+	struct frs_device_times spent;
+};
+/* frs_sample_cl on the sampler's device, its phases added to it. */
+int api_sample_cl(const frs_sampler *s, const struct frs_setup *su,
+    const struct frs_imap *map, const struct frs_prep *p,
+    const uint64_t *steps, unsigned nsteps, int count_only,
+    struct frs_result *r);
+
 struct frs_sampler {
 	const frs_mask *mask;
 	struct frs_imap map;
@@ -62,7 +73,7 @@ struct frs_sampler {
 	int have_cells;		/* 0: each setup makes them (and fails) */
 	struct frs_options opt;
 	int algo;		/* enum frs_impl, FRS_FLAT1 on a device only */
-	struct ocl *ocl;	/* the device of api_sampler_device, or NULL */
+	frs_device *dev;	/* frs_sampler_set_device's, or NULL */
 	struct api_plan plan;
 };
 
@@ -295,10 +306,6 @@ int api_sampler_prep(const frs_sampler *s, const struct api_lev2 *lv,
     unsigned i, const uint64_t *steps, unsigned nsteps,
     struct frs_prep *view);
 
-/* Draw on OpenCL device ocl (kept open by the caller) with algorithm alg
- * (an enum frs_impl, FRS_FLAT1 too), the same samples as on the
- * CPU; frscl_last_times has the last run's phases. */
-void api_sampler_device(frs_sampler *s, struct ocl *ocl, int alg);
 /* The values Sorted's lists need for the last of steps: frs_lim_most. */
 uint64_t api_lists_below(const struct frs_setup *su, const uint64_t *steps,
     unsigned nsteps);

@@ -14,7 +14,6 @@
 #include "base/err.h"
 #include "base/par.h"
 #include "maps/imap.h"
-#include "sample/frscl.h"
 
 int frs_sampler_new(frs_sampler **sampler, const frs_mask *mask,
     const float *map, uint32_t width, uint32_t height, size_t stride,
@@ -39,12 +38,6 @@ int frs_sampler_new_f64(frs_sampler **sampler, const frs_mask *mask,
 void frs_sampler_free(frs_sampler *s)
 {
 	api_sampler_free(s, NULL);
-}
-
-void api_sampler_device(frs_sampler *s, struct ocl *ocl, int alg)
-{
-	s->ocl = ocl;
-	s->algo = alg;
 }
 
 int api_setup(const frs_sampler *s, uint64_t n, uint64_t seed,
@@ -192,8 +185,8 @@ static int run(const void *vs, const uint64_t *steps, unsigned nsteps,
 	st->lv = lv;
 	for (unsigned i = 0; i < lv->n; i++) {
 		const struct frs_setup *su = &lv->su[i];
-		if ((s->ocl != NULL ? frs_sample_cl(s->ocl, su, &lv->map,
-		    &view[i], s->algo, steps, nsteps, count_only, &st->r[i]) :
+		if ((s->dev != NULL ? api_sample_cl(s, su, &lv->map, &view[i],
+		    steps, nsteps, count_only, &st->r[i]) :
 		    frs_sample(su, &lv->map, &view[i], (enum frs_impl)s->algo,
 		    steps, nsteps, count_only, &st->r[i])) < 0) {
 			rc = api_lib_err(err, FRS_E_LIMIT);
@@ -241,7 +234,7 @@ static int direct_ok(const frs_sampler *s, const uint64_t *steps,
     unsigned nsteps)
 {
 	return s != NULL && steps != NULL && nsteps == 1 &&
-	    s->algo == FRS_SORTED && s->ocl == NULL;
+	    s->algo == FRS_SORTED && s->dev == NULL;
 }
 
 /* One level of a direct run: its setup, map and prepared matrix, and
