@@ -19,7 +19,6 @@
 #include "discrepancy/discint.h"
 #include "discrepancy/discshape.h"
 #include "cli/cli.h"
-#include "base/num.h"
 #include "discrepancy/geom.h"
 #include "base/rng.h"
 

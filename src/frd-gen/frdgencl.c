@@ -21,7 +21,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/frdgencl.h"
 #include "frd-gen/frdgenint.h"
-#include "base/mem.h"
 #include "cli/cli.h"
 
 #include <math.h>
@@ -198,7 +197,8 @@ static void gen_free(struct clgen *g)
 	ocl_release_mem(&g->field);
 	ocl_release_mem(&g->tab);
 	ocl_release_mem(&g->out);
-	MEM_FREE(g->table, g->cache, g->zc, g->fen, g->seg, g->outh);
+	free(g->table), free(g->cache), free(g->zc);
+	free(g->fen), free(g->seg), free(g->outh);
 	frdgen_sel_free(&g->sel);
 }
 
@@ -225,7 +225,8 @@ static int gen_init(struct clgen *g, const struct frdgen_params *pr,
 	for (g->leaves = 1; g->leaves < g->ntiles; g->leaves *= 2)
 		;
 	frdgen_describe(pr, params, sizeof params);
-	if (frd_alloc(out, pr->dims, g->sz.w, g->sz.h, g->sz.d, params) < 0)
+	if (frdgen_matrix(out, pr->dims, g->sz.w, g->sz.h, g->sz.d,
+	    params) < 0)
 		return -1;
 	cells = g->ntiles * g->ts;
 	g->cache = malloc(cells * sizeof *g->cache);
@@ -394,6 +395,6 @@ int frdgen_run_cl(const struct frdgen_params *par, struct ocl *o,
 	return 0;
 fail:
 	gen_free(&g);
-	frd_free(out);
+	frs_matrix_free(out);
 	return -1;
 }

@@ -5,10 +5,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/vac.h"
 #include "frd-gen/frdgen.h"
-#include "base/mem.h"
 #include "cli/cli.h"
 #include "base/rng.h"
-#include "base/num.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -216,7 +214,8 @@ static int make_table(struct vac *g, double *radius)
 
 static void vac_free(struct vac *g)
 {
-	MEM_FREE(g->e, g->key, g->bit, g->one, g->zero, g->tab, g->xext);
+	free(g->e), free(g->key), free(g->bit), free(g->one);
+	free(g->zero), free(g->tab), free(g->xext);
 }
 
 static int vac_init(struct vac *g, const struct vac_params *pr,
@@ -440,16 +439,14 @@ int vac_run(const struct vac_params *pr, struct frs_matrix *out,
 	memset(&g, 0, sizeof g);
 	if (vac_check(pr) < 0)
 		return -1;
-	/* Everything together, before anything exists: an impossible size
-	 * is refused with the figure it needs. */
-	if (mem_check("matrix generation", vac_memory(pr), 1) < 0)
-		return -1;
+	/* The memory ceiling is the caller's, for everything together
+	 * before anything exists (frd-gen's check of vac_memory). */
 	vac_describe(pr, params, sizeof params);
-	if (frd_alloc(out, pr->dims, pr->w, pr->h, pr->d, params) < 0)
+	if (frdgen_matrix(out, pr->dims, pr->w, pr->h, pr->d, params) < 0)
 		return -1;
 	if (vac_init(&g, pr, &radius) < 0) {
 		vac_free(&g);
-		frd_free(out);
+		frs_matrix_free(out);
 		return -1;
 	}
 	ones = vac_ones(g.n);

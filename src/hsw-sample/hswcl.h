@@ -12,7 +12,7 @@
 #include <stdint.h>
 
 #include "sample/hsw.h"
-#include "base/ocl.h"
+#include "cli/cli.h"
 
 struct hswcl {
 	struct ocl *o;

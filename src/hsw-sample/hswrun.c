@@ -3,7 +3,6 @@
 #include <string.h>
 
 #include "hsw-sample/hswrun.h"
-#include "base/mem.h"
 #include "cli/cli.h"
 
 /* Points per round of warping and handing out: the record buffer
@@ -90,9 +89,7 @@ int hsw_run_each(struct hsw_run *r, enum hsw_input kind, double *pts,
 
 	if (r->cl && pts == NULL)
 		return cli_fail("hsw_run_each: the device needs the points");
-	if ((rec = mem_calloc("output buffer", cap, (pdf ? 3 : 2) *
-	    sizeof *rec)) == NULL)
-		return -1;
+	rec = cli_calloc("output buffer", cap, (pdf ? 3 : 2) * sizeof *rec);
 	if (r->cl && hswcl_warp_points(&r->hc, pts, pts, n) < 0)
 		goto out;
 	for (uint64_t b = 0; b < n; b += ROUND) {
