@@ -3,7 +3,7 @@
 #include "frd-gen/frdparam.h"
 #include "frs.h"
 #include "cli/cli.h"
-#include "base/rng.h"
+#include "../../cl/defs.cl"	/* FRS_STREAM_FRD_* */
 
 #include <limits.h>
 #include <math.h>

@@ -6,15 +6,15 @@
 #include "frd-gen/vac.h"
 #include "frd-gen/frdgen.h"
 #include "cli/cli.h"
-#include "base/rng.h"
+#include "frs.h"	/* frs_rand64, struct frs_rng */
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* Random streams of this module, far from rng.h's FRS_STREAM_* numbers so
- * that no other consumer of a seed shares them. */
+/* Random streams of this module, far from the FRS_STREAM_* numbers
+ * (cl/defs.cl) so that no other consumer of a seed shares them. */
 #define VAC_STREAM_INIT 0x56414331u	/* "VAC1": the initial pattern */
 #define VAC_STREAM_TIE 0x56414332u	/* "VAC2": tie keys */
 
