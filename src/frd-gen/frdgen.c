@@ -145,6 +145,7 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
     struct frs_matrix *out)
 {
 	char params[512];
+	frs_error err;
 	size_t total;
 
 	memset(g, 0, sizeof *g);
@@ -168,9 +169,9 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
 	 * before anything exists (frd-gen's check of frdgen_memory, the
 	 * option -s named in its refusal). */
 	frdgen_describe(pr, params, sizeof params);
-	if (frdgen_matrix(out, pr->dims, g->sz.w, g->sz.h, g->sz.d,
-	    params) < 0)
-		return -1;
+	if (frs_matrix_alloc(out, pr->dims, g->sz.w, g->sz.h, g->sz.d,
+	    params, &err) != FRS_OK)
+		return cli_fail("%s", err.message);
 	g->val = out->v;
 	total = (size_t)g->ntx * g->nty * g->ntz * g->ts;
 	g->field = malloc(total * sizeof *g->field);

@@ -206,6 +206,7 @@ static int gen_init(struct clgen *g, const struct frdgen_params *pr,
     struct ocl *o, struct frs_matrix *out)
 {
 	char params[512], opts[64];
+	frs_error ferr;
 	size_t cells, wg = 0;
 	cl_int err;
 
@@ -225,9 +226,9 @@ static int gen_init(struct clgen *g, const struct frdgen_params *pr,
 	for (g->leaves = 1; g->leaves < g->ntiles; g->leaves *= 2)
 		;
 	frdgen_describe(pr, params, sizeof params);
-	if (frdgen_matrix(out, pr->dims, g->sz.w, g->sz.h, g->sz.d,
-	    params) < 0)
-		return -1;
+	if (frs_matrix_alloc(out, pr->dims, g->sz.w, g->sz.h, g->sz.d,
+	    params, &ferr) != FRS_OK)
+		return cli_fail("%s", ferr.message);
 	cells = g->ntiles * g->ts;
 	g->cache = malloc(cells * sizeof *g->cache);
 	g->zc = calloc(g->ntiles, sizeof *g->zc);

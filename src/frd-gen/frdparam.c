@@ -1,7 +1,7 @@
 /* The generators' parameters and the laws that follow (frdparam.h). */
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/frdparam.h"
-#include "frs.h"
+#include "frs.h"	/* frs_rand01, frs_rand64x */
 #include "cli/cli.h"
 #include "../../cl/defs.cl"	/* FRS_STREAM_FRD_* */
 
@@ -117,35 +117,6 @@ uint64_t frdgen_memory(const struct frdgen_params *pr)
 	 * and pyramid */
 	uint64_t pad = ((uint64_t)pr->w + 8) * (pr->h + 8) * (pr->d + 4);
 	return pad * 8 + n * 4 + t * 8 + n / 4 + (1 << 20);
-}
-
-int frdgen_matrix(struct frs_matrix *m, unsigned dims, uint32_t w,
-    uint32_t h, uint32_t d, const char *params)
-{
-	uint64_t n = (uint64_t)w * h * d;
-	char what[64];
-
-	memset(m, 0, sizeof *m);
-	if (dims < 2 || dims > 3 || w == 0 || h == 0 || d == 0 ||
-	    (dims == 2 && d != 1))
-		return cli_fail("impossible matrix size %ux%ux%u (k = %u)", w,
-		    h, d, dims);
-	if (n > (uint64_t)1 << 32 || n > SIZE_MAX / sizeof(uint32_t))
-		return cli_fail("matrix of %llu elements is too large",
-		    (unsigned long long)n);
-	snprintf(what, sizeof what, dims == 2 ? "%ux%u matrix" :
-	    "%ux%ux%u matrix", w, h, d);
-	m->v = cli_calloc(what, n, sizeof *m->v);
-	if ((m->params = strdup(params ? params : "")) == NULL) {
-		frs_matrix_free(m);
-		return cli_fail("out of memory for a matrix's parameters");
-	}
-	m->dims = dims;
-	m->w = w;
-	m->h = h;
-	m->d = d;
-	m->n = (size_t)n;
-	return 0;
 }
 
 void frdgen_describe(const struct frdgen_params *pr, char *buf, size_t n)

@@ -54,16 +54,6 @@ double frdgen_radius_after(const struct frdgen_params *pr, double rtol,
 uint64_t frdgen_memory(const struct frdgen_params *pr);
 /* The parameter text stored in the .frd header. */
 void frdgen_describe(const struct frdgen_params *pr, char *buf, size_t n);
-/* The matrix a generator fills (frd-gen's own: the library's frs.h
- * reads, writes and frees a struct frs_matrix but makes none): dims 2 or
- * 3 (d = 1 for 2), sizes frdgen_check_size accepts, the values zeroed,
- * params copied; within the memory ceiling (the program's check, the
- * matrix named "WxH matrix" in its message), else the program ends.  -1
- * with cli_fail for impossible sizes or when params cannot be copied.
- * Freed by frs_matrix_free. */
-struct frs_matrix;
-int frdgen_matrix(struct frs_matrix *m, unsigned dims, uint32_t w,
-    uint32_t h, uint32_t d, const char *params);
 
 /* The force at distance r before the taper: (1 + r/s)^-q or
  * exp(-(r/s)^q), or the authors' integer for field int32 (tests use

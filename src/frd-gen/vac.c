@@ -431,6 +431,7 @@ int vac_run(const struct vac_params *pr, struct frs_matrix *out,
     struct cli_task *task, struct vac_stats *st)
 {
 	char params[512];
+	frs_error err;
 	struct vac g;
 	uint64_t ones, moves, k = 0;
 	double radius = 0.0;
@@ -442,8 +443,9 @@ int vac_run(const struct vac_params *pr, struct frs_matrix *out,
 	/* The memory ceiling is the caller's, for everything together
 	 * before anything exists (frd-gen's check of vac_memory). */
 	vac_describe(pr, params, sizeof params);
-	if (frdgen_matrix(out, pr->dims, pr->w, pr->h, pr->d, params) < 0)
-		return -1;
+	if (frs_matrix_alloc(out, pr->dims, pr->w, pr->h, pr->d, params,
+	    &err) != FRS_OK)
+		return cli_fail("%s", err.message);
 	if (vac_init(&g, pr, &radius) < 0) {
 		vac_free(&g);
 		frs_matrix_free(out);

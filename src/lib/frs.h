@@ -453,6 +453,17 @@ double frs_rng_next01(struct frs_rng *r);
  * again. */
 uint64_t frs_rng_below(struct frs_rng *r, uint64_t bound);
 
+/* ---- threshold matrices to fill (since 2.2) -------------------------- */
+
+/* A matrix for the caller to fill, a generator's, and write with
+ * frs_matrix_write: dims 2 or 3, sizes w x h (x d; d = 1 when dims is
+ * 2), its n values zeroed, params copied (NULL: "").  FRS_E_ARG for
+ * other sizes or more than 2^32 values, FRS_E_NOMEM above the ceiling
+ * FRS_MAX_MEM or out of memory; *m zeroed on failure.  Released by
+ * frs_matrix_free.  Thread-safe. */
+int frs_matrix_alloc(struct frs_matrix *m, unsigned dims, uint32_t w,
+    uint32_t h, uint32_t d, const char *params, frs_error *err);
+
 #ifdef __cplusplus
 }
 #endif
