@@ -422,9 +422,10 @@ int frs_hsw_draw(const frs_hsw *hsw, enum frs_hsw_input input, uint64_t n,
  * function of (seed, stream, index): the key is the seed (low word
  * first), the 128-bit counter (index low, index high, stream, sub), so
  * that it is the same for any thread count, work order or device.
- * Streams separate the uses of one seed; the library's own use numbers
- * below 256 and 0x5641433x, not API.  See frs_rand64(3).  None can fail;
- * all are thread-safe, an frs_rng being one thread's at a time.
+ * Streams separate the uses of one seed; the toolchain's own use numbers
+ * below 256 and 0x56414331 and 0x56414332 (frd-gen), which use owns
+ * which not API.  See frs_rand64(3).  None can fail; all are
+ * thread-safe, an frs_rng being one thread's at a time.
  */
 /* One Philox4x32-10 block: out from counter ctr under key. */
 void frs_philox4x32_10(const uint32_t ctr[4], const uint32_t key[2],
@@ -444,7 +445,7 @@ struct frs_rng {
 	uint32_t stream;
 };
 void frs_rng_init(struct frs_rng *r, uint64_t seed, uint32_t stream);
-/* frs_rand64 and frs_rand01 at the next index. */
+/* frs_rand64 and frs_rand01 at the next index, which they advance. */
 uint64_t frs_rng_next64(struct frs_rng *r);
 double frs_rng_next01(struct frs_rng *r);
 /* A uniform integer in [0, bound) (bound 0: 2^64, every value) without
