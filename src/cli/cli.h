@@ -23,7 +23,8 @@
  * standard headers, frs.h and others of src/cli, never the library's
  * own (base/err.h and the like stay in src/cli's .c files), so that a
  * program sees of the library only what it includes itself, which
- * t_layout lists per program.
+ * t_layout lists per program; but for the two below that this one
+ * hands on, base/num.h and base/ocl.h (said why there).
  *
  * Exit status: 0 success, 1 error (bad input, failed output), 2 usage.
  */
@@ -35,6 +36,24 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdnoreturn.h>
+
+/*
+ * The two headers of the library that this one hands to every program
+ * (test/t_layout.sh allows these two, here alone), each one definition
+ * for the library and the programs, neither a copy nor forwarders:
+ * - base/num.h, the arithmetic kit (compensated sums num_add, num_total,
+ *   num_sum, NUM_PI, NUM_CMP, ...): inlines and pure functions without
+ *   state, so that a program's sums round as the library's do;
+ * - base/ocl.h, the OpenCL plumbing (struct ocl, programs, kernels,
+ *   buffers, arguments, fill, run, read and write) of the library's own
+ *   device code (sample/frscl.c) and of the programs' (frd-gen's and
+ *   hsw-sample's --device): the library cannot take it from src/cli, a
+ *   copy in src/cli would be a second one to keep in step, and it is no
+ *   API for libfrs's users.  It brings <CL/cl.h>, which the library is
+ *   built with anyway.
+ */
+#include "base/num.h"
+#include "base/ocl.h"
 
 #include "cli/fft.h"
 #include "cli/groupstat.h"
@@ -234,10 +253,9 @@ noreturn void cli_list_devices(void);
  * --device cpu" when the work runs on the CPU too (cpu_too), exit 1. */
 noreturn void cli_die_device(int cpu_too);
 /* The OpenCL device of --device (index -1: the first), base/ocl.h's
- * context, which only the files of its users' own see: opened, or the
- * program ends as cli_die_device(cpu_too) says; its name for messages,
- * whether it has double precision (cl_khr_fp64); closed and freed. */
-struct ocl;
+ * context: opened, or the program ends as cli_die_device(cpu_too) says;
+ * its name for messages, whether it has double precision
+ * (cl_khr_fp64); closed and freed. */
 struct ocl *cli_device_open(int index, int cpu_too);
 const char *cli_device_name(const struct ocl *o);
 int cli_device_fp64(const struct ocl *o);

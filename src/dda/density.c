@@ -11,7 +11,6 @@
 
 #include "dda/density.h"
 #include "cli/cli.h"
-#include "base/num.h"
 #include "maps/imap.h"
 
 #define CHUNK 2048		/* sorted points per parallel chunk */

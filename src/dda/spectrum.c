@@ -6,8 +6,6 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "dda/spectrum.h"
-#include "base/num.h"
-#include "base/mem.h"
 #include "cli/cli.h"
 
 #include <math.h>
@@ -30,9 +28,7 @@ int spec_img_alloc(struct spec_img *im, uint32_t half, double scale)
 	if (half > SPEC_MAX_HALF)
 		return cli_fail("spectrum image: half side %u is more than "
 		    "%u", half, SPEC_MAX_HALF);
-	im->v = mem_calloc("spectrum image", side * side, sizeof *im->v);
-	if (im->v == NULL)
-		return -1;
+	im->v = cli_calloc("spectrum image", side * side, sizeof *im->v);
 	return 0;
 }
 
@@ -485,7 +481,8 @@ int spec_fourier_approx(const double *xy, size_t n, int par,
 	if (rc == 0)
 		rc = cli_parallel_if(par, (uint64_t)c.K + 1, 4, nu_cols, &c);
 out:
-	MEM_FREE(c.start, pos, c.u, c.grid, c.h, c.dec);
+	free(c.start), free(pos), free(c.u);
+	free(c.grid), free(c.h), free(c.dec);
 	return rc;
 }
 
@@ -493,7 +490,7 @@ out:
 
 void spec_radial_free(struct spec_radial *r)
 {
-	MEM_FREE(r->lo, r->mean, r->aniso, r->count);
+	free(r->lo), free(r->mean), free(r->aniso), free(r->count);
 	memset(r, 0, sizeof *r);
 }
 

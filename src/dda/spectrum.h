@@ -45,7 +45,9 @@ struct spec_img {
 	double *v;
 };
 
-/* Zeroed image; half <= SPEC_MAX_HALF, scale finite and > 0. */
+/* Zeroed image; half <= SPEC_MAX_HALF, scale finite and > 0 (-1 with
+ * cli_fail otherwise); within the memory ceiling, else the program ends
+ * with its message (cli_calloc). */
 int spec_img_alloc(struct spec_img *im, uint32_t half, double scale);
 void spec_img_free(struct spec_img *im);
 

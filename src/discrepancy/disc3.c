@@ -15,7 +15,6 @@
 #include "discrepancy/disc.h"
 #include "discrepancy/discint.h"
 #include "cli/cli.h"
-#include "base/num.h"
 #include "discrepancy/geom.h"
 #include "base/mem.h"
 

@@ -23,7 +23,6 @@
 #include "discrepancy/disc.h"
 #include "discrepancy/discint.h"
 #include "cli/cli.h"
-#include "base/num.h"
 #include "discrepancy/geom.h"
 
 double disc_half_pos(uint32_t i, uint32_t s)

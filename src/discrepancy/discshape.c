@@ -19,9 +19,9 @@
 #include "discrepancy/discint.h"
 #include "discrepancy/discshape.h"
 #include "cli/cli.h"
-#include "base/num.h"
 #include "discrepancy/geom.h"
-#include "base/rng.h"
+#include "frs.h"	/* frs_philox4x32_10 */
+#include "../../cl/defs.cl"	/* FRS_STREAM_SHAPES */
 
 /* Two uniform doubles in [0, 1) with 53 bits each from one Philox block
  * at (seed, k, class, draw). */

@@ -3,8 +3,6 @@
 #include "cli/cli.h"
 #include "frd-gen/frdgen.h"
 #include "frd-gen/frdgenint.h"
-#include "base/mem.h"
-#include "base/io.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -123,8 +121,10 @@ static void gen_free(struct gen *g)
 		free(g->lev[i].stamp);
 		free(g->lev[i].arg);
 	}
-	MEM_FREE(g->dirty[0], g->dirty[1], g->ax[0], g->ax[1], g->ax[2],
-	    g->tlist, g->changed, g->ext, g->zc, g->zf, g->fen);
+	free(g->dirty[0]), free(g->dirty[1]);
+	free(g->ax[0]), free(g->ax[1]), free(g->ax[2]);
+	free(g->tlist), free(g->changed), free(g->ext);
+	free(g->zc), free(g->zf), free(g->fen);
 	frdgen_sel_free(&g->sel);
 }
 
@@ -145,6 +145,7 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
     struct frs_matrix *out)
 {
 	char params[512];
+	frs_error err;
 	size_t total;
 
 	memset(g, 0, sizeof *g);
@@ -164,13 +165,13 @@ static int gen_init(struct gen *g, const struct frdgen_params *pr,
 	g->ntx = (g->sz.w + g->tx - 1) / g->tx;
 	g->nty = (g->sz.h + g->ty - 1) / g->ty;
 	g->ntz = (g->sz.d + g->tz - 1) / g->tz;
-	/* Everything together, before anything exists: an impossible size
-	 * is refused with the figure it needs. */
-	if (mem_check("matrix generation", frdgen_memory(pr), 1) < 0)
-		return -1;
+	/* The memory ceiling is the caller's, for everything together
+	 * before anything exists (frd-gen's check of frdgen_memory, the
+	 * option -s named in its refusal). */
 	frdgen_describe(pr, params, sizeof params);
-	if (frd_alloc(out, pr->dims, g->sz.w, g->sz.h, g->sz.d, params) < 0)
-		return -1;
+	if (frs_matrix_alloc(out, pr->dims, g->sz.w, g->sz.h, g->sz.d,
+	    params, &err) != FRS_OK)
+		return cli_fail("%s", err.message);
 	g->val = out->v;
 	total = (size_t)g->ntx * g->nty * g->ntz * g->ts;
 	g->field = malloc(total * sizeof *g->field);
@@ -547,7 +548,44 @@ static size_t field_cells(const struct gen *g)
 	return (size_t)g->ntx * g->nty * g->ntz * g->ts;
 }
 
+/*
+ * The checkpoint, frd-gen's own file: magic CKPT_MAGIC, the parameter
+ * text's length L (4 bytes) and the step (8), little-endian; the
+ * parameter text, L bytes; the values and the field as the run holds
+ * them (host order: a checkpoint goes on on the machine that wrote it).
+ */
 #define CKPT_MAGIC "FRDCKPT1"
+
+static void ck_put(unsigned char *p, uint64_t v, int bytes)
+{
+	for (int i = 0; i < bytes; i++)
+		p[i] = (unsigned char)(v >> (8 * i));
+}
+
+static uint64_t ck_get(const unsigned char *p, int bytes)
+{
+	uint64_t v = 0;
+
+	for (int i = bytes - 1; i >= 0; i--)
+		v = v << 8 | p[i];
+	return v;
+}
+
+/* Exactly n bytes of what, the part of the checkpoint name. */
+static int ck_read(FILE *fp, const char *name, void *buf, size_t n,
+    const char *what)
+{
+	size_t got = fread(buf, 1, n, fp);
+
+	if (got == n)
+		return 0;
+	if (ferror(fp))
+		return cli_fail_errno("%s: read error", name);
+	if (got == 0 && strcmp(what, "header") == 0 && ftell(fp) <= 0)
+		return cli_fail("%s: empty file", name);
+	return cli_fail("%s: truncated %s (%zu of %zu bytes)", name, what,
+	    got, n);
+}
 
 /* The state after "step" insertions: parameters, step, values (free cells
  * UINT32_MAX) and the field; enough to go on with the same result. */
@@ -562,8 +600,8 @@ static int save_checkpoint(struct gen *g, uint64_t step)
 	frdgen_describe(g->pr, params, sizeof params);
 	plen = (uint32_t)strlen(params);
 	memcpy(h, CKPT_MAGIC, 8);
-	io_put_u32(h + 8, plen);
-	io_put_u64(h + 12, step);
+	ck_put(h + 8, plen, 4);
+	ck_put(h + 12, step, 8);
 	if (outfile_open(&o, g->pr->checkpoint, 1) < 0)
 		return -1;
 	ok = fwrite(h, 1, sizeof h, o.fp) == sizeof h &&
@@ -592,15 +630,15 @@ static int load_checkpoint(struct gen *g, uint64_t *step)
 		return 0;
 	name = g->pr->checkpoint;
 	frdgen_describe(g->pr, params, sizeof params);
-	if (io_read_exact(fp, name, h, sizeof h, "header") < 0)
+	if (ck_read(fp, name, h, sizeof h, "header") < 0)
 		goto done;
 	if (memcmp(h, CKPT_MAGIC, 8) != 0) {
 		cli_fail("%s: not an frd-gen checkpoint", name);
 		goto done;
 	}
-	plen = io_get_u32(h + 8);
-	*step = io_get_u64(h + 12);
-	if (plen >= sizeof have || io_read_exact(fp, name, have, plen,
+	plen = (uint32_t)ck_get(h + 8, 4);
+	*step = ck_get(h + 12, 8);
+	if (plen >= sizeof have || ck_read(fp, name, have, plen,
 	    "parameters") < 0) {
 		cli_fail("%s: damaged checkpoint", name);
 		goto done;
@@ -611,8 +649,8 @@ static int load_checkpoint(struct gen *g, uint64_t *step)
 		    "afresh)", name);
 		goto done;
 	}
-	if (*step > g->sz.n || io_read_exact(fp, name, g->val, g->sz.n * 4,
-	    "values") < 0 || io_read_exact(fp, name, g->field,
+	if (*step > g->sz.n || ck_read(fp, name, g->val, g->sz.n * 4,
+	    "values") < 0 || ck_read(fp, name, g->field,
 	    field_cells(g) * 8, "field") < 0)
 		goto done;
 	rc = 1;
@@ -674,6 +712,6 @@ int frdgen_run(const struct frdgen_params *par, struct frs_matrix *out,
 fail:
 	cli_team_stop();
 	gen_free(&g);
-	frd_free(out);
+	frs_matrix_free(out);
 	return -1;
 }

@@ -58,7 +58,7 @@
 #ifndef FRS_FRDGEN_H
 #define FRS_FRDGEN_H
 
-#include "formats/frdio.h"
+#include "frs.h"	/* struct frs_matrix */
 #include "frd-gen/frdparam.h"
 
 struct cli_task;

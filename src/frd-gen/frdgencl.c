@@ -21,7 +21,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/frdgencl.h"
 #include "frd-gen/frdgenint.h"
-#include "base/mem.h"
 #include "cli/cli.h"
 
 #include <math.h>
@@ -198,7 +197,8 @@ static void gen_free(struct clgen *g)
 	ocl_release_mem(&g->field);
 	ocl_release_mem(&g->tab);
 	ocl_release_mem(&g->out);
-	MEM_FREE(g->table, g->cache, g->zc, g->fen, g->seg, g->outh);
+	free(g->table), free(g->cache), free(g->zc);
+	free(g->fen), free(g->seg), free(g->outh);
 	frdgen_sel_free(&g->sel);
 }
 
@@ -206,6 +206,7 @@ static int gen_init(struct clgen *g, const struct frdgen_params *pr,
     struct ocl *o, struct frs_matrix *out)
 {
 	char params[512], opts[64];
+	frs_error ferr;
 	size_t cells, wg = 0;
 	cl_int err;
 
@@ -225,8 +226,9 @@ static int gen_init(struct clgen *g, const struct frdgen_params *pr,
 	for (g->leaves = 1; g->leaves < g->ntiles; g->leaves *= 2)
 		;
 	frdgen_describe(pr, params, sizeof params);
-	if (frd_alloc(out, pr->dims, g->sz.w, g->sz.h, g->sz.d, params) < 0)
-		return -1;
+	if (frs_matrix_alloc(out, pr->dims, g->sz.w, g->sz.h, g->sz.d,
+	    params, &ferr) != FRS_OK)
+		return cli_fail("%s", ferr.message);
 	cells = g->ntiles * g->ts;
 	g->cache = malloc(cells * sizeof *g->cache);
 	g->zc = calloc(g->ntiles, sizeof *g->zc);
@@ -394,6 +396,6 @@ int frdgen_run_cl(const struct frdgen_params *par, struct ocl *o,
 	return 0;
 fail:
 	gen_free(&g);
-	frd_free(out);
+	frs_matrix_free(out);
 	return -1;
 }

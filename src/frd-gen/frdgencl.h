@@ -19,7 +19,7 @@
 #define FRS_FRDGENCL_H
 
 #include "frd-gen/frdgen.h"
-#include "base/ocl.h"
+#include "cli/cli.h"
 
 /* Generate on an open device; out is allocated.  task (cli.h) may be
  * NULL. */

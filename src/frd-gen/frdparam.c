@@ -1,8 +1,9 @@
 /* The generators' parameters and the laws that follow (frdparam.h). */
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/frdparam.h"
+#include "frs.h"	/* frs_rand01, frs_rand64x */
 #include "cli/cli.h"
-#include "base/rng.h"
+#include "../../cl/defs.cl"	/* FRS_STREAM_FRD_* */
 
 #include <limits.h>
 #include <math.h>

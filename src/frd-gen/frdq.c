@@ -1,6 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/frdq.h"
-#include "base/mem.h"
 #include "cli/cli.h"
 
 #include <math.h>
@@ -289,7 +288,7 @@ static int spectral(const struct frs_matrix *m, struct frdq_level *q)
 		radial_figures(&rd, q);
 		q->spectral = 1;
 	}
-	MEM_FREE(img, rd.sum, rd.sum2, rd.cnt);
+	free(img), free(rd.sum), free(rd.sum2), free(rd.cnt);
 	return rc;
 }
 

@@ -42,7 +42,7 @@
 
 #include <stdint.h>
 
-#include "formats/frdio.h"
+#include "frs.h"	/* struct frs_matrix */
 
 double frdq_spread(const struct frs_matrix *m, uint32_t c);
 /* -1 with cli_fail when the matrix is not 2-D with power-of-two sides. */

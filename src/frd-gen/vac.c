@@ -5,18 +5,16 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd-gen/vac.h"
 #include "frd-gen/frdgen.h"
-#include "base/mem.h"
 #include "cli/cli.h"
-#include "base/rng.h"
-#include "base/num.h"
+#include "frs.h"	/* frs_rand64, struct frs_rng */
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* Random streams of this module, far from rng.h's FRS_STREAM_* numbers so
- * that no other consumer of a seed shares them. */
+/* Random streams of this module, far from the FRS_STREAM_* numbers
+ * (cl/defs.cl) so that no other consumer of a seed shares them. */
 #define VAC_STREAM_INIT 0x56414331u	/* "VAC1": the initial pattern */
 #define VAC_STREAM_TIE 0x56414332u	/* "VAC2": tie keys */
 
@@ -216,7 +214,8 @@ static int make_table(struct vac *g, double *radius)
 
 static void vac_free(struct vac *g)
 {
-	MEM_FREE(g->e, g->key, g->bit, g->one, g->zero, g->tab, g->xext);
+	free(g->e), free(g->key), free(g->bit), free(g->one);
+	free(g->zero), free(g->tab), free(g->xext);
 }
 
 static int vac_init(struct vac *g, const struct vac_params *pr,
@@ -432,6 +431,7 @@ int vac_run(const struct vac_params *pr, struct frs_matrix *out,
     struct cli_task *task, struct vac_stats *st)
 {
 	char params[512];
+	frs_error err;
 	struct vac g;
 	uint64_t ones, moves, k = 0;
 	double radius = 0.0;
@@ -440,16 +440,15 @@ int vac_run(const struct vac_params *pr, struct frs_matrix *out,
 	memset(&g, 0, sizeof g);
 	if (vac_check(pr) < 0)
 		return -1;
-	/* Everything together, before anything exists: an impossible size
-	 * is refused with the figure it needs. */
-	if (mem_check("matrix generation", vac_memory(pr), 1) < 0)
-		return -1;
+	/* The memory ceiling is the caller's, for everything together
+	 * before anything exists (frd-gen's check of vac_memory). */
 	vac_describe(pr, params, sizeof params);
-	if (frd_alloc(out, pr->dims, pr->w, pr->h, pr->d, params) < 0)
-		return -1;
+	if (frs_matrix_alloc(out, pr->dims, pr->w, pr->h, pr->d, params,
+	    &err) != FRS_OK)
+		return cli_fail("%s", err.message);
 	if (vac_init(&g, pr, &radius) < 0) {
 		vac_free(&g);
-		frd_free(out);
+		frs_matrix_free(out);
 		return -1;
 	}
 	ones = vac_ones(g.n);

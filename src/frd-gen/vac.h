@@ -54,7 +54,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "formats/frdio.h"
+#include "frs.h"	/* struct frs_matrix */
 
 struct cli_task;
 

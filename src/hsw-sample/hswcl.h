@@ -13,7 +13,7 @@
 #include <stdint.h>
 
 #include "frs.h"
-#include "base/ocl.h"
+#include "cli/cli.h"
 
 struct hswcl {
 	struct ocl *o;

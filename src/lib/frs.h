@@ -479,6 +479,58 @@ struct frs_hsw_info {
 int frs_hsw_info(const frs_hsw *hsw, struct frs_hsw_info *info,
     frs_error *err);
 
+/* ---- random numbers (since 2.2) -------------------------------------- */
+
+/*
+ * The library's random numbers, so that a user can draw the same ones:
+ * Philox4x32-10 (Salmon et al., "Parallel random numbers: as easy as 1,
+ * 2, 3", SC 2011), a counter-based generator.  A number is a pure
+ * function of (seed, stream, index): the key is the seed (low word
+ * first), the 128-bit counter (index low, index high, stream, sub), so
+ * that it is the same for any thread count, work order or device.
+ * Streams separate the uses of one seed; the toolchain's own use numbers
+ * below 256 and 0x56414331 and 0x56414332 (frd-gen), which use owns
+ * which not API.  See frs_rand64(3).  None can fail; all are
+ * thread-safe, an frs_rng being one thread's at a time.
+ */
+/* One Philox4x32-10 block: out from counter ctr under key. */
+void frs_philox4x32_10(const uint32_t ctr[4], const uint32_t key[2],
+    uint32_t out[4]);
+/* 64 bits at (seed, stream, index): words 0 and 1 of the block of
+ * counter (index, stream, 0), word 0 the low half. */
+uint64_t frs_rand64(uint64_t seed, uint32_t stream, uint64_t index);
+/* The same with sub as the counter's fourth word. */
+uint64_t frs_rand64x(uint64_t seed, uint32_t stream, uint64_t index,
+    uint32_t sub);
+/* A double in [0, 1): the top 53 bits of frs_rand64 times 2^-53. */
+double frs_rand01(uint64_t seed, uint32_t stream, uint64_t index);
+/* A sequential stream: indices 0, 1, 2, ... of one (seed, stream). */
+struct frs_rng {
+	uint64_t seed;
+	uint64_t index;		/* the next index drawn */
+	uint32_t stream;
+};
+void frs_rng_init(struct frs_rng *r, uint64_t seed, uint32_t stream);
+/* frs_rand64 and frs_rand01 at the next index, which they advance. */
+uint64_t frs_rng_next64(struct frs_rng *r);
+double frs_rng_next01(struct frs_rng *r);
+/* A uniform integer in [0, bound) (bound 0: 2^64, every value) without
+ * modulo bias: x mod bound of the next frs_rng_next64 x below the
+ * largest multiple of bound not above 2^64 - 1, the others drawn
+ * again. */
+uint64_t frs_rng_below(struct frs_rng *r, uint64_t bound);
+
+/* ---- threshold matrices to fill (since 2.2) -------------------------- */
+
+/* A matrix for the caller to fill, a generator's, and write with
+ * frs_matrix_write: dims 2 or 3, sizes w x h (x d; d = 1 when dims is
+ * 2), its n values zeroed, params copied (NULL: "").  FRS_E_ARG for
+ * other sizes or more than 2^32 values, FRS_E_NOMEM above the ceiling
+ * FRS_MAX_MEM or out of memory; *m zeroed on failure.  Released by
+ * frs_matrix_free.  Thread-safe. */
+int frs_matrix_alloc(struct frs_matrix *m, unsigned dims, uint32_t w,
+    uint32_t h, uint32_t d, const char *params, frs_error *err);
+
 #ifdef __cplusplus
 }
 #endif

@@ -3,7 +3,7 @@
 #include <stdint.h>
 
 #include "mc-error/integrand.h"
-#include "base/num.h"
+#include "cli/cli.h"
 #include "maps/imap.h"
 
 #define GAUSS_SIGMA 0.15

@@ -168,9 +168,11 @@ uint64_t frs_rng_below(struct frs_rng *r, uint64_t bound)
 {
 	/* Rejection from the top of the range keeps every residue equally
 	 * likely. */
-	uint64_t limit = UINT64_MAX - UINT64_MAX % bound;
-	uint64_t x;
+	uint64_t limit, x;
 
+	if (bound == 0)		/* 2^64: every value */
+		return frs_rng_next64(r);
+	limit = UINT64_MAX - UINT64_MAX % bound;
 	do
 		x = frs_rng_next64(r);
 	while (x >= limit);

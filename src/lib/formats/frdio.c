@@ -28,7 +28,9 @@ int frd_alloc(struct frs_matrix *m, unsigned dims, uint32_t w, uint32_t h,
 		return -1;
 	if ((m->params = strdup(params ? params : "")) == NULL) {
 		frd_free(m);
-		return frs_fail("out of memory for a matrix's parameters");
+		frs_fail("out of memory for a matrix's parameters");
+		frs_set_errkind(FRS_ERRKIND_MEM);
+		return -1;
 	}
 	m->dims = dims;
 	m->w = w;
