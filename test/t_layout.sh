@@ -121,9 +121,7 @@ libheaders() {
 	discrepancy) echo base/mem.h base/num.h base/rng.h ;;
 	frd-gen) echo base/io.h base/mem.h base/num.h base/ocl.h \
 	    base/rng.h formats/frdio.h ;;
-	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
-	    formats/frdio.h maps/imap.h maps/pngio.h sample/frpio.h \
-	    sample/frscore.h ;;
+	frd-prep) echo ;;
 	frs-sample) echo api/api.h maps/imap.h maps/mapload.h \
 	    maps/vol.h sample/frscl.h sample/frscore.h ;;
 	hsw-sample) echo api/api.h base/mem.h base/ocl.h sample/hsw.h ;;
