@@ -54,6 +54,33 @@ expect_fail "ragged text" 1 "the first row has 2" "$T/o.frd" frd-prep --import t
 printf '1 x\n' >"$T/word.txt"
 expect_fail "text with a word" 1 "not an integer" "$T/o.frd" frd-prep --import text "$T/word.txt" -o "$T/o.frd"
 expect_fail "unknown import" 2 "--import" "$T/o.frd" frd-prep --import jpeg "$T/g.frd" -o "$T/o.frd"
+# A .frd's values are checked to be a permutation only with --check.
+cp "$T/g.frd" "$T/rep.frd"
+tail -c 8 "$T/g.frd" | head -c 4 | dd of="$T/rep.frd" bs=1 \
+    seek=$(($(wc -c <"$T/g.frd") - 4)) conv=notrunc 2>/dev/null
+frd-prep "$T/rep.frd" -o "$T/rep2.frd" && cmp -s "$T/rep.frd" "$T/rep2.frd" &&
+    ok "a .frd with a repeat is copied without --check" ||
+    nok "a .frd with a repeat is copied without --check"
+expect_fail "--check of a .frd with a repeat" 1 "rep.frd: not a permutation: value" \
+    "$T/o.frd" frd-prep --check "$T/rep.frd" -o "$T/o.frd"
+# The importers read their inputs themselves (the library's messages for
+# its own inputs): standard input, a directory, the memory ceiling on
+# the growing buffer; PNG through the library.
+frd-prep --import text -o "$T/t2.frd" <"$T/m.txt" && cmp -s "$T/t.frd" "$T/t2.frd" &&
+    ok "text import from standard input" || nok "text import from standard input"
+frd-prep --import png16 -o "$T/p2.frd" <"$T/mask.png" && cmp -s "$T/p.frd" "$T/p2.frd" &&
+    ok "png16 import from standard input" || nok "png16 import from standard input"
+mkdir -p "$T/dir"
+expect_fail "raw32 of a directory" 1 "frd-prep: $T/dir: is a directory" "$T/o.frd" \
+    frd-prep --import raw32 "$T/dir" -o "$T/o.frd"
+expect_fail "text that is not there" 1 "frd-prep: $T/none.txt: No such file" "$T/o.frd" \
+    frd-prep --import text "$T/none.txt" -o "$T/o.frd"
+seq 0 19999 >"$T/big.txt"
+expect_fail "text beyond FRS_MAX_MEM" 1 \
+    "frd-prep: $T/big.txt: needs 128.0 KiB, above the memory limit of 64.0 KiB (FRS_MAX_MEM)" \
+    "$T/o.frd" env FRS_MAX_MEM=64K frd-prep --import text "$T/big.txt" -o "$T/o.frd"
+expect_fail "png16 of a text file" 1 "frd-prep: $T/word.txt: bad PNG" "$T/o.frd" \
+    frd-prep --import png16 "$T/word.txt" -o "$T/o.frd"
 expect_fail "unknown algorithm" 2 "-a" "$T/o.frp" frd-prep -a fast "$T/g.frd" -o "$T/o.frp"
 expect_fail "block too large" 1 "exceeds" "$T/o.frp" frd-prep -a sorted --blocks 128 "$T/g.frd" -o "$T/o.frp"
 

@@ -132,9 +132,7 @@ libheaders() {
 	dda) echo maps/imap.h ;;
 	discrepancy) echo base/mem.h ;;
 	frd-gen) echo ;;
-	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
-	    formats/frdio.h maps/imap.h maps/pngio.h sample/frpio.h \
-	    sample/frscore.h ;;
+	frd-prep) echo ;;
 	frs-sample) echo api/api.h maps/imap.h maps/mapload.h \
 	    maps/vol.h ;;
 	hsw-sample) echo ;;

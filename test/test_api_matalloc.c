@@ -104,13 +104,15 @@ static void refusals(void **state)
 	static const struct {
 		unsigned dims;
 		uint32_t w, h, d;
+		int code;
 	} bad[] = {
-		{ 1, 4, 4, 1 }, { 4, 4, 4, 4 }, { 0, 4, 4, 1 },
-		{ 2, 4, 4, 2 }, { 2, 0, 4, 1 }, { 2, 4, 0, 1 },
-		{ 3, 4, 4, 0 },
-		/* 2^33 values, under any ceiling */
-		{ 3, 65536, 65536, 2 },
-		{ 3, UINT32_MAX, UINT32_MAX, UINT32_MAX },
+		{ 1, 4, 4, 1, FRS_E_ARG }, { 4, 4, 4, 4, FRS_E_ARG },
+		{ 0, 4, 4, 1, FRS_E_ARG }, { 2, 4, 4, 2, FRS_E_ARG },
+		{ 2, 0, 4, 1, FRS_E_ARG }, { 2, 4, 0, 1, FRS_E_ARG },
+		{ 3, 4, 4, 0, FRS_E_ARG },
+		/* 2^33 values, under any ceiling: more than a .frd holds */
+		{ 3, 65536, 65536, 2, FRS_E_LIMIT },
+		{ 3, UINT32_MAX, UINT32_MAX, UINT32_MAX, FRS_E_LIMIT },
 	};
 	struct frs_matrix m;
 	frs_error err;
@@ -119,8 +121,8 @@ static void refusals(void **state)
 	for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
 		memset(&m, 0x5a, sizeof m);
 		assert_int_equal(frs_matrix_alloc(&m, bad[i].dims, bad[i].w,
-		    bad[i].h, bad[i].d, "", &err), FRS_E_ARG);
-		assert_int_equal(err.code, FRS_E_ARG);
+		    bad[i].h, bad[i].d, "", &err), bad[i].code);
+		assert_int_equal(err.code, bad[i].code);
 		assert_true(err.message[0] != '\0');
 		assert_zeroed(&m);
 	}
@@ -134,7 +136,7 @@ static void refusals(void **state)
 
 /* The ceiling: 64 x 64 values of 4 bytes are 16384 bytes, 16.0 KiB,
  * above 1k; 2^32 values (65536 x 65536) are not too many, only too
- * large for 1M: FRS_E_NOMEM, not FRS_E_ARG, and 16.0 GiB. */
+ * large for 1M: FRS_E_NOMEM, not FRS_E_LIMIT, and 16.0 GiB. */
 static void ceiling(void **state)
 {
 	struct frs_matrix m;

@@ -9,13 +9,7 @@
 
 #include "frs.h"
 #include "cli/cli.h"
-#include "api/api.h"
-#include "base/err.h"
-#include "base/io.h"
 #include "frd-prep/frdimport.h"
-#include "formats/frdio.h"
-#include "sample/frpio.h"
-#include "sample/frscore.h"
 
 static const char usage[] =
     "usage: frd-prep [-a none|stack|level1|level2|sorted|all] [--check]\n"
@@ -98,13 +92,12 @@ struct mapopt {
 };
 
 /*
- * The setups of the counts on the map, as frs-sample makes them with the
- * options o (sigma, tiles), level by level: the block size of Sorted's
+ * The levels of the counts on the map, as frs-sample makes them with the
+ * options o (sigma, tiles; frs_prepared_plan): the block size of Sorted's
  * lists for each that has them, into blocks (each size once); a table of
  * them on fp when fp is not NULL (block 0: the level scans or walks its
  * pixels, with the minmap); *minmap set when a level reads the minmap.
  */
-
 static unsigned blocks_for(const struct frs_matrix *m, const struct mapopt *mo,
     const struct frs_options *o, const uint64_t *n, unsigned nn,
     uint32_t *blocks, int *minmap, FILE *fp)
@@ -119,47 +112,43 @@ static unsigned blocks_for(const struct frs_matrix *m, const struct mapopt *mo,
 		fprintf(fp, "n\tlevel\tn_s\twindow\tblock\tminmap\tvalues\t"
 		    "from_frp\n");
 	for (unsigned k = 0; k < nn; k++) {
-		struct frs_setup su;
-		struct api_lev2 lv;
-		if (frs_setup(&su, &map, m, n[k], o->sigma, 1) < 0)
+		struct frs_prepared_level lv[32];
+		unsigned nl;
+		if (frs_prepared_plan(m, &map, n[k], o, lv, 32, &nl,
+		    NULL) != FRS_OK)
 			cli_die_lib();
-		API_MODES(&su, o);
-		if (api_lev2_make(o, &su, &map, NULL, &lv) < 0)
-			cli_die_lib();
-		for (unsigned l = 0; l < lv.n; l++) {
-			const struct frs_setup *t = &lv.su[l];
-			uint32_t b = api_lev2_block(&lv, l);
-			uint64_t vals = b ? api_lists_below(t, &n[k], 1) : 0;
+		for (unsigned l = 0; l < nl && l < 32; l++) {
+			const struct frs_prepared_level *t = &lv[l];
+			uint32_t b = t->block;
 			unsigned i;
-			vals = vals < m->n ? vals : m->n;
-			*minmap |= b == 0 || b < t->ns;
+			*minmap |= t->minmap;
 			if (fp != NULL)
 				fprintf(fp, "%llu\t%u\t%u\t%llux%llu\t%u\t%s\t%llu\t"
 				    "%s\n", (unsigned long long)n[k], t->level, t->ns,
-				    (unsigned long long)t->sw, (unsigned long long)t->sh,
-				    b, b == 0 || b < t->ns ? "yes" : "no",
-				    (unsigned long long)vals, b &&
-				    api_lists_from_frp(m, vals) ? "yes" : "no");
+				    (unsigned long long)t->window_w,
+				    (unsigned long long)t->window_h, b,
+				    t->minmap ? "yes" : "no",
+				    (unsigned long long)t->values,
+				    t->from_frp ? "yes" : "no");
 			for (i = 0; i < nb && blocks[i] != b; i++)
 				;
 			if (b != 0 && i == nb)
 				blocks[nb++] = b;
 		}
-		api_lev2_free(&lv);
 	}
 	frs_imap_free(&map);
 	return nb;
 }
 
 /*
- * --check of a .frp (fp, its first npre bytes in pre): all of it read and
- * checked (frp_check_fp), and one line saying what it holds written to
- * the output.  Anything else asked of a .frp needs its .frd.
+ * A .frp (name, what frs_matrix_read_file found in it, s): under --check
+ * read whole and checked, and one line saying what it holds written to
+ * the output.  Anything else asked of a .frp needs its .frd, which is
+ * said before the rest is read (read_frd asks the check only then).
  */
-static noreturn void check_frp(FILE *fp, const char *name,
-    const unsigned char *pre, size_t npre, int check, int prep, int verbose)
+static noreturn void check_frp(const char *name,
+    const struct frs_file_info *s, int check, int prep, int verbose)
 {
-	struct frp_summary s;
 	struct outfile o;
 
 	if (prep)
@@ -168,56 +157,46 @@ static noreturn void check_frp(FILE *fp, const char *name,
 	if (!check)
 		cli_die("%s: a prepared matrix (.frp): frd-prep --check checks "
 		    "it; frd-prep reads a .frd otherwise", name);
-	if (frp_check_fp(fp, name, pre, npre, &s) < 0)
-		cli_die_lib();
-	io_close_in(fp);
 	cli_out_open(&o, cli.out, 0);
 	fprintf(o.fp, "%s: a valid prepared matrix: %ux%u, checksum %016llx, "
-	    "%s, ", name, s.w, s.h, (unsigned long long)s.sum,
-	    s.minmap ? "a minmap" : "no minmap");
-	if (s.nblocks == 0)
+	    "%s, ", name, s->w, s->h, (unsigned long long)s->checksum,
+	    s->minmap ? "a minmap" : "no minmap");
+	if (s->nblocks == 0)
 		fprintf(o.fp, "no sorted lists\n");
-	for (unsigned i = 0; i < s.nblocks; i++)
+	for (unsigned i = 0; i < s->nblocks; i++)
 		fprintf(o.fp, "%s%u%s", i ? "," : "sorted lists of blocks ",
-		    s.blocks[i], i + 1 == s.nblocks ? "\n" : "");
+		    s->blocks[i], i + 1 == s->nblocks ? "\n" : "");
 	cli_out_commit(&o, 0);
 	if (verbose)
-		fprintf(stderr, "frd-prep: %ux%u matrix, checksum %016llx\n", s.w,
-		    s.h, (unsigned long long)s.sum);
+		fprintf(stderr, "frd-prep: %ux%u matrix, checksum %016llx\n", s->w,
+		    s->h, (unsigned long long)s->checksum);
 	exit(0);
 }
 
-/* A .frd from path, or for a .frp check_frp. */
-static int read_frd(const char *path, struct frs_matrix *m, int check,
-    int prep, int verbose)
+/* A .frd from path (name in messages), its values only checked to lie
+ * below their count (--check checks the rest), or for a .frp
+ * check_frp. */
+static int read_frd(const char *path, const char *name, struct frs_matrix *m,
+    int check, int prep, int verbose)
 {
-	const char *name;
-	unsigned char pre[8];
-	size_t npre;
-	FILE *fp = io_open_in(path, &name);
-	int rc;
+	struct frs_file_info s;
+	int flags = FRS_READ_ANY_VALUES | (check && !prep ?
+	    FRS_READ_CHECK_FRP : 0);
 
-	if (fp == NULL)
+	if (frs_matrix_read_file(m, path, flags, &s, NULL) != FRS_OK)
 		return -1;
-	npre = fread(pre, 1, sizeof pre, fp);
-	if (ferror(fp)) {
-		io_close_in(fp);
-		return cli_fail_errno("%s: read error", name);
-	}
-	if (npre == sizeof pre && memcmp(pre, FRP_MAGIC, 8) == 0)
-		check_frp(fp, name, pre, npre, check, prep, verbose);
-	rc = frd_read_pre(fp, name, pre, npre, m, FRD_PERM_NO);
-	io_close_in(fp);
-	return rc;
+	if (s.frp)
+		check_frp(name, &s, check, prep, verbose);
+	return 0;
 }
 
-/* The option that mends an import the library refused (its messages
- * name none). */
-static const char *import_fix(void)
+/* The option that mends an import the program refused (rc: what the
+ * import returned; its messages name none). */
+static const char *import_fix(int rc)
 {
-	if (frs_errkind() == FRS_ERRKIND_SIZE)
+	if (rc == IMPORT_SIZE)
 		return "; give the size with -s WxH";
-	if (frs_errkind() == FRS_ERRKIND_RANKS)
+	if (rc == IMPORT_RANKS)
 		return " (--rank turns any values into ranks)";
 	return "";
 }
@@ -312,21 +291,21 @@ static void read_matrix(const struct prep_opts *o, struct frs_matrix *m)
 	int rc;
 
 	if (strcmp(fmt, "frd") == 0)
-		rc = read_frd(o->in, m, o->check, o->minmap || o->sorted ||
+		rc = read_frd(o->in, o->src, m, o->check, o->minmap || o->sorted ||
 		    o->nblocks > 0 || o->ncounts > 0, o->verbose);
 	else if (strcmp(fmt, "raw32") == 0)
 		rc = frd_import_raw32(o->in, o->w, o->h, o->rank, m);
 	else if (strcmp(fmt, "text") == 0)
 		rc = frd_import_text(o->in, o->rank, m);
 	else if (strcmp(fmt, "png16") == 0 || strcmp(fmt, "png") == 0)
-		rc = frd_import_png(o->in, m);
+		rc = frs_matrix_read_png(m, o->in, NULL) == FRS_OK ? 0 : -1;
 	else
 		cli_usage_error("--import: '%s' is not frd, raw32, png16 or text",
 		    fmt);
 	if (rc < 0)
-		cli_die("%s%s", cli_errmsg(), import_fix());
+		cli_die("%s%s", cli_errmsg(), import_fix(rc));
 	if ((o->check || strcmp(fmt, "frd") != 0) &&
-	    frd_check_permutation(m, o->src) < 0)
+	    frs_matrix_check(m, o->src, NULL) != FRS_OK)
 		cli_die_lib();
 }
 
@@ -346,7 +325,7 @@ static int print_table(struct prep_opts *o, struct frs_matrix *m)
 {
 	blocks_for(m, &o->mo, &o->opt, o->counts, o->ncounts, o->blocks,
 	    &o->minmap, stdout);
-	frd_free(m);
+	frs_matrix_free(m);
 	if (fflush(stdout) != 0 || ferror(stdout))
 		cli_die("<stdout>: write error");
 	return 0;
@@ -377,13 +356,14 @@ static void write_matrix(const struct prep_opts *o,
 	int rc;
 
 	cli_out_open(&of, cli.out, 1);
-	rc = o->minmap || o->sorted ? frp_write(of.fp, of.name, o->src, m,
-	    o->minmap, o->sorted && o->nblocks ? o->blocks : NULL,
-	    o->sorted ? o->nblocks : 0) : frd_write(of.fp, of.name, m);
-	cli_out_commit(&of, rc);
+	rc = o->minmap || o->sorted ? frs_prepared_write(m, of.fp, of.name,
+	    o->src, o->minmap, o->sorted && o->nblocks ? o->blocks : NULL,
+	    o->sorted ? o->nblocks : 0, NULL) : frs_matrix_write(m, of.fp,
+	    of.name, NULL);
+	cli_out_commit(&of, rc == FRS_OK ? 0 : -1);
 	if (o->verbose)
 		fprintf(stderr, "frd-prep: %ux%u matrix, checksum %016llx\n",
-		    m->w, m->h, (unsigned long long)frd_checksum(m));
+		    m->w, m->h, (unsigned long long)frs_matrix_checksum(m));
 }
 
 int main(int argc, char **argv)
@@ -403,6 +383,6 @@ int main(int argc, char **argv)
 		return print_table(&o, &m);
 	choose_blocks(&o, &m);
 	write_matrix(&o, &m);
-	frd_free(&m);
+	frs_matrix_free(&m);
 	return 0;
 }

@@ -1,54 +1,93 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frd-prep/frdimport.h"
-#include "base/num.h"
-#include "formats/frdio.h"
 #include "cli/cli.h"
-#include "base/err.h"
-#include "maps/imap.h"
-#include "maps/pngio.h"
-#include "base/io.h"
 
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
-struct kv {
-	uint64_t v;
-	uint32_t i;
-};
-
-static int kv_cmp(const void *a, const void *b)
+/*
+ * A whole input (path, "-": standard input) into *buf (*len bytes, and
+ * room for a NUL after them), its name for messages in *name.  The
+ * messages are the library's for its inputs (base/io.c): the path and
+ * strerror when it does not open, "is a directory", a read error; the
+ * buffer grows by doubling under the memory ceiling (FRS_MAX_MEM), which
+ * ends the program with its message as the library's reads do.
+ */
+static int slurp(const char *path, const char **name, unsigned char **buf,
+    size_t *len)
 {
-	const struct kv *x = a, *y = b;
+	FILE *fp = stdin;
+	struct stat st;
+	size_t cap = 1 << 16, n = 0;
+	unsigned char *b;
 
-	return x->v != y->v ? NUM_CMP(x->v, y->v) : NUM_CMP(x->i, y->i);
-}
-
-int frd_rank(struct frs_matrix *m)
-{
-	struct kv *t = malloc(m->n * sizeof *t);
-
-	if (t == NULL)
-		return cli_fail("out of memory");
-	for (size_t i = 0; i < m->n; i++)
-		t[i] = (struct kv){ m->v[i], (uint32_t)i };
-	qsort(t, m->n, sizeof *t, kv_cmp);
-	for (size_t r = 0; r < m->n; r++)
-		m->v[t[r].i] = (uint32_t)r;
-	free(t);
+	*name = "<stdin>";
+	if (path != NULL && strcmp(path, "-") != 0) {
+		*name = path;
+		if ((fp = fopen(path, "rb")) == NULL)
+			return cli_fail_errno("%s", path);
+		if (fstat(fileno(fp), &st) == 0 && S_ISDIR(st.st_mode)) {
+			fclose(fp);
+			return cli_fail("%s: is a directory", path);
+		}
+	}
+	if ((b = malloc(cap + 1)) == NULL) {
+		if (fp != stdin)
+			fclose(fp);
+		return cli_fail("%s: out of memory", *name);
+	}
+	for (;;) {
+		size_t got;
+		if (n == cap) {
+			unsigned char *nb;
+			if (cap > (SIZE_MAX - 1) / 2) {
+				free(b);
+				if (fp != stdin)
+					fclose(fp);
+				return cli_fail("%s: file too large", *name);
+			}
+			cli_mem_check(*name, cap, 2);
+			if ((nb = realloc(b, cap * 2 + 1)) == NULL) {
+				free(b);
+				if (fp != stdin)
+					fclose(fp);
+				return cli_fail("%s: out of memory", *name);
+			}
+			b = nb;
+			cap *= 2;
+		}
+		got = fread(b + n, 1, cap - n, fp);
+		n += got;
+		if (got == 0)
+			break;
+	}
+	if (ferror(fp)) {
+		free(b);
+		if (fp != stdin)
+			fclose(fp);
+		return cli_fail_errno("%s: read error", *name);
+	}
+	if (fp != stdin)
+		fclose(fp);
+	*buf = b;
+	*len = n;
 	return 0;
 }
 
+/* The values made a permutation by rank, or checked to be one:
+ * IMPORT_RANKS when they are not, which --rank would mend. */
 static int finish(struct frs_matrix *m, const char *name, int rank)
 {
 	if (rank)
-		return frd_rank(m);
-	if (frd_check_permutation(m, name) < 0) {
-		frs_set_errkind(FRS_ERRKIND_RANKS);	/* rank would mend it */
-		return -1;
-	}
+		return frs_matrix_rank(m, NULL) == FRS_OK ? 0 : -1;
+	if (frs_matrix_check(m, name, NULL) != FRS_OK)
+		return IMPORT_RANKS;
 	return 0;
 }
 
@@ -62,7 +101,7 @@ int frd_import_raw32(const char *path, uint32_t w, uint32_t h, int rank,
 	int rc;
 
 	memset(m, 0, sizeof *m);
-	rc = io_slurp_path(path, &name, &buf, &len);
+	rc = slurp(path, &name, &buf, &len);
 	if (rc < 0)
 		return -1;
 	if (len == 0 || len % 4) {
@@ -76,8 +115,7 @@ int frd_import_raw32(const char *path, uint32_t w, uint32_t h, int rank,
 			free(buf);
 			cli_fail("%s: %llu values are not a square", name,
 			    (unsigned long long)n);
-			frs_set_errkind(FRS_ERRKIND_SIZE);
-			return -1;
+			return IMPORT_SIZE;
 		}
 		w = h = (uint32_t)s;
 	}
@@ -87,18 +125,19 @@ int frd_import_raw32(const char *path, uint32_t w, uint32_t h, int rank,
 		    len, w, h, (unsigned long long)w * h * 4);
 	}
 	snprintf(params, sizeof params, "imported=raw32\nsource=%.100s\n", name);
-	if (frd_alloc(m, 2, w, h, 1, params) < 0) {
+	if (frs_matrix_alloc(m, 2, w, h, 1, params, NULL) != FRS_OK) {
 		free(buf);
 		return cli_fail_context(name);
 	}
-	for (size_t i = 0; i < m->n; i++)
-		m->v[i] = io_get_u32(buf + 4 * i);
-	free(buf);
-	if (finish(m, name, rank) < 0) {
-		frd_free(m);
-		return -1;
+	for (size_t i = 0; i < m->n; i++) {
+		const unsigned char *p = buf + 4 * i;
+		m->v[i] = (uint32_t)p[0] | (uint32_t)p[1] << 8 |
+		    (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
 	}
-	return 0;
+	free(buf);
+	if ((rc = finish(m, name, rank)) < 0)
+		frs_matrix_free(m);
+	return rc;
 }
 
 /* Count the values of a line; -1 with an error on junk. */
@@ -145,14 +184,10 @@ int frd_import_text(const char *path, int rank, struct frs_matrix *m)
 	int rc;
 
 	memset(m, 0, sizeof *m);
-	rc = io_slurp_path(path, &name, &buf, &len);
+	rc = slurp(path, &name, &buf, &len);
 	if (rc < 0)
 		return -1;
-	s = realloc(buf, len + 1);
-	if (s == NULL) {
-		free(buf);
-		return cli_fail("%s: out of memory", name);
-	}
+	s = (char *)buf;	/* slurp left room for the NUL */
 	s[len] = '\0';
 	/* First pass: the shape. */
 	{
@@ -179,7 +214,8 @@ int frd_import_text(const char *path, int rank, struct frs_matrix *m)
 		}
 		free(copy);
 	}
-	if (w == 0 || frd_alloc(m, 2, w, h, 1, "imported=text\n") < 0) {
+	if (w == 0 || frs_matrix_alloc(m, 2, w, h, 1, "imported=text\n",
+	    NULL) != FRS_OK) {
 		free(s);
 		return w == 0 ? cli_fail("%s: empty file", name) :
 		    cli_fail_context(name);
@@ -194,36 +230,7 @@ int frd_import_text(const char *path, int rank, struct frs_matrix *m)
 				row++;
 	}
 	free(s);
-	if (finish(m, name, rank) < 0) {
-		frd_free(m);
-		return -1;
-	}
-	return 0;
-}
-
-int frd_import_png(const char *path, struct frs_matrix *m)
-{
-	const char *name;
-	unsigned char *buf;
-	size_t len;
-	struct frs_imap img;
-	int rc;
-
-	memset(m, 0, sizeof *m);
-	rc = io_slurp_path(path, &name, &buf, &len);
-	if (rc < 0)
-		return -1;
-	rc = imap_read_png_mem(buf, len, name, 0, &img);
-	free(buf);
-	if (rc < 0)
-		return -1;
-	if (frd_alloc(m, 2, img.w, img.h, 1, "imported=png\n") < 0) {
-		imap_free(&img);
-		return cli_fail_context(name);
-	}
-	/* Grey levels of a 16-bit (or 8-bit) mask, exactly, as integers. */
-	for (size_t i = 0; i < m->n; i++)
-		m->v[i] = (uint32_t)llround(img.v[i] * 65535.0);
-	imap_free(&img);
-	return frd_rank(m);
+	if ((rc = finish(m, name, rank)) < 0)
+		frs_matrix_free(m);
+	return rc;
 }

@@ -520,16 +520,120 @@ double frs_rng_next01(struct frs_rng *r);
  * again. */
 uint64_t frs_rng_below(struct frs_rng *r, uint64_t bound);
 
-/* ---- threshold matrices to fill (since 2.2) -------------------------- */
+/* ---- preparing matrices (since 2.2; frd-prep(1)) --------------------- */
 
-/* A matrix for the caller to fill, a generator's, and write with
- * frs_matrix_write: dims 2 or 3, sizes w x h (x d; d = 1 when dims is
- * 2), its n values zeroed, params copied (NULL: "").  FRS_E_ARG for
- * other sizes or more than 2^32 values, FRS_E_NOMEM above the ceiling
- * FRS_MAX_MEM or out of memory; *m zeroed on failure.  Released by
- * frs_matrix_free.  Thread-safe. */
+/*
+ * Since 2.2: what frd-prep(1) does, for a library user: make a matrix to
+ * fill (an importer of a format of one's own), check and rank its values,
+ * read the grey levels of a PNG dither mask, tell a .frd from a .frp and
+ * check the latter, write a prepared matrix (.frp, frd(5)), and the plan
+ * of the levels a sampler of a matrix and a map makes for n samples, with
+ * what each of them reads of a prepared matrix.  See frs_prepared_write(3).
+ */
+/* A w x h (x d) matrix of zero values (to be filled, as a generator's,
+ * and written with frs_matrix_write) with a copy of params ("" when
+ * NULL): FRS_E_ARG for dims other than 2 or 3, a zero size or d != 1 in
+ * 2-D, FRS_E_LIMIT above 2^32 values, FRS_E_NOMEM above the ceiling
+ * FRS_MAX_MEM or out of memory.  Released with frs_matrix_free; *m
+ * zeroed on failure.  Thread-safe. */
 int frs_matrix_alloc(struct frs_matrix *m, unsigned dims, uint32_t w,
     uint32_t h, uint32_t d, const char *params, frs_error *err);
+/* Whether m's values are a permutation of 0 .. n-1: FRS_OK, else
+ * FRS_E_FORMAT with a message that names (name: "matrix" when NULL) the
+ * first value out of range or repeated and where it lies.  Thread-safe. */
+int frs_matrix_check(const struct frs_matrix *m, const char *name,
+    frs_error *err);
+/* Each value replaced by its rank among them, ties in the order of their
+ * positions: any values become a permutation.  FRS_E_NOMEM.  Thread-safe
+ * for distinct matrices. */
+int frs_matrix_rank(struct frs_matrix *m, frs_error *err);
+/* The 64-bit FNV-1a of the sizes and values by which a .frp names the
+ * matrix it was made from (frd(5)).  Thread-safe. */
+uint64_t frs_matrix_checksum(const struct frs_matrix *m);
+/* A PNG dither mask (path, "-": standard input) as a 2-D matrix: its
+ * grey levels (8 or 16 bits; RGB as Rec. 709 luminance), exactly, ranked
+ * as frs_matrix_rank ranks them, with params "imported=png".  A file
+ * that does not open FRS_E_IO, one that is no PNG FRS_E_FORMAT.
+ * Thread-safe. */
+int frs_matrix_read_png(struct frs_matrix *m, const char *path,
+    frs_error *err);
+
+/* What frs_matrix_read_file found. */
+struct frs_file_info {
+	int frp;		/* 1: a .frp (prepared), 0: a .frd */
+	int checked;		/* 1: the .frp read whole and checked, the
+				 * fields below its */
+	uint32_t w, h;		/* the matrix's size */
+	uint64_t checksum;	/* frs_matrix_checksum of the matrix */
+	int minmap;		/* 1: it holds the minmap */
+	unsigned nblocks;	/* its sets of sorted lists (0 to 32) */
+	uint32_t blocks[32];	/* their block sizes, in the file's order */
+};
+/* How frs_matrix_read_file reads. */
+enum frs_read_flag {
+	FRS_READ_ANY_VALUES = 1 << 0,	/* a .frd's values only checked to
+					 * lie below n (frs_matrix_check
+					 * tells the rest) */
+	FRS_READ_CHECK_FRP = 1 << 1	/* a .frp read whole and checked */
+};
+/*
+ * Read path ("-": standard input), a .frd or a .frp, told apart by their
+ * first bytes (the file is read once).  A .frd goes to m as
+ * frs_matrix_read reads it, its values checked to be a permutation unless
+ * flags has FRS_READ_ANY_VALUES; info->frp = 0.  A .frp leaves m zeroed
+ * with info->frp = 1; under FRS_READ_CHECK_FRP the whole file is read and
+ * checked (its length, the checksum, the permutation, every minmap level
+ * and set of sorted lists: FRS_E_FORMAT naming the first fault) and what
+ * it holds goes to info (checked = 1), else nothing more is read from it.
+ * A file that does not open is FRS_E_IO, one that is neither
+ * FRS_E_FORMAT.  Thread-safe.
+ */
+int frs_matrix_read_file(struct frs_matrix *m, const char *path, int flags,
+    struct frs_file_info *info, frs_error *err);
+
+/*
+ * Write the 2-D matrix m prepared to fp as a .frp (frd(5)): with its
+ * minmap when minmap is set, and block-sorted lists of each of the
+ * nblocks block sizes in blocks (powers of two up to the shorter side,
+ * at most 32 of them; blocks may be NULL when nblocks is 0), so that
+ * frs_mask_load of the file need not make them.  name names the file,
+ * src the matrix in messages.  The values should be a permutation
+ * (frs_matrix_check): a .frp of others is written, but refused when read.
+ * A 3-D matrix, sides that are not powers of two or bad blocks are
+ * FRS_E_ARG, a failed write FRS_E_IO; fp is neither flushed nor closed.
+ * Thread-safe for distinct streams.
+ */
+int frs_prepared_write(const struct frs_matrix *m, FILE *fp,
+    const char *name, const char *src, int minmap, const uint32_t *blocks,
+    unsigned nblocks, frs_error *err);
+
+/* One level of frs_prepared_plan. */
+struct frs_prepared_level {
+	unsigned level;		/* l, as in struct frs_level_info */
+	uint32_t ns;		/* its elements per pixel side */
+	uint64_t window_w, window_h;	/* its window in elements */
+	uint32_t block;		/* the block size of the sorted lists it
+				 * reads, 0: none (it scans its window) */
+	int minmap;		/* 1: it reads the minmap */
+	uint64_t values;	/* the values its lists must hold (those
+				 * below it, at most n of the matrix); 0
+				 * without lists */
+	int from_frp;		/* 1: its lists are read from a .frp that
+				 * has them rather than made */
+};
+/*
+ * The levels, finest first, of a run of n samples (1 <= n <= 2^40) over
+ * the 2-D matrix m and the map (as frs_imap_load gives it) under opt
+ * (NULL: the defaults), as a sampler of them makes them: what
+ * frd-prep(1) --for prints.  *count gets how many there are (1 to 32),
+ * the first cap of them go to levels (which may be NULL when cap is 0).
+ * A 3-D matrix is FRS_E_ARG, a window beyond
+ * the method's sizes FRS_E_LIMIT.  Thread-safe.
+ */
+int frs_prepared_plan(const struct frs_matrix *m, const struct frs_imap *map,
+    uint64_t n, const struct frs_options *opt,
+    struct frs_prepared_level *levels, unsigned cap, unsigned *count,
+    frs_error *err);
 
 #ifdef __cplusplus
 }

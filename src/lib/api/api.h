@@ -4,7 +4,8 @@
  * public API (OpenCL devices, the 3-D callback form, the -v report).
  *
  * api.c: errors, options and the enum tables; mask.c: masks and their
- * prepared lists; map.c: maps, volumes and the samplers made of them;
+ * prepared lists; prep.c: preparing matrices (frd-prep's work, public
+ * since 2.2); map.c: maps, volumes and the samplers made of them;
  * draw.c, draw3.c: the 2-D and 3-D draws; store.c: a run's samples to
  * the caller (both); hsw.c: HSW.
  */

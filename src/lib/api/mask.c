@@ -464,16 +464,6 @@ int frs_matrix_write(const struct frs_matrix *m, FILE *fp, const char *name,
 	return api_ok(err);
 }
 
-int frs_matrix_alloc(struct frs_matrix *m, unsigned dims, uint32_t w,
-    uint32_t h, uint32_t d, const char *params, frs_error *err)
-{
-	if (m == NULL)
-		return api_arg_err(err, "frs_matrix_alloc: NULL argument");
-	if (frd_alloc(m, dims, w, h, d, params) < 0)
-		return api_lib_err(err, FRS_E_ARG);
-	return api_ok(err);
-}
-
 void frs_matrix_free(struct frs_matrix *m)
 {
 	if (m != NULL)

@@ -33,14 +33,12 @@ void frs_clearerr(void);
 /* What the last failure was about: every frs_fail sets OTHER; the memory
  * ceiling (mem.c) then sets MEM, a file that does not open (io.c, and a
  * map source that is neither a file nor a spec) IO, imap_validate MAP,
- * the importers
- * (frd-prep's frdimport.c) SIZE for a count that is no square and RANKS for values
- * that are no permutation, where a program names its options that mend
- * them, and the procedural specs (spec.c) SPEC for one that does not
- * parse, which a program reports as a usage error. */
+ * and the procedural specs (spec.c) SPEC for one that does not parse,
+ * which a program reports as a usage error.  (frd-prep's importers say
+ * what mends their failures by their return values, not here.) */
 enum {
 	FRS_ERRKIND_OTHER, FRS_ERRKIND_MEM, FRS_ERRKIND_MAP,
-	FRS_ERRKIND_SIZE, FRS_ERRKIND_RANKS, FRS_ERRKIND_SPEC, FRS_ERRKIND_IO
+	FRS_ERRKIND_SPEC, FRS_ERRKIND_IO
 };
 void frs_set_errkind(int kind);
 int frs_errkind(void);

@@ -3,6 +3,7 @@
 #include "base/err.h"
 #include "base/io.h"
 #include "base/mem.h"
+#include "base/num.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -284,4 +285,32 @@ uint64_t frd_checksum(const struct frs_matrix *m)
 		for (int b = 0; b < 4; b++)
 			h = (h ^ ((m->v[i] >> (8 * b)) & 0xff)) * 0x100000001b3ull;
 	return h;
+}
+
+/* A value and its position, ranked by value, then position. */
+struct rank_kv {
+	uint64_t v;
+	uint32_t i;
+};
+
+static int rank_cmp(const void *a, const void *b)
+{
+	const struct rank_kv *x = a, *y = b;
+
+	return x->v != y->v ? NUM_CMP(x->v, y->v) : NUM_CMP(x->i, y->i);
+}
+
+int frd_rank(struct frs_matrix *m)
+{
+	struct rank_kv *t = malloc(m->n * sizeof *t);
+
+	if (t == NULL)
+		return frs_fail("out of memory");
+	for (size_t i = 0; i < m->n; i++)
+		t[i] = (struct rank_kv){ m->v[i], (uint32_t)i };
+	qsort(t, m->n, sizeof *t, rank_cmp);
+	for (size_t r = 0; r < m->n; r++)
+		m->v[t[r].i] = (uint32_t)r;
+	free(t);
+	return 0;
 }

@@ -57,6 +57,10 @@ int frd_write(FILE *fp, const char *name, const struct frs_matrix *m);
  * where it is. */
 int frd_check_permutation(const struct frs_matrix *m, const char *name);
 
+/* Replace the values by their ranks, ties in order of position (an
+ * import's values made a permutation); m->perm is left as it was. */
+int frd_rank(struct frs_matrix *m);
+
 /* 64-bit FNV-1a of the sizes and values, to tie prepared data to its
  * source matrix. */
 uint64_t frd_checksum(const struct frs_matrix *m);
