@@ -185,7 +185,7 @@ $(B)/gen/clsrc.c: $(CLSRC) scripts/cl2c.sh
 # the internal symbols they use.
 SOMAJOR = 2
 SONAME = libfrs.so.$(SOMAJOR)
-SOMINOR = 1
+SOMINOR = 2
 SOFILE = libfrs.so.$(SOMAJOR).$(SOMINOR).0
 PICOBJ = $(LIBOBJ:$(B)/%=$(B)/pic/%)
 SOMAP = src/lib/libfrs.map

@@ -117,19 +117,17 @@ fi
 # folder.
 libheaders() {
 	case $1 in
-	dda) echo base/mem.h base/num.h maps/imap.h ;;
+	dda) echo base/mem.h base/num.h ;;
 	discrepancy) echo base/mem.h base/num.h base/rng.h ;;
 	frd-gen) echo base/io.h base/mem.h base/num.h base/ocl.h \
 	    base/rng.h formats/frdio.h ;;
 	frd-prep) echo api/api.h base/err.h base/io.h base/num.h \
 	    formats/frdio.h maps/imap.h maps/pngio.h sample/frpio.h \
 	    sample/frscore.h ;;
-	frs-sample) echo api/api.h maps/imap.h maps/mapload.h \
-	    maps/vol.h sample/frscl.h sample/frscore.h ;;
+	frs-sample) echo api/api.h sample/frscl.h sample/frscore.h ;;
 	hsw-sample) echo api/api.h base/mem.h base/ocl.h sample/hsw.h ;;
-	imap) echo maps/exrio.h maps/imap.h maps/mapload.h maps/pngio.h \
-	    maps/spec.h maps/vol.h ;;
-	mc-error) echo base/num.h maps/imap.h ;;
+	imap) echo ;;
+	mc-error) echo base/num.h ;;
 	pts-render) echo ;;
 	ref-sample) echo ;;
 	esac

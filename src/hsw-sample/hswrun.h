@@ -25,7 +25,7 @@ struct hsw_run {
 };
 
 /* Open the device when cl (cl_index, -1: the first), load the map src at
- * w x h (0, 0: its own size) with imap_load's flags and build its
+ * w x h (0, 0: its own size) with frs_imap_load's flags and build its
  * quadtree, there too with the device.  -1 with a message (those about
  * the map name src), -2 when the device cannot be opened or cannot take
  * the tree. */
