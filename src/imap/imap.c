@@ -212,7 +212,6 @@ static void map_size(void)
 static int gen_volume(const char *spec)
 {
 	struct frs_vol v;
-	struct frs_imap none;
 	struct outfile o;
 	uint32_t sz[3];
 
@@ -223,8 +222,10 @@ static int gen_volume(const char *spec)
 		cli_usage_error("--log and --equirect are for 2-D maps");
 	vol_size(sz);
 	cli_options_done();
-	load_source(spec, 3, sz, opt_flags | FRS_MAP_ALLOW_ZERO, &none, NULL,
-	    &v);
+	/* A spec, even where a file of that name exists. */
+	if (frs_spec_load(spec, 3, sz, opt_flags | FRS_MAP_ALLOW_ZERO, NULL,
+	    NULL, &v, NULL) != FRS_OK)
+		cli_die_lib();
 	cli_out_open(&o, cli.out, 1);
 	cli_out_commit(&o, frs_vol_write(&v, o.fp, o.name, NULL) == FRS_OK ?
 	    0 : -1);

@@ -515,6 +515,13 @@ void frs_source_close(frs_source *source);
 int frs_source_read(const char *src, unsigned want, const uint32_t size[3],
     int flags, unsigned *dims, struct frs_imap *map,
     struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err);
+/* spec evaluated as a map (dims 2) or a volume (3) and checked as
+ * frs_source_load does, the same way (FRS_MAP_RAW too), but never a file
+ * of that name: a spec that does not parse (or names no spec of those
+ * dims) is FRS_E_ARG. */
+int frs_spec_load(const char *spec, unsigned dims, const uint32_t size[3],
+    int flags, struct frs_imap *map, struct frs_imap_stats *st,
+    struct frs_vol *vol, frs_error *err);
 /* What a spec's name (before ':') makes: FRS_SOURCE_ bits, 0 for none;
  * no file is looked at.  Thread-safe. */
 int frs_spec_kinds(const char *spec);

@@ -124,6 +124,27 @@ int frs_source_read(const char *src, unsigned want, const uint32_t size[3],
 	return rc;
 }
 
+int frs_spec_load(const char *spec, unsigned dims, const uint32_t size[3],
+    int flags, struct frs_imap *map, struct frs_imap_stats *st,
+    struct frs_vol *vol, frs_error *err)
+{
+	static const uint32_t own[3] = { 0, 0, 0 };
+
+	if (map != NULL)
+		*map = (struct frs_imap){ 0 };
+	if (vol != NULL)
+		*vol = (struct frs_vol){ 0 };
+	if (spec == NULL || (dims != 2 && dims != 3) || (dims == 2 &&
+	    map == NULL) || (dims == 3 && vol == NULL))
+		return api_arg_err(err, "frs_spec_load: NULL argument or dims "
+		    "other than 2 or 3");
+	if (size == NULL)
+		size = own;
+	if (spec_load(spec, dims, size, flags, map, st, vol) < 0)
+		return api_lib_err(err, FRS_E_ARG);
+	return api_ok(err);
+}
+
 int frs_spec_kinds(const char *spec)
 {
 	if (spec == NULL)

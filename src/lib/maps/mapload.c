@@ -232,6 +232,29 @@ int source_load(struct frs_source *s, unsigned want, const uint32_t size[3],
 	return dims;
 }
 
+int spec_load(const char *spec, unsigned dims, const uint32_t size[3],
+    int flags, struct frs_imap *m, struct frs_imap_stats *st,
+    struct frs_vol *v)
+{
+	struct frs_imap_stats own;
+	int rc;
+
+	if (dims == 2) {
+		rc = imap_spec(spec, size[0] ? size[0] : 128, size[1] ? size[1] :
+		    128, m);
+		if (rc == 0 && (flags & FRS_MAP_RAW) && st != NULL)
+			imap_stats(m, st);
+		else if (rc == 0 && !(flags & FRS_MAP_RAW))
+			rc = finish_map(spec, size[0], size[1], flags, m,
+			    st != NULL ? st : &own);
+		return rc;
+	}
+	rc = vol_spec(spec, size[0], size[1], size[2], v);
+	if (rc == 0 && !(flags & FRS_MAP_RAW))
+		rc = finish_vol(spec, size, flags, v);
+	return rc;
+}
+
 int map_or_vol_load(const char *src, unsigned want, const uint32_t size[3],
     int flags, struct frs_imap *m, struct frs_imap_stats *st,
     struct frs_vol *v)

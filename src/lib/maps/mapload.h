@@ -50,6 +50,11 @@ int source_load(struct frs_source *s, unsigned want, const uint32_t size[3],
     int flags, struct frs_imap *m, struct frs_imap_stats *st,
     struct frs_vol *v);
 void source_close(struct frs_source *s);
+/* spec evaluated as a map (dims 2) or a volume (3), no file looked at,
+ * then checked as source_load checks it: 0, or -1 after frs_fail. */
+int spec_load(const char *spec, unsigned dims, const uint32_t size[3],
+    int flags, struct frs_imap *m, struct frs_imap_stats *st,
+    struct frs_vol *v);
 
 /*
  * src as a 2-D map into m (imap_load) or a volume into v (vol_load): want
