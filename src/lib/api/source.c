@@ -83,6 +83,9 @@ int frs_source_load(frs_source *source, unsigned want,
 	    (want != 3 && map == NULL) || (want != 2 && vol == NULL))
 		return api_arg_err(err, "frs_source_load: NULL argument or a "
 		    "want other than 0, 2 or 3");
+	if (source->used)
+		return api_arg_err(err, "frs_source_load: the source was "
+		    "loaded already");
 	if (size == NULL)
 		size = own;
 	if (size[0] != 0 && (size[1] == 0 || (want == 3 && size[2] == 0)))
