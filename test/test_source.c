@@ -160,6 +160,7 @@ static void volume_file(void **state)
 	assert_true(v.w == 3 && v.h == 2 && v.d == 2 && m.v == NULL);
 	for (int i = 0; i < 12; i++)
 		assert_true(v.v[i] == (double)vals[i]);
+	frs_vol_free(&v);
 	/* Read once: a second load is refused. */
 	assert_int_equal(frs_source_load(s, 0, NULL, 0, &dims, &m, NULL, &v,
 	    &err), FRS_E_ARG);

@@ -423,8 +423,8 @@ int frs_hsw_draw(const frs_hsw *hsw, enum frs_hsw_input input, uint64_t n,
  */
 #define FRS_MAP_RAW (1 << 4)
 
-/* The statistics of a map's values (of a volume's, as frs_source_load
- * describes). */
+/* The statistics of a map's values (a volume's: those of the w x (h d)
+ * map of its slices stacked downwards, the same values). */
 struct frs_imap_stats {
 	uint64_t count;		/* w * h */
 	uint64_t zeros, negatives, nonfinite;
@@ -537,8 +537,8 @@ enum frs_map_format {
 };
 /* Write map to fp in format (name: for messages): FRS_E_ARG for a bad
  * argument or an empty map, FRS_E_MAP for values the format cannot hold,
- * FRS_E_IO when a write fails; fp is flushed, not closed.  Thread-safe
- * for distinct streams. */
+ * FRS_E_IO when a write fails; fp is neither flushed nor closed.
+ * Thread-safe for distinct streams. */
 int frs_imap_write(const struct frs_imap *map, enum frs_map_format format,
     FILE *fp, const char *name, frs_error *err);
 /* Write vol as a .frv file (frv(5)) to fp, the same way. */
