@@ -2,7 +2,8 @@
  * Importance maps: one in-memory form for PNG, OpenEXR and procedural
  * sources, struct frs_imap, which is public (frs.h: the programs and the
  * API's users hold maps in it, and the FRS_MAP_ flags and limits with
- * it; this stage includes frs.h for that type alone).  Pixel (i, j)
+ * it, and since 2.2 struct frs_imap_stats and frs_imap_pixel_of; this
+ * stage includes frs.h for those alone).  Pixel (i, j)
  * covers [i/W, (i+1)/W) x [j/H, (j+1)/H) of the unit square, row j
  * counted from the top of the image; values are linear, non-negative
  * importance in double.  RGB becomes Rec. 709 luminance.
