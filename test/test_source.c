@@ -277,6 +277,11 @@ static void write_and_load_maps(void **state)
 		assert_true(r.v[i] == e[i]);
 	assert_true(st.negatives == 1 && st.min == -2.0 && st.neg_x == 1);
 	frs_imap_free(&r);
+	/* frs_imap_load takes the flag too. */
+	assert_int_equal(frs_imap_load(&r, exr, 0, 0, FRS_MAP_RAW, &err),
+	    FRS_OK);
+	assert_true(r.w == 4 && r.v[1] == -2.0);
+	frs_imap_free(&r);
 	/* Checked and resampled to 2 x 1: the mean of each 2 x 2 block,
 	 * the negative made zero first. */
 	assert_int_equal(frs_source_read(exr, 0, (const uint32_t[3]){ 2, 1,

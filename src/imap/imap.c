@@ -365,6 +365,10 @@ int main(int argc, char **argv)
 	opt_flags = 0;
 	opt_format = FMT_NONE;
 	opt_log = 0;
+	/* A source the last run left open when an exit was trapped. */
+	frs_source_close(src);
+	src = NULL;
+	src_failed = 0;
 	if (argc < 2)
 		cli_usage_error("no command (gen, info or convert)");
 	cmd = argv[1];
