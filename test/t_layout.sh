@@ -129,16 +129,14 @@ fi
 # folder.
 libheaders() {
 	case $1 in
-	dda) echo maps/imap.h ;;
+	dda) echo ;;
 	discrepancy) echo base/mem.h ;;
 	frd-gen) echo ;;
 	frd-prep) echo ;;
-	frs-sample) echo api/api.h maps/imap.h maps/mapload.h \
-	    maps/vol.h ;;
+	frs-sample) echo api/api.h ;;
 	hsw-sample) echo ;;
-	imap) echo maps/exrio.h maps/imap.h maps/mapload.h maps/pngio.h \
-	    maps/spec.h maps/vol.h ;;
-	mc-error) echo maps/imap.h ;;
+	imap) echo ;;
+	mc-error) echo ;;
 	pts-render) echo ;;
 	ref-sample) echo ;;
 	esac

@@ -3,7 +3,8 @@
 # (its kind, dimensions, values and permutation check in one read), for
 # a .frd, a .frp, the shipped default and a 3-D matrix; and its map or
 # volume once, whether a matrix named says which it is or the file's
-# first bytes do (and so which default matrix to take).  Counted with
+# first bytes do (and so which default matrix to take); imap(1) its
+# source once, whose first bytes say whether it is a volume.  Counted with
 # strace (LeakSanitizer, itself a tracer, off under it); skipped where
 # strace is missing or cannot trace.
 . "$(dirname "$0")/lib.sh"
@@ -64,4 +65,24 @@ opens "a map, no matrix named" "$T/map.exr" 1 -i "$T/map.exr" --equirect
 opens "a volume, the 3-D matrix named" "$T/v.frv" 1 -m "$TD/default3.frd" \
     -i "$T/v.frv"
 opens "a volume, no matrix named" "$T/v.frv" 1 -i "$T/v.frv"
+
+# imap_opens WHAT FILE ARGS...: imap ARGS opens FILE once (3c04e07's
+# opened a map twice and a volume three times: to tell whether it is a
+# volume, then to read it).
+imap_opens() {
+	what=$1 file=$2
+	shift 2
+	if ! nolsan strace -f -e trace=open,openat -o "$T/trace" imap "$@" \
+	    >/dev/null 2>"$T/err"; then
+		nok "imap $what: failed: $(head -n 1 "$T/err")"
+		return
+	fi
+	got=$(grep -c "\"$file\"" "$T/trace")
+	[ "$got" -eq 1 ] && ok "imap $what: $file opened once" ||
+	    nok "imap $what: $file opened $got times, not once"
+}
+imap_opens "info of a map" "$T/map.exr" info "$T/map.exr"
+imap_opens "info of a volume" "$T/v.frv" info "$T/v.frv"
+imap_opens "info -s of a volume" "$T/v.frv" info -s 8 "$T/v.frv"
+imap_opens "convert" "$T/map.exr" convert -s 16 "$T/map.exr" "$T/o.png"
 done_testing

@@ -9,9 +9,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "frs.h"
 #include "dda/density.h"
 #include "cli/cli.h"
-#include "maps/imap.h"
 
 #define CHUNK 2048		/* sorted points per parallel chunk */
 #define MAX_BINS ((size_t)1 << 24)

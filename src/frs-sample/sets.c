@@ -14,9 +14,6 @@
 
 #include "cli/cli.h"
 #include "frs-sample/sets.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
-#include "maps/vol.h"
 
 /* The output of the sets, and -v's share of set 0. */
 struct out {
@@ -317,14 +314,18 @@ int sets_default_matrix(struct sets *a, unsigned dims)
 
 int sets_map(struct sets *a, unsigned want)
 {
-	return map_or_vol_load(a->imp ? a->imp : "const", want, a->size,
-	    a->flags, &a->map, &a->stats, &a->vol);
+	unsigned dims;
+
+	if (frs_source_read(a->imp ? a->imp : "const", want, a->size, a->flags,
+	    &dims, &a->map, &a->stats, &a->vol, NULL) != FRS_OK)
+		return -1;
+	return (int)dims;
 }
 
 void sets_unmap(struct sets *a)
 {
-	imap_free(&a->map);
-	vol_free(&a->vol);
+	frs_imap_free(&a->map);
+	frs_vol_free(&a->vol);
 }
 
 /* The mask (as sets_matrix loaded it), its note (a stale twin .frp)
@@ -368,7 +369,7 @@ static int open2(const struct sets *a, struct sets_run *run)
 	    &err) != FRS_OK)
 		rc = cli_fail("%s", err.message);
 	if (rc < 0) {
-		imap_free(&map);	/* not taken: its check failed */
+		frs_imap_free(&map);	/* not taken: its check failed */
 		return -1;
 	}
 	if (run->dev != NULL && frs_sampler_set_device(run->smp, run->dev,
@@ -401,15 +402,15 @@ static int open3(const struct sets *a, struct sets_run *run)
 	frs_error err;
 
 	if (load_mask(a, run) < 0) {
-		vol_free(&v);
+		frs_vol_free(&v);
 		return -1;
 	}
 	if (frs_sampler3_new_f64(&run->smp3, run->mask, v.v, v.w, v.h, v.d,
 	    &run->opt, &err) != FRS_OK) {
-		vol_free(&v);
+		frs_vol_free(&v);
 		return cli_fail("%s", err.message);
 	}
-	vol_free(&v);
+	frs_vol_free(&v);
 	/* Exact counts: set 0's taus only for -v, as in 2-D. */
 	if (api_setup3(run->smp3, a->steps, a->nsteps, a->seed, a->verbose,
 	    &run->lv3) < 0)

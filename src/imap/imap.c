@@ -9,13 +9,8 @@
 #include <string.h>
 #include <strings.h>
 
+#include "frs.h"
 #include "cli/cli.h"
-#include "maps/exrio.h"
-#include "maps/imap.h"
-#include "maps/mapload.h"
-#include "maps/pngio.h"
-#include "maps/spec.h"
-#include "maps/vol.h"
 
 static const char usage[] =
     "usage: imap gen [-q] [-s SIZE] [--equirect] [--log]\n"
@@ -53,13 +48,20 @@ static int opt_flags;
 static enum fmt opt_format;
 static int opt_log;
 
+/* The source of a command, opened once (open_source): NULL for standard
+ * input, which is opened when it is read (a map here, whatever it
+ * holds), and for a file that did not open (src_failed: its message kept
+ * for load_source, after the checks of the options). */
+static frs_source *src;
+static int src_failed;
+
 /* log10 over the positive range mapped to (0, 1], zero stays zero. */
 static void to_log(struct frs_imap *m)
 {
 	struct frs_imap_stats s;
 	double lo, span;
 
-	imap_stats(m, &s);
+	frs_imap_stats(m, &s);
 	if (s.min_positive <= 0.0)
 		return;
 	lo = log10(s.min_positive);
@@ -100,8 +102,8 @@ static void write_map(const char *path, struct frs_imap *m)
 	if (opt_log)
 		to_log(m);
 	cli_out_open(&o, path, 1);
-	cli_out_commit(&o, f == FMT_PNG ? imap_write_png16(o.fp, o.name, m) :
-	    imap_write_exr(o.fp, o.name, m));
+	cli_out_commit(&o, frs_imap_write(m, f == FMT_PNG ? FRS_FORMAT_PNG :
+	    FRS_FORMAT_EXR, o.fp, o.name, NULL) == FRS_OK ? 0 : -1);
 }
 
 /* The options it takes, besides the common ones (cli.h). */
@@ -146,11 +148,46 @@ static int parse_opts(int argc, char **argv)
 	return optind;
 }
 
+/* What src may be (FRS_SOURCE_ bits), from its name or a file's first
+ * bytes: the one open of the file. */
+static int open_source(const char *name)
+{
+	src = NULL;
+	src_failed = 0;
+	if (strcmp(name, "-") == 0)
+		return FRS_SOURCE_MAP;
+	if (frs_source_open(&src, name, NULL) != FRS_OK) {
+		src_failed = 1;
+		return FRS_SOURCE_MAP;
+	}
+	return frs_source_kinds(src);
+}
+
+/* The source opened, loaded as want asks (2 or 3) and closed; a failure
+ * ends the program. */
+static void load_source(const char *arg, unsigned want,
+    const uint32_t size[3], int flags, struct frs_imap *m,
+    struct frs_imap_stats *st, struct frs_vol *v)
+{
+	unsigned dims;
+	int rc;
+
+	if (src_failed || (src == NULL && frs_source_open(&src, arg,
+	    NULL) != FRS_OK))
+		cli_die_lib();
+	rc = frs_source_load(src, want, size, flags, &dims, m, st, v, NULL);
+	frs_source_close(src);
+	src = NULL;
+	if (rc != FRS_OK)
+		cli_die_lib();
+}
+
 /* A volume source: a .frv file, or a spec only volumes have (and const
  * when a volume is written). */
-static int is_volume(const char *src, enum fmt out)
+static int is_volume(int kinds, enum fmt out)
 {
-	return vol_is_volume(src) || (out == FMT_FRV && vol_is_spec(src));
+	return kinds == FRS_SOURCE_VOLUME || (out == FMT_FRV &&
+	    (kinds & FRS_SOURCE_VOLUME));
 }
 
 /* The -s size of a volume: N, WxHxD or none. */
@@ -185,12 +222,14 @@ static int gen_volume(const char *spec)
 		cli_usage_error("--log and --equirect are for 2-D maps");
 	vol_size(sz);
 	cli_options_done();
-	if (vol_spec(spec, sz[0], sz[1], sz[2], &v) < 0 ||
-	    vol_validate(&v, spec, opt_flags | FRS_MAP_ALLOW_ZERO) < 0)
+	/* A spec, even where a file of that name exists. */
+	if (frs_spec_load(spec, 3, sz, opt_flags | FRS_MAP_ALLOW_ZERO, NULL,
+	    NULL, &v, NULL) != FRS_OK)
 		cli_die_lib();
 	cli_out_open(&o, cli.out, 1);
-	cli_out_commit(&o, vol_write(o.fp, o.name, &v));
-	vol_free(&v);
+	cli_out_commit(&o, frs_vol_write(&v, o.fp, o.name, NULL) == FRS_OK ?
+	    0 : -1);
+	frs_vol_free(&v);
 	return 0;
 }
 
@@ -200,20 +239,19 @@ static int cmd_gen(int argc, char **argv)
 
 	if (argc != 1)
 		cli_usage_error("gen takes one SPEC");
-	if (is_volume(argv[0], cli.out != NULL ? format_of(cli.out) :
-	    opt_format))
+	if (is_volume(open_source(argv[0]), cli.out != NULL ?
+	    format_of(cli.out) : opt_format))
 		return gen_volume(argv[0]);
 	map_size();
-	if (!imap_is_spec(argv[0]))
+	if (!(frs_spec_kinds(argv[0]) & FRS_SOURCE_MAP))
 		cli_usage_error("'%s' is not a procedural map (const, blob, "
 		    "ramp, aniso, sky)", argv[0]);
 	format_of(cli.out);	/* fail on a bad name before any work */
 	cli_options_done();
-	if (imap_load(argv[0], opt_w, opt_h, opt_flags | FRS_MAP_ALLOW_ZERO,
-	    &m) < 0)
-		cli_die_lib();
+	load_source(argv[0], 2, (const uint32_t[3]){ opt_w, opt_h, 0 },
+	    opt_flags | FRS_MAP_ALLOW_ZERO, &m, NULL, NULL);
 	write_map(cli.out, &m);
-	imap_free(&m);
+	frs_imap_free(&m);
 	return 0;
 }
 
@@ -226,16 +264,15 @@ static int cmd_convert(int argc, char **argv)
 		out = argv[1];
 	else if (argc != 1 || out == NULL)
 		cli_usage_error("convert takes IN and OUT");
-	if (is_volume(argv[0], FMT_NONE))
+	if (is_volume(open_source(argv[0]), FMT_NONE))
 		cli_usage_error("%s: volumes are not converted", argv[0]);
 	map_size();
 	format_of(out);
 	cli_options_done();
-	if (imap_load(argv[0], opt_w, opt_h, opt_flags | FRS_MAP_ALLOW_ZERO,
-	    &m) < 0)
-		cli_die_lib();
+	load_source(argv[0], 2, (const uint32_t[3]){ opt_w, opt_h, 0 },
+	    opt_flags | FRS_MAP_ALLOW_ZERO, &m, NULL, NULL);
 	write_map(out, &m);
-	imap_free(&m);
+	frs_imap_free(&m);
 	return 0;
 }
 
@@ -257,57 +294,58 @@ static void print_stats(const struct frs_imap_stats *s)
 
 /* Statistics of a volume as it is: non-finite and negative voxels are
  * counted, not refused. */
-static int info_volume(const char *src, const char *name)
+static int info_volume(const char *arg, const char *name)
 {
 	struct frs_vol v;
-	struct frs_imap view;
+	struct frs_imap none, view;
 	struct frs_imap_stats s;
 	uint32_t sz[3];
 
 	vol_size(sz);
 	cli_options_done();
-	if ((vol_is_file(src) == 1 ? vol_read(src, &v) :
-	    vol_spec(src, sz[0], sz[1], sz[2], &v)) < 0)
-		cli_die_lib();
-	view = vol_as_map(&v);
-	imap_stats(&view, &s);
+	load_source(arg, 3, sz, FRS_MAP_RAW, &none, NULL, &v);
+	/* A volume is a W x (H D) map, slices stacked downwards. */
+	view = (struct frs_imap){ v.w, v.h * v.d, v.v };
+	frs_imap_stats(&view, &s);
 	printf("source %s\nwidth %u\nheight %u\ndepth %u\nvoxels %llu\n",
 	    name, v.w, v.h, v.d, (unsigned long long)s.count);
 	print_stats(&s);
-	vol_free(&v);
+	frs_vol_free(&v);
 	return 0;
 }
 
 static int cmd_info(int argc, char **argv)
 {
 	struct frs_imap m;
-	struct frs_imap_stats src, s;
+	struct frs_imap_stats src_st, s;
 	const char *name;
 
 	if (argc != 1)
 		cli_usage_error("info takes one FILE or SPEC");
 	name = strcmp(argv[0], "-") == 0 ? "<stdin>" : argv[0];
-	if (is_volume(argv[0], opt_nsz == 3 ? FMT_FRV : FMT_NONE))
+	if (is_volume(open_source(argv[0]), opt_nsz == 3 ? FMT_FRV :
+	    FMT_NONE))
 		return info_volume(argv[0], name);
 	map_size();
 	cli_options_done();
 	/* The statistics of the map as the programs use it: checked and
 	 * clamped as the warning says, then weighted (as convert does);
 	 * negatives and min_negative are those the clamping took away. */
-	if (imap_load_raw(argv[0], opt_w, opt_h, opt_flags, &m) < 0)
+	load_source(argv[0], 2, (const uint32_t[3]){ opt_w, opt_h, 0 },
+	    opt_flags | FRS_MAP_RAW, &m, &src_st, NULL);
+	if (frs_imap_check(&m, name, opt_flags | FRS_MAP_ALLOW_ZERO, &s,
+	    NULL) != FRS_OK)
 		cli_die_lib();
-	imap_stats(&m, &src);
-	if (imap_validate(&m, name, opt_flags | FRS_MAP_ALLOW_ZERO) < 0)
-		cli_die_lib();
-	if (opt_flags & FRS_MAP_EQUIRECT)
-		imap_equirect(&m);
-	imap_stats(&m, &s);
-	s.negatives = src.negatives;
-	s.min_negative = src.min_negative;
+	if (opt_flags & FRS_MAP_EQUIRECT) {
+		frs_map_equirect_f64(m.v, m.w, m.h, 0);
+		frs_imap_stats(&m, &s);
+	}
+	s.negatives = src_st.negatives;
+	s.min_negative = src_st.min_negative;
 	printf("source %s\nwidth %u\nheight %u\npixels %llu\n", name, m.w, m.h,
 	    (unsigned long long)s.count);
 	print_stats(&s);
-	imap_free(&m);
+	frs_imap_free(&m);
 	return 0;
 }
 
@@ -317,8 +355,8 @@ int main(int argc, char **argv)
 	const char *cmd;
 	int first;
 
-	snprintf(help, sizeof help, "%s%svolumes:\n%s", usage, imap_spec_help(),
-	    vol_spec_help());
+	snprintf(help, sizeof help, "%s%svolumes:\n%s", usage, frs_spec_help(2),
+	    frs_spec_help(3));
 	cli_init("imap", help);
 	/* Defaults set here, not only by static zeroing, so that main can
 	 * run again in one process (test/fuzz/fuzz_opts.c). */
@@ -327,6 +365,10 @@ int main(int argc, char **argv)
 	opt_flags = 0;
 	opt_format = FMT_NONE;
 	opt_log = 0;
+	/* A source the last run left open when an exit was trapped. */
+	frs_source_close(src);
+	src = NULL;
+	src_failed = 0;
 	if (argc < 2)
 		cli_usage_error("no command (gen, info or convert)");
 	cmd = argv[1];

@@ -635,6 +635,138 @@ int frs_prepared_plan(const struct frs_matrix *m, const struct frs_imap *map,
     struct frs_prepared_level *levels, unsigned cap, unsigned *count,
     frs_error *err);
 
+/* ---- maps and volumes: sources, checks, writers (since 2.2) ----------- */
+
+/*
+ * A flag of frs_imap_load and frs_source_load (with enum frs_map_flag):
+ * the values as stored, with none of the checks, the clamping, the
+ * weighting or the resampling above; a file at its own size (width and
+ * height then size only a spec).  What imap(1) info reports on.
+ */
+#define FRS_MAP_RAW (1 << 4)
+
+/* The statistics of a map's values (a volume's: those of the w x (h d)
+ * map of its slices stacked downwards, the same values). */
+struct frs_imap_stats {
+	uint64_t count;		/* w * h */
+	uint64_t zeros, negatives, nonfinite;
+	double min, max;	/* over finite values (0, 0 if none) */
+	double sum, mean;	/* over finite values, compensated sum */
+	double min_negative;	/* smallest value when negatives > 0 */
+	double min_positive;	/* smallest value > 0, 0 if none */
+	uint32_t bad_x, bad_y;	/* first non-finite pixel, row-major */
+	double bad_value;
+	uint32_t neg_x, neg_y;	/* first negative pixel */
+};
+/* The statistics of map's w * h values, one pass.  Thread-safe. */
+void frs_imap_stats(const struct frs_imap *map, struct frs_imap_stats *st);
+/*
+ * The checks of frs_imap_load on a map in place (name: for messages):
+ * a NaN or infinity is FRS_E_MAP naming the pixel; negative values are
+ * clamped to zero (FRS_E_MAP under FRS_MAP_STRICT); then a map zero
+ * everywhere is FRS_E_MAP unless FRS_MAP_ALLOW_ZERO.  st, when not NULL,
+ * gets the statistics of the values left (after clamping).  The other
+ * flags are ignored.  Thread-safe for distinct maps.
+ */
+int frs_imap_check(struct frs_imap *map, const char *name, int flags,
+    struct frs_imap_stats *st, frs_error *err);
+/* The pixel (row-major index) of the point (x, y) of the unit square,
+ * x across: a point on the far edge (1) goes to the last column or row;
+ * the pixel whose density the samplers' pdf gives.  Inline, for hot
+ * loops.  Thread-safe. */
+static inline uint64_t frs_imap_pixel_of(const struct frs_imap *map,
+    double x, double y)
+{
+	uint64_t px = (uint64_t)(x * map->w), py = (uint64_t)(y * map->h);
+
+	px = px < map->w ? px : map->w - 1;
+	py = py < map->h ? py : map->h - 1;
+	return py * map->w + px;
+}
+
+/* An importance volume: voxel (i, j, l) covers [i/w, (i+1)/w) x
+ * [j/h, (j+1)/h) x [l/d, (l+1)/d) of the unit cube; linear importance,
+ * x fastest, then y, then z (frs_sampler3_new_f64's order). */
+struct frs_vol {
+	uint32_t w, h, d;
+	double *v;	/* w * h * d values */
+};
+void frs_vol_free(struct frs_vol *vol);
+
+/*
+ * A source of a map or a volume, opened once: a PNG, OpenEXR or .frv
+ * (frv(5)) file, "-" for standard input, or a procedural spec (imap(1):
+ * "blob", "blob3", ...), a name that is no file.  frs_source_open opens
+ * a file and reads its first bytes, which say what it is; a spec is only
+ * named (it is evaluated by the load).  A file that does not open or
+ * read is FRS_E_IO; a name that is neither a file nor a spec opens, with
+ * kinds 0, and fails to load (FRS_E_IO, the message naming both).
+ * Thread-safe for distinct sources.
+ */
+typedef struct frs_source frs_source;
+enum frs_source_kind {
+	FRS_SOURCE_MAP = 1,	/* a 2-D map: a PNG or OpenEXR file (or any
+				 * file but a .frv: the load checks it),
+				 * a map's spec */
+	FRS_SOURCE_VOLUME = 2	/* a .frv file, a volume's spec ("const"
+				 * is both) */
+};
+int frs_source_open(frs_source **source, const char *src, frs_error *err);
+/* What the source may be loaded as: FRS_SOURCE_ bits. */
+int frs_source_kinds(const frs_source *source);
+/*
+ * Load the source, once: as a map into *map (want 2), a volume into
+ * *vol (want 3), or, want 0, what it is (a .frv file or a spec of
+ * volumes alone is a volume, anything else a map); *dims gets 2 or 3.
+ * size: the sides asked for, size[0] 0 for the source's own (a spec:
+ * 128 x 128, 32^3); a map file of another size is resampled by area, a
+ * volume never (a .frv file of another size is FRS_E_ARG).  flags as
+ * frs_imap_load's, for volumes too (FRS_MAP_SRGB and FRS_MAP_EQUIRECT
+ * for maps only): the values checked as frs_imap_check does (voxels
+ * named as (x, y, z)), unless FRS_MAP_RAW.  st, when not NULL, gets the
+ * statistics of a map's values as returned (a volume leaves it
+ * unchanged).  Codes as for frs_imap_load; on failure *map and *vol are
+ * zeroed.  map may be NULL when want is 3, vol when want is 2.
+ */
+int frs_source_load(frs_source *source, unsigned want,
+    const uint32_t size[3], int flags, unsigned *dims, struct frs_imap *map,
+    struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err);
+/* Close the file (standard input is left open); NULL does nothing. */
+void frs_source_close(frs_source *source);
+/* frs_source_open, frs_source_load and frs_source_close in one. */
+int frs_source_read(const char *src, unsigned want, const uint32_t size[3],
+    int flags, unsigned *dims, struct frs_imap *map,
+    struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err);
+/* spec evaluated as a map (dims 2) or a volume (3) and checked as
+ * frs_source_load does, the same way (FRS_MAP_RAW too), but never a file
+ * of that name: a spec that does not parse (or names no spec of those
+ * dims) is FRS_E_ARG. */
+int frs_spec_load(const char *spec, unsigned dims, const uint32_t size[3],
+    int flags, struct frs_imap *map, struct frs_imap_stats *st,
+    struct frs_vol *vol, frs_error *err);
+/* What a spec's name (before ':') makes: FRS_SOURCE_ bits, 0 for none;
+ * no file is looked at.  Thread-safe. */
+int frs_spec_kinds(const char *spec);
+/* The specs of maps (dims 2) or volumes (3) and their parameters, as
+ * imap(1) -h lists them; NULL for another dims.  Thread-safe. */
+const char *frs_spec_help(unsigned dims);
+
+/* The map formats frs_imap_write writes. */
+enum frs_map_format {
+	FRS_FORMAT_PNG = 1,	/* 16-bit grey, scaled so that the largest
+				 * value is 65535 */
+	FRS_FORMAT_EXR		/* one float channel "Y", ZIP compressed */
+};
+/* Write map to fp in format (name: for messages): FRS_E_ARG for a bad
+ * argument or an empty map, FRS_E_MAP for values the format cannot hold,
+ * FRS_E_IO when a write fails; fp is neither flushed nor closed.
+ * Thread-safe for distinct streams. */
+int frs_imap_write(const struct frs_imap *map, enum frs_map_format format,
+    FILE *fp, const char *name, frs_error *err);
+/* Write vol as a .frv file (frv(5)) to fp, the same way. */
+int frs_vol_write(const struct frs_vol *vol, FILE *fp, const char *name,
+    frs_error *err);
+
 #ifdef __cplusplus
 }
 #endif

@@ -4,7 +4,6 @@
 
 #include "mc-error/integrand.h"
 #include "cli/cli.h"
-#include "maps/imap.h"
 
 #define GAUSS_SIGMA 0.15
 #define DISC_R 0.35
@@ -131,7 +130,7 @@ void map_pdf_init(struct map_pdf *p, const struct frs_imap *map)
 {
 	struct frs_imap_stats st;
 
-	imap_stats(map, &st);
+	frs_imap_stats(map, &st);
 	p->map = map;
 	p->mean = st.mean;
 }
@@ -139,7 +138,7 @@ void map_pdf_init(struct map_pdf *p, const struct frs_imap *map)
 double map_pdf_at(const struct map_pdf *p, double x, double y,
     size_t pixel[2])
 {
-	uint64_t i = imap_pixel_of(p->map, x, y);
+	uint64_t i = frs_imap_pixel_of(p->map, x, y);
 
 	pixel[0] = (size_t)(i % p->map->w);
 	pixel[1] = (size_t)(i / p->map->w);

@@ -7,7 +7,8 @@
  * prepared lists; prep.c: preparing matrices (frd-prep's work, public
  * since 2.2); map.c: maps, volumes and the samplers made of them;
  * draw.c, draw3.c: the 2-D and 3-D draws; store.c: a run's samples to
- * the caller (both); hsw.c: HSW.
+ * the caller (both); hsw.c: HSW; source.c: map and volume sources,
+ * their checks and writers.
  */
 #ifndef FRS_API_H
 #define FRS_API_H

@@ -728,8 +728,10 @@ int imap_write_exr(FILE *fp, const char *name, const struct frs_imap *m)
 	    m->h > FRS_MAP_MAX_SIDE)
 		return frs_fail("%s: cannot write a %ux%u map", name, m->w,
 		    m->h);
-	if (fits_float(m, name) < 0)
+	if (fits_float(m, name) < 0) {
+		frs_set_errkind(FRS_ERRKIND_MAP);	/* the values */
 		return -1;
+	}
 	/* The ZIP encoder of OpenEXRCore 3.1.5 corrupts some chunks (a
 	 * 128x128 Gaussian blob reads back with NaNs), so every file is
 	 * decoded again, and written uncompressed if it does not match. */

@@ -2,7 +2,8 @@
  * Importance maps: one in-memory form for PNG, OpenEXR and procedural
  * sources, struct frs_imap, which is public (frs.h: the programs and the
  * API's users hold maps in it, and the FRS_MAP_ flags and limits with
- * it; this stage includes frs.h for that type alone).  Pixel (i, j)
+ * it, and since 2.2 struct frs_imap_stats and frs_imap_pixel_of; this
+ * stage includes frs.h for those alone).  Pixel (i, j)
  * covers [i/W, (i+1)/W) x [j/H, (j+1)/H) of the unit square, row j
  * counted from the top of the image; values are linear, non-negative
  * importance in double.  RGB becomes Rec. 709 luminance.
@@ -14,17 +15,7 @@
 
 #include "frs.h"
 
-struct frs_imap_stats {
-	uint64_t count;		/* w * h */
-	uint64_t zeros, negatives, nonfinite;
-	double min, max;	/* over finite values */
-	double sum, mean;	/* over finite values, compensated sum */
-	double min_negative;	/* smallest value when negatives > 0 */
-	double min_positive;	/* smallest value > 0, 0 if none */
-	uint32_t bad_x, bad_y;	/* first non-finite pixel */
-	double bad_value;
-	uint32_t neg_x, neg_y;	/* first negative pixel */
-};
+/* struct frs_imap_stats is public (frs.h, since 2.2). */
 
 int imap_alloc(struct frs_imap *m, uint32_t w, uint32_t h);
 void imap_free(struct frs_imap *m);
@@ -58,17 +49,7 @@ void imap_equirect(struct frs_imap *m);
 /* That weight of row j of h. */
 double imap_equirect_weight(uint32_t j, uint32_t h);
 
-/* The pixel (row-major index) of the point (x, y) of the unit square,
- * x across: a point on the far edge (1) goes to the last column or row. */
-static inline uint64_t imap_pixel_of(const struct frs_imap *m, double x,
-    double y)
-{
-	uint64_t px = (uint64_t)(x * m->w), py = (uint64_t)(y * m->h);
-
-	px = px < m->w ? px : m->w - 1;
-	py = py < m->h ? py : m->h - 1;
-	return py * m->w + px;
-}
+/* imap_pixel_of is public: frs_imap_pixel_of (frs.h). */
 
 /* Rec. 709 luminance of linear RGB. */
 static inline double imap_luma(double r, double g, double b)

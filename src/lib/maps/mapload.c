@@ -30,103 +30,133 @@ static int decode_image(const unsigned char *buf, size_t len,
 	return frs_fail("%s: not a PNG or OpenEXR file", name);
 }
 
-/* A source, what is asked of it (want: 2, 3, or 0 for what it is) and
- * what it was (dims). */
-struct source {
-	const char *src;
+/* What is asked of a source (want: 2, 3, or 0 for what it is) and what
+ * it was (dims). */
+struct ask {
 	unsigned want, dims;
 	int flags;
 	struct frs_imap *m;
 	struct frs_vol *v;
 };
 
-/* One open of a file: its first bytes say whether it is a volume, and
- * the rest is read as that.  Both image decoders want random access, so
- * an image is buffered whole (standard input included). */
-static int read_source(FILE *fp, const char *name, struct source *s)
+int source_open(struct frs_source *s, const char *src)
 {
-	unsigned char pre[8], *buf = NULL;
-	size_t npre = fread(pre, 1, sizeof pre, fp), len = 0;
-	int frv = npre == sizeof pre && memcmp(pre, FRV_MAGIC, 8) == 0, rc;
+	struct stat st;
 
-	if (ferror(fp))
-		return frs_fail_errno("%s: read error", name);
-	s->dims = s->want != 0 ? s->want : frv ? 3 : 2;
-	if (s->dims == 3) {
+	memset(s, 0, sizeof *s);
+	s->src = src;
+	if (strcmp(src, "-") != 0 && stat(src, &st) != 0) {
+		/* A spec, or nothing: the missing file's errno kept for the
+		 * load's last message. */
+		s->stat_errno = errno;
+		s->kinds = (imap_is_spec(src) ? FRS_SOURCE_MAP : 0) |
+		    (vol_is_spec(src) ? FRS_SOURCE_VOLUME : 0);
+		return 0;
+	}
+	if ((s->fp = io_open_in(src, &s->name)) == NULL)
+		return -1;
+	/* One open: its first bytes say whether it is a volume, and the
+	 * rest is read as that. */
+	s->npre = fread(s->pre, 1, sizeof s->pre, s->fp);
+	if (ferror(s->fp)) {
+		frs_fail_errno("%s: read error", s->name);
+		source_close(s);
+		return -1;
+	}
+	s->frv = s->npre == sizeof s->pre && memcmp(s->pre, FRV_MAGIC, 8) == 0;
+	s->kinds = s->frv ? FRS_SOURCE_VOLUME : FRS_SOURCE_MAP;
+	return 0;
+}
+
+void source_close(struct frs_source *s)
+{
+	if (s->fp != NULL)
+		io_close_in(s->fp);
+	s->fp = NULL;
+}
+
+/* The rest of an open file.  Both image decoders want random access, so
+ * an image is buffered whole (standard input included). */
+static int read_source(struct frs_source *s, struct ask *a)
+{
+	unsigned char *buf = NULL;
+	size_t len = 0;
+	int rc;
+
+	a->dims = a->want != 0 ? a->want : s->frv ? 3 : 2;
+	if (a->dims == 3) {
 		/* Standard input has no other reading: the header's
 		 * check names what is wrong. */
-		if (!frv && strcmp(s->src, "-") != 0)
+		if (!s->frv && strcmp(s->src, "-") != 0)
 			return frs_fail("%s: not an importance volume (.frv)",
-			    name);
-		return vol_read_pre(fp, name, pre, npre, s->v);
+			    s->name);
+		return vol_read_pre(s->fp, s->name, s->pre, s->npre, a->v);
 	}
-	if (io_slurp(fp, name, pre, npre, &buf, &len) < 0)
+	if (io_slurp(s->fp, s->name, s->pre, s->npre, &buf, &len) < 0)
 		return -1;
-	rc = decode_image(buf, len, name, s->flags, s->m);
+	rc = decode_image(buf, len, s->name, a->flags, a->m);
 	free(buf);
 	return rc;
 }
 
 /* A spec (no file of that name exists): a map's, at w x h (0: 128x128),
  * or a volume's. */
-static int load_spec(struct source *s, const uint32_t size[3])
+static int load_spec(const struct frs_source *s, struct ask *a,
+    const uint32_t size[3])
 {
 	const char *src = s->src;
-	int e = errno;	/* the missing file's, for the last message */
 
-	s->dims = s->want != 0 ? s->want : vol_is_spec(src) &&
+	a->dims = a->want != 0 ? a->want : vol_is_spec(src) &&
 	    !imap_is_spec(src) ? 3 : 2;
-	if (s->dims == 2 && imap_is_spec(src))
+	if (a->dims == 2 && imap_is_spec(src))
 		return imap_spec(src, size[0] ? size[0] : 128,
-		    size[1] ? size[1] : 128, s->m);
-	if (s->dims == 2 && vol_is_spec(src))
+		    size[1] ? size[1] : 128, a->m);
+	if (a->dims == 2 && vol_is_spec(src))
 		return frs_fail("%s: a procedural volume where a 2-D map is "
 		    "needed (volumes go with 3-D matrices)", src);
-	if (s->dims == 2) {
+	if (a->dims == 2) {
 		frs_fail("%s: no such file, and not a procedural map (const, "
 		    "blob, ramp, aniso, sky)", src);
 		frs_set_errkind(FRS_ERRKIND_IO);
 		return -1;
 	}
 	if (vol_is_spec(src))
-		return vol_spec(src, size[0], size[1], size[2], s->v);
+		return vol_spec(src, size[0], size[1], size[2], a->v);
 	if (imap_is_spec(src))
 		return frs_fail("%s: a 2-D map where a volume is needed (.frv, "
 		    "or const, blob3, ramp3, shell3)", src);
-	errno = e;
+	errno = s->stat_errno;
 	frs_fail_errno("%s", src);
 	frs_set_errkind(FRS_ERRKIND_IO);
 	return -1;
 }
 
-/* The source as it is: its dimensions, -1 after frs_fail. */
-static int load_raw(struct source *s, const uint32_t size[3])
+/* The source as it is: its dimensions, -1 after frs_fail.  A source is
+ * read once. */
+static int load_raw(struct frs_source *s, struct ask *a,
+    const uint32_t size[3])
 {
-	struct stat st;
 	int rc;
 
-	if (s->m != NULL)
-		memset(s->m, 0, sizeof *s->m);
-	if (s->v != NULL)
-		memset(s->v, 0, sizeof *s->v);
-	if (strcmp(s->src, "-") == 0 || stat(s->src, &st) == 0) {
-		const char *name;
-		FILE *fp = io_open_in(s->src, &name);
-		if (fp == NULL)
-			return -1;
-		rc = read_source(fp, name, s);
-		io_close_in(fp);
-	} else
-		rc = load_spec(s, size);
-	return rc < 0 ? -1 : (int)s->dims;
+	if (a->m != NULL)
+		memset(a->m, 0, sizeof *a->m);
+	if (a->v != NULL)
+		memset(a->v, 0, sizeof *a->v);
+	if (s->used)
+		return frs_fail("%s: the source was read already", s->src);
+	s->used = 1;
+	if (s->fp != NULL)
+		rc = read_source(s, a);
+	else
+		rc = load_spec(s, a, size);
+	return rc < 0 ? -1 : (int)a->dims;
 }
 
 int imap_load_raw(const char *src, uint32_t w, uint32_t h, int flags,
     struct frs_imap *m)
 {
-	struct source s = { .src = src, .want = 2, .flags = flags, .m = m };
-
-	return load_raw(&s, (const uint32_t[3]){ w, h, 0 }) < 0 ? -1 : 0;
+	return map_or_vol_load(src, 2, (const uint32_t[3]){ w, h, 0 },
+	    flags | FRS_MAP_RAW, m, NULL, NULL) < 0 ? -1 : 0;
 }
 
 /* The checks of a map as loaded: its own pixels first, so that messages
@@ -179,21 +209,68 @@ static int finish_vol(const char *name, const uint32_t size[3], int flags,
 	return rc;
 }
 
+int source_load(struct frs_source *s, unsigned want, const uint32_t size[3],
+    int flags, struct frs_imap *m, struct frs_imap_stats *st,
+    struct frs_vol *v)
+{
+	struct ask a = { .want = want, .flags = flags, .m = m, .v = v };
+	const char *name = strcmp(s->src, "-") == 0 ? "<stdin>" : s->src;
+	struct frs_imap_stats own;
+	int dims = load_raw(s, &a, size);
+
+	if (dims == 2 && (flags & FRS_MAP_RAW)) {
+		if (st != NULL)
+			imap_stats(m, st);
+		return dims;
+	}
+	if (dims == 2 && finish_map(name, size[0], size[1], flags, m,
+	    st != NULL ? st : &own) < 0)
+		return -1;
+	if (dims == 3 && !(flags & FRS_MAP_RAW) &&
+	    finish_vol(name, size, flags, v) < 0)
+		return -1;
+	return dims;
+}
+
+int spec_load(const char *spec, unsigned dims, const uint32_t size[3],
+    int flags, struct frs_imap *m, struct frs_imap_stats *st,
+    struct frs_vol *v)
+{
+	struct frs_imap_stats own;
+	int rc;
+
+	if (dims == 2) {
+		rc = imap_spec(spec, size[0] ? size[0] : 128, size[1] ? size[1] :
+		    128, m);
+		if (rc == 0 && (flags & FRS_MAP_RAW) && st != NULL)
+			imap_stats(m, st);
+		else if (rc == 0 && !(flags & FRS_MAP_RAW))
+			rc = finish_map(spec, size[0], size[1], flags, m,
+			    st != NULL ? st : &own);
+		return rc;
+	}
+	rc = vol_spec(spec, size[0], size[1], size[2], v);
+	if (rc == 0 && !(flags & FRS_MAP_RAW))
+		rc = finish_vol(spec, size, flags, v);
+	return rc;
+}
+
 int map_or_vol_load(const char *src, unsigned want, const uint32_t size[3],
     int flags, struct frs_imap *m, struct frs_imap_stats *st,
     struct frs_vol *v)
 {
-	struct source s = { .src = src, .want = want, .flags = flags, .m = m,
-	    .v = v };
-	const char *name = strcmp(src, "-") == 0 ? "<stdin>" : src;
-	struct frs_imap_stats own;
-	int dims = load_raw(&s, size);
+	struct frs_source s;
+	int dims;
 
-	if (dims == 2 && finish_map(name, size[0], size[1], flags, m,
-	    st != NULL ? st : &own) < 0)
+	if (source_open(&s, src) < 0) {
+		if (m != NULL)
+			memset(m, 0, sizeof *m);
+		if (v != NULL)
+			memset(v, 0, sizeof *v);
 		return -1;
-	if (dims == 3 && finish_vol(name, size, flags, v) < 0)
-		return -1;
+	}
+	dims = source_load(&s, want, size, flags, m, st, v);
+	source_close(&s);
 	return dims;
 }
 

@@ -148,10 +148,13 @@ int vol_write(FILE *fp, const char *name, const struct frs_vol *m)
 			uint32_t u;
 			/* float32 holds the values: refuse what it would turn
 			 * into infinity or zero. */
-			if (isfinite(v) && (isinf(f) || (f == 0.0f && v != 0.0)))
-				return frs_fail("%s: value %g at voxel %llu is outside "
+			if (isfinite(v) && (isinf(f) || (f == 0.0f && v != 0.0))) {
+				frs_fail("%s: value %g at voxel %llu is outside "
 				    "the float range of .frv", name, v,
 				    (unsigned long long)(i + j));
+				frs_set_errkind(FRS_ERRKIND_MAP);
+				return -1;
+			}
 			memcpy(&u, &f, sizeof u);
 			io_put_u32(buf + 4 * j, u);
 		}

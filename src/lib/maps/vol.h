@@ -32,10 +32,7 @@
 /* Side at which procedural volumes are evaluated by default. */
 #define VOL_DEFAULT_SIDE 32u
 
-struct frs_vol {
-	uint32_t w, h, d;
-	double *v;
-};
+/* struct frs_vol is public (frs.h, since 2.2). */
 
 int vol_alloc(struct frs_vol *m, uint32_t w, uint32_t h, uint32_t d);
 void vol_free(struct frs_vol *m);

@@ -73,7 +73,7 @@ double hsw_radical_inverse(uint64_t i, unsigned b);
 static inline double hsw_pdf_at(const struct frs_imap *map, double mean,
     double x, double y)
 {
-	return map->v[imap_pixel_of(map, x, y)] / mean;
+	return map->v[frs_imap_pixel_of(map, x, y)] / mean;
 }
 
 /* The mean of the map the tree was built from, as hsw_pdf_at wants it. */
