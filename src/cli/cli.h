@@ -357,6 +357,13 @@ void cli_warn(const char *fmt, ...) CLI_PRINTF(1, 2);
  * tree's data/, the install prefix). */
 #define CLI_PATH_MAX 4096	/* also frs-sample's default matrix path */
 int cli_data_file(const char *name, char *path, size_t cap);
+/* The whole of a file (path, "-": standard input) into *buf (*len bytes,
+ * with room for a NUL after them; to be freed), its name for messages
+ * in *name: read as the library reads its inputs, with its messages (the
+ * path and strerror, "is a directory", a read error) and its memory
+ * ceiling.  -1 after cli_fail. */
+int cli_read_file(const char *path, const char **name, unsigned char **buf,
+    size_t *len);
 
 /* Number of online processors. */
 int cli_ncpu(void);

@@ -8,6 +8,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli/cli.h"
 #include "base/datadir.h"
+#include "base/io.h"
 #include "base/err.h"
 #include "base/ocl.h"
 #include "base/par.h"
@@ -107,6 +108,12 @@ int cli_threads(void)
 int cli_data_file(const char *name, char *path, size_t cap)
 {
 	return data_find(name, path, cap);
+}
+
+int cli_read_file(const char *path, const char **name, unsigned char **buf,
+    size_t *len)
+{
+	return io_slurp_path(path, name, buf, len);
 }
 
 int cli_fail(const char *fmt, ...)

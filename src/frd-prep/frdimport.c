@@ -9,76 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-
-/*
- * A whole input (path, "-": standard input) into *buf (*len bytes, and
- * room for a NUL after them), its name for messages in *name.  The
- * messages are the library's for its inputs (base/io.c): the path and
- * strerror when it does not open, "is a directory", a read error; the
- * buffer grows by doubling under the memory ceiling (FRS_MAX_MEM), which
- * ends the program with its message as the library's reads do.
- */
-static int slurp(const char *path, const char **name, unsigned char **buf,
-    size_t *len)
-{
-	FILE *fp = stdin;
-	struct stat st;
-	size_t cap = 1 << 16, n = 0;
-	unsigned char *b;
-
-	*name = "<stdin>";
-	if (path != NULL && strcmp(path, "-") != 0) {
-		*name = path;
-		if ((fp = fopen(path, "rb")) == NULL)
-			return cli_fail_errno("%s", path);
-		if (fstat(fileno(fp), &st) == 0 && S_ISDIR(st.st_mode)) {
-			fclose(fp);
-			return cli_fail("%s: is a directory", path);
-		}
-	}
-	if ((b = malloc(cap + 1)) == NULL) {
-		if (fp != stdin)
-			fclose(fp);
-		return cli_fail("%s: out of memory", *name);
-	}
-	for (;;) {
-		size_t got;
-		if (n == cap) {
-			unsigned char *nb;
-			if (cap > (SIZE_MAX - 1) / 2) {
-				free(b);
-				if (fp != stdin)
-					fclose(fp);
-				return cli_fail("%s: file too large", *name);
-			}
-			cli_mem_check(*name, cap, 2);
-			if ((nb = realloc(b, cap * 2 + 1)) == NULL) {
-				free(b);
-				if (fp != stdin)
-					fclose(fp);
-				return cli_fail("%s: out of memory", *name);
-			}
-			b = nb;
-			cap *= 2;
-		}
-		got = fread(b + n, 1, cap - n, fp);
-		n += got;
-		if (got == 0)
-			break;
-	}
-	if (ferror(fp)) {
-		free(b);
-		if (fp != stdin)
-			fclose(fp);
-		return cli_fail_errno("%s: read error", *name);
-	}
-	if (fp != stdin)
-		fclose(fp);
-	*buf = b;
-	*len = n;
-	return 0;
-}
 
 /* The values made a permutation by rank, or checked to be one:
  * IMPORT_RANKS when they are not, which --rank would mend. */
@@ -101,7 +31,7 @@ int frd_import_raw32(const char *path, uint32_t w, uint32_t h, int rank,
 	int rc;
 
 	memset(m, 0, sizeof *m);
-	rc = slurp(path, &name, &buf, &len);
+	rc = cli_read_file(path, &name, &buf, &len);
 	if (rc < 0)
 		return -1;
 	if (len == 0 || len % 4) {
@@ -184,10 +114,10 @@ int frd_import_text(const char *path, int rank, struct frs_matrix *m)
 	int rc;
 
 	memset(m, 0, sizeof *m);
-	rc = slurp(path, &name, &buf, &len);
+	rc = cli_read_file(path, &name, &buf, &len);
 	if (rc < 0)
 		return -1;
-	s = (char *)buf;	/* slurp left room for the NUL */
+	s = (char *)buf;	/* cli_read_file leaves room for a NUL */
 	s[len] = '\0';
 	/* First pass: the shape. */
 	{
