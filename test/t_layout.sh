@@ -130,7 +130,7 @@ fi
 libheaders() {
 	case $1 in
 	dda) echo ;;
-	discrepancy) echo base/mem.h ;;
+	discrepancy) echo ;;
 	frd-gen) echo ;;
 	frd-prep) echo ;;
 	frs-sample) echo api/api.h ;;

@@ -156,6 +156,11 @@ void cli_mem_check(const char *what, uint64_t nmemb, uint64_t size)
 		cli_die_lib();
 }
 
+void *cli_try_calloc(const char *what, uint64_t nmemb, uint64_t size)
+{
+	return mem_calloc(what, nmemb, size);
+}
+
 void *cli_calloc(const char *what, uint64_t nmemb, uint64_t size)
 {
 	void *p = mem_calloc(what, nmemb, size);

@@ -374,6 +374,10 @@ int cli_ncpu(void);
  * the library's message. */
 void cli_mem_check(const char *what, uint64_t nmemb, uint64_t size);
 void *cli_calloc(const char *what, uint64_t nmemb, uint64_t size);
+/* The same allocation for work that reports its own failures (a
+ * parallel task, whose caller names the file): NULL after cli_fail,
+ * the program goes on. */
+void *cli_try_calloc(const char *what, uint64_t nmemb, uint64_t size);
 
 /*
  * The output step (output.c): a file opened (outfile.h: written

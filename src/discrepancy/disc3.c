@@ -16,7 +16,6 @@
 #include "discrepancy/discint.h"
 #include "cli/cli.h"
 #include "discrepancy/geom.h"
-#include "base/mem.h"
 
 #define L2_ROWS 32		/* rows of the pair sum per chunk */
 #define DINF_SWEEPS 256	/* x positions of the exact Dinf per chunk */
@@ -317,13 +316,13 @@ static int cdq_pairs(const double *x, size_t n, int par, struct dd *out)
 {
 	struct cdq c = { .n = n };
 	size_t nb = (n + CDQ_BASE - 1) / CDQ_BASE;
-	uint32_t *ord = mem_calloc("the exact D2", (uint64_t)n, 5 *
+	uint32_t *ord = cli_try_calloc("the exact D2", (uint64_t)n, 5 *
 	    sizeof *ord);
 	struct dd off = dd_from(0.0), diag = dd_from(0.0);
 	int rc = -1;
 
-	c.u = mem_calloc("the exact D2", (uint64_t)n, 3 * sizeof *c.u);
-	c.zsum = mem_calloc("the exact D2", (uint64_t)n, sizeof *c.zsum);
+	c.u = cli_try_calloc("the exact D2", (uint64_t)n, 3 * sizeof *c.u);
+	c.zsum = cli_try_calloc("the exact D2", (uint64_t)n, sizeof *c.zsum);
 	c.part = calloc(nb, sizeof *c.part);
 	if (ord == NULL || c.u == NULL || c.zsum == NULL || c.part == NULL) {
 		if (c.part == NULL)
@@ -356,7 +355,7 @@ out:
 double disc_star_l2_exact_k(const double *x, size_t n, unsigned k, int par)
 {
 	size_t nch = (n + L2_ROWS - 1) / L2_ROWS;
-	double *u = mem_calloc("the exact D2", (uint64_t)n * k, sizeof *u);
+	double *u = cli_try_calloc("the exact D2", (uint64_t)n * k, sizeof *u);
 	struct l2job c = { u, n, k, calloc(nch ? nch : 1, sizeof(struct dd)) };
 	struct dd single = dd_from(0.0), pairs = dd_from(0.0), t;
 	double v;
@@ -727,7 +726,7 @@ static int dinf3_chunk(void *ctx, uint64_t b, uint64_t e)
 	    .h = (size_t)d->ax[1].m + 2, .nb = d->nb };
 	double best = 0.0;
 
-	t.P = mem_calloc("the exact 3-D Dinf", (uint64_t)t.w * t.h +
+	t.P = cli_try_calloc("the exact 3-D Dinf", (uint64_t)t.w * t.h +
 	    (uint64_t)(t.nb + 1) * t.h, sizeof *t.P);
 	t.pend = malloc(2 * d->n * sizeof *t.pend);
 	if (t.P == NULL || t.pend == NULL) {
@@ -834,7 +833,7 @@ static int grid3_chunk(void *ctx, uint64_t b, uint64_t e)
 {
 	struct grid3 *c = ctx;
 	size_t s = c->s;
-	uint32_t *H = mem_calloc("the 3-D grid", (uint64_t)s * s + s,
+	uint32_t *H = cli_try_calloc("the 3-D grid", (uint64_t)s * s + s,
 	    sizeof *H);
 	struct num_sum sq = { 0.0, 0.0 };
 	double best = 0.0;
