@@ -133,7 +133,7 @@ libheaders() {
 	discrepancy) echo ;;
 	frd-gen) echo ;;
 	frd-prep) echo ;;
-	frs-sample) echo api/api.h ;;
+	frs-sample) echo ;;
 	hsw-sample) echo ;;
 	imap) echo ;;
 	mc-error) echo ;;

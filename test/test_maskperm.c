@@ -91,7 +91,7 @@ static void masks_know_it(void **state)
 	(void)state;
 
 	write_perm(p, 16, 16, 0);
-	assert_int_equal(api_mask_load(&mk, p, &dims, &err), FRS_OK);
+	assert_int_equal(frs_mask_load_dims(&mk, p, &dims, &err), FRS_OK);
 	assert_int_equal(dims, 2);
 	assert_int_equal(mk->m.perm, 1);
 	frs_mask_free(mk);
@@ -133,10 +133,10 @@ static void dims_of_a_bad_file(void **state)
 	assert_non_null(fp = fopen(p, "wb"));
 	assert_int_equal(fwrite(h, 1, sizeof h, fp), sizeof h);
 	assert_int_equal(fclose(fp), 0);
-	assert_int_equal(api_mask_load(&mk, p, &dims, &err), FRS_E_FORMAT);
+	assert_int_equal(frs_mask_load_dims(&mk, p, &dims, &err), FRS_E_FORMAT);
 	assert_null(mk);
 	assert_int_equal(dims, 3);
-	assert_int_equal(api_mask_load(&mk, "/nonexistent.frd", &dims, &err),
+	assert_int_equal(frs_mask_load_dims(&mk, "/nonexistent.frd", &dims, &err),
 	    FRS_E_IO);
 	assert_int_equal(dims, 0);
 }

@@ -257,7 +257,7 @@ static void check_dims(const struct sets *o)
 		cli_die("-s %ux%u: %s is a 3-D matrix; give -s N or WxHxD",
 		    o->size[0], o->size[1], o->matrix);
 	/* main counted 2-D elements; 3-D ones are larger. */
-	check_room(o, sets_elem_size(3));
+	check_room(o, frs_draw_bytes(3));
 }
 
 /* The matrix and the map, each file opened once: a matrix named says
@@ -296,7 +296,7 @@ int main(int argc, char **argv)
 	frs_options_init(&o.opt);
 	cli_init("frs-sample", usage);
 	parse_opts(argc, argv, &o);
-	check_room(&o, sets_elem_size(2));
+	check_room(&o, frs_draw_bytes(2));
 	cli_options_done();
 	load_inputs(&o);
 	if ((rc = sets_open(&o, &run)) < 0)

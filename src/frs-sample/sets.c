@@ -31,31 +31,11 @@ struct out {
 	size_t reccap;
 };
 
-/* The level of the cell that point p lies in (every set has set 0's
- * levels: they do not depend on the seed). */
+/* The level of point p (every set has set 0's levels: they do not
+ * depend on the seed). */
 static unsigned level_at(const struct sets_run *run, const double *p)
 {
-	const struct frs_levels *L = run->dims == 2 ? &run->lv.plan :
-	    &run->lv3.plan;
-	uint64_t c = 0;
-
-	if (L->lev == NULL)
-		return run->dims == 2 ? run->lv.su[0].level : run->lv3.su[0].level;
-	for (unsigned a = run->dims; a-- > 0;)
-		c = c * L->side[a] + (uint64_t)(p[a] * (double)L->side[a]);
-	return L->lev[c];
-}
-
-/* The index in run->lv (lv3) of the level of point p. */
-static unsigned level_of(const struct sets_run *run, const double *p)
-{
-	unsigned n = run->dims == 2 ? run->lv.n : run->lv3.n,
-	    l = level_at(run, p);
-	for (unsigned i = 0; i < n; i++)
-		if ((run->dims == 2 ? run->lv.su[i].level : run->lv3.su[i].level) ==
-		    l)
-			return i;
-	return 0;
+	return run->lv[frs_run_level_of(run->r, p)].info.level;
 }
 
 /* -v: count point p of set 0 in its level and (2-D) the matrix element
@@ -64,20 +44,18 @@ static unsigned level_of(const struct sets_run *run, const double *p)
 static void note_point(struct out *u, const double *p)
 {
 	struct sets_run *run = u->run;
-	unsigned i = level_of(run, p);
-	const struct frs_setup *s = &run->lv.su[i];
+	unsigned i = frs_run_level_of(run->r, p);
 	uint64_t m;
 
 	run->lcount[i]++;
 	if (run->dims != 2)
 		return;
-	if (u->uses[i] == NULL && (u->uses[i] = calloc((size_t)s->mw * s->mh,
-	    sizeof *u->uses[i])) == NULL) {
+	if (u->uses[i] == NULL && (u->uses[i] = calloc((size_t)run->mside[0] *
+	    run->mside[1], sizeof *u->uses[i])) == NULL) {
 		u->collect = 0;	/* -v goes without the share */
 		return;
 	}
-	m = frs_matrix_index(s, (uint64_t)(p[0] * (double)s->sw),
-	    (uint64_t)(p[1] * (double)s->sh));
+	m = frs_run_element(run->r, i, p);
 	if (u->uses[i][m] < UINT32_MAX)
 		u->uses[i][m]++;
 }
@@ -89,12 +67,12 @@ static void reused_shares(struct out *u)
 {
 	struct sets_run *run = u->run;
 	uint64_t all = 0, noted = 0;
-	size_t n = (size_t)run->s0.mw * run->s0.mh;
+	size_t n = (size_t)run->mside[0] * run->mside[1];
 
 	run->reused = -1.0;
 	for (unsigned i = 0; i < FRS_LEVELS_MAX; i++)
 		run->lreused[i] = -1.0;
-	for (unsigned i = 0; i < run->lv.n; i++) {
+	for (unsigned i = 0; i < run->info.levels; i++) {
 		uint64_t reused = 0;
 		if (u->uses[i] == NULL)
 			continue;
@@ -183,43 +161,37 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 	return rc;
 }
 
-/* The window elements that the cells of level l of L span on axis a at
- * n_s elements a cell (the whole axis without levels). */
-static uint64_t level_span(const struct frs_levels *L, unsigned l,
-    unsigned a, uint64_t side, uint64_t ns)
-{
-	if (L->lev == NULL)
-		return side * ns;
-	return (uint64_t)(L->hi[l][a] - L->lo[l][a] + 1) * ns;
-}
-
-/* The levels among the n of lv (2-D setups s2, or 3-D s3) whose cells
- * span more than the matrix on an axis, as "2, 3", into buf; their
- * number. */
-static unsigned repeating(const struct frs_levels *L, unsigned n,
-    const struct frs_setup *s2, const struct frs3_setup *s3, char *buf,
-    size_t cap)
+/* The levels of the run whose cells span more than the matrix on an
+ * axis, as "2, 3", into buf; their number. */
+static unsigned repeating(const struct sets_run *r, char *buf, size_t cap)
 {
 	unsigned k = 0;
 	size_t len = 0;
 
 	buf[0] = '\0';
-	for (unsigned i = 0; i < n; i++) {
-		unsigned l = s2 ? s2[i].level : s3[i].level;
-		uint64_t ns = s2 ? s2[i].ns : s3[i].ns;
-		const uint32_t side[3] = { s2 ? s2[i].iw : s3[i].iw,
-		    s2 ? s2[i].ih : s3[i].ih, s2 ? 1 : s3[i].id };
-		const uint32_t m[3] = { s2 ? s2[i].mw : s3[i].mw,
-		    s2 ? s2[i].mh : s3[i].mh, s2 ? UINT32_MAX : s3[i].md };
+	for (unsigned i = 0; i < r->info.levels; i++) {
+		const struct frs_run_level *v = &r->lv[i];
 		int over = 0;
-		for (unsigned a = 0; a < (s2 ? 2u : 3u); a++)
-			over |= level_span(L, l, a, side[a], ns) > m[a];
+		for (unsigned a = 0; a < r->dims; a++)
+			over |= (uint64_t)(v->hi[a] - v->lo[a] + 1) * v->info.ns >
+			    r->mside[a];
 		if (over && len < cap)
 			len += (size_t)snprintf(buf + len, cap - len, "%s%u",
-			    k ? ", " : "", l);
+			    k ? ", " : "", v->info.level);
 		k += (unsigned)over;
 	}
 	return k;
+}
+
+/* The matrix's sides as "WxH" or "WxHxD". */
+static const char *msize(const struct sets_run *r, char *buf, size_t cap)
+{
+	if (r->dims == 2)
+		snprintf(buf, cap, "%ux%u", r->mside[0], r->mside[1]);
+	else
+		snprintf(buf, cap, "%ux%ux%u", r->mside[0], r->mside[1],
+		    r->mside[2]);
+	return buf;
 }
 
 /* The warnings of set 0's setup: patterns that repeat.  Without levels,
@@ -228,58 +200,42 @@ static unsigned repeating(const struct frs_levels *L, unsigned n,
  * levels, the levels whose cells span more than the matrix on an axis:
  * their samples show the same matrix elements again, a lattice of the
  * matrix's period. */
-static void warn2(const struct sets_run *r, int levels)
+static void warn_repeats(const struct sets_run *r, double sigma)
 {
-	const struct frs_setup *s = &r->s0;
-	char which[256];
-	unsigned k = levels ? repeating(&r->lv.plan, r->lv.n, r->lv.su, NULL,
-	    which, sizeof which) : 0;
+	const struct frs_run_info *f = &r->info;
+	int levels = r->opt.tiling == FRS_TILING_LEVELS, over = 0;
+	char which[256], m[64];
+	unsigned k = levels ? repeating(r, which, sizeof which) : 0;
 
+	msize(r, m, sizeof m);
+	for (unsigned a = 0; a < r->dims; a++)
+		over |= f->window[a] > r->mside[a];
 	if (k > 0)
 		cli_warn("level%s %s of the multi-level window span%s more than "
-		    "the %ux%u matrix: %s samples repeat the matrix's patterns%s",
-		    k > 1 ? "s" : "", which, k > 1 ? "" : "s", s->mw, s->mh,
-		    k > 1 ? "their" : "its", (double)s->n > frs_unique(s) ?
-		    " (n is past the samples it gives without repetition, "
-		    "thesis Table 4.1)" : "");
-	else if (!levels && (double)s->n > frs_unique(s))
-		cli_warn("%llu samples from a %ux%u matrix with sigma %g repeat "
-		    "its patterns (it gives %.0f without repetition, thesis "
-		    "Table 4.1)", (unsigned long long)s->n, s->mw, s->mh,
-		    s->sigma, frs_unique(s));
-	else if (!levels && s->tiles == FRS_TILES_PLAIN &&
-	    (s->sw > s->mw || s->sh > s->mh))
-		cli_warn("plain tiles: the window of %llux%llu repeats the "
-		    "%ux%u matrix as it is, a lattice of the tile's period where "
-		    "few samples fall (shuffled tiles break it)",
-		    (unsigned long long)s->sw, (unsigned long long)s->sh, s->mw,
-		    s->mh);
-}
-
-static void warn3(const struct sets_run *r, int levels)
-{
-	const struct frs3_setup *t = &r->s3;
-	char which[256];
-	unsigned k = levels ? repeating(&r->lv3.plan, r->lv3.n, NULL, r->lv3.su,
-	    which, sizeof which) : 0;
-
-	if (k > 0)
-		cli_warn("level%s %s of the multi-level window span%s more than "
-		    "the %ux%ux%u matrix: %s samples repeat the matrix's patterns%s",
-		    k > 1 ? "s" : "", which, k > 1 ? "" : "s", t->mw, t->mh,
-		    t->md, k > 1 ? "their" : "its", (double)t->n > frs3_unique(t) ?
-		    " (n is past the samples it gives without repetition)" : "");
-	else if (!levels && (double)t->n > frs3_unique(t))
-		cli_warn("%llu samples from a %ux%ux%u matrix with sigma %g repeat "
-		    "its patterns (it gives %.6g without repetition)",
-		    (unsigned long long)t->n, t->mw, t->mh, t->md, t->sigma,
-		    frs3_unique(t));
-	else if (!levels && t->tiles == FRS_TILES_PLAIN &&
-	    (t->sw > t->mw || t->sh > t->mh || t->sd > t->md))
+		    "the %s matrix: %s samples repeat the matrix's patterns%s",
+		    k > 1 ? "s" : "", which, k > 1 ? "" : "s", m,
+		    k > 1 ? "their" : "its", (double)f->n > f->unique ? r->dims ==
+		    2 ? " (n is past the samples it gives without repetition, "
+		    "thesis Table 4.1)" : " (n is past the samples it gives "
+		    "without repetition)" : "");
+	else if (!levels && (double)f->n > f->unique)
+		cli_warn(r->dims == 2 ? "%llu samples from a %s matrix with "
+		    "sigma %g repeat its patterns (it gives %.0f without "
+		    "repetition, thesis Table 4.1)" : "%llu samples from a %s "
+		    "matrix with sigma %g repeat its patterns (it gives %.6g "
+		    "without repetition)", (unsigned long long)f->n, m, sigma,
+		    f->unique);
+	else if (!levels && !f->shuffled && over && r->dims == 2)
+		cli_warn("plain tiles: the window of %llux%llu repeats the %s "
+		    "matrix as it is, a lattice of the tile's period where few "
+		    "samples fall (shuffled tiles break it)",
+		    (unsigned long long)f->window[0],
+		    (unsigned long long)f->window[1], m);
+	else if (!levels && !f->shuffled && over)
 		cli_warn("plain tiles: the window of %llux%llux%llu repeats the "
-		    "%ux%ux%u matrix as it is", (unsigned long long)t->sw,
-		    (unsigned long long)t->sh, (unsigned long long)t->sd, t->mw,
-		    t->mh, t->md);
+		    "%s matrix as it is", (unsigned long long)f->window[0],
+		    (unsigned long long)f->window[1],
+		    (unsigned long long)f->window[2], m);
 }
 
 void sets_matrix(struct sets *a)
@@ -289,7 +245,7 @@ void sets_matrix(struct sets *a)
 
 	a->loaded = strcmp(a->matrix, "-") != 0;
 	if (a->loaded)
-		a->mask_rc = api_mask_load(&a->mask, a->matrix, &dims,
+		a->mask_rc = frs_mask_load_dims(&a->mask, a->matrix, &dims,
 		    &a->mask_err);
 	a->dims = dims == 3 ? 3 : 2;
 	a->tload = cli_now() - t0;
@@ -345,13 +301,38 @@ static int load_mask(const struct sets *a, struct sets_run *run)
 	return 0;
 }
 
+/* Set 0's run (prepared when prep), its setup and levels, and the
+ * warnings of patterns that repeat. */
+static int open_run(const struct sets *a, struct sets_run *run, int exact,
+    int prep)
+{
+	frs_error err;
+	int rc = run->dims == 2 ? frs_run_new(&run->r, run->smp, a->steps,
+	    a->nsteps, a->seed, exact ? FRS_RUN_EXACT : 0, &err) :
+	    frs_run3_new(&run->r, run->smp3, a->steps, a->nsteps, a->seed,
+	    exact ? FRS_RUN_EXACT : 0, &err);
+
+	if (rc == FRS_OK)
+		rc = frs_run_info(run->r, &run->info, &err);
+	for (unsigned i = 0; rc == FRS_OK && i < run->info.levels; i++)
+		rc = frs_run_level(run->r, i, &run->lv[i], &err);
+	if (rc != FRS_OK)
+		return cli_fail("%s", err.message);
+	/* 2-D warns after the preparing, 3-D before, as they always did. */
+	if (run->dims == 3)
+		warn_repeats(run, a->opt.sigma);
+	if (prep && frs_run_prepare(run->r, &err) != FRS_OK)
+		return cli_fail("%s", err.message);
+	if (run->dims == 2)
+		warn_repeats(run, a->opt.sigma);
+	return 0;
+}
+
 /* The sampler of a 2-D mask on the CPU or the device, and set 0's
  * levels with the mask prepared for them. */
 static int open2(const struct sets *a, struct sets_run *run)
 {
 	struct frs_imap map = a->map;	/* taken over */
-	struct frs_prep view;
-	struct frs_setup plain;
 	frs_error err;
 	double t0;
 	int rc, exact = a->opt.rule == FRS_RULE_EXACT;
@@ -364,31 +345,23 @@ static int open2(const struct sets *a, struct sets_run *run)
 	rc = load_mask(a, run);
 	/* The map as sets_map checked it, handed over: no copy, no second
 	 * check. */
-	if (rc == 0 && api_sampler_make(2, run->mask, &(struct api_values){
-	    .own = &map, .own_stats = &a->stats }, &run->opt, &run->smp, NULL,
-	    &err) != FRS_OK)
+	if (rc == 0 && frs_sampler_take(&run->smp, run->mask, &map, &a->stats,
+	    &run->opt, &err) != FRS_OK)
 		rc = cli_fail("%s", err.message);
 	if (rc < 0) {
 		frs_imap_free(&map);	/* not taken: its check failed */
 		return -1;
 	}
+	frs_mask_size(run->mask, &run->mside[0], &run->mside[1]);
+	run->mside[2] = 1;
 	if (run->dev != NULL && frs_sampler_set_device(run->smp, run->dev,
 	    a->flat1 ? FRS_DEVICE_FLAT1 : 0, &err) != FRS_OK)
 		return cli_fail("%s", err.message);
-	/* Exact counts: set 0's taus only for -v (each set finds its own). */
-	if (api_setup_steps(run->smp, a->steps, a->nsteps, a->seed, a->verbose,
-	    &run->lv) < 0)
+	/* Exact counts: set 0's taus only for -v (each set finds its own),
+	 * and the mask prepared for them only then. */
+	if (open_run(a, run, a->verbose, !exact || a->verbose) < 0)
 		return -1;
-	run->s0 = run->lv.base;
-	for (unsigned i = 0; (!exact || a->verbose) && i < run->lv.n; i++)
-		if (api_sampler_prep(run->smp, &run->lv, i, a->steps, a->nsteps,
-		    &view) < 0)
-			return -1;
-	warn2(run, run->opt.tiling == FRS_TILING_LEVELS);
 	run->tsetup = cli_now() - t0 + a->tload;
-	plain = run->s0;
-	plain.exact.n = 0;
-	run->tau0 = frs_tau(&plain, plain.n);
 	return 0;
 }
 
@@ -396,8 +369,6 @@ static int open2(const struct sets *a, struct sets_run *run)
 static int open3(const struct sets *a, struct sets_run *run)
 {
 	double t0 = cli_now();
-	struct frs3_prep view;
-	struct frs3_setup plain;
 	struct frs_vol v = a->vol;	/* taken over */
 	frs_error err;
 
@@ -411,18 +382,11 @@ static int open3(const struct sets *a, struct sets_run *run)
 		return cli_fail("%s", err.message);
 	}
 	frs_vol_free(&v);
+	frs_mask_size3(run->mask, &run->mside[0], &run->mside[1],
+	    &run->mside[2]);
 	/* Exact counts: set 0's taus only for -v, as in 2-D. */
-	if (api_setup3(run->smp3, a->steps, a->nsteps, a->seed, a->verbose,
-	    &run->lv3) < 0)
+	if (open_run(a, run, a->verbose, 1) < 0)
 		return -1;
-	run->s3 = run->lv3.base;
-	warn3(run, run->opt.tiling == FRS_TILING_LEVELS);
-	for (unsigned i = 0; i < run->lv3.n; i++)
-		if (api_sampler3_prep(run->smp3, &run->lv3.su[i], &view) < 0)
-			return -1;
-	plain = run->s3;
-	plain.exact.n = 0;
-	run->tau0 = frs3_tau(&plain, plain.n);
 	run->tsetup = cli_now() - t0 + a->tload;
 	return 0;
 }
@@ -520,8 +484,7 @@ int sets_write(const struct sets *a, struct sets_run *run)
 		rc = -1;
 	run->tout += cli_now() - t0;
 	run->tthr = cli_now() - t1 - run->tout - run->tnote;
-	run->made = mk->made;
-	run->made_in = mk->frp != NULL ? mk->frp : a->matrix;
+	run->made = frs_mask_made(mk, &run->made_in);
 	run->device = frs_device_name(run->dev);
 	frs_device_times(run->dev, &run->ct);
 	for (unsigned i = 0; i < FRS_LEVELS_MAX; i++)
@@ -532,8 +495,7 @@ int sets_write(const struct sets *a, struct sets_run *run)
 
 void sets_close(struct sets_run *run)
 {
-	api_lev2_free(&run->lv);
-	api_lev3_free(&run->lv3);
+	frs_run_free(run->r);
 	frs_sampler_free(run->smp);
 	frs_sampler3_free(run->smp3);
 	frs_mask_free(run->mask);

@@ -9,7 +9,7 @@
 
 #include <stdio.h>
 
-#include "api/api.h"
+#include "frs.h"
 
 /* What frs-sample asks for: M sets of a 2-D map or 3-D volume, set i
  * with seed + i, written to one file (setsout.h: at most
@@ -19,7 +19,7 @@ struct sets {
 	const char *matrix, *imp;	/* imp NULL: constant */
 	uint32_t size[3];	/* -s: the map's or volume's size */
 	unsigned nsize;		/* sides given: 0, 1 (N), 2 or 3 */
-	int flags;		/* imap_load's, vol_load's */
+	int flags;		/* frs_source_load's */
 	struct frs_options opt;	/* its algorithm is alg's */
 	enum frs_algorithm alg;	/* Sorted for flat1 */
 	int flat1;		/* the device's Flat 1 (with a device only) */
@@ -45,16 +45,15 @@ struct sets {
 /* What came of them, for the -v report and the warnings. */
 struct sets_run {
 	unsigned dims;
-	struct frs_setup s0;	/* set 0's setup of level 0 (2-D) */
-	struct frs3_setup s3;	/* (3-D) */
-	struct api_lev2 lv;	/* set 0's levels (2-D) */
-	struct api_lev3 lv3;	/* (3-D) */
+	frs_run *r;		/* set 0's run (frs_run_new) */
+	struct frs_run_info info;	/* its setup of level 0 */
+	struct frs_run_level lv[FRS_LEVELS_MAX];	/* and its levels */
+	uint32_t mside[3];	/* the matrix's sides (depth 1 in 2-D) */
 	uint64_t lcount[FRS_LEVELS_MAX];	/* with -v: set 0's samples
 						 * per level (lv's order) */
 	double lreused[FRS_LEVELS_MAX];	/* and the share of them whose matrix
 					 * element another of the level
 					 * shows too (2-D), or -1 */
-	double tau0;		/* with FRS_RULE_EXACT: set 0's tau without */
 	const char *made_in;	/* a .frp that lacked lists made here */
 	uint32_t made;		/* their block, 0 when none */
 	double reused;		/* of set 0's samples: the share whose
@@ -82,11 +81,6 @@ struct sets_run {
  * device could not be opened.
  */
 int sets_open(const struct sets *a, struct sets_run *run);
-/* The bytes a sample takes while it is made, in dims 2 or 3. */
-static inline size_t sets_elem_size(unsigned dims)
-{
-	return dims == 3 ? sizeof(struct frs3_elem) : sizeof(struct frs_elem);
-}
 /* Load a->matrix, opening it once, and set a->dims from its header (2
  * when it tells none); a failure is told by sets_open, where the
  * run needs the matrix.  Standard input is left to sets_open, which

@@ -8,31 +8,35 @@
 static void report_setup(FILE *fp, const struct sets *o,
     const struct sets_run *r)
 {
-	const struct frs_setup *s = &r->s0;
-	const struct frs3_setup *t = &r->s3;
+	const struct frs_run_info *f = &r->info;
+	const uint32_t *m = r->mside, *v = r->lv[0].map;
 
 	if (r->dims == 2)
 		fprintf(fp, "frs-sample: matrix %s %ux%u, map %ux%u, mean "
 		    "%.6g, max %.6g\nfrs-sample: n %llu, sigma %g, n_s %u, "
 		    "window %llux%llu at (%llu, %llu), tau %.9g, start level "
-		    "%u\n", o->matrix, s->mw, s->mh, s->iw, s->ih, s->mean,
-		    s->max, (unsigned long long)s->n, s->sigma, s->ns,
-		    (unsigned long long)s->sw, (unsigned long long)s->sh,
-		    (unsigned long long)s->wx, (unsigned long long)s->wy, s->tau,
-		    s->level0);
+		    "%u\n", o->matrix, m[0], m[1], v[0], v[1], f->mean, f->max,
+		    (unsigned long long)f->n, o->opt.sigma, f->ns,
+		    (unsigned long long)f->window[0],
+		    (unsigned long long)f->window[1],
+		    (unsigned long long)f->offset[0],
+		    (unsigned long long)f->offset[1], f->tau, f->start_level);
 	else
 		fprintf(fp, "frs-sample: matrix %s %ux%ux%u, volume "
 		    "%ux%ux%u, mean %.6g, max %.6g\nfrs-sample: n %llu, sigma "
 		    "%g, n_s %u, window %llux%llux%llu at (%llu, %llu, %llu), "
-		    "tau %.9g\n", o->matrix, t->mw, t->mh, t->md, t->iw, t->ih,
-		    t->id, t->mean, t->max, (unsigned long long)t->n, t->sigma,
-		    t->ns, (unsigned long long)t->sw, (unsigned long long)t->sh,
-		    (unsigned long long)t->sd, (unsigned long long)t->wx,
-		    (unsigned long long)t->wy, (unsigned long long)t->wz, t->tau);
+		    "tau %.9g\n", o->matrix, m[0], m[1], m[2], v[0], v[1], v[2],
+		    f->mean, f->max, (unsigned long long)f->n, o->opt.sigma,
+		    f->ns, (unsigned long long)f->window[0],
+		    (unsigned long long)f->window[1],
+		    (unsigned long long)f->window[2],
+		    (unsigned long long)f->offset[0],
+		    (unsigned long long)f->offset[1],
+		    (unsigned long long)f->offset[2], f->tau);
 	if (o->opt.rule == FRS_RULE_EXACT)
 		fprintf(fp, "frs-sample: --exact-count: tau %.9g instead of "
-		    "%.9g after %u count passes\n", r->dims == 2 ? s->tau : t->tau,
-		    r->tau0, r->dims == 2 ? s->exact.passes : t->exact.passes);
+		    "%.9g after %u count passes\n", f->tau, f->tau_plain,
+		    f->passes);
 }
 
 /* -v: set 0's levels, one line each: the level, its elements per cell
@@ -40,46 +44,42 @@ static void report_setup(FILE *fp, const struct sets *o,
 static void report_levels(FILE *fp, const struct sets *o,
     const struct sets_run *r)
 {
-	unsigned n = r->dims == 2 ? r->lv.n : r->lv3.n;
+	const struct frs_run_info *f = &r->info;
 	int noted = !o->count_only;
-	double blur = r->dims == 2 ? r->lv.plan.blur : r->lv3.plan.blur;
 
 	if (r->opt.tiling != FRS_TILING_LEVELS)
 		return;
-	if (n == 1 && (r->dims == 2 ? r->lv.su[0].level :
-	    r->lv3.su[0].level) == 0) {
+	if (f->levels == 1 && r->lv[0].info.level == 0) {
 		fprintf(fp, "frs-sample: levels: every %s at level 0, the "
 		    "thesis's window\n", r->dims == 2 ? "pixel" : "voxel");
 		return;
 	}
-	fprintf(fp, "frs-sample: %u level%s of the multi-level window", n,
-	    n == 1 ? "" : "s");
-	if (blur > 0.0)
-		fprintf(fp, ", smoothed over %g %s", blur, r->dims == 2 ?
+	fprintf(fp, "frs-sample: %u level%s of the multi-level window",
+	    f->levels, f->levels == 1 ? "" : "s");
+	if (f->blur > 0.0)
+		fprintf(fp, ", smoothed over %g %s", f->blur, r->dims == 2 ?
 		    "pixels" : "voxels");
 	fputc('\n', fp);
-	for (unsigned i = 0; i < n; i++) {
-		const struct frs_setup *s = &r->lv.su[i];
-		const struct frs3_setup *t = &r->lv3.su[i];
-		const struct frs_levels *L = r->dims == 2 ? &r->lv.plan :
-		    &r->lv3.plan;
-		unsigned l = r->dims == 2 ? s->level : t->level;
-		uint64_t cells = L->lev != NULL ? L->cells[l] : 0;
+	for (unsigned i = 0; i < f->levels; i++) {
+		const struct frs_level_info *l = &r->lv[i].info;
 		if (r->dims == 2)
 			fprintf(fp, "frs-sample:   level %u: n_s %u, window "
-			    "%llux%llu at (%llu, %llu), tau %.9g", l, s->ns,
-			    (unsigned long long)s->sw, (unsigned long long)s->sh,
-			    (unsigned long long)s->wx, (unsigned long long)s->wy,
-			    s->tau);
+			    "%llux%llu at (%llu, %llu), tau %.9g", l->level, l->ns,
+			    (unsigned long long)l->window[0],
+			    (unsigned long long)l->window[1],
+			    (unsigned long long)l->offset[0],
+			    (unsigned long long)l->offset[1], l->tau);
 		else
 			fprintf(fp, "frs-sample:   level %u: n_s %u, window "
-			    "%llux%llux%llu at (%llu, %llu, %llu), tau %.9g", l,
-			    t->ns, (unsigned long long)t->sw,
-			    (unsigned long long)t->sh, (unsigned long long)t->sd,
-			    (unsigned long long)t->wx, (unsigned long long)t->wy,
-			    (unsigned long long)t->wz, t->tau);
-		if (L->lev != NULL)
-			fprintf(fp, ", %llu %s", (unsigned long long)cells,
+			    "%llux%llux%llu at (%llu, %llu, %llu), tau %.9g",
+			    l->level, l->ns, (unsigned long long)l->window[0],
+			    (unsigned long long)l->window[1],
+			    (unsigned long long)l->window[2],
+			    (unsigned long long)l->offset[0],
+			    (unsigned long long)l->offset[1],
+			    (unsigned long long)l->offset[2], l->tau);
+		if (f->planned)
+			fprintf(fp, ", %llu %s", (unsigned long long)l->cells,
 			    r->dims == 2 ? "pixels" : "voxels");
 		if (noted)
 			fprintf(fp, ", %llu samples", (unsigned long long)
@@ -94,12 +94,10 @@ static void report_levels(FILE *fp, const struct sets *o,
 void sets_report(FILE *fp, const struct sets *o,
     const struct sets_run *r)
 {
-	uint64_t tx = 0, ty = 0;
-	uint64_t nt = r->dims == 2 ? frs_tiles(&r->s0, &tx, &ty) : 0;
+	const struct frs_run_info *f = &r->info;
 	/* One level, level 0, is the thesis's window: its tiles line. */
 	int levels = r->opt.tiling == FRS_TILING_LEVELS &&
-	    (r->dims == 2 ? r->lv.n > 1 || r->lv.su[0].level > 0 :
-	    r->lv3.n > 1 || r->lv3.su[0].level > 0);
+	    (f->levels > 1 || r->lv[0].info.level > 0);
 
 	report_setup(fp, o, r);
 	report_levels(fp, o, r);
@@ -109,9 +107,10 @@ void sets_report(FILE *fp, const struct sets *o,
 		    "that has them)\n", r->made_in, r->made);
 	if (r->dims == 2 && !levels)
 		fprintf(fp, "frs-sample: %llu tiles (%llux%llu), %s",
-		    (unsigned long long)nt, (unsigned long long)tx,
-		    (unsigned long long)ty, r->s0.tiles != FRS_TILES_SHUFFLE ?
-		    "plain" : "shuffled");
+		    (unsigned long long)(f->tiles[0] * f->tiles[1]),
+		    (unsigned long long)f->tiles[0],
+		    (unsigned long long)f->tiles[1], f->shuffled ? "shuffled" :
+		    "plain");
 	else if (r->dims == 2 && r->reused >= 0.0)
 		fprintf(fp, "frs-sample: levels");
 	if (r->dims == 2 && r->reused >= 0.0)

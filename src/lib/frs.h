@@ -91,6 +91,15 @@ void frs_mask_size3(const frs_mask *mask, uint32_t *width,
 const char *frs_mask_note(const frs_mask *mask);
 /* Not while a sampler made from it lives. */
 void frs_mask_free(frs_mask *mask);
+/* Since 2.2: frs_mask_load, and the dimension count of the file's
+ * header in *dims, told also when the load fails past the header (0
+ * when no header was read). */
+int frs_mask_load_dims(frs_mask **mask, const char *path, unsigned *dims,
+    frs_error *err);
+/* Since 2.2: the block size of sorted lists that the mask's .frp lacked
+ * and a draw made (0: none), and the file that lacked them (the .frp, or
+ * the matrix loaded). */
+uint32_t frs_mask_made(const frs_mask *mask, const char **file);
 /*
  * Since 1.2: the default matrix, the one frs-sample uses without -m:
  * dims 2 (default.frd, 2048 x 2048) or 3 (default3.frd, 64^3).  It is
@@ -281,6 +290,15 @@ int frs_sampler_new_f64(frs_sampler **sampler, const frs_mask *mask,
     const double *map, uint32_t width, uint32_t height, size_t stride,
     const struct frs_options *opt, frs_error *err);
 /* Not while another thread uses the sampler. */
+struct frs_imap_stats;
+/* Since 2.2: a sampler of map (frs_imap_load's, frs_source_load's)
+ * taken over, neither copied nor checked again: st, the statistics its
+ * check gave (frs_imap_check's; NULL: it is checked here, negative
+ * values refused).  *map is the sampler's, zeroed, or released on
+ * failure.  Thread-safe. */
+int frs_sampler_take(frs_sampler **sampler, const frs_mask *mask,
+    struct frs_imap *map, const struct frs_imap_stats *st,
+    const struct frs_options *opt, frs_error *err);
 void frs_sampler_free(frs_sampler *sampler);
 
 /*
@@ -296,6 +314,10 @@ void frs_sampler_free(frs_sampler *sampler);
  */
 int frs_draw(const frs_sampler *sampler, uint64_t n, uint64_t seed,
     double *xy, double *pdf, size_t cap, size_t *count, frs_error *err);
+/* Since 2.2: the bytes a sample takes in a draw's store before it is
+ * converted, dims 2 or 3 (0 else): a run of n samples keeps about
+ * 1.1 n of them. */
+size_t frs_draw_bytes(unsigned dims);
 /* Only the number frs_draw would make.  Thread-safe. */
 int frs_count(const frs_sampler *sampler, uint64_t n, uint64_t seed,
     uint64_t *count, frs_error *err);
@@ -423,6 +445,68 @@ int frs_draw3_each(const frs_sampler3 *sampler, const uint64_t *steps,
 int frs_sampler3_levels(const frs_sampler3 *sampler, uint64_t n,
     uint64_t seed, struct frs_level_info *levels, unsigned cap,
     unsigned *count, frs_error *err);
+
+/* ---- the run of a sampler (since 2.2) --------------------------------- */
+
+/*
+ * The setup of the run that frs_draw_each (frs_draw3_each) makes for
+ * steps with a seed, held to be looked at: its window, levels, threshold
+ * scales and tiles, and for a sample its level and the matrix element it
+ * shows (frs-sample(1) -v and --level-column).  The sampler must outlive
+ * the run.  flags: FRS_RUN_EXACT finds the exact rule's taus now (its
+ * count passes; else tau is the unbiased rule's).  Thread-safe.
+ */
+typedef struct frs_run frs_run;
+#define FRS_RUN_EXACT 1
+#define FRS_LEVELS_MAX 32		/* levels of a window, at most */
+int frs_run_new(frs_run **run, const frs_sampler *sampler,
+    const uint64_t *steps, unsigned nsteps, uint64_t seed, int flags,
+    frs_error *err);
+int frs_run3_new(frs_run **run, const frs_sampler3 *sampler,
+    const uint64_t *steps, unsigned nsteps, uint64_t seed, int flags,
+    frs_error *err);
+void frs_run_free(frs_run *run);
+/* Make the mask's minmaps and sorted lists the run reads, as its draws
+ * would first (so that they spend their time thresholding): FRS_E_FORMAT
+ * for damaged lists of a .frp, FRS_E_NOMEM.  Thread-safe. */
+int frs_run_prepare(const frs_run *run, frs_error *err);
+struct frs_run_info {
+	unsigned dims;			/* 2 or 3 */
+	uint64_t n;			/* the last step's count */
+	uint32_t ns;			/* level 0's elements per pixel side */
+	uint64_t window[3], offset[3];	/* level 0's window and offset */
+	double tau;			/* level 0's threshold scale */
+	double tau_plain;		/* without the exact rule's passes */
+	unsigned passes;		/* those count passes, 0 without */
+	unsigned start_level;		/* Stack's first minmap level (2-D) */
+	double mean, max;		/* of the map */
+	double unique;			/* samples before patterns repeat */
+	uint64_t tiles[3];		/* mask tiles level 0's window spans */
+	int shuffled;			/* the tiles turned and flipped */
+	unsigned levels;		/* levels of the window, 1 to 32 */
+	int planned;			/* cells given levels (frs_run_level_of) */
+	double blur;			/* the levels' smoothing, in pixels */
+};
+int frs_run_info(const frs_run *run, struct frs_run_info *info,
+    frs_error *err);
+/* Level i (0 .. levels - 1, finest first): frs_sampler_levels' info, and
+ * the box lo .. hi (both in) of its cells in the grid of side[] cells
+ * (the map's pixels without a plan: then the whole map). */
+struct frs_run_level {
+	struct frs_level_info info;
+	uint32_t map[3];		/* the map's sides (depth 1 in 2-D) */
+	uint32_t side[3];		/* the grid of the levels' cells */
+	uint32_t lo[3], hi[3];
+};
+int frs_run_level(const frs_run *run, unsigned i, struct frs_run_level *level,
+    frs_error *err);
+/* The level (its index i) whose cells hold point p (2 or 3 coordinates
+ * in [0,1)): a sample's.  0 for a run of one level. */
+unsigned frs_run_level_of(const frs_run *run, const double *p);
+/* The matrix element (y * width + x) that a sample p of level i shows:
+ * the one under it in the level's window; UINT64_MAX for a 3-D run or no
+ * such level. */
+uint64_t frs_run_element(const frs_run *run, unsigned i, const double *p);
 
 /* ---- Hierarchical Sample Warping ------------------------------------- */
 

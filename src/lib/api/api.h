@@ -103,10 +103,6 @@ int api_arg_err(frs_error *err, const char *what);
 int api_lib_err(frs_error *err, enum frs_code code);
 int api_ok(frs_error *err);
 int api_nomem(frs_error *err);
-/* frs_mask_load, and in *dims (when not NULL) the dimension count the
- * header of a .frd gives, also when the rest fails (0: none). */
-int api_mask_load(frs_mask **mask, const char *path, unsigned *dims,
-    frs_error *err);
 /* The caller's options (NULL: the defaults) into o, checked.  A code. */
 int api_options(struct frs_options *o, const struct frs_options *opt,
     frs_error *err);

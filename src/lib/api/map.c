@@ -251,3 +251,25 @@ int api_sampler_make(unsigned dims, const frs_mask *mask,
 	vol_free(&vol);
 	return api_nomem(err);
 }
+
+int frs_sampler_take(frs_sampler **s, const frs_mask *mask,
+    struct frs_imap *map, const struct frs_imap_stats *st,
+    const struct frs_options *opt, frs_error *err)
+{
+	struct frs_imap_stats own;
+	int rc;
+
+	if (s != NULL)
+		*s = NULL;
+	if (map == NULL)
+		return api_arg_err(err, "frs_sampler_take: NULL argument");
+	if (st == NULL && imap_validate_stats(map, "map", FRS_MAP_STRICT,
+	    &own) < 0) {
+		imap_free(map);
+		return api_lib_err(err, FRS_E_MAP);
+	}
+	rc = api_sampler_make(2, mask, &(struct api_values){ .own = map,
+	    .own_stats = st != NULL ? st : &own }, opt, s, NULL, err);
+	imap_free(map);	/* zeroed when taken: refused, it is released */
+	return rc;
+}

@@ -159,7 +159,7 @@ static int read_matrix(frs_mask *mk, FILE *fp, const char *name,
 	return frd_read_pre(fp, name, h, got, &mk->m, FRD_PERM_NEED);
 }
 
-int api_mask_load(frs_mask **mask, const char *path, unsigned *dims,
+int frs_mask_load_dims(frs_mask **mask, const char *path, unsigned *dims,
     frs_error *err)
 {
 	const char *name;
@@ -202,7 +202,7 @@ int api_mask_load(frs_mask **mask, const char *path, unsigned *dims,
 
 int frs_mask_load(frs_mask **mask, const char *path, frs_error *err)
 {
-	return api_mask_load(mask, path, NULL, err);
+	return frs_mask_load_dims(mask, path, NULL, err);
 }
 
 int api_default_matrix(unsigned dims, char *path, size_t cap)
@@ -462,6 +462,13 @@ int frs_matrix_write(const struct frs_matrix *m, FILE *fp, const char *name,
 		return api_lib_err(err, strlen(m->params) > FRD_MAX_PARAMS ?
 		    FRS_E_ARG : FRS_E_IO);
 	return api_ok(err);
+}
+
+uint32_t frs_mask_made(const frs_mask *mk, const char **file)
+{
+	if (file != NULL)
+		*file = mk == NULL ? NULL : mk->frp != NULL ? mk->frp : mk->name;
+	return mk != NULL ? mk->made : 0;
 }
 
 void frs_matrix_free(struct frs_matrix *m)

@@ -43,7 +43,8 @@
 
 #include <stdint.h>
 
-/* The most levels: log2 n_s is at most 31 (frscore.h). */
+/* The most levels: log2 n_s is at most 31 (frscore.h); frs.h defines
+ * it too, the same (a difference would not compile where both are). */
 #define FRS_LEVELS_MAX 32
 
 /* Smoothing of the levels by default, in cells: wide enough that level
