@@ -50,6 +50,8 @@ static void test_info_levels(void **state)
 		    &nl, E));
 		assert_int_equal(frs_run_new(&r, s, &n, 1, 3, 0, NULL), FRS_OK);
 		EXPECT(FRS_OK, frs_run_info(r, &f, E));
+		assert_true(f.matrix[0] == mw && f.matrix[1] == mh &&
+		    f.matrix[2] == 1);
 		assert_true(f.dims == 2 && f.n == n && f.ns == si.ns &&
 		    f.window[0] == si.window_w && f.window[1] == si.window_h &&
 		    f.offset[0] == si.offset_x && f.offset[1] == si.offset_y);

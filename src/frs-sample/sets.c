@@ -44,14 +44,15 @@ static unsigned level_at(const struct sets_run *run, const double *p)
 static void note_point(struct out *u, const double *p)
 {
 	struct sets_run *run = u->run;
+	const uint32_t *side = run->info.matrix;
 	unsigned i = frs_run_level_of(run->r, p);
 	uint64_t m;
 
 	run->lcount[i]++;
 	if (run->dims != 2)
 		return;
-	if (u->uses[i] == NULL && (u->uses[i] = calloc((size_t)run->mside[0] *
-	    run->mside[1], sizeof *u->uses[i])) == NULL) {
+	if (u->uses[i] == NULL && (u->uses[i] = calloc((size_t)side[0] *
+	    side[1], sizeof *u->uses[i])) == NULL) {
 		u->collect = 0;	/* -v goes without the share */
 		return;
 	}
@@ -67,7 +68,7 @@ static void reused_shares(struct out *u)
 {
 	struct sets_run *run = u->run;
 	uint64_t all = 0, noted = 0;
-	size_t n = (size_t)run->mside[0] * run->mside[1];
+	size_t n = (size_t)run->info.matrix[0] * run->info.matrix[1];
 
 	run->reused = -1.0;
 	for (unsigned i = 0; i < FRS_LEVELS_MAX; i++)
@@ -174,7 +175,7 @@ static unsigned repeating(const struct sets_run *r, char *buf, size_t cap)
 		int over = 0;
 		for (unsigned a = 0; a < r->dims; a++)
 			over |= (uint64_t)(v->hi[a] - v->lo[a] + 1) * v->info.ns >
-			    r->mside[a];
+			    r->info.matrix[a];
 		if (over && len < cap)
 			len += (size_t)snprintf(buf + len, cap - len, "%s%u",
 			    k ? ", " : "", v->info.level);
@@ -187,10 +188,11 @@ static unsigned repeating(const struct sets_run *r, char *buf, size_t cap)
 static const char *msize(const struct sets_run *r, char *buf, size_t cap)
 {
 	if (r->dims == 2)
-		snprintf(buf, cap, "%ux%u", r->mside[0], r->mside[1]);
+		snprintf(buf, cap, "%ux%u", r->info.matrix[0],
+		    r->info.matrix[1]);
 	else
-		snprintf(buf, cap, "%ux%ux%u", r->mside[0], r->mside[1],
-		    r->mside[2]);
+		snprintf(buf, cap, "%ux%ux%u", r->info.matrix[0],
+		    r->info.matrix[1], r->info.matrix[2]);
 	return buf;
 }
 
@@ -209,7 +211,7 @@ static void warn_repeats(const struct sets_run *r, double sigma)
 
 	msize(r, m, sizeof m);
 	for (unsigned a = 0; a < r->dims; a++)
-		over |= f->window[a] > r->mside[a];
+		over |= f->window[a] > r->info.matrix[a];
 	if (k > 0)
 		cli_warn("level%s %s of the multi-level window span%s more than "
 		    "the %s matrix: %s samples repeat the matrix's patterns%s",
@@ -352,8 +354,6 @@ static int open2(const struct sets *a, struct sets_run *run)
 		frs_imap_free(&map);	/* not taken: its check failed */
 		return -1;
 	}
-	frs_mask_size(run->mask, &run->mside[0], &run->mside[1]);
-	run->mside[2] = 1;
 	if (run->dev != NULL && frs_sampler_set_device(run->smp, run->dev,
 	    a->flat1 ? FRS_DEVICE_FLAT1 : 0, &err) != FRS_OK)
 		return cli_fail("%s", err.message);
@@ -382,8 +382,6 @@ static int open3(const struct sets *a, struct sets_run *run)
 		return cli_fail("%s", err.message);
 	}
 	frs_vol_free(&v);
-	frs_mask_size3(run->mask, &run->mside[0], &run->mside[1],
-	    &run->mside[2]);
 	/* Exact counts: set 0's taus only for -v, as in 2-D. */
 	if (open_run(a, run, a->verbose, 1) < 0)
 		return -1;

@@ -48,7 +48,6 @@ struct sets_run {
 	frs_run *r;		/* set 0's run (frs_run_new) */
 	struct frs_run_info info;	/* its setup of level 0 */
 	struct frs_run_level lv[FRS_LEVELS_MAX];	/* and its levels */
-	uint32_t mside[3];	/* the matrix's sides (depth 1 in 2-D) */
 	uint64_t lcount[FRS_LEVELS_MAX];	/* with -v: set 0's samples
 						 * per level (lv's order) */
 	double lreused[FRS_LEVELS_MAX];	/* and the share of them whose matrix

@@ -9,7 +9,7 @@ static void report_setup(FILE *fp, const struct sets *o,
     const struct sets_run *r)
 {
 	const struct frs_run_info *f = &r->info;
-	const uint32_t *m = r->mside, *v = r->lv[0].map;
+	const uint32_t *m = f->matrix, *v = r->lv[0].map;
 
 	if (r->dims == 2)
 		fprintf(fp, "frs-sample: matrix %s %ux%u, map %ux%u, mean "

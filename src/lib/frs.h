@@ -472,6 +472,7 @@ void frs_run_free(frs_run *run);
 int frs_run_prepare(const frs_run *run, frs_error *err);
 struct frs_run_info {
 	unsigned dims;			/* 2 or 3 */
+	uint32_t matrix[3];		/* the mask's sides (depth 1 in 2-D) */
 	uint64_t n;			/* the last step's count */
 	uint32_t ns;			/* level 0's elements per pixel side */
 	uint64_t window[3], offset[3];	/* level 0's window and offset */

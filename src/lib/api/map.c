@@ -270,6 +270,7 @@ int frs_sampler_take(frs_sampler **s, const frs_mask *mask,
 	}
 	rc = api_sampler_make(2, mask, &(struct api_values){ .own = map,
 	    .own_stats = st != NULL ? st : &own }, opt, s, NULL, err);
-	imap_free(map);	/* zeroed when taken: refused, it is released */
+	if (rc != FRS_OK)
+		imap_free(map);	/* refused before it was taken: released */
 	return rc;
 }

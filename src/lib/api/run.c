@@ -131,7 +131,8 @@ int frs_run_info(const frs_run *r, struct frs_run_info *info,
 		return api_arg_err(err, "frs_run_info: NULL argument");
 	if (r->dims == 2) {
 		const struct frs_setup *b = &r->lv.base;
-		*info = (struct frs_run_info){ 2, b->n, b->ns, { b->sw, b->sh, 1 },
+		*info = (struct frs_run_info){ 2, { b->mw, b->mh, 1 }, b->n, b->ns,
+		    { b->sw, b->sh, 1 },
 		    { b->wx, b->wy, 0 }, b->tau, r->tau_plain, b->exact.passes,
 		    b->level0, b->mean, b->max, frs_unique(b),
 		    { frs_tiles_axis(b->wx, b->sw, b->mw),
@@ -140,7 +141,8 @@ int frs_run_info(const frs_run *r, struct frs_run_info *info,
 		    r->lv.plan.lev != NULL, r->lv.plan.blur };
 	} else {
 		const struct frs3_setup *b = &r->lv3.base;
-		*info = (struct frs_run_info){ 3, b->n, b->ns,
+		*info = (struct frs_run_info){ 3, { b->mw, b->mh, b->md }, b->n,
+		    b->ns,
 		    { b->sw, b->sh, b->sd }, { b->wx, b->wy, b->wz }, b->tau,
 		    r->tau_plain, b->exact.passes, 0, b->mean, b->max,
 		    frs3_unique(b), { frs_tiles_axis(b->wx, b->sw, b->mw),

@@ -66,12 +66,14 @@ int frs_source_kinds(const frs_source *source)
 	return source != NULL ? source->kinds : 0;
 }
 
-int frs_source_load(frs_source *source, unsigned want,
-    const uint32_t size[3], int flags, unsigned *dims, struct frs_imap *map,
-    struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err)
+/* frs_source_load's and frs_source_read's arguments, size NULL taken
+ * as the source's own; *map, *vol and *dims zeroed. */
+static int load_args(const char *fn, unsigned want, const uint32_t **size,
+    unsigned *dims, struct frs_imap *map, struct frs_vol *vol,
+    frs_error *err)
 {
 	static const uint32_t own[3] = { 0, 0, 0 };
-	int rc;
+	char msg[128];
 
 	if (map != NULL)
 		*map = (struct frs_imap){ 0 };
@@ -79,24 +81,53 @@ int frs_source_load(frs_source *source, unsigned want,
 		*vol = (struct frs_vol){ 0 };
 	if (dims != NULL)
 		*dims = 0;
-	if (source == NULL || dims == NULL || want == 1 || want > 3 ||
-	    (want != 3 && map == NULL) || (want != 2 && vol == NULL))
+	if (dims == NULL || want == 1 || want > 3 || (want != 3 &&
+	    map == NULL) || (want != 2 && vol == NULL)) {
+		snprintf(msg, sizeof msg, "%s: NULL argument or a want other "
+		    "than 0, 2 or 3", fn);
+		return api_arg_err(err, msg);
+	}
+	if (*size == NULL)
+		*size = own;
+	if ((*size)[0] != 0 && ((*size)[1] == 0 || (want == 3 &&
+	    (*size)[2] == 0))) {
+		snprintf(msg, sizeof msg, "%s: sides all 0 or all set", fn);
+		return api_arg_err(err, msg);
+	}
+	return FRS_OK;
+}
+
+/* Load the open source s: its dimensions, or a code after its
+ * message (a spec that does not make a map is the caller's argument, a
+ * file that does not the file's format). */
+static int load(struct frs_source *s, unsigned want, const uint32_t *size,
+    int flags, unsigned *dims, struct frs_imap *map,
+    struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err)
+{
+	int rc = source_load(s, want, size, flags, map, st, vol);
+
+	if (rc < 0)
+		return api_lib_err(err, s->fp == NULL &&
+		    frs_spec_kinds(s->src) != 0 ? FRS_E_ARG : FRS_E_FORMAT);
+	*dims = (unsigned)rc;
+	return api_ok(err);
+}
+
+int frs_source_load(frs_source *source, unsigned want,
+    const uint32_t size[3], int flags, unsigned *dims, struct frs_imap *map,
+    struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err)
+{
+	int rc = load_args("frs_source_load", want, &size, dims, map, vol, err);
+
+	if (rc != FRS_OK)
+		return rc;
+	if (source == NULL)
 		return api_arg_err(err, "frs_source_load: NULL argument or a "
 		    "want other than 0, 2 or 3");
 	if (source->used)
 		return api_arg_err(err, "frs_source_load: the source was "
 		    "loaded already");
-	if (size == NULL)
-		size = own;
-	if (size[0] != 0 && (size[1] == 0 || (want == 3 && size[2] == 0)))
-		return api_arg_err(err, "frs_source_load: sides all 0 or all "
-		    "set");
-	rc = source_load(source, want, size, flags, map, st, vol);
-	if (rc < 0)
-		return api_lib_err(err, source->fp == NULL &&
-		    frs_spec_kinds(source->src) != 0 ? FRS_E_ARG : FRS_E_FORMAT);
-	*dims = (unsigned)rc;
-	return api_ok(err);
+	return load(source, want, size, flags, dims, map, st, vol, err);
 }
 
 void frs_source_close(frs_source *source)
@@ -111,19 +142,20 @@ int frs_source_read(const char *src, unsigned want, const uint32_t size[3],
     int flags, unsigned *dims, struct frs_imap *map,
     struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err)
 {
-	frs_source *s;
-	int rc;
+	struct frs_source s;
+	int rc = load_args("frs_source_read", want, &size, dims, map, vol,
+	    err);
 
-	if (map != NULL)
-		*map = (struct frs_imap){ 0 };
-	if (vol != NULL)
-		*vol = (struct frs_vol){ 0 };
-	if (dims != NULL)
-		*dims = 0;
-	if ((rc = frs_source_open(&s, src, err)) != FRS_OK)
+	if (rc != FRS_OK)
 		return rc;
-	rc = frs_source_load(s, want, size, flags, dims, map, st, vol, err);
-	frs_source_close(s);
+	if (src == NULL)
+		return api_arg_err(err, "frs_source_read: NULL argument");
+	/* The one open and load, on the stack: frs_source_open's and
+	 * frs_source_load's work without their handle. */
+	if (source_open(&s, src) < 0)
+		return api_lib_err(err, FRS_E_IO);
+	rc = load(&s, want, size, flags, dims, map, st, vol, err);
+	source_close(&s);
 	return rc;
 }
 
