@@ -8,7 +8,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "frs.h"
 
-#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -26,22 +26,25 @@ struct frs_run {
 	double tau_plain;	/* level 0's tau without the count passes */
 };
 
-static int run_new(frs_run **rp, const frs_sampler *s, const frs_sampler3 *s3,
-    const uint64_t *steps, unsigned nsteps, uint64_t seed, int flags,
-    frs_error *err)
+static int run_new(const char *fn, frs_run **rp, const frs_sampler *s,
+    const frs_sampler3 *s3, const uint64_t *steps, unsigned nsteps,
+    uint64_t seed, int flags, frs_error *err)
 {
 	const struct frs_options *o = s != NULL ? &s->opt : s3 != NULL ?
-	    &s3->opt : NULL;
+	    &s3->opt : NULL;	/* NULL: refused below */
+	char msg[64];
 	frs_run *r;
 	int rc;
 
-	if (rp == NULL)
-		return api_arg_err(err, "frs_run_new: NULL argument");
-	*rp = NULL;
-	if (flags & ~FRS_RUN_EXACT)
-		return api_arg_err(err, "frs_run_new: unknown flags");
-	if ((rc = api_run_begin(o != NULL, o != NULL ? o->threads : 0, steps,
-	    nsteps, err)) != FRS_OK)
+	if (rp != NULL)
+		*rp = NULL;
+	if (rp == NULL || (s == NULL && s3 == NULL) ||
+	    (flags & ~FRS_RUN_EXACT)) {
+		snprintf(msg, sizeof msg, "%s: NULL argument or unknown flags",
+		    fn);
+		return api_arg_err(err, msg);
+	}
+	if ((rc = api_run_begin(1, o->threads, steps, nsteps, err)) != FRS_OK)
 		return rc;
 	if ((r = calloc(1, sizeof *r)) == NULL)
 		return api_nomem(err);
@@ -71,24 +74,16 @@ int frs_run_new(frs_run **run, const frs_sampler *sampler,
     const uint64_t *steps, unsigned nsteps, uint64_t seed, int flags,
     frs_error *err)
 {
-	if (sampler == NULL) {
-		if (run != NULL)
-			*run = NULL;
-		return api_arg_err(err, "frs_run_new: NULL argument");
-	}
-	return run_new(run, sampler, NULL, steps, nsteps, seed, flags, err);
+	return run_new("frs_run_new", run, sampler, NULL, steps, nsteps, seed,
+	    flags, err);
 }
 
 int frs_run3_new(frs_run **run, const frs_sampler3 *sampler,
     const uint64_t *steps, unsigned nsteps, uint64_t seed, int flags,
     frs_error *err)
 {
-	if (sampler == NULL) {
-		if (run != NULL)
-			*run = NULL;
-		return api_arg_err(err, "frs_run3_new: NULL argument");
-	}
-	return run_new(run, NULL, sampler, steps, nsteps, seed, flags, err);
+	return run_new("frs_run3_new", run, NULL, sampler, steps, nsteps, seed,
+	    flags, err);
 }
 
 void frs_run_free(frs_run *r)
