@@ -73,7 +73,7 @@ enum mode { FOURIER, DDA, DENSITY, RDF };
 struct opts {
 	enum mode mode;
 	int nmodes, approx, torus, have_size, have_bin, summary;
-	int flags;		/* imap_load's: --equirect, --strict */
+	int flags;		/* frs_imap_load's: --equirect, --strict */
 	const char *imp, *png, *radial;
 	uint32_t mw, mh, size;
 	double eps, sigma, bin, rmax, lo_db, hi_db;
