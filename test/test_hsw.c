@@ -320,25 +320,27 @@ static void test_sample_chunks(void **state)
 	mean = hsw_mean(&t, &m);
 	hsw_input_make(HSW_HALTON, n, 1, in);
 	frs_set_threads(1);
-	assert_int_equal(hsw_sample(&t, &src, &m, 0, n, a), 0);
+	/* a: the pairs, a + 2n: the densities */
+	assert_int_equal(hsw_sample(&t, &src, &m, 0, n, a, a + 2 * n), 0);
 	for (uint64_t i = 0; i < n; i++) {
 		double x = in[2 * i], y = in[2 * i + 1];
 		hsw_warp(&t, &x, &y);
-		if (x != a[3 * i] || y != a[3 * i + 1] ||
-		    hsw_pdf_at(&m, mean, x, y) != a[3 * i + 2])
+		if (x != a[2 * i] || y != a[2 * i + 1] ||
+		    hsw_pdf_at(&m, mean, x, y) != a[2 * n + i])
 			fail_msg("point %llu: (%a, %a), one at a time (%a, %a)",
-			    (unsigned long long)i, a[3 * i], a[3 * i + 1], x, y);
+			    (unsigned long long)i, a[2 * i], a[2 * i + 1], x, y);
 	}
 	frs_set_threads(3);
 	memset(b, 0xff, 3 * n * sizeof *b);
 	for (size_t c = 0; c + 1 < sizeof cuts / sizeof *cuts; c++)
 		assert_int_equal(hsw_sample(&t, &src, &m, cuts[c], cuts[c + 1],
-		    b + 3 * cuts[c]), 0);
+		    b + 2 * cuts[c], b + 2 * n + cuts[c]), 0);
 	assert_memory_equal(a, b, 3 * n * sizeof *a);
 	/* without the density, and from the array */
-	assert_int_equal(hsw_sample(&t, &src, NULL, 0, n, b), 0);
-	for (uint64_t i = 0; i < n; i++)
-		assert_true(b[2 * i] == a[3 * i] && b[2 * i + 1] == a[3 * i + 1]);
+	memset(b, 0xff, 3 * n * sizeof *b);
+	assert_int_equal(hsw_sample(&t, &src, &m, 0, n, b, NULL), 0);
+	assert_memory_equal(a, b, 2 * n * sizeof *a);
+	assert_true(b[2 * n] != b[2 * n]);	/* no density written: NaN */
 	assert_int_equal(hsw_warp_points(&t, in, in, n), 0);
 	assert_memory_equal(in, b, 2 * n * sizeof *b);
 	frs_set_threads(1);

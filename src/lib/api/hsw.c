@@ -138,10 +138,8 @@ int frs_hsw_draw(const frs_hsw *hw, enum frs_hsw_input input, uint64_t n,
 		return rc;
 	/* The set made and warped chunk by chunk, as frs_hsw_warp would
 	 * warp it. */
-	if (hsw_sample(&hw->t, &src, NULL, 0, n, xy) < 0)
+	if (hsw_sample(&hw->t, &src, &hw->map, 0, n, xy, pdf) < 0)
 		return api_lib_err(err, FRS_E_LIMIT);
-	if (pdf != NULL)
-		api_hsw_pdf(&hw->t, &hw->map, xy, pdf, (size_t)n);
 	return api_ok(err);
 }
 
@@ -178,10 +176,8 @@ int frs_hsw_draw_each(const frs_hsw *hw, enum frs_hsw_input input,
 	 * thread count. */
 	for (uint64_t b = 0; rc == FRS_OK && b < n; b += HSW_BATCH) {
 		uint64_t m = n - b < HSW_BATCH ? n - b : HSW_BATCH;
-		if (hsw_sample(&hw->t, &src, NULL, b, b + m, xy) < 0)
+		if (hsw_sample(&hw->t, &src, &hw->map, b, b + m, xy, pdf) < 0)
 			rc = api_lib_err(err, FRS_E_LIMIT);
-		else if (pdf != NULL)
-			api_hsw_pdf(&hw->t, &hw->map, xy, pdf, (size_t)m);
 		if (rc == FRS_OK && fn(ctx, xy, pdf, NULL, (size_t)m, n) != 0)
 			rc = api_set_err(err, FRS_E_CALLBACK,
 			    "stopped by the callback");

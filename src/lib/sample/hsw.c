@@ -400,12 +400,12 @@ FRS_WIDE static void place_group(const uint32_t *i, const double *u, uint32_t n,
 			x[q] = hsw_place(i[q], u[q], n);
 }
 
-/* m points (pairs) from in to m records of stride doubles in out (out
- * may be in for stride 2): x, y and, where map is not NULL, the density
- * at the point's pixel (hsw_pdf_at).  A short last group is filled with
- * (0, 0), a valid point, and not stored. */
+/* m points (pairs) from in to m pairs in xy (which may be in) and,
+ * where map is not NULL, the densities at their pixels into pdf
+ * (hsw_pdf_at), while the points are at hand.  A short last group is
+ * filled with (0, 0), a valid point, and not stored. */
 static inline void warp_records(const struct hsw_tree *t, const double *in,
-    size_t m, double *out, unsigned stride, const struct frs_imap *map,
+    size_t m, double *xy, double *pdf, const struct frs_imap *map,
     double mean)
 {
 	for (size_t p = 0; p < m; p += GROUP) {
@@ -421,11 +421,10 @@ static inline void warp_records(const struct hsw_tree *t, const double *in,
 		place_group(i, u, t->w, x);
 		place_group(j, v, t->h, y);
 		for (unsigned q = 0; q < g; q++) {
-			double *r = out + (p + q) * stride;
-			r[0] = x[q];
-			r[1] = y[q];
+			xy[2 * (p + q)] = x[q];
+			xy[2 * (p + q) + 1] = y[q];
 			if (map != NULL)
-				r[2] = hsw_pdf_at(map, mean, x[q], y[q]);
+				pdf[p + q] = hsw_pdf_at(map, mean, x[q], y[q]);
 		}
 	}
 }
@@ -433,10 +432,9 @@ static inline void warp_records(const struct hsw_tree *t, const double *in,
 struct sample_job {
 	const struct hsw_tree *t;
 	const struct hsw_source *src;
-	const struct frs_imap *map;
-	double mean, *out;
+	const struct frs_imap *map;	/* NULL: no densities */
+	double mean, *xy, *pdf;
 	uint64_t base;
-	unsigned stride;
 };
 
 static int sample_task(void *ctx, uint64_t begin, uint64_t end)
@@ -458,25 +456,21 @@ static int sample_task(void *ctx, uint64_t begin, uint64_t end)
 		else
 			input_range(&b3, src->kind, src->n, src->seed, at,
 			    at + m, buf);
-		if (job->stride == 3)
-			warp_records(job->t, in, (size_t)m, job->out + 3 * p, 3,
-			    job->map, job->mean);
-		else
-			warp_records(job->t, in, (size_t)m, job->out + 2 * p, 2,
-			    NULL, 0.0);
+		warp_records(job->t, in, (size_t)m, job->xy + 2 * p,
+		    job->map != NULL ? job->pdf + p : NULL, job->map, job->mean);
 	}
 	return 0;
 }
 
 int hsw_sample(const struct hsw_tree *t, const struct hsw_source *src,
-    const struct frs_imap *map, uint64_t begin, uint64_t end, double *out)
+    const struct frs_imap *map, uint64_t begin, uint64_t end, double *xy,
+    double *pdf)
 {
-	struct sample_job job = { t, src, map, 0.0, out, begin, 2 };
+	struct sample_job job = { t, src, pdf != NULL ? map : NULL, 0.0, xy,
+	    pdf, begin };
 
-	if (map != NULL) {
-		job.stride = 3;
+	if (job.map != NULL)
 		job.mean = hsw_mean(t, map);
-	}
 	return frs_parallel(end - begin, CHUNK, sample_task, &job, NULL);
 }
 
@@ -484,7 +478,7 @@ int hsw_warp_points(const struct hsw_tree *t, const double *in, double *out,
     uint64_t n)
 {
 	struct hsw_source src = { HSW_HALTON, n, 0, in };
-	struct sample_job job = { t, &src, NULL, 0.0, out, 0, 2 };
+	struct sample_job job = { t, &src, NULL, 0.0, out, NULL, 0 };
 
 	return frs_parallel(n, CHUNK, sample_task, &job, NULL);
 }

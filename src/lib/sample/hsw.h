@@ -91,11 +91,13 @@ struct hsw_source {
 	const double *in;
 };
 
-/* Points begin .. end - 1 of src warped into records out[0 ..]: x, y
- * and, where map (the tree's own map) is not NULL, the density
- * (hsw_pdf_at), so 2 or 3 doubles each.  In parallel with frs_parallel,
- * in chunks of the index range; a point depends on its index only, so the
- * bytes are the same for any thread count and any cut of the range. */
+/* Points begin .. end - 1 of src warped into xy[0 ..] (pairs) and,
+ * where map (the tree's own map) and pdf are not NULL, their densities
+ * (hsw_pdf_at) into pdf[0 ..], made with the points.  In parallel with
+ * frs_parallel, in chunks of the index range; a point depends on its
+ * index only, so the bytes are the same for any thread count and any
+ * cut of the range. */
 int hsw_sample(const struct hsw_tree *t, const struct hsw_source *src,
-    const struct frs_imap *map, uint64_t begin, uint64_t end, double *out);
+    const struct frs_imap *map, uint64_t begin, uint64_t end, double *xy,
+    double *pdf);
 #endif
