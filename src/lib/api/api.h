@@ -325,10 +325,4 @@ int api_setup3(const frs_sampler3 *s, const uint64_t *steps,
 int api_sampler3_prep(const frs_sampler3 *s, const struct frs3_setup *su,
     struct frs3_prep *view);
 
-/* ---- HSW (hsw.c) --------------------------------------------------- */
-
-/* The densities of n warped points. */
-void api_hsw_pdf(const struct hsw_tree *t, const struct frs_imap *map,
-    const double *xy, double *pdf, size_t n);
-
 #endif

@@ -63,35 +63,6 @@ void frs_hsw_free(frs_hsw *hw)
 	free(hw);
 }
 
-void api_hsw_pdf(const struct hsw_tree *t, const struct frs_imap *map,
-    const double *xy, double *pdf, size_t n)
-{
-	double mean = hsw_mean(t, map);
-
-	for (size_t i = 0; i < n; i++)
-		pdf[i] = hsw_pdf_at(map, mean, xy[2 * i], xy[2 * i + 1]);
-}
-
-int frs_hsw_warp(const frs_hsw *hw, const double *in, double *out,
-    double *pdf, size_t n, int threads, frs_error *err)
-{
-	if (hw == NULL || ((in == NULL || out == NULL) && n > 0))
-		return api_arg_err(err, "frs_hsw_warp: NULL argument");
-	if (threads < 0 || threads > 1024)
-		return api_arg_err(err, "frs_hsw_warp: threads must lie in 0 .. "
-		    "1024");
-	for (size_t i = 0; i < 2 * n; i++)
-		if (!(in[i] >= 0.0 && in[i] < 1.0))
-			return api_arg_err(err, "frs_hsw_warp: a point lies outside "
-			    "[0,1)^2");
-	frs_set_threads(threads > 0 ? threads : 1);
-	if (hsw_warp_points(&hw->t, in, out, n) < 0)
-		return api_lib_err(err, FRS_E_LIMIT);
-	if (pdf != NULL)
-		api_hsw_pdf(&hw->t, &hw->map, out, pdf, n);
-	return api_ok(err);
-}
-
 /* One vocabulary: the public input sets are the warper's. */
 _Static_assert((int)FRS_HSW_RANDOM == (int)HSW_RANDOM &&
     (int)FRS_HSW_REGULAR == (int)HSW_REGULAR &&
@@ -123,6 +94,23 @@ static int draw_args(const char *fn, enum frs_hsw_input input,
 		}
 	frs_set_threads(threads > 0 ? threads : 1);
 	return FRS_OK;
+}
+
+int frs_hsw_warp(const frs_hsw *hw, const double *in, double *out,
+    double *pdf, size_t n, int threads, frs_error *err)
+{
+	struct hsw_source src = { HSW_HALTON, n, 0, in };
+	int rc;
+
+	if (hw == NULL || ((in == NULL || out == NULL) && n > 0))
+		return api_arg_err(err, "frs_hsw_warp: NULL argument");
+	if ((rc = draw_args("frs_hsw_warp", FRS_HSW_HALTON, in, n, threads,
+	    err)) != FRS_OK)
+		return rc;
+	/* The caller's points, warped as the sets are, densities with them. */
+	if (hsw_sample(&hw->t, &src, &hw->map, 0, n, out, pdf) < 0)
+		return api_lib_err(err, FRS_E_LIMIT);
+	return api_ok(err);
 }
 
 int frs_hsw_draw(const frs_hsw *hw, enum frs_hsw_input input, uint64_t n,
@@ -201,13 +189,17 @@ int frs_hsw_input(enum frs_hsw_input input, uint64_t n, uint64_t seed,
 int frs_hsw_pdf(const frs_hsw *hw, const double *xy, double *pdf, size_t n,
     frs_error *err)
 {
+	double mean;
+
 	if (hw == NULL || ((xy == NULL || pdf == NULL) && n > 0))
 		return api_arg_err(err, "frs_hsw_pdf: NULL argument");
 	for (size_t i = 0; i < 2 * n; i++)
 		if (!(xy[i] >= 0.0 && xy[i] < 1.0))
 			return api_arg_err(err, "frs_hsw_pdf: a point lies outside "
 			    "[0,1)^2");
-	api_hsw_pdf(&hw->t, &hw->map, xy, pdf, n);
+	mean = hsw_mean(&hw->t, &hw->map);
+	for (size_t i = 0; i < n; i++)
+		pdf[i] = hsw_pdf_at(&hw->map, mean, xy[2 * i], xy[2 * i + 1]);
 	return api_ok(err);
 }
 
