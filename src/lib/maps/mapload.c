@@ -209,14 +209,15 @@ static int finish_vol(const char *name, const uint32_t size[3], int flags,
 	return rc;
 }
 
-int source_load(struct frs_source *s, unsigned want, const uint32_t size[3],
+/* A map or volume as loaded (dims 2 or 3) finished as flags ask: a
+ * map's own pixels checked, then weighted and resized (FRS_MAP_RAW: its
+ * statistics only), a volume checked.  dims; -1 after frs_fail, what was
+ * loaded released. */
+static int finish(const char *name, int dims, const uint32_t size[3],
     int flags, struct frs_imap *m, struct frs_imap_stats *st,
     struct frs_vol *v)
 {
-	struct ask a = { .want = want, .flags = flags, .m = m, .v = v };
-	const char *name = strcmp(s->src, "-") == 0 ? "<stdin>" : s->src;
 	struct frs_imap_stats own;
-	int dims = load_raw(s, &a, size);
 
 	if (dims == 2 && (flags & FRS_MAP_RAW)) {
 		if (st != NULL)
@@ -232,27 +233,27 @@ int source_load(struct frs_source *s, unsigned want, const uint32_t size[3],
 	return dims;
 }
 
+int source_load(struct frs_source *s, unsigned want, const uint32_t size[3],
+    int flags, struct frs_imap *m, struct frs_imap_stats *st,
+    struct frs_vol *v)
+{
+	struct ask a = { .want = want, .flags = flags, .m = m, .v = v };
+	const char *name = strcmp(s->src, "-") == 0 ? "<stdin>" : s->src;
+	int dims = load_raw(s, &a, size);
+
+	return dims < 0 ? -1 : finish(name, dims, size, flags, m, st, v);
+}
+
 int spec_load(const char *spec, unsigned dims, const uint32_t size[3],
     int flags, struct frs_imap *m, struct frs_imap_stats *st,
     struct frs_vol *v)
 {
-	struct frs_imap_stats own;
-	int rc;
+	int rc = dims == 2 ? imap_spec(spec, size[0] ? size[0] : 128,
+	    size[1] ? size[1] : 128, m) : vol_spec(spec, size[0], size[1],
+	    size[2], v);
 
-	if (dims == 2) {
-		rc = imap_spec(spec, size[0] ? size[0] : 128, size[1] ? size[1] :
-		    128, m);
-		if (rc == 0 && (flags & FRS_MAP_RAW) && st != NULL)
-			imap_stats(m, st);
-		else if (rc == 0 && !(flags & FRS_MAP_RAW))
-			rc = finish_map(spec, size[0], size[1], flags, m,
-			    st != NULL ? st : &own);
-		return rc;
-	}
-	rc = vol_spec(spec, size[0], size[1], size[2], v);
-	if (rc == 0 && !(flags & FRS_MAP_RAW))
-		rc = finish_vol(spec, size, flags, v);
-	return rc;
+	return rc < 0 || finish(spec, (int)dims, size, flags, m, st, v) < 0 ?
+	    -1 : 0;
 }
 
 int map_or_vol_load(const char *src, unsigned want, const uint32_t size[3],
