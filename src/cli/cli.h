@@ -35,6 +35,7 @@
 #include <setjmp.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdnoreturn.h>
 
 /*
@@ -364,6 +365,11 @@ int cli_data_file(const char *name, char *path, size_t cap);
  * ceiling.  -1 after cli_fail. */
 int cli_read_file(const char *path, const char **name, unsigned char **buf,
     size_t *len);
+/* Exactly n bytes of fp (name) into buf, what the part read ("header":
+ * an empty file is said so): the library's reads and their messages (a
+ * read error, "truncated WHAT (GOT of N bytes)").  -1 after cli_fail. */
+int cli_read_exact(FILE *fp, const char *name, void *buf, size_t n,
+    const char *what);
 
 /* Number of online processors. */
 int cli_ncpu(void);

@@ -116,6 +116,12 @@ int cli_read_file(const char *path, const char **name, unsigned char **buf,
 	return io_slurp_path(path, name, buf, len);
 }
 
+int cli_read_exact(FILE *fp, const char *name, void *buf, size_t n,
+    const char *what)
+{
+	return io_read_exact(fp, name, buf, n, what);
+}
+
 int cli_fail(const char *fmt, ...)
 {
 	va_list ap;

@@ -571,22 +571,6 @@ static uint64_t ck_get(const unsigned char *p, int bytes)
 	return v;
 }
 
-/* Exactly n bytes of what, the part of the checkpoint name. */
-static int ck_read(FILE *fp, const char *name, void *buf, size_t n,
-    const char *what)
-{
-	size_t got = fread(buf, 1, n, fp);
-
-	if (got == n)
-		return 0;
-	if (ferror(fp))
-		return cli_fail_errno("%s: read error", name);
-	if (got == 0 && strcmp(what, "header") == 0 && ftell(fp) <= 0)
-		return cli_fail("%s: empty file", name);
-	return cli_fail("%s: truncated %s (%zu of %zu bytes)", name, what,
-	    got, n);
-}
-
 /* The state after "step" insertions: parameters, step, values (free cells
  * UINT32_MAX) and the field; enough to go on with the same result. */
 static int save_checkpoint(struct gen *g, uint64_t step)
@@ -630,7 +614,7 @@ static int load_checkpoint(struct gen *g, uint64_t *step)
 		return 0;
 	name = g->pr->checkpoint;
 	frdgen_describe(g->pr, params, sizeof params);
-	if (ck_read(fp, name, h, sizeof h, "header") < 0)
+	if (cli_read_exact(fp, name, h, sizeof h, "header") < 0)
 		goto done;
 	if (memcmp(h, CKPT_MAGIC, 8) != 0) {
 		cli_fail("%s: not an frd-gen checkpoint", name);
@@ -638,7 +622,7 @@ static int load_checkpoint(struct gen *g, uint64_t *step)
 	}
 	plen = (uint32_t)ck_get(h + 8, 4);
 	*step = ck_get(h + 12, 8);
-	if (plen >= sizeof have || ck_read(fp, name, have, plen,
+	if (plen >= sizeof have || cli_read_exact(fp, name, have, plen,
 	    "parameters") < 0) {
 		cli_fail("%s: damaged checkpoint", name);
 		goto done;
@@ -649,8 +633,8 @@ static int load_checkpoint(struct gen *g, uint64_t *step)
 		    "afresh)", name);
 		goto done;
 	}
-	if (*step > g->sz.n || ck_read(fp, name, g->val, g->sz.n * 4,
-	    "values") < 0 || ck_read(fp, name, g->field,
+	if (*step > g->sz.n || cli_read_exact(fp, name, g->val, g->sz.n * 4,
+	    "values") < 0 || cli_read_exact(fp, name, g->field,
 	    field_cells(g) * 8, "field") < 0)
 		goto done;
 	rc = 1;
