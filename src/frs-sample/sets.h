@@ -30,13 +30,13 @@ struct sets {
 	int pdf, count_only, text, verbose;
 	int level_col;		/* a column of each sample's level */
 	const char *out;	/* NULL or "-": standard output */
-	/* the matrix as sets_matrix loaded it */
-	int loaded;		/* 0: sets_open loads it */
-	frs_mask *mask;		/* taken by sets_open's run */
+	/* the matrix as frs-sample.c loaded it */
+	int loaded;		/* 0: the run's opening loads it */
+	frs_mask *mask;		/* taken by the run */
 	int mask_rc;		/* frs_mask_load's code, its message: */
 	frs_error mask_err;
 	double tload;		/* seconds, counted in the run's setup */
-	/* the map or volume as sets_map loaded it, taken by sets_open */
+	/* the map or volume as loaded, taken by the run */
 	struct frs_imap map;
 	struct frs_imap_stats stats;	/* the map's, as checked */
 	struct frs_vol vol;
@@ -70,33 +70,9 @@ struct sets_run {
 	frs_device *dev;
 };
 
-/*
- * Take the matrix (sets_matrix's; standard input loaded here), load
- * the map or volume and the device, make the sampler and set 0's setup,
- * with the mask prepared for it (so that -v counts that in the setup,
- * with the matrix's loading); with FRS_RULE_EXACT the exact taus of set 0 only
- * with verbose (each set's run finds its own).  Warns of a stale twin
- * .frp and of patterns that repeat.  0; -1 after cli_fail; -2 when the
- * device could not be opened.
- */
-int sets_open(const struct sets *a, struct sets_run *run);
-/* Load a->matrix, opening it once, and set a->dims from its header (2
- * when it tells none); a failure is told by sets_open, where the
- * run needs the matrix.  Standard input is left to sets_open, which
- * may read a map from it before. */
-void sets_matrix(struct sets *a);
-/* Load the map or volume a->imp (NULL: constant) at a->size, a volume
- * when want is 3, a map when 2, and when 0 what a->imp is: its
- * dimensions, -1 after cli_fail. */
-int sets_map(struct sets *a, unsigned want);
-/* Load the default matrix for dims (frs_default_matrix) as sets_matrix
- * loads a named one: -1 when none is found, a->mask_err saying why. */
-int sets_default_matrix(struct sets *a, unsigned dims);
-void sets_unmap(struct sets *a);
 /* Draw the sets and write them (--count-only: their counts, a line
  * each).  0; -1 after cli_fail. */
 int sets_write(const struct sets *a, struct sets_run *run);
-void sets_close(struct sets_run *run);
 
 /* -v's report of a run (setsreport.c): set 0's setup, the tiles, the
  * sets' seeds, and the times of the steps; the program's, as the library
