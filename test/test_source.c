@@ -392,6 +392,41 @@ static void codes(void **state)
 	frs_vol_free(NULL);
 }
 
+/* frs_source_read and frs_imap_load give a failure the same code: a
+ * file that does not open (a directory) or opens but does not read
+ * (Linux's /proc/self/mem at offset 0) is IO, a file named
+ * like a spec is a file (FORMAT when it is not an image), and a spec is
+ * a name that some spec has, a volume's too (ARG where a map is asked
+ * for). */
+static void codes_alike(void **state)
+{
+	static const struct {
+		const char *src;
+		int code;
+	} c[] = { { ".", FRS_E_IO }, { "/proc/self/mem", FRS_E_IO },
+		  { "blob", FRS_E_FORMAT },
+		  { "shell3", FRS_E_ARG }, { "blob:nope=1", FRS_E_ARG } };
+	char cwd[4096];
+	struct frs_imap m;
+	unsigned dims;
+	frs_error err;
+
+	(void)state;
+	assert_non_null(getcwd(cwd, sizeof cwd));
+	assert_int_equal(chdir(tu_dir()), 0);
+	tu_write("blob", "hello\n", 6);
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		if (access(c[i].src, F_OK) != 0 && c[i].code == FRS_E_IO)
+			continue;	/* no /proc */
+		assert_int_equal(frs_source_read(c[i].src, 2, NULL, 0, &dims, &m,
+		    NULL, NULL, &err), c[i].code);
+		assert_int_equal(frs_imap_load(&m, c[i].src, 0, 0, 0, &err),
+		    c[i].code);
+		assert_null(m.v);
+	}
+	assert_int_equal(chdir(cwd), 0);
+}
+
 TU_MAIN(NULL, tu_teardown,
     cmocka_unit_test(stats_by_hand),
     cmocka_unit_test(check_values),
@@ -400,4 +435,5 @@ TU_MAIN(NULL, tu_teardown,
     cmocka_unit_test(write_volume),
     cmocka_unit_test(write_and_load_maps),
     cmocka_unit_test(specs),
-    cmocka_unit_test(codes))
+    cmocka_unit_test(codes),
+    cmocka_unit_test(codes_alike))

@@ -20,14 +20,17 @@
 /*
  * The loads of frs_map_load and frs_imap_load (fn names it): their
  * arguments, then src as the programs load it.  A failure's code: a
- * spec's is the argument's (bad parameters, a size too large), a file's
- * its format's, but for a file that does not open (IO, by the failure's
- * kind: one open), the memory (NOMEM) and the values (MAP).
+ * spec's is the argument's (bad parameters, a size too large, a volume's
+ * spec), a file's its format's, but for a file that does not open or
+ * read (IO, by the failure's kind: one open), the memory (NOMEM) and the
+ * values (MAP).  A spec is a name that some spec has and no file has, as
+ * for frs_source_read.
  */
 static int load_map(const char *fn, int args, const char *src, uint32_t w,
     uint32_t h, int flags, struct frs_imap *m, frs_error *err)
 {
 	char msg[80];
+	int spec;
 
 	if (!args) {
 		snprintf(msg, sizeof msg, "%s: NULL argument", fn);
@@ -38,9 +41,9 @@ static int load_map(const char *fn, int args, const char *src, uint32_t w,
 		    "both set", fn);
 		return api_arg_err(err, msg);
 	}
-	if (imap_load(src, w, h, flags, m) < 0)
-		return api_lib_err(err, imap_is_spec(src) ? FRS_E_ARG :
-		    FRS_E_FORMAT);
+	if (source_read(src, 2, (const uint32_t[3]){ w, h, 0 }, flags, m, NULL,
+	    NULL, &spec) < 0)
+		return api_lib_err(err, spec ? FRS_E_ARG : FRS_E_FORMAT);
 	return FRS_OK;
 }
 

@@ -97,22 +97,6 @@ static int load_args(const char *fn, unsigned want, const uint32_t **size,
 	return FRS_OK;
 }
 
-/* Load the open source s: its dimensions, or a code after its
- * message (a spec that does not make a map is the caller's argument, a
- * file that does not the file's format). */
-static int load(struct frs_source *s, unsigned want, const uint32_t *size,
-    int flags, unsigned *dims, struct frs_imap *map,
-    struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err)
-{
-	int rc = source_load(s, want, size, flags, map, st, vol);
-
-	if (rc < 0)
-		return api_lib_err(err, s->fp == NULL &&
-		    frs_spec_kinds(s->src) != 0 ? FRS_E_ARG : FRS_E_FORMAT);
-	*dims = (unsigned)rc;
-	return api_ok(err);
-}
-
 int frs_source_load(frs_source *source, unsigned want,
     const uint32_t size[3], int flags, unsigned *dims, struct frs_imap *map,
     struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err)
@@ -127,7 +111,13 @@ int frs_source_load(frs_source *source, unsigned want,
 	if (source->used)
 		return api_arg_err(err, "frs_source_load: the source was "
 		    "loaded already");
-	return load(source, want, size, flags, dims, map, st, vol, err);
+	/* A spec that does not make a map is the caller's argument, a file
+	 * that does not the file's format. */
+	if ((rc = source_load(source, want, size, flags, map, st, vol)) < 0)
+		return api_lib_err(err, source->fp == NULL && source->kinds != 0 ?
+		    FRS_E_ARG : FRS_E_FORMAT);
+	*dims = (unsigned)rc;
+	return api_ok(err);
 }
 
 void frs_source_close(frs_source *source)
@@ -142,21 +132,19 @@ int frs_source_read(const char *src, unsigned want, const uint32_t size[3],
     int flags, unsigned *dims, struct frs_imap *map,
     struct frs_imap_stats *st, struct frs_vol *vol, frs_error *err)
 {
-	struct frs_source s;
-	int rc = load_args("frs_source_read", want, &size, dims, map, vol,
+	int spec, rc = load_args("frs_source_read", want, &size, dims, map, vol,
 	    err);
 
 	if (rc != FRS_OK)
 		return rc;
 	if (src == NULL)
 		return api_arg_err(err, "frs_source_read: NULL argument");
-	/* The one open and load, on the stack: frs_source_open's and
-	 * frs_source_load's work without their handle. */
-	if (source_open(&s, src) < 0)
-		return api_lib_err(err, FRS_E_IO);
-	rc = load(&s, want, size, flags, dims, map, st, vol, err);
-	source_close(&s);
-	return rc;
+	/* The one open and load: frs_source_open's and frs_source_load's
+	 * work without their handle, a failure to open IO by its kind. */
+	if ((rc = source_read(src, want, size, flags, map, st, vol, &spec)) < 0)
+		return api_lib_err(err, spec ? FRS_E_ARG : FRS_E_FORMAT);
+	*dims = (unsigned)rc;
+	return api_ok(err);
 }
 
 int frs_spec_load(const char *spec, unsigned dims, const uint32_t size[3],

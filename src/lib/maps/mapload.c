@@ -60,6 +60,7 @@ int source_open(struct frs_source *s, const char *src)
 	s->npre = fread(s->pre, 1, sizeof s->pre, s->fp);
 	if (ferror(s->fp)) {
 		frs_fail_errno("%s: read error", s->name);
+		frs_set_errkind(FRS_ERRKIND_IO);
 		source_close(s);
 		return -1;
 	}
@@ -256,13 +257,15 @@ int spec_load(const char *spec, unsigned dims, const uint32_t size[3],
 	    -1 : 0;
 }
 
-int map_or_vol_load(const char *src, unsigned want, const uint32_t size[3],
+int source_read(const char *src, unsigned want, const uint32_t size[3],
     int flags, struct frs_imap *m, struct frs_imap_stats *st,
-    struct frs_vol *v)
+    struct frs_vol *v, int *spec)
 {
 	struct frs_source s;
 	int dims;
 
+	if (spec != NULL)
+		*spec = 0;
 	if (source_open(&s, src) < 0) {
 		if (m != NULL)
 			memset(m, 0, sizeof *m);
@@ -271,8 +274,17 @@ int map_or_vol_load(const char *src, unsigned want, const uint32_t size[3],
 		return -1;
 	}
 	dims = source_load(&s, want, size, flags, m, st, v);
+	if (spec != NULL)
+		*spec = s.fp == NULL && s.kinds != 0;
 	source_close(&s);
 	return dims;
+}
+
+int map_or_vol_load(const char *src, unsigned want, const uint32_t size[3],
+    int flags, struct frs_imap *m, struct frs_imap_stats *st,
+    struct frs_vol *v)
+{
+	return source_read(src, want, size, flags, m, st, v, NULL);
 }
 
 int imap_load(const char *src, uint32_t w, uint32_t h, int flags,

@@ -43,7 +43,8 @@ struct frs_source {
 	int stat_errno;
 	int used;		/* loaded (a source is read once) */
 };
-/* 0, or -1 after frs_fail (a file that does not open or read). */
+/* 0, or -1 after frs_fail (a file that does not open or read: kind
+ * FRS_ERRKIND_IO). */
 int source_open(struct frs_source *s, const char *src);
 /* src as a 2-D map into m or a volume into v, as map_or_vol_load. */
 int source_load(struct frs_source *s, unsigned want, const uint32_t size[3],
@@ -68,6 +69,12 @@ int spec_load(const char *spec, unsigned dims, const uint32_t size[3],
 int map_or_vol_load(const char *src, unsigned want, const uint32_t size[3],
     int flags, struct frs_imap *m, struct frs_imap_stats *st,
     struct frs_vol *v);
+/* The same (source_open, source_load, source_close), and *spec (unless
+ * NULL) set when src was taken as a spec: no file of that name, a name
+ * that some spec has.  A failure to open has kind FRS_ERRKIND_IO. */
+int source_read(const char *src, unsigned want, const uint32_t size[3],
+    int flags, struct frs_imap *m, struct frs_imap_stats *st,
+    struct frs_vol *v, int *spec);
 
 /* A .frv file or a spec that only volumes have (const is both). */
 int vol_is_volume(const char *src);
