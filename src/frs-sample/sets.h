@@ -1,5 +1,5 @@
 /*
- * frs-sample's runs (sets.c): M sets of a 2-D map or 3-D volume drawn
+ * frs-sample's sets (sets.c): M sets of a 2-D map or 3-D volume drawn
  * through the library's callback form and written to one points file,
  * and what came of them for the -v report (setsreport.c) and the
  * warnings.
