@@ -599,23 +599,24 @@ int pts_writer_begin(struct pts_writer *w, FILE *fp, const char *name,
 	return 0;
 }
 
-/* Coordinates outside [0, 1) are the writer's caller's bug. */
-FRS_WIDE static int check_coords(const struct pts_writer *w, const double *recs,
-    size_t n)
+/* Coordinates outside [0, 1) are the writer's caller's bug: those of n
+ * records, record k's at pts + k * stride. */
+FRS_WIDE static int check_coords(const struct pts_writer *w,
+    const double *pts, size_t stride, size_t n)
 {
-	unsigned ncol = w->dims + w->extra;
 	int bad = 0;
 
-	/* One pass without exits (it vectorises), then the culprit. */
-	if (ncol == 2 && w->dims == 2) {
-		for (size_t k = 0; k < 2 * n; k++)
-			bad |= !(recs[k] >= 0.0) | !(recs[k] < 1.0);
+	/* Packed: one pass without exits (it vectorises), then the
+	 * culprit. */
+	if (stride == w->dims) {
+		for (size_t k = 0; k < w->dims * n; k++)
+			bad |= !(pts[k] >= 0.0) | !(pts[k] < 1.0);
 		if (!bad)
 			return 0;
 	}
 	for (size_t k = 0; k < n; k++)
 		for (unsigned i = 0; i < w->dims; i++) {
-			double v = recs[k * ncol + i];
+			double v = pts[k * stride + i];
 			if (!(v >= 0.0 && v < 1.0))
 				return frs_fail("%s: internal error: coordinate "
 				    "%.17g of point %llu is outside [0,1)", w->name,
@@ -652,12 +653,11 @@ static int put_text(const struct pts_writer *w, const double *recs,
 	return 0;
 }
 
-int pts_writer_put_n(struct pts_writer *w, const double *recs, size_t n)
+/* n records side by side, checked: as text or little-endian doubles. */
+static int put_records(struct pts_writer *w, const double *recs, size_t n)
 {
 	size_t nval = n * (w->dims + w->extra);
 
-	if (check_coords(w, recs, n) < 0)
-		return -1;
 	if (w->text) {
 		if (put_text(w, recs, n) < 0)
 			return -1;
@@ -683,11 +683,53 @@ int pts_writer_put_n(struct pts_writer *w, const double *recs, size_t n)
 	return 0;
 }
 
+int pts_writer_put_n(struct pts_writer *w, const double *recs, size_t n)
+{
+	if (check_coords(w, recs, w->dims + w->extra, n) < 0)
+		return -1;
+	return put_records(w, recs, n);
+}
+
+/* m values, one a stride apart, into every ncol-th place of r: a
+ * column at a time keeps each loop a plain strided copy. */
+static void gather(double *r, size_t ncol, const double *v, size_t stride,
+    size_t m)
+{
+	for (size_t i = 0; i < m; i++)
+		r[i * ncol] = v[i * stride];
+}
+
+int pts_writer_put_cols(struct pts_writer *w, const double *pts,
+    size_t stride, const struct pts_col *col, size_t n)
+{
+	unsigned dims = w->dims, ncol = dims + w->extra;
+	double buf[4096];
+	size_t per = sizeof buf / sizeof *buf / ncol;
+
+	if (check_coords(w, pts, stride, n) < 0)
+		return -1;
+	if (ncol == stride)
+		return put_records(w, pts, n);	/* side by side already */
+	/* Gathered a piece at a time into a buffer that stays in the
+	 * cache: one pass over the caller's arrays. */
+	for (size_t b = 0; b < n; b += per) {
+		size_t m = n - b < per ? n - b : per;
+		for (unsigned a = 0; a < dims; a++)
+			gather(buf + a, ncol, pts + b * stride + a, stride, m);
+		for (unsigned j = 0; j < w->extra; j++)
+			gather(buf + dims + j, ncol, col[j].v + b * col[j].stride,
+			    col[j].stride, m);
+		if (put_records(w, buf, m) < 0)
+			return -1;
+	}
+	return 0;
+}
+
 int pts_writer_put(struct pts_writer *w, const double *rec)
 {
 	unsigned ncol = w->dims + w->extra;
 
-	if (check_coords(w, rec, 1) < 0)
+	if (check_coords(w, rec, ncol, 1) < 0)
 		return -1;
 	if (w->text) {
 		if (put_text(w, rec, 1) < 0)

@@ -107,6 +107,18 @@ int pts_writer_put(struct pts_writer *w, const double *rec);
 /* n records at once (n * (dims + extra) values): one check pass and one
  * write; the fast path of the samplers. */
 int pts_writer_put_n(struct pts_writer *w, const double *recs, size_t n);
+/* A column of n records apart from the rest: v[i * stride] is record
+ * i's value (stride 0: v[0] is every record's). */
+struct pts_col {
+	const double *v;
+	size_t stride;
+};
+/* n records whose values lie apart: record i's coordinates at
+ * pts + i * stride (stride dims: packed), then its value of each of the
+ * w->extra columns col[j].  The bytes pts_writer_put_n writes of the
+ * records side by side, without the caller making them. */
+int pts_writer_put_cols(struct pts_writer *w, const double *pts,
+    size_t stride, const struct pts_col *col, size_t n);
 int pts_writer_end(struct pts_writer *w);
 
 /* Write a whole set (p->names names its extra columns). */

@@ -24,25 +24,41 @@ int sets_writer_begin(struct sets_writer *s, FILE *fp, const char *name,
 	return pts_writer_begin(&s->w, fp, name, dims, k, all, count, text);
 }
 
-int sets_writer_put(struct sets_writer *s, const double *rec, size_t n)
+/* n records of the caller's pts (stride apart) and columns col (its
+ * extra ones), the set's column after them when there are sets. */
+static int put_apart(struct sets_writer *s, const double *pts,
+    size_t stride, const struct pts_col *col, size_t n)
 {
-	double buf[4096];
-	size_t per = sizeof buf / sizeof *buf / (s->ncol + 1);
+	struct pts_col all[PTS_MAXCOLS];
+	unsigned extra = s->ncol - s->w.dims;
+	double set = (double)s->set;
 
 	if (s->sets <= 1)
-		return pts_writer_put_n(&s->w, rec, n);
-	/* The records in pieces, each with its set after it. */
-	for (size_t b = 0; b < n; b += per) {
-		size_t m = n - b < per ? n - b : per;
-		for (size_t i = 0; i < m; i++) {
-			double *r = buf + i * (s->ncol + 1);
-			memcpy(r, rec + (b + i) * s->ncol, s->ncol * sizeof *r);
-			r[s->ncol] = (double)s->set;
-		}
-		if (pts_writer_put_n(&s->w, buf, m) < 0)
-			return -1;
-	}
-	return 0;
+		return pts_writer_put_cols(&s->w, pts, stride, col, n);
+	if (extra > 0)
+		memcpy(all, col, extra * sizeof *all);
+	all[extra] = (struct pts_col){ &set, 0 };
+	return pts_writer_put_cols(&s->w, pts, stride, all, n);
+}
+
+int sets_writer_put(struct sets_writer *s, const double *rec, size_t n)
+{
+	struct pts_col col[PTS_MAXCOLS];
+	unsigned dims = s->w.dims;
+
+	for (unsigned j = 0; j < s->ncol - dims; j++)
+		col[j] = (struct pts_col){ rec + dims + j, s->ncol };
+	return put_apart(s, rec, s->ncol, col, n);
+}
+
+int sets_writer_put_cols(struct sets_writer *s, const double *pts,
+    const double *const *col, size_t n)
+{
+	struct pts_col c[PTS_MAXCOLS];
+
+	for (unsigned j = 0; j < s->ncol - s->w.dims; j++)
+		c[j] = (struct pts_col){ col[j], 1 };
+	return put_apart(s, pts, s->w.dims, c, n);
 }
 
 int sets_writer_end(struct sets_writer *s)

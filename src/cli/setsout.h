@@ -33,6 +33,11 @@ int sets_writer_begin(struct sets_writer *s, FILE *fp, const char *name,
     uint64_t count, int text);
 /* n records of set s->set, dims + extra values each. */
 int sets_writer_put(struct sets_writer *s, const double *rec, size_t n);
+/* The same from columns: n points of dims coordinates packed in pts, and
+ * the extra columns col[0..extra-1], n values each (the library's draws
+ * hand their points and densities so: no records made to write them). */
+int sets_writer_put_cols(struct sets_writer *s, const double *pts,
+    const double *const *col, size_t n);
 int sets_writer_end(struct sets_writer *s);
 
 #endif

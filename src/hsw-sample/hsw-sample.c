@@ -234,11 +234,12 @@ struct output {
 	double t_out, t_input;
 };
 
-static int put_round(void *ctx, const double *rec, size_t k)
+static int put_round(void *ctx, const double *xy, const double *pdf,
+    size_t k)
 {
 	struct output *u = ctx;
 	double t0 = cli_now();
-	int rc = sets_writer_put(&u->w, rec, k);
+	int rc = sets_writer_put_cols(&u->w, xy, &pdf, k);
 
 	u->t_out += cli_now() - t0;
 	return rc;

@@ -55,36 +55,25 @@ void hsw_run_close(struct hsw_run *r)
 	frs_hsw_free(r->hw);
 }
 
-/* Handing the library's batches to the caller's fn as records, and the
- * warping's share of the time. */
+/* Handing the library's batches to the caller's fn, and the warping's
+ * share of the time. */
 struct hand {
 	struct hsw_run *r;
 	hsw_rec_fn fn;
 	void *ctx;
-	double *rec;		/* 3 ROUND doubles with the density */
 	double t0;		/* when the warping of this batch began */
 	int stopped;		/* fn said stop */
 };
 
-/* k points xy and, when not NULL, their densities: records of x, y
- * [, pdf] to fn. */
+/* k points xy and, when not NULL, their densities to fn. */
 static int hand_over(void *ctx, const double *xy, const double *pdf,
     const uint32_t *step, size_t k, uint64_t total)
 {
 	struct hand *u = ctx;
-	const double *rec = xy;
 
 	(void)step, (void)total;
 	u->r->t_warp += cli_now() - u->t0;
-	if (pdf != NULL) {
-		for (size_t i = 0; i < k; i++) {
-			u->rec[3 * i] = xy[2 * i];
-			u->rec[3 * i + 1] = xy[2 * i + 1];
-			u->rec[3 * i + 2] = pdf[i];
-		}
-		rec = u->rec;
-	}
-	u->stopped = u->fn(u->ctx, rec, k) != 0;
+	u->stopped = u->fn(u->ctx, xy, pdf, k) != 0;
 	u->t0 = cli_now();
 	return u->stopped;
 }
@@ -120,20 +109,17 @@ static int hand_device(struct hand *u, const double *pts, uint64_t n,
 int hsw_run_each(struct hsw_run *r, enum frs_hsw_input input, double *pts,
     uint64_t n, uint64_t seed, int pdf, hsw_rec_fn fn, void *ctx)
 {
-	struct hand u = { r, fn, ctx, NULL, cli_now(), 0 };
+	struct hand u = { r, fn, ctx, cli_now(), 0 };
 	frs_error err;
 	int rc = 0;
 
 	if (r->cl && pts == NULL)
 		return cli_fail("hsw_run_each: the device needs the points");
-	if (pdf)
-		u.rec = cli_calloc("output buffer", ROUND, 3 * sizeof *u.rec);
 	if (r->cl)
 		rc = hswcl_warp_points(&r->hc, pts, pts, n) < 0 ? -1 :
 		    hand_device(&u, pts, n, pdf);
 	else if (frs_hsw_draw_each(r->hw, input, pts, n, seed, pdf,
 	    cli_threads(), hand_over, &u, &err) != FRS_OK)
 		rc = u.stopped ? -1 : cli_fail("%s", err.message);
-	free(u.rec);
 	return rc;
 }

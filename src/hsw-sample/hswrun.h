@@ -34,10 +34,11 @@ int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
     uint32_t h, int flags, int cl, int cl_index);
 void hsw_run_close(struct hsw_run *r);
 
-/* The records of one round: k of them, x, y and with pdf the density
- * I / mean I of the point's pixel (2 or 3 doubles each); non-zero stops
+/* The points of one round: k of them, x, y in xy and with pdf the
+ * densities I / mean I of their pixels in pdf (else NULL); non-zero stops
  * the run (-1, the message the callback's). */
-typedef int (*hsw_rec_fn)(void *ctx, const double *rec, size_t k);
+typedef int (*hsw_rec_fn)(void *ctx, const double *xy, const double *pdf,
+    size_t k);
 
 /* The n points of input with seed (frs_hsw_input), made round by round,
  * or, where pts is not NULL, its n pairs (on the device warped in place;
