@@ -115,6 +115,37 @@ static int out_begin(struct out *u, uint64_t count)
 	return 0;
 }
 
+/* k samples with the step and level columns: made into records of ncol
+ * values (the points and densities alone go to the writer as they
+ * are). */
+static int put_records(struct out *u, const double *p, const double *pdf,
+    const uint32_t *step, size_t k, unsigned ncol)
+{
+	unsigned dims = u->run->dims;
+	double *rec;
+
+	if (k * ncol > u->reccap) {
+		free(u->rec);
+		u->reccap = k * ncol;
+		if ((u->rec = malloc(u->reccap * sizeof *u->rec)) == NULL) {
+			u->reccap = 0;
+			return cli_fail("out of memory");
+		}
+	}
+	rec = u->rec;
+	for (size_t i = 0; i < k; i++, rec += ncol) {
+		unsigned c = dims;
+		memcpy(rec, p + dims * i, dims * sizeof *rec);
+		if (pdf != NULL)
+			rec[c++] = pdf[i];
+		if (step != NULL)
+			rec[c++] = (double)(step[i] + 1);
+		if (u->a->level_col)
+			rec[c++] = (double)level_at(u->run, p + dims * i);
+	}
+	return sets_writer_put(&u->w, u->rec, k);
+}
+
 /* The draws' callback: the records of k samples. */
 static int out_batch(void *ctx, const double *p, const double *pdf,
     const uint32_t *step, size_t k, uint64_t total)
@@ -135,28 +166,10 @@ static int out_batch(void *ctx, const double *p, const double *pdf,
 	}
 	if (rc == 0 && ncol == dims)
 		rc = sets_writer_put(&u->w, p, k);
-	else if (rc == 0 && k * ncol > u->reccap) {
-		free(u->rec);
-		u->reccap = k * ncol;
-		if ((u->rec = malloc(u->reccap * sizeof *u->rec)) == NULL) {
-			u->reccap = 0;
-			rc = cli_fail("out of memory");
-		}
-	}
-	if (rc == 0 && ncol > dims) {
-		double *rec = u->rec;
-		for (size_t i = 0; i < k; i++, rec += ncol) {
-			unsigned c = dims;
-			memcpy(rec, p + dims * i, dims * sizeof *rec);
-			if (pdf != NULL)
-				rec[c++] = pdf[i];
-			if (step != NULL)
-				rec[c++] = (double)(step[i] + 1);
-			if (lcol)
-				rec[c++] = (double)level_at(u->run, p + dims * i);
-		}
-		rc = sets_writer_put(&u->w, u->rec, k);
-	}
+	else if (rc == 0 && ncol == dims + 1 && pdf != NULL)
+		rc = sets_writer_put_cols(&u->w, p, &pdf, k);
+	else if (rc == 0)
+		rc = put_records(u, p, pdf, step, k, ncol);
 	u->run->tout += cli_now() - t0;
 	return rc;
 }
