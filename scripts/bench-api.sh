@@ -56,7 +56,8 @@ for n in $NS; do
 	for j in 1 $ALL; do
 		"$FRS" -q -m "$MAT" -i blob -n "$n" -S $SEED -j "$j" -v \
 		    -o /dev/null 2>"$T/v"
-		cnt=$(grep 'samples (' "$T/v" | awk '{ print $2 }')
+		# -v's summary line, not its levels' lines
+		cnt=$(sed -n 's/^frs-sample: \([0-9]*\) samples (.*/\1/p' "$T/v")
 		best "$FRS" -q -m "$MAT" -i blob -n "$n" -S $SEED -j "$j" \
 		    -o /dev/null
 		BASE=$(awk -v c="$cnt" -v t="$BEST" 'BEGIN { print c / t }')
