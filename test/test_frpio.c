@@ -282,6 +282,45 @@ static void damaged_files_refused(void **state)
 	}
 }
 
+/* Values that are no permutation under a checksum that matches them (a
+ * file made so, not damaged in passing): refused by the check made in
+ * the checksum's pass, a repeat with its place, a value out of range. */
+static void values_checked(void **state)
+{
+	static const struct {
+		size_t at;
+		uint32_t v;	/* UINT32_MAX: element 0's value */
+		const char *msg;
+	} c[] = { { 5, UINT32_MAX, "not a permutation: value" },
+		  { 7, W * H, "value 512 at element 7 is out of range" } };
+
+	(void)state;
+	for (size_t k = 0; k < sizeof c / sizeof c[0]; k++) {
+		const char *path = write_frp("values.frp", 0, 0);
+		struct frs_matrix m, e;
+		struct frs_prep p;
+		unsigned char *b;
+		size_t n;
+		char where[64];
+		b = tu_read(path, &n);
+		assert_int_equal(frd_alloc(&e, 2, W, H, 1, ""), 0);
+		memcpy(e.v, mat.v, (size_t)W * H * sizeof *e.v);
+		e.v[c[k].at] = c[k].v == UINT32_MAX ? mat.v[0] : c[k].v;
+		io_put_u32(b + HEADER + 4 * c[k].at, e.v[c[k].at]);
+		io_put_u64(b + 24, frd_checksum(&e));
+		tu_write(path, b, n);
+		free(b);
+		assert_int_equal(frp_read(path, &m, &p, 4), -1);
+		assert_null(m.v);
+		snprintf(where, sizeof where, "repeats at (%zu, 0, 0)", c[k].at);
+		if (c[k].v == UINT32_MAX)
+			assert_err_has(path, c[k].msg, where);
+		else
+			assert_err_has(path, c[k].msg);
+		frd_free(&e);
+	}
+}
+
 /* What cannot be prepared: 3-D, sides not powers of two. */
 static void write_refusals(void **state)
 {
@@ -320,4 +359,5 @@ TU_MAIN(setup, teardown,
 	cmocka_unit_test(layout_and_round_trip),
 	cmocka_unit_test(matrix_only),
 	cmocka_unit_test(damaged_files_refused),
+	cmocka_unit_test(values_checked),
 	cmocka_unit_test(write_refusals))

@@ -273,18 +273,66 @@ int frd_check_permutation(const struct frs_matrix *m, const char *name)
 	return rep < m->n ? repeated(m, name, rep) : 0;
 }
 
-uint64_t frd_checksum(const struct frs_matrix *m)
+
+/* FNV-1a over the 4 little-endian bytes of v. */
+static inline uint64_t fnv_u32(uint64_t h, uint32_t v)
 {
-	uint64_t h = 0xcbf29ce484222325ull;
+	for (int b = 0; b < 4; b++)
+		h = (h ^ ((v >> (8 * b)) & 0xff)) * 0x100000001b3ull;
+	return h;
+}
+
+/* The sizes' part of the checksum. */
+static uint64_t fnv_head(const struct frs_matrix *m)
+{
 	uint32_t head[4] = { m->dims, m->w, m->h, m->d };
+	uint64_t h = 0xcbf29ce484222325ull;
 
 	for (int i = 0; i < 4; i++)
-		for (int b = 0; b < 4; b++)
-			h = (h ^ ((head[i] >> (8 * b)) & 0xff)) * 0x100000001b3ull;
-	for (size_t i = 0; i < m->n; i++)
-		for (int b = 0; b < 4; b++)
-			h = (h ^ ((m->v[i] >> (8 * b)) & 0xff)) * 0x100000001b3ull;
+		h = fnv_u32(h, head[i]);
 	return h;
+}
+
+uint64_t frd_checksum(const struct frs_matrix *m)
+{
+	uint64_t h = fnv_head(m);
+
+	for (size_t i = 0; i < m->n; i++)
+		h = fnv_u32(h, m->v[i]);
+	return h;
+}
+
+int frd_check_sum(const struct frs_matrix *m, const char *name,
+    uint64_t want)
+{
+	uint64_t h = fnv_head(m), *seen = NULL;
+	size_t over = m->n, rep = m->n;
+
+	if (!m->perm && (seen = value_bits(m)) == NULL)
+		return frs_fail("%s: out of memory", name);
+	/* The chain of multiplications is latency-bound: the scan of
+	 * scan_values runs beside it. */
+	for (size_t i = 0; i < m->n; i++) {
+		uint32_t v = m->v[i];
+		h = fnv_u32(h, v);
+		if (seen == NULL)
+			continue;
+		if (v >= m->n) {
+			over = over < i ? over : i;
+			continue;
+		}
+		if (seen[v / 64] >> (v % 64) & 1)
+			rep = rep < i ? rep : i;
+		seen[v / 64] |= (uint64_t)1 << (v % 64);
+	}
+	free(seen);
+	if (h != want)
+		return frs_fail("%s: the matrix does not match its recorded "
+		    "checksum (damaged file)", name);
+	if (over < rep)
+		return frs_fail("%s: value %u at element %zu is out of range", name,
+		    m->v[over], over);
+	return rep < m->n ? repeated(m, name, rep) : 0;
 }
 
 /* A value and its position, ranked by value, then position. */

@@ -64,5 +64,10 @@ int frd_rank(struct frs_matrix *m);
 /* 64-bit FNV-1a of the sizes and values, to tie prepared data to its
  * source matrix. */
 uint64_t frd_checksum(const struct frs_matrix *m);
+/* frd_checksum compared with want and, unless m->perm, the check of
+ * frd_check_permutation, in one pass over the values.  0; -1 after
+ * frs_fail: a checksum other than want (a damaged file) first. */
+int frd_check_sum(const struct frs_matrix *m, const char *name,
+    uint64_t want);
 
 #endif
