@@ -98,6 +98,23 @@ static int read_params(FILE *fp, const char *name, uint32_t plen,
 	return 0;
 }
 
+/* Value i of the scan below. */
+static inline void scan_value(const struct frs_matrix *m, uint64_t *seen,
+    size_t i, size_t *over, size_t *rep)
+{
+	uint32_t v = m->v[i];
+
+	if (v >= m->n) {
+		*over = *over < i ? *over : i;
+		return;
+	}
+	if (seen == NULL)
+		return;
+	if (seen[v / 64] >> (v % 64) & 1)
+		*rep = *rep < i ? *rep : i;
+	seen[v / 64] |= (uint64_t)1 << (v % 64);
+}
+
 /* One pass over the values: the index of the first not below the
  * element count (*over) and, given seen (a zeroed bit per value), of
  * the first that repeats an earlier one (*rep); m->n where none is. */
@@ -105,18 +122,8 @@ static void scan_values(const struct frs_matrix *m, uint64_t *seen,
     size_t *over, size_t *rep)
 {
 	*over = *rep = m->n;
-	for (size_t i = 0; i < m->n; i++) {
-		uint32_t v = m->v[i];
-		if (v >= m->n) {
-			*over = *over < i ? *over : i;
-			continue;
-		}
-		if (seen == NULL)
-			continue;
-		if (seen[v / 64] >> (v % 64) & 1)
-			*rep = *rep < i ? *rep : i;
-		seen[v / 64] |= (uint64_t)1 << (v % 64);
-	}
+	for (size_t i = 0; i < m->n; i++)
+		scan_value(m, seen, i, over, rep);
 }
 
 /* A zeroed bit per value of m, NULL (no message) when out of memory. */
@@ -133,6 +140,17 @@ static int repeated(const struct frs_matrix *m, const char *name, size_t rep)
 	return frs_fail("%s: not a permutation: value %u repeats at (%zu, "
 	    "%zu, %zu)", name, m->v[rep], rep % m->w, rep / m->w % m->h,
 	    rep / ((size_t)m->w * m->h));
+}
+
+/* scan_values' answer as frd_check_permutation's: 0, or -1 after
+ * frs_fail naming the first value out of range or repeated. */
+static int not_perm(const struct frs_matrix *m, const char *name,
+    size_t over, size_t rep)
+{
+	if (over < rep)
+		return frs_fail("%s: value %u at element %zu is out of range", name,
+		    m->v[over], over);
+	return rep < m->n ? repeated(m, name, rep) : 0;
 }
 
 /* Every value below n; m->perm found in the same pass, or required
@@ -267,12 +285,8 @@ int frd_check_permutation(const struct frs_matrix *m, const char *name)
 		return frs_fail("%s: out of memory", name);
 	scan_values(m, seen, &over, &rep);
 	free(seen);
-	if (over < rep)
-		return frs_fail("%s: value %u at element %zu is out of range", name,
-		    m->v[over], over);
-	return rep < m->n ? repeated(m, name, rep) : 0;
+	return not_perm(m, name, over, rep);
 }
-
 
 /* FNV-1a over the 4 little-endian bytes of v. */
 static inline uint64_t fnv_u32(uint64_t h, uint32_t v)
@@ -313,26 +327,15 @@ int frd_check_sum(const struct frs_matrix *m, const char *name,
 	/* The chain of multiplications is latency-bound: the scan of
 	 * scan_values runs beside it. */
 	for (size_t i = 0; i < m->n; i++) {
-		uint32_t v = m->v[i];
-		h = fnv_u32(h, v);
-		if (seen == NULL)
-			continue;
-		if (v >= m->n) {
-			over = over < i ? over : i;
-			continue;
-		}
-		if (seen[v / 64] >> (v % 64) & 1)
-			rep = rep < i ? rep : i;
-		seen[v / 64] |= (uint64_t)1 << (v % 64);
+		h = fnv_u32(h, m->v[i]);
+		if (seen != NULL)
+			scan_value(m, seen, i, &over, &rep);
 	}
 	free(seen);
 	if (h != want)
 		return frs_fail("%s: the matrix does not match its recorded "
 		    "checksum (damaged file)", name);
-	if (over < rep)
-		return frs_fail("%s: value %u at element %zu is out of range", name,
-		    m->v[over], over);
-	return rep < m->n ? repeated(m, name, rep) : 0;
+	return not_perm(m, name, over, rep);
 }
 
 /* A value and its position, ranked by value, then position. */
