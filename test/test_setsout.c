@@ -5,6 +5,7 @@
  * same from columns apart (sets_writer_put_cols: the points packed, the
  * values in an array of their own), and its check of the coordinates. */
 #include "testutil.h"
+#include "base/io.h"
 #include "base/rng.h"
 #include "cli/ptsio.h"
 #include "cli/setsout.h"
@@ -139,6 +140,37 @@ static void cols_checked(void **state)
 	assert_non_null(strstr(msg[1], "coordinate 1 of point 1200"));
 }
 
+/* Points a record of three apart whose third value is not the column
+ * written: the column's values go out, not the third ones (a stride of
+ * the records' width does not make them the records). */
+static void cols_at_record_stride(void **state)
+{
+	static const char *const nm[] = { "v" };
+	double pts[3 * 4], v[4], want[3 * 4], got[3 * 4];
+	struct pts_writer w;
+	FILE *fp = tmpfile();
+	long at;
+
+	(void)state;
+	assert_non_null(fp);
+	for (int i = 0; i < 4; i++) {
+		pts[3 * i] = want[3 * i] = 0.125 * i;
+		pts[3 * i + 1] = want[3 * i + 1] = 0.5;
+		pts[3 * i + 2] = -1.0;
+		v[i] = want[3 * i + 2] = 10.0 + i;
+	}
+	assert_int_equal(pts_writer_begin(&w, fp, "t.pts", 2, 1, nm, 4, 0), 0);
+	at = ftell(fp);
+	assert_int_equal(pts_writer_put_cols(&w, pts, 3,
+	    (const struct pts_col[]){ { v, 1 } }, 4), 0);
+	assert_int_equal(fseek(fp, at, SEEK_SET), 0);
+	assert_int_equal(fread(got, sizeof got, 1, fp), 1);
+	io_le_f64(got, 12);	/* the file's little-endian doubles */
+	assert_memory_equal(got, want, sizeof want);
+	fclose(fp);
+}
+
 TU_MAIN(NULL, NULL,
 	cmocka_unit_test(sets_file),
-	cmocka_unit_test(cols_checked))
+	cmocka_unit_test(cols_checked),
+	cmocka_unit_test(cols_at_record_stride))

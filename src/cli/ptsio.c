@@ -699,6 +699,19 @@ static void gather(double *r, size_t ncol, const double *v, size_t stride,
 		r[i * ncol] = v[i * stride];
 }
 
+/* Whether the columns are the records' own: each right after the
+ * coordinates and the columns before it, a record apart. */
+static int side_by_side(const struct pts_writer *w, const double *pts,
+    size_t stride, const struct pts_col *col)
+{
+	if (stride != w->dims + w->extra)
+		return 0;
+	for (unsigned j = 0; j < w->extra; j++)
+		if (col[j].v != pts + w->dims + j || col[j].stride != stride)
+			return 0;
+	return 1;
+}
+
 int pts_writer_put_cols(struct pts_writer *w, const double *pts,
     size_t stride, const struct pts_col *col, size_t n)
 {
@@ -708,8 +721,8 @@ int pts_writer_put_cols(struct pts_writer *w, const double *pts,
 
 	if (check_coords(w, pts, stride, n) < 0)
 		return -1;
-	if (ncol == stride)
-		return put_records(w, pts, n);	/* side by side already */
+	if (side_by_side(w, pts, stride, col))
+		return put_records(w, pts, n);
 	/* Gathered a piece at a time into a buffer that stays in the
 	 * cache: one pass over the caller's arrays. */
 	for (size_t b = 0; b < n; b += per) {

@@ -5,9 +5,9 @@
 #include "hsw-sample/hswrun.h"
 #include "cli/cli.h"
 
-/* Points per round of handing out the device's points: the record
- * buffer (1.5 MiB with the density); frs_hsw_draw_each's batches on the
- * CPU are as large. */
+/* Points per round of handing out the device's points (their
+ * densities, 512 KiB, made a round at a time); frs_hsw_draw_each's
+ * batches on the CPU are as large. */
 #define ROUND ((uint64_t)1 << 16)
 
 int hsw_run_open(struct hsw_run *r, const char *src, uint32_t w,
