@@ -71,12 +71,28 @@ _Static_assert((int)FRS_HSW_RANDOM == (int)HSW_RANDOM &&
     (int)FRS_HSW_HAMMERSLEY == (int)HSW_HAMMERSLEY,
     "enum frs_hsw_input is enum hsw_input");
 
+/* The caller's n points in (NULL: none) in [0,1)^2. */
+static int in_square(const char *fn, const double *in, uint64_t n,
+    frs_error *err)
+{
+	char msg[96];
+
+	for (uint64_t i = 0; in != NULL && i < 2 * n; i++)
+		if (!(in[i] >= 0.0 && in[i] < 1.0)) {
+			snprintf(msg, sizeof msg, "%s: a point lies outside "
+			    "[0,1)^2", fn);
+			return api_arg_err(err, msg);
+		}
+	return FRS_OK;
+}
+
 /* The checks the draws share: the input set (unless the caller's points
  * in are warped instead, which must lie in [0,1)^2) and threads. */
 static int draw_args(const char *fn, enum frs_hsw_input input,
     const double *in, uint64_t n, int threads, frs_error *err)
 {
 	char msg[96];
+	int rc;
 
 	if (in == NULL && (unsigned)input > FRS_HSW_HAMMERSLEY) {
 		snprintf(msg, sizeof msg, "%s: unknown input set", fn);
@@ -86,12 +102,8 @@ static int draw_args(const char *fn, enum frs_hsw_input input,
 		snprintf(msg, sizeof msg, "%s: threads must lie in 0 .. 1024", fn);
 		return api_arg_err(err, msg);
 	}
-	for (uint64_t i = 0; in != NULL && i < 2 * n; i++)
-		if (!(in[i] >= 0.0 && in[i] < 1.0)) {
-			snprintf(msg, sizeof msg, "%s: a point lies outside "
-			    "[0,1)^2", fn);
-			return api_arg_err(err, msg);
-		}
+	if ((rc = in_square(fn, in, n, err)) != FRS_OK)
+		return rc;
 	frs_set_threads(threads > 0 ? threads : 1);
 	return FRS_OK;
 }
@@ -190,13 +202,12 @@ int frs_hsw_pdf(const frs_hsw *hw, const double *xy, double *pdf, size_t n,
     frs_error *err)
 {
 	double mean;
+	int rc;
 
 	if (hw == NULL || ((xy == NULL || pdf == NULL) && n > 0))
 		return api_arg_err(err, "frs_hsw_pdf: NULL argument");
-	for (size_t i = 0; i < 2 * n; i++)
-		if (!(xy[i] >= 0.0 && xy[i] < 1.0))
-			return api_arg_err(err, "frs_hsw_pdf: a point lies outside "
-			    "[0,1)^2");
+	if ((rc = in_square("frs_hsw_pdf", xy, n, err)) != FRS_OK)
+		return rc;
 	mean = hsw_mean(&hw->t, &hw->map);
 	for (size_t i = 0; i < n; i++)
 		pdf[i] = hsw_pdf_at(&hw->map, mean, xy[2 * i], xy[2 * i + 1]);
