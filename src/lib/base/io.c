@@ -106,6 +106,7 @@ int io_slurp(FILE *fp, const char *name, const unsigned char *pre,
 			b = nb;
 			cap *= 2;
 		}
+		/* n < cap here, so at the end too: room for a NUL. */
 		got = fread(b + n, 1, cap - n, fp);
 		n += got;
 		if (got == 0)

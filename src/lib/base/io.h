@@ -23,7 +23,8 @@ int io_read_exact(FILE *fp, const char *name, void *buf, size_t n,
 int io_read_header(FILE *fp, const char *name, const unsigned char *pre,
     size_t npre, unsigned char *buf, size_t n);
 /* Read everything (for formats that need random access, e.g. EXR), after
- * the npre bytes pre that a peek at the kind of file already took. */
+ * the npre bytes pre that a peek at the kind of file already took.  The
+ * buffer always has room for one byte past *len (a text's NUL). */
 int io_slurp(FILE *fp, const char *name, const unsigned char *pre,
     size_t npre, unsigned char **buf, size_t *len);
 /* Open path ("-": standard input), read(fp, name for messages, obj),
